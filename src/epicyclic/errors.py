@@ -1,0 +1,101 @@
+"""Exception taxonomy of epicyclic.
+
+Every error the toolkit raises on bad input derives from :class:`EpicyclicError`
+and from a built-in exception (``ValueError`` or ``TypeError``), so callers may
+catch either.  Messages name the element or field, what was expected, what was
+given, and how to fix it.
+
+Examples
+--------
+>>> from epicyclic.errors import EfficiencyError, EpicyclicError
+>>> issubclass(EfficiencyError, ValueError) and issubclass(EfficiencyError, EpicyclicError)
+True
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+__all__ = [
+    "EpicyclicError",
+    "ModelError",
+    "ToothCountError",
+    "EfficiencyError",
+    "TopologyError",
+    "UnknownShaftError",
+    "OperatingPointError",
+    "UnderdeterminedError",
+    "ContradictionError",
+]
+
+
+class EpicyclicError(Exception):
+    """Base class of every error raised by epicyclic on bad input."""
+
+
+class ModelError(EpicyclicError, ValueError):
+    """An element or train description is invalid (raised at construction)."""
+
+
+class ToothCountError(ModelError):
+    """Tooth counts that are not positive integers or cannot mesh."""
+
+
+class EfficiencyError(ModelError):
+    """An efficiency outside the interval (0, 1]."""
+
+
+class TopologyError(ModelError):
+    """The way elements are joined is impossible (e.g. a brake on the housing)."""
+
+
+class UnknownShaftError(EpicyclicError, ValueError):
+    """A shaft name that the train does not have."""
+
+    def __init__(self, name: str, known: Sequence[str], where: str = "operating point"):
+        self.name = name
+        self.known = tuple(known)
+        close = [k for k in self.known if k.lower() == name.lower()]
+        hint = f" Did you mean {close[0]!r}?" if close else ""
+        super().__init__(
+            f"{where}: unknown shaft {name!r}; the train has shafts "
+            f"{', '.join(repr(k) for k in self.known)}.{hint}"
+        )
+
+
+class OperatingPointError(EpicyclicError, ValueError):
+    """The operating point does not fit the train."""
+
+
+class UnderdeterminedError(OperatingPointError):
+    """Too little is given: some speeds or torques remain free.
+
+    Attributes
+    ----------
+    free : tuple of str
+        The shafts whose speed (or torque) is still free.
+    quantity : str
+        ``"speed"`` or ``"torque"``.
+    """
+
+    def __init__(self, message: str, free: Sequence[str], quantity: str):
+        self.free = tuple(free)
+        self.quantity = quantity
+        super().__init__(message)
+
+
+class ContradictionError(OperatingPointError):
+    """The given values contradict each other or the train's constraints.
+
+    Attributes
+    ----------
+    conflicting : tuple of str
+        The shafts whose given values are in conflict.
+    quantity : str
+        ``"speed"`` or ``"torque"``.
+    """
+
+    def __init__(self, message: str, conflicting: Sequence[str], quantity: str):
+        self.conflicting = tuple(conflicting)
+        self.quantity = quantity
+        super().__init__(message)

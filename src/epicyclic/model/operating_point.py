@@ -1,0 +1,103 @@
+"""The operating point: what is given about a train's motion and load.
+
+Core units (DESIGN.md §3): speeds in 1/min, torques in N·m, powers in W.
+Torque and power are *external* values acting on a shaft from outside:
+positive power flows into the train (a drive), negative power out (a load).
+Units other than these are converted at the edges (:mod:`epicyclic.units`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+from ..errors import OperatingPointError
+
+__all__ = ["OperatingPoint"]
+
+
+def _frozen_values(values: Mapping[str, float] | None, field_name: str) -> Mapping[str, float]:
+    checked: dict[str, float] = {}
+    for shaft, value in dict(values or {}).items():
+        if not isinstance(shaft, str):
+            raise OperatingPointError(f"operating point: {field_name} keys must be shaft names, got {shaft!r}.")
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise OperatingPointError(
+                f"operating point: {field_name}[{shaft!r}] must be a number, got {value!r}."
+            )
+        if not math.isfinite(value):
+            raise OperatingPointError(
+                f"operating point: {field_name}[{shaft!r}] must be finite, got {value!r}."
+            )
+        checked[shaft] = float(value)
+    return MappingProxyType(checked)
+
+
+@dataclass(frozen=True)
+class OperatingPoint:
+    """Given speeds, torques and powers, and which shafts drive and which are loaded.
+
+    Parameters
+    ----------
+    speeds : mapping shaft → float
+        Given speeds in 1/min.
+    torques : mapping shaft → float
+        Given external torques in N·m (sign: positive with positive speed at a drive).
+    powers : mapping shaft → float
+        Given external powers in W.  A positive value at a load is read as its
+        magnitude (power leaving the train); likewise a drive's power is taken
+        as entering the train.
+    drives, loads : iterable of str
+        Shafts where power is put in / taken out.  Shafts with a given torque or
+        power are external too.  Every other shaft (but the housing) carries no
+        external torque.
+
+    Examples
+    --------
+    >>> op = OperatingPoint(speeds={"in": 1500}, powers={"in": 3000}, drives=["in"], loads=["out"])
+    >>> op.external_shafts
+    ('in', 'out')
+    """
+
+    speeds: Mapping[str, float] = field(default_factory=dict)
+    torques: Mapping[str, float] = field(default_factory=dict)
+    powers: Mapping[str, float] = field(default_factory=dict)
+    drives: tuple[str, ...] = ()
+    loads: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "speeds", _frozen_values(self.speeds, "speeds"))
+        object.__setattr__(self, "torques", _frozen_values(self.torques, "torques"))
+        object.__setattr__(self, "powers", _frozen_values(self.powers, "powers"))
+        for name in ("drives", "loads"):
+            value = getattr(self, name)
+            if isinstance(value, str):
+                value = (value,)
+            object.__setattr__(self, name, tuple(value))
+        both = set(self.drives) & set(self.loads)
+        if both:
+            raise OperatingPointError(
+                f"operating point: shaft(s) {', '.join(sorted(both))} are named both as drive and as load."
+            )
+        twice = set(self.torques) & set(self.powers)
+        if twice:
+            raise OperatingPointError(
+                f"operating point: give a torque or a power at shaft(s) {', '.join(sorted(twice))}, not both."
+            )
+
+    @property
+    def external_shafts(self) -> tuple[str, ...]:
+        """Shafts that carry an external torque (drives, loads, given torques/powers)."""
+        ordered: list[str] = []
+        for group in (self.drives, self.loads, self.torques, self.powers):
+            for shaft in group:
+                if shaft not in ordered:
+                    ordered.append(shaft)
+        return tuple(ordered)
+
+    def shaft_names(self) -> Iterable[str]:
+        """Every shaft the operating point names."""
+        yield from self.speeds
+        yield from self.external_shafts

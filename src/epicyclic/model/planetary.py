@@ -1,0 +1,369 @@
+"""The planetary (epicyclic) set: two central members and a carrier.
+
+A set joins three shafts: the first central member (``sun``), the second
+central member (``ring``) and the carrier.  Its kinematics and statics depend
+only on the stationary ratio
+
+.. math:: i_0 = \\frac{n_\\mathrm{sun} - n_\\mathrm{carrier}}{n_\\mathrm{ring} - n_\\mathrm{carrier}}
+
+and its losses only on the stationary efficiency :math:`\\eta_0` (the
+efficiency with the carrier held).  For a set with two external meshes
+(Brandenberger's a/b·c/d with two suns) the "ring" is simply the second central
+gear.
+
+References
+----------
+Brandenberger 1952, eq. 1 (written there with the inverse ratio ac/bd).
+Queitsch, eqs. 3, 4 and 12 (s = i0).
+willis-equation.md, "Festgestellter Steg" (i0 = -z_H/z_S).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Literal
+
+from ..errors import EfficiencyError, ModelError, ToothCountError
+
+__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name"]
+
+#: Largest mismatch |z_ring - z_sun - 2 z_planet| (in teeth) that profile shift
+#: can absorb in a simple set; larger ones cannot be made coaxial.
+COAXIAL_TOLERANCE_TEETH = 2
+
+
+def check_name(value: object, field_name: str, owner: str) -> str:
+    """Return ``value`` if it is a non-empty string, else raise ModelError."""
+    if not isinstance(value, str) or not value.strip():
+        raise ModelError(f"{owner}: {field_name} must be a non-empty shaft name, got {value!r}.")
+    return value
+
+
+def check_efficiency(value: object, field_name: str, owner: str) -> float:
+    """Return ``value`` as float if it lies in (0, 1], else raise EfficiencyError.
+
+    >>> check_efficiency(0.97, "stationary_efficiency", "set P1")
+    0.97
+    """
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise EfficiencyError(f"{owner}: {field_name} must be a number in (0, 1], got {value!r}.")
+    value = float(value)
+    if not (0.0 < value <= 1.0) or math.isnan(value):
+        raise EfficiencyError(
+            f"{owner}: {field_name} must lie in (0, 1] (1 = lossless), got {value!r}. "
+            "Give an efficiency such as 0.98, not a percentage or a loss."
+        )
+    return value
+
+
+def _check_teeth(value: object, field_name: str, owner: str, minimum: int = 3) -> int:
+    if isinstance(value, bool) or not isinstance(value, int):
+        if isinstance(value, float) and value.is_integer():
+            value = int(value)
+        else:
+            raise ToothCountError(f"{owner}: {field_name} must be a whole number of teeth, got {value!r}.")
+    if value < minimum:
+        raise ToothCountError(
+            f"{owner}: {field_name} must be at least {minimum} teeth, got {value}."
+        )
+    return value
+
+
+@dataclass(frozen=True)
+class Teeth:
+    """Tooth counts of a planetary set.
+
+    Parameters
+    ----------
+    kind : {"simple", "double", "stepped"}
+        ``simple``: sun–planet–ring.  ``double``: sun meshes planet 1, planet 1
+        meshes planet 2, planet 2 meshes the ring (a plus set).  ``stepped``: a
+        planet with two gears on one shaft, the first meshing the sun, the
+        second meshing the second central gear (Brandenberger's a/b·c/d).
+    sun, ring : int
+        Teeth of the first and second central gear.
+    planet : tuple of int
+        Planet teeth: ``(z_p,)`` for a simple set, ``(z_p1, z_p2)`` otherwise,
+        the first meshing the sun.
+    ring_internal : bool
+        Whether the second central gear is internal (a ring).  Only a stepped
+        set may have an external second central gear.
+    """
+
+    kind: Literal["simple", "double", "stepped"]
+    sun: int
+    ring: int
+    planet: tuple[int, ...]
+    ring_internal: bool = True
+
+    @property
+    def stationary_ratio(self) -> float:
+        """i0 from the tooth counts (sign from the meshes).
+
+        >>> Teeth("simple", 30, 78, (24,)).stationary_ratio
+        -2.6
+        """
+        s, r, p = self.sun, self.ring, self.planet
+        if self.kind == "simple":
+            return -r / s
+        if self.kind == "double":
+            return r / s
+        sign = -1.0 if self.ring_internal else 1.0
+        return sign * (r * p[0]) / (s * p[1])
+
+    @property
+    def planet_factors(self) -> tuple[float, ...]:
+        """Factors k with n_planet - n_carrier = k (n_sun - n_carrier), per planet gear.
+
+        References
+        ----------
+        willis-equation.md, Grundgleichung: n_P z_P = n_T (z_P + z_S) - n_S z_S.
+        """
+        s, p = self.sun, self.planet
+        if self.kind == "simple":
+            return (-s / p[0],)
+        if self.kind == "double":
+            return (-s / p[0], s / p[1])
+        return (-s / p[0],)  # both steps turn together
+
+
+@dataclass(frozen=True)
+class PlanetarySet:
+    """A planetary set joining three shafts.
+
+    Parameters
+    ----------
+    name : str
+        Element name, unique in the train.
+    sun, ring, carrier : str
+        Names of the shafts joined to the first central member, the second
+        central member and the carrier.
+    stationary_ratio : float
+        i0 = (n_sun - n_carrier) / (n_ring - n_carrier); negative for a minus
+        set, positive for a plus set.  Must not be 0 or 1.
+    stationary_efficiency : float, default 1.0
+        η0, the efficiency of the set with the carrier held, in (0, 1].
+    planets : int, default 3
+        Number of planets (shares tooth forces; no effect on kinematics).
+    teeth : Teeth, optional
+        Tooth counts the ratio came from (gives planet speeds).
+
+    References
+    ----------
+    Brandenberger 1952, eqs. 1, 2, 3' and 7; DESIGN.md §3.
+
+    Examples
+    --------
+    >>> s = PlanetarySet.simple("P1", sun="in", ring="housing", carrier="out",
+    ...                         z_sun=30, z_planet=24, z_ring=78, stationary_efficiency=0.98)
+    >>> s.stationary_ratio
+    -2.6
+    """
+
+    name: str
+    sun: str
+    ring: str
+    carrier: str
+    stationary_ratio: float
+    stationary_efficiency: float = 1.0
+    planets: int = 3
+    teeth: Teeth | None = field(default=None)
+
+    def __post_init__(self) -> None:
+        owner = f"planetary set {self.name!r}"
+        check_name(self.name, "name", "planetary set")
+        for role in ("sun", "ring", "carrier"):
+            check_name(getattr(self, role), role, owner)
+        shafts = (self.sun, self.ring, self.carrier)
+        if len(set(shafts)) != 3:
+            raise ModelError(
+                f"{owner}: sun, ring and carrier must be three different shafts, got "
+                f"sun={self.sun!r}, ring={self.ring!r}, carrier={self.carrier!r}. "
+                "To lock the set, join two of its shafts with a Clutch instead."
+            )
+        ratio = self.stationary_ratio
+        if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) or not math.isfinite(ratio):
+            raise ModelError(f"{owner}: stationary_ratio must be a finite number, got {ratio!r}.")
+        if ratio == 0.0 or abs(ratio - 1.0) < 1e-12:
+            raise ModelError(
+                f"{owner}: stationary_ratio must not be 0 or 1, got {ratio!r} "
+                "(0 holds the sun, 1 locks the set: neither is a planetary set)."
+            )
+        object.__setattr__(self, "stationary_ratio", float(ratio))
+        object.__setattr__(
+            self,
+            "stationary_efficiency",
+            check_efficiency(self.stationary_efficiency, "stationary_efficiency", owner),
+        )
+        if isinstance(self.planets, bool) or not isinstance(self.planets, int) or self.planets < 1:
+            raise ModelError(f"{owner}: planets must be a whole number >= 1, got {self.planets!r}.")
+
+    # ------------------------------------------------------------------ constructors
+    @classmethod
+    def simple(
+        cls,
+        name: str,
+        *,
+        sun: str,
+        ring: str,
+        carrier: str,
+        z_sun: int,
+        z_planet: int,
+        z_ring: int,
+        stationary_efficiency: float | None = None,
+        mesh_efficiencies: tuple[float, ...] | None = None,
+        planets: int = 3,
+    ) -> PlanetarySet:
+        """A simple sun–planet–ring (minus) set from tooth counts: i0 = -z_ring/z_sun.
+
+        ``mesh_efficiencies`` (sun–planet, planet–ring) are combined by product
+        into the stationary efficiency.
+
+        References
+        ----------
+        willis-equation.md, eq. i_0; Queitsch, eq. 4.
+        """
+        owner = f"planetary set {name!r}"
+        zs = _check_teeth(z_sun, "z_sun", owner)
+        zp = _check_teeth(z_planet, "z_planet", owner)
+        zr = _check_teeth(z_ring, "z_ring", owner)
+        if zr <= zs:
+            raise ToothCountError(
+                f"{owner}: the ring must have more teeth than the sun, got z_ring={zr}, z_sun={zs}. "
+                "Swap them, or use PlanetarySet.stepped for two external central gears."
+            )
+        mismatch = zr - zs - 2 * zp
+        if abs(mismatch) > COAXIAL_TOLERANCE_TEETH:
+            raise ToothCountError(
+                f"{owner}: tooth counts cannot mesh coaxially: z_ring - z_sun - 2*z_planet = "
+                f"{zr} - {zs} - 2*{zp} = {mismatch}, expected 0 (at most ±{COAXIAL_TOLERANCE_TEETH} "
+                f"with profile shift). For z_sun={zs} and z_ring={zr} use "
+                f"z_planet={(zr - zs) // 2}" + (" (and make z_ring - z_sun even)" if (zr - zs) % 2 else "") + "."
+            )
+        teeth = Teeth("simple", zs, zr, (zp,))
+        return cls(
+            name, sun, ring, carrier, teeth.stationary_ratio,
+            _combine(stationary_efficiency, mesh_efficiencies, 2, owner), planets, teeth,
+        )
+
+    @classmethod
+    def double_planet(
+        cls,
+        name: str,
+        *,
+        sun: str,
+        ring: str,
+        carrier: str,
+        z_sun: int,
+        z_planet_sun: int,
+        z_planet_ring: int,
+        z_ring: int,
+        stationary_efficiency: float | None = None,
+        mesh_efficiencies: tuple[float, ...] | None = None,
+        planets: int = 3,
+    ) -> PlanetarySet:
+        """A double-planet (plus) set: sun–planet 1–planet 2–ring, i0 = +z_ring/z_sun.
+
+        ``mesh_efficiencies`` are the three meshes' efficiencies (combined by product).
+        """
+        owner = f"planetary set {name!r}"
+        zs = _check_teeth(z_sun, "z_sun", owner)
+        z1 = _check_teeth(z_planet_sun, "z_planet_sun", owner)
+        z2 = _check_teeth(z_planet_ring, "z_planet_ring", owner)
+        zr = _check_teeth(z_ring, "z_ring", owner)
+        if zr <= zs:
+            raise ToothCountError(
+                f"{owner}: the ring must have more teeth than the sun, got z_ring={zr}, z_sun={zs}."
+            )
+        teeth = Teeth("double", zs, zr, (z1, z2))
+        return cls(
+            name, sun, ring, carrier, teeth.stationary_ratio,
+            _combine(stationary_efficiency, mesh_efficiencies, 3, owner), planets, teeth,
+        )
+
+    @classmethod
+    def stepped(
+        cls,
+        name: str,
+        *,
+        sun: str,
+        ring: str,
+        carrier: str,
+        z_sun: int,
+        z_planet_sun: int,
+        z_planet_ring: int,
+        z_ring: int,
+        ring_internal: bool = True,
+        stationary_efficiency: float | None = None,
+        mesh_efficiencies: tuple[float, ...] | None = None,
+        planets: int = 3,
+    ) -> PlanetarySet:
+        """A stepped-planet set (Brandenberger's a/b·c/d).
+
+        The sun (a) meshes planet gear b; planet gear c, on the same planet
+        shaft, meshes the second central gear d (internal ring or external
+        gear): i0 = ∓ (z_d z_b)/(z_c z_a), minus with an internal ring.
+
+        References
+        ----------
+        Brandenberger 1952, eq. 1 and Bild 1–2: n2 − n3 = (n1 − n3)·(a/b)(c/d).
+
+        Examples
+        --------
+        >>> s = PlanetarySet.stepped("B", sun="I", ring="II", carrier="III", z_sun=50,
+        ...     z_planet_sun=24, z_planet_ring=30, z_ring=42, ring_internal=False)
+        >>> round(s.stationary_ratio, 4)
+        0.672
+        """
+        owner = f"planetary set {name!r}"
+        zs = _check_teeth(z_sun, "z_sun", owner)
+        zb = _check_teeth(z_planet_sun, "z_planet_sun", owner)
+        zc = _check_teeth(z_planet_ring, "z_planet_ring", owner)
+        zr = _check_teeth(z_ring, "z_ring", owner)
+        if ring_internal and zr <= zc:
+            raise ToothCountError(
+                f"{owner}: an internal ring must have more teeth than the planet gear meshing it, "
+                f"got z_ring={zr}, z_planet_ring={zc}."
+            )
+        teeth = Teeth("stepped", zs, zr, (zb, zc), ring_internal)
+        return cls(
+            name, sun, ring, carrier, teeth.stationary_ratio,
+            _combine(stationary_efficiency, mesh_efficiencies, 2, owner), planets, teeth,
+        )
+
+    # ------------------------------------------------------------------ properties
+    @property
+    def shafts(self) -> tuple[str, str, str]:
+        """The joined shafts in port order (sun, ring, carrier)."""
+        return (self.sun, self.ring, self.carrier)
+
+    @property
+    def is_plus_set(self) -> bool:
+        """Whether i0 > 0 (central members turn the same way with the carrier held)."""
+        return self.stationary_ratio > 0
+
+
+def _combine(
+    stationary_efficiency: float | None,
+    mesh_efficiencies: tuple[float, ...] | None,
+    meshes: int,
+    owner: str,
+) -> float:
+    """η0 from either the stationary efficiency or the product of the mesh efficiencies."""
+    if stationary_efficiency is not None and mesh_efficiencies is not None:
+        raise ModelError(
+            f"{owner}: give stationary_efficiency or mesh_efficiencies, not both."
+        )
+    if mesh_efficiencies is None:
+        return 1.0 if stationary_efficiency is None else stationary_efficiency
+    values = tuple(mesh_efficiencies)
+    if len(values) != meshes:
+        raise ModelError(
+            f"{owner}: mesh_efficiencies must have {meshes} values (one per mesh in the "
+            f"power path), got {len(values)}."
+        )
+    product = 1.0
+    for k, value in enumerate(values):
+        product *= check_efficiency(value, f"mesh_efficiencies[{k}]", owner)
+    return product

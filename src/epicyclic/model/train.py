@@ -1,0 +1,146 @@
+"""The gear train: a graph of named shafts joined by elements.
+
+Shafts are nodes; planetary sets, gear stages, clutches and brakes are the
+edges (hyperedges) that join them.  The frame is the shaft ``"housing"`` with
+speed zero.  A train is immutable; a shift state is a new train made with
+:meth:`GearTrain.with_engaged`.
+
+References
+----------
+DESIGN.md §4 (one mechanism for every case).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Union
+
+from ..errors import ModelError, UnknownShaftError
+from .elements import HOUSING, Brake, Clutch, GearStage
+from .planetary import PlanetarySet, check_name
+
+__all__ = ["GearTrain", "Element", "ShiftElement"]
+
+Element = Union[PlanetarySet, GearStage, Clutch, Brake]
+ShiftElement = Union[Clutch, Brake]
+
+
+@dataclass(frozen=True)
+class GearTrain:
+    """A gear train of elements joining named shafts.
+
+    Parameters
+    ----------
+    elements : iterable of PlanetarySet, GearStage, Clutch, Brake
+        The elements; names must be unique.
+    shafts : iterable of str, optional
+        Extra shaft names (shafts not joined to any element); every shaft an
+        element names is added automatically, and so is ``"housing"``.
+    name : str, optional
+        A title for reports.
+
+    Examples
+    --------
+    >>> from epicyclic import PlanetarySet, Brake
+    >>> train = GearTrain([
+    ...     PlanetarySet.simple("P", sun="in", ring="ring", carrier="out",
+    ...                         z_sun=30, z_planet=24, z_ring=78),
+    ...     Brake("B", "ring")])
+    >>> train.shafts
+    ('in', 'ring', 'out', 'housing')
+    """
+
+    elements: tuple[Element, ...]
+    shafts: tuple[str, ...] = field(default=())
+    name: str = "gear train"
+
+    def __post_init__(self) -> None:
+        elements = tuple(self.elements)
+        if not elements:
+            raise ModelError("gear train: elements must contain at least one element, got none.")
+        names: set[str] = set()
+        for k, element in enumerate(elements):
+            if not isinstance(element, (PlanetarySet, GearStage, Clutch, Brake)):
+                raise ModelError(
+                    f"gear train: elements[{k}] must be a PlanetarySet, GearStage, Clutch or Brake, "
+                    f"got {type(element).__name__}."
+                )
+            if element.name in names:
+                raise ModelError(f"gear train: element name {element.name!r} is used twice; names must be unique.")
+            names.add(element.name)
+        ordered: list[str] = []
+        for shaft in tuple(self.shafts):
+            check_name(shaft, "shafts", "gear train")
+            if shaft not in ordered:
+                ordered.append(shaft)
+        for element in elements:
+            for shaft in element.shafts:
+                if shaft not in ordered and shaft != HOUSING:
+                    ordered.append(shaft)
+        ordered = [s for s in ordered if s != HOUSING] + [HOUSING]
+        object.__setattr__(self, "elements", elements)
+        object.__setattr__(self, "shafts", tuple(ordered))
+
+    # ------------------------------------------------------------------ look-ups
+    def element(self, name: str) -> Element:
+        """The element called ``name``."""
+        for element in self.elements:
+            if element.name == name:
+                return element
+        raise ModelError(
+            f"gear train: no element named {name!r}; elements are "
+            f"{', '.join(repr(e.name) for e in self.elements)}."
+        )
+
+    def check_shaft(self, name: str, where: str = "operating point") -> str:
+        """Return ``name`` if the train has that shaft, else raise UnknownShaftError."""
+        if name not in self.shafts:
+            raise UnknownShaftError(name, self.shafts, where)
+        return name
+
+    @property
+    def planetary_sets(self) -> tuple[PlanetarySet, ...]:
+        return tuple(e for e in self.elements if isinstance(e, PlanetarySet))
+
+    @property
+    def gear_stages(self) -> tuple[GearStage, ...]:
+        return tuple(e for e in self.elements if isinstance(e, GearStage))
+
+    @property
+    def shift_elements(self) -> tuple[ShiftElement, ...]:
+        """Clutches and brakes, engaged or not."""
+        return tuple(e for e in self.elements if isinstance(e, (Clutch, Brake)))
+
+    @property
+    def moving_shafts(self) -> tuple[str, ...]:
+        """All shafts but the housing."""
+        return self.shafts[:-1]
+
+    # ------------------------------------------------------------------ shift states
+    def with_engaged(self, engaged: Iterable[str] | Mapping[str, bool]) -> GearTrain:
+        """A copy with exactly the named clutches and brakes engaged (all others open).
+
+        ``engaged`` may also be a mapping name → bool that changes only the
+        elements it names.
+        """
+        from dataclasses import replace
+
+        shift_names = {e.name for e in self.shift_elements}
+        if isinstance(engaged, Mapping):
+            wanted = {name: bool(v) for name, v in engaged.items()}
+        else:
+            names = list(engaged)
+            wanted = {name: (name in names) for name in shift_names}
+            for name in names:
+                wanted.setdefault(name, True)
+        for name in wanted:
+            if name not in shift_names:
+                raise ModelError(
+                    f"shift state: {name!r} is not a clutch or brake of this train; shift elements are "
+                    f"{', '.join(sorted(shift_names)) or 'none'}."
+                )
+        elements = tuple(
+            replace(e, engaged=wanted[e.name]) if e.name in wanted else e for e in self.elements
+        )
+        return GearTrain(elements, self.shafts, self.name)

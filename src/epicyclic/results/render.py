@@ -1,0 +1,135 @@
+"""Render a Solution as plain data, a text table or an HTML table.
+
+Rendering never computes: it reads the result object.  Units are the core
+units (1/min, N·m, W); the I/O layer converts for other units.
+"""
+
+from __future__ import annotations
+
+import html
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .solution import Solution
+
+__all__ = ["solution_to_dict", "solution_table", "solution_html", "SCHEMA_VERSION"]
+
+#: Version of the JSON layout produced by :func:`solution_to_dict`.
+SCHEMA_VERSION = 1
+
+UNITS = {"speed": "1/min", "torque": "N*m", "power": "W"}
+
+
+def solution_to_dict(sol: Solution) -> dict[str, Any]:
+    """JSON-ready dictionary of a solution (stable layout, units stated)."""
+    return {
+        "schema": SCHEMA_VERSION,
+        "train": sol.train.name,
+        "units": dict(UNITS),
+        "shafts": {
+            s.name: {"speed": s.speed, "torque": s.torque, "power": s.power, "role": s.role}
+            for s in sol.shafts.values()
+        },
+        "elements": {
+            e.name: {
+                "kind": e.kind,
+                "status": e.status,
+                "ports": dict(e.ports),
+                "torques": dict(e.torques),
+                "speeds": dict(e.speeds),
+                "rolling_power": e.rolling_power,
+                "coupling_power": e.coupling_power,
+                "loss": e.loss,
+                "loss_direction": e.loss_direction,
+                "efficiency_factor": e.efficiency_factor,
+                "engaged": e.engaged,
+                "slip_speed": e.slip_speed,
+                "planet_speeds": list(e.planet_speeds),
+                "planet_speeds_relative": list(e.planet_speeds_relative),
+            }
+            for e in sol.elements.values()
+        },
+        "input_power": sol.input_power,
+        "output_power": sol.output_power,
+        "loss": sol.loss,
+        "efficiency": sol.efficiency,
+        "self_locking": None
+        if sol.self_locking is None
+        else {
+            "message": sol.self_locking.message,
+            "formal_efficiency": sol.self_locking.formal_efficiency,
+            "thresholds": dict(sol.self_locking.thresholds),
+        },
+        "circulating_power": sol.circulating_power,
+        "degrees_of_freedom": sol.degrees_of_freedom,
+        "warnings": list(sol.warnings),
+    }
+
+
+def _grid(headers: list[str], rows: list[list[str]]) -> str:
+    widths = [max(len(h), *(len(r[k]) for r in rows)) if rows else len(h) for k, h in enumerate(headers)]
+    line = "  ".join(h.ljust(w) for h, w in zip(headers, widths))
+    rule = "  ".join("-" * w for w in widths)
+    body = ["  ".join(c.rjust(w) if k else c.ljust(w) for k, (c, w) in enumerate(zip(r, widths))) for r in rows]
+    return "\n".join([line, rule, *body])
+
+
+def _num(value: float | None, digits: int = 6) -> str:
+    return "—" if value is None else f"{value:.{digits}g}"
+
+
+def _shaft_rows(sol: Solution) -> list[list[str]]:
+    return [[s.name, _num(s.speed), _num(s.torque), _num(s.power), s.role] for s in sol.shafts.values()]
+
+
+def _element_rows(sol: Solution) -> list[list[str]]:
+    rows = []
+    for e in sol.elements.values():
+        torques = " / ".join(f"{p} {_num(t, 5)}" for p, t in e.torques.items())
+        rows.append([e.name, e.kind, e.status, torques, _num(e.rolling_power), _num(e.coupling_power), _num(e.loss)])
+    return rows
+
+
+def _summary(sol: Solution) -> list[str]:
+    lines = [f"input power   {sol.input_power:.6g} W", f"output power  {sol.output_power:.6g} W",
+             f"total loss    {sol.loss:.6g} W"]
+    if sol.self_locking is not None:
+        lines.append("efficiency    — (self-locking)")
+        lines.append("SELF-LOCKING: " + sol.self_locking.message)
+    else:
+        lines.append(f"efficiency    {_num(sol.efficiency)}")
+    lines.append(f"circulating power  {sol.circulating_power:.4g} × input")
+    lines += [f"warning: {w}" for w in sol.warnings]
+    return lines
+
+
+SHAFT_HEADERS = ["shaft", "speed [1/min]", "torque [N*m]", "power [W]", "role"]
+ELEMENT_HEADERS = ["element", "kind", "state", "port torques [N*m]", "rolling power [W]",
+                   "coupling power [W]", "loss [W]"]
+
+
+def solution_table(sol: Solution) -> str:
+    """Plain-text report: shafts, elements, summary."""
+    return "\n\n".join([
+        f"{sol.train.name}",
+        _grid(SHAFT_HEADERS, _shaft_rows(sol)),
+        _grid(ELEMENT_HEADERS, _element_rows(sol)),
+        "\n".join(_summary(sol)),
+    ])
+
+
+def _html_table(headers: list[str], rows: list[list[str]]) -> str:
+    head = "".join(f"<th>{html.escape(h)}</th>" for h in headers)
+    body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rows)
+    return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+
+
+def solution_html(sol: Solution) -> str:
+    """HTML fragment (for notebooks and reports)."""
+    summary = "".join(f"<li>{html.escape(line)}</li>" for line in _summary(sol))
+    return (
+        f"<div class='epicyclic-solution'><h4>{html.escape(sol.train.name)}</h4>"
+        + _html_table(SHAFT_HEADERS, _shaft_rows(sol))
+        + _html_table(ELEMENT_HEADERS, _element_rows(sol))
+        + f"<ul>{summary}</ul></div>"
+    )

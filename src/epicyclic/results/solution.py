@@ -1,0 +1,241 @@
+"""Result objects of an analysis: immutable, self-describing, renderable.
+
+Units (DESIGN.md §3): speeds in 1/min, torques in N·m, powers and losses in W.
+Power is positive where it flows *into* the train (a drive) and negative at a
+load (Brandenberger's convention).  Port torques are the torques a shaft
+exerts on an element.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..model.operating_point import OperatingPoint
+    from ..model.train import GearTrain
+
+__all__ = ["ShaftState", "ElementState", "SelfLocking", "Solution", "RPM_TO_RAD_S"]
+
+#: 1/min → rad/s (explicit, never through Hz).
+RPM_TO_RAD_S = math.pi / 30.0
+
+
+@dataclass(frozen=True)
+class ShaftState:
+    """Speed (1/min), external torque (N·m) and power (W) of one shaft."""
+
+    name: str
+    speed: float
+    torque: float
+    power: float
+    role: str  # "drive", "load", "housing", "internal"
+
+    @property
+    def angular_velocity(self) -> float:
+        """ω in rad/s."""
+        return self.speed * RPM_TO_RAD_S
+
+
+@dataclass(frozen=True)
+class ElementState:
+    """The state of one element at the operating point.
+
+    Attributes
+    ----------
+    ports : mapping port → shaft
+    torques : mapping port → torque on the element from that shaft (N·m)
+    speeds : mapping port → speed (1/min)
+    rolling_power : float
+        P_w = T_sun·(ω_sun − ω_carrier) in W for a set (first shaft for a stage);
+        its sign is the direction of power flow relative to the carrier.
+    coupling_power : float
+        T_sun·ω_carrier in W: the part of the sun's power that passes without
+        tooth sliding.  Zero for a fixed-axis stage.
+    loss : float
+        Power lost in the element, W (≥ 0).
+    loss_direction : int
+        w ∈ {−1, 0, +1}: +1 when the sun (first) shaft drives relative to the
+        carrier, −1 when it is driven, 0 without rolling power.
+    efficiency_factor : float
+        η0^w applied to the torque ratio (1 where w = 0).
+    engaged : bool or None
+        For clutches and brakes.
+    slip_speed : float or None
+        Speed difference first − second (1/min) across a clutch or brake.
+    planet_speeds, planet_speeds_relative : tuple of float
+        Planet gear speeds, absolute and relative to the carrier (1/min), when
+        tooth counts are known.
+
+    References
+    ----------
+    Brandenberger 1952, eq. 3' and Bild 8; DESIGN.md §3 (rolling and coupling power).
+    """
+
+    name: str
+    kind: str
+    ports: Mapping[str, str]
+    torques: Mapping[str, float]
+    speeds: Mapping[str, float]
+    rolling_power: float = 0.0
+    coupling_power: float = 0.0
+    loss: float = 0.0
+    loss_direction: int = 0
+    efficiency_factor: float = 1.0
+    engaged: bool | None = None
+    slip_speed: float | None = None
+    planet_speeds: tuple[float, ...] = ()
+    planet_speeds_relative: tuple[float, ...] = ()
+
+    @property
+    def port_powers(self) -> dict[str, float]:
+        """Power into the element at each port, W."""
+        return {p: self.torques[p] * self.speeds[p] * RPM_TO_RAD_S for p in self.ports}
+
+    @property
+    def status(self) -> str:
+        """A word for the element's state: rolling, locked, idle, open, engaged."""
+        if self.kind in ("clutch", "brake"):
+            return "engaged" if self.engaged else "open"
+        torque = max((abs(t) for t in self.torques.values()), default=0.0)
+        relative = max(abs(self.speeds[p] - self.speeds[list(self.ports)[2]]) for p in list(self.ports)[:2])
+        if torque == 0.0 or self.loss_direction == 0 and abs(self.rolling_power) <= 1e-9 * max(1.0, torque):
+            return "locked" if relative <= 1e-9 * max(1.0, max(abs(v) for v in self.speeds.values())) else "idle"
+        return "rolling"
+
+
+@dataclass(frozen=True)
+class SelfLocking:
+    """The train self-locks in the asked direction.
+
+    Attributes
+    ----------
+    message : str
+    formal_efficiency : float or None
+        The (≤ 0) efficiency the loss rule gives formally; not an efficiency.
+    thresholds : mapping element → η0
+        For each lossy element, the value of its stationary efficiency below
+        which the train self-locks (others unchanged); absent if none in (0, 1].
+
+    References
+    ----------
+    Brandenberger 1952, text to Bild 9 (self-locking at η = bd/ac); DESIGN.md §3.
+    """
+
+    message: str
+    formal_efficiency: float | None
+    thresholds: Mapping[str, float] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Solution:
+    """Result of :func:`epicyclic.solve`: shafts, elements, efficiency, warnings.
+
+    Attributes
+    ----------
+    shafts : mapping name → ShaftState
+    elements : mapping name → ElementState
+    input_power, output_power, loss : float
+        W; input = Σ power of the drives, output = −Σ power of the loads.
+    efficiency : float or None
+        output/input; None when the train self-locks or has no drive/load.
+    self_locking : SelfLocking or None
+    circulating_power : float
+        Largest power through any element port as a multiple of the input
+        power (> 1 means power circulates inside the train).
+    degrees_of_freedom : int
+        Of the train (speeds to give), before the given speeds.
+    warnings : tuple of str
+    ideal : Solution or None
+        The lossless solution at the same operating point.
+    """
+
+    train: GearTrain
+    operating_point: OperatingPoint
+    shafts: Mapping[str, ShaftState]
+    elements: Mapping[str, ElementState]
+    input_power: float
+    output_power: float
+    loss: float
+    efficiency: float | None
+    self_locking: SelfLocking | None
+    circulating_power: float
+    degrees_of_freedom: int
+    warnings: tuple[str, ...] = ()
+    ideal: Solution | None = None
+
+    # ------------------------------------------------------------------ shortcuts
+    def speed(self, shaft: str) -> float:
+        """Speed of ``shaft`` in 1/min."""
+        return self._shaft(shaft).speed
+
+    def torque(self, shaft: str) -> float:
+        """External torque on ``shaft`` in N·m."""
+        return self._shaft(shaft).torque
+
+    def power(self, shaft: str) -> float:
+        """External power at ``shaft`` in W (positive into the train)."""
+        return self._shaft(shaft).power
+
+    def _shaft(self, shaft: str) -> ShaftState:
+        try:
+            return self.shafts[shaft]
+        except KeyError:
+            from ..errors import UnknownShaftError
+
+            raise UnknownShaftError(shaft, list(self.shafts), "solution") from None
+
+    @property
+    def drives(self) -> tuple[str, ...]:
+        return tuple(s.name for s in self.shafts.values() if s.role == "drive")
+
+    @property
+    def loads(self) -> tuple[str, ...]:
+        return tuple(s.name for s in self.shafts.values() if s.role == "load")
+
+    @property
+    def is_self_locking(self) -> bool:
+        return self.self_locking is not None
+
+    @property
+    def ratio(self) -> float | None:
+        """Speed ratio n_drive/n_load for one drive and one load (None otherwise)."""
+        if len(self.drives) != 1 or len(self.loads) != 1:
+            return None
+        out = self.speed(self.loads[0])
+        return None if out == 0 else self.speed(self.drives[0]) / out
+
+    # ------------------------------------------------------------------ rendering
+    def to_dict(self) -> dict[str, Any]:
+        """Plain data (JSON-ready) with units stated; see :mod:`epicyclic.results.render`."""
+        from .render import solution_to_dict
+
+        return solution_to_dict(self)
+
+    def table(self) -> str:
+        """A plain-text table for terminals."""
+        from .render import solution_table
+
+        return solution_table(self)
+
+    def _repr_html_(self) -> str:
+        from .render import solution_html
+
+        return solution_html(self)
+
+    def __str__(self) -> str:
+        return self.table()
+
+    def __repr__(self) -> str:
+        if self.self_locking is not None:
+            state = "self-locking"
+        elif self.efficiency is None:
+            state = "efficiency n/a"
+        else:
+            state = f"efficiency {self.efficiency:.4f}"
+        return (
+            f"<Solution {self.train.name!r}: {state}, input {self.input_power:.6g} W, "
+            f"loss {self.loss:.6g} W, {len(self.shafts)} shafts, {len(self.elements)} elements>"
+        )
