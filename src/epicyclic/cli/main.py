@@ -1,0 +1,31 @@
+"""Entry point of the ``epicyclic`` command (typer application).
+
+Each sub-command lives in its own module of this package and is registered
+here.  Exit codes: 0 success, 2 bad input (one-paragraph message, no
+traceback), 1 internal error.
+"""
+
+from __future__ import annotations
+
+import typer
+
+app = typer.Typer(
+    name="epicyclic",
+    help="Analyse epicyclic (planetary) gear trains: speeds, torques, losses, efficiency, pictures.",
+    no_args_is_help=True,
+    add_completion=True,
+)
+
+
+@app.callback()
+def _root() -> None:
+    """epicyclic — planetary gear train analysis."""
+
+
+def main() -> None:
+    """Console-script entry point."""
+    app()
+
+
+if __name__ == "__main__":
+    main()
