@@ -133,10 +133,10 @@ def solve_batch(
     >>> import numpy as np
     >>> from epicyclic import GearTrain, PlanetarySet, Brake
     >>> train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", -2.0, 0.97), Brake("B", "ring")])
-    >>> res = solve_batch(train, speeds={"sun": np.linspace(100, 3000, 5)},
-    ...                   torques={"sun": np.array([10, -10, 10, -10, 10])})
-    >>> res.efficiency.round(4).tolist()
-    [0.98, 0.9798, 0.98, 0.9798, 0.98]
+    >>> res = solve_batch(train, speeds={"sun": np.linspace(100, 3000, 4)},
+    ...                   torques={"sun": 10.0}, drives=["sun"], loads=["carrier"])
+    >>> res.efficiency.round(4).tolist(), res.patterns
+    ([0.98, 0.98, 0.98, 0.98], 1)
     """
     (speed_in, torque_in, power_in), shape = _broadcast([speeds, torques or {}, powers or {}])
     template = OperatingPoint(

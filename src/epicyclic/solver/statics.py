@@ -80,6 +80,15 @@ class TorqueSolver:
             if sub.is_consistent(sub.inverse @ sub_rhs, sub_rhs, float(np.max(np.abs(g)))):
                 culprits.append(shaft)
         culprits = culprits or list(self.given)
+        if len(self.given) == 1:
+            shaft = self.given[0]
+            raise ContradictionError(
+                f"the torque given at {shaft!r} cannot be balanced: no other shaft of the train takes "
+                "torque from outside. Name the shafts where power leaves (loads) or enters (drives), "
+                "or hold a shaft with a brake.",
+                culprits,
+                "torque",
+            )
         raise ContradictionError(
             "the given torques/powers contradict each other: at "
             + ", ".join(repr(s) for s in self.given)
