@@ -153,6 +153,8 @@ def solve_batch(
     kin = speed_solver(mats, given_speed)
     moving = kin.speeds(g) if given_speed else np.zeros((len(mats.speed_index), points))
     kin.check(g, moving)
+    for r, shaft in enumerate(given_speed):  # givens exactly, not round-off
+        moving[mats.speed_index[shaft]] = g[r]
     n = np.vstack([moving, np.zeros((1, points))])  # housing last
     shaft_row = {s: k for k, s in enumerate(train.shafts)}
 
@@ -254,6 +256,7 @@ def solve_batch(
     loss = sum(losses.values(), np.zeros(points))
     with np.errstate(divide="ignore", invalid="ignore"):
         efficiency = np.where((drive_power > 0) & ~self_locking, load_power / drive_power, np.nan)
+    efficiency = np.where((efficiency > 1.0) & (efficiency <= 1.0 + 1e-9), 1.0, efficiency)  # round-off
 
     def shaped(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape)

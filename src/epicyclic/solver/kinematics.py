@@ -145,5 +145,6 @@ def solve_speeds(mats: TrainMatrices, speeds: Mapping[str, float]) -> dict[str, 
     n = solver.speeds(values)
     solver.check(values, n)
     result = {s: float(n[c]) for s, c in mats.speed_index.items()}
+    result.update({s: float(v) for s, v in zip(given, values)})  # givens exactly, not round-off
     result[HOUSING] = 0.0
     return result

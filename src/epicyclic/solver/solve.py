@@ -246,6 +246,8 @@ def _build(train, op, mats, speeds, x, pattern, solver: TorqueSolver, roles, ide
     load_power = -sum(s.power for s in shafts.values() if s.role == "load")
     loss = sum(e.loss for e in elements.values())
     efficiency = load_power / drive_power if drive_power > 0 else None
+    if efficiency is not None and 1.0 < efficiency <= 1.0 + 1e-9:
+        efficiency = 1.0  # round-off of a lossless path, never above 1
     port_power = max((abs(p) for e in elements.values() for p in e.port_powers.values()), default=0.0)
     circulating = port_power / drive_power if drive_power > 0 else 0.0
     warnings = []
