@@ -1,0 +1,302 @@
+"""Units at the edges: parse and print the sources' units with pint.
+
+The core works on plain floats in **1/min, N·m and W** (DESIGN.md §3).  This
+module is the only place where units are parsed or converted.  It uses its own
+:class:`pint.UnitRegistry` (never pint's application registry) with the
+definitions the sources need and without pint's traps:
+
+* ``PS`` is the metric horsepower, 75 kp·m/s = 735.49875 W (pint's default
+  reads it as petasiemens);
+* ``U`` is one revolution (*Umdrehung*), so ``U/min``, ``1/min`` and ``rpm``
+  are the same unit (pint's default reads ``U`` as an enzyme unit);
+* the angle unit is the *turn*: ``rad`` is 1/(2π) turn, so ``rad/s`` converts
+  to 1/min with the factor 30/π and ``rpm`` never goes through Hz and radians
+  (pint's default turns 60 rpm into 6.28 Hz);
+* ``kp`` (kilopond) is 9.80665 N; a *torque* written as mass × length
+  (``cm*kg``, ``m*kg``) is read in the sources' sense as kp·cm, kp·m;
+* ``hp`` (mechanical horsepower, 745.7 W), ``lbf*ft``, ``kW``, ``N*m`` are
+  pint's own.
+
+Examples
+--------
+>>> to_core("3 PS", "power")
+2206.49625
+>>> to_core("1500 U/min", "speed"), to_core("1500 rpm", "speed")
+(1500.0, 1500.0)
+>>> round(to_core("143.24 cm*kg", "torque"), 4)  # Brandenberger's cm kg = kp·cm
+14.047
+>>> round(from_core(2206.49625, "power", "PS"), 6)
+3.0
+
+References
+----------
+Brandenberger 1952, text to eq. (2): M = 71620 N/n cm kg with N in PS and n in
+U/min (71620 = 75·100·60/(2π)).  DIN 1301 for PS = 735.49875 W.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import pint
+
+from .errors import EpicyclicError
+
+__all__ = [
+    "CORE_UNITS",
+    "QUANTITIES",
+    "UnitError",
+    "Units",
+    "from_core",
+    "registry",
+    "to_core",
+    "unit_factor",
+]
+
+#: The core unit of every quantity the I/O layer converts.
+CORE_UNITS = {"speed": "1/min", "torque": "N*m", "power": "W"}
+
+#: Quantities that carry units, with examples of accepted units (for messages).
+QUANTITIES = {
+    "speed": "1/min, U/min, rpm, 1/s, rad/s",
+    "torque": "N*m, kN*m, kp*cm, cm*kg, kp*m, lbf*ft",
+    "power": "W, kW, PS, hp",
+}
+
+#: Standard gravity (kp = 9.80665 N exactly).
+G0 = 9.80665
+
+_DEFINITIONS = (
+    "revolution = 1 = rev = turn = U = Umdrehung",
+    "radian = revolution / (2 * pi) = rad",
+    "rpm = revolution / minute",
+    "PS = 735.49875 W = metric_horsepower_PS",
+    "kp = 9.80665 N = kilopond",
+)
+
+
+class UnitError(EpicyclicError, ValueError):
+    """A value or unit that cannot be read, or has the wrong dimension.
+
+    Attributes
+    ----------
+    field : str
+        Where the value was given (for example ``"operating_point.powers.II"``).
+    quantity : str
+        ``"speed"``, ``"torque"`` or ``"power"``.
+    given : object
+        What was given.
+    """
+
+    def __init__(self, message: str, field: str = "", quantity: str = "", given: object = None):
+        self.field = field
+        self.quantity = quantity
+        self.given = given
+        super().__init__(message)
+
+
+@lru_cache(maxsize=1)
+def registry() -> pint.UnitRegistry:
+    """The project's unit registry (built once; pint's defaults plus the sources' units)."""
+    ureg = pint.UnitRegistry(on_redefinition="ignore", cache_folder=None)
+    for definition in _DEFINITIONS:
+        ureg.define(definition)
+    return ureg
+
+
+def _parse(text: str, field: str, quantity: str) -> pint.Quantity:
+    ureg = registry()
+    if len(text) > 200:
+        raise UnitError(f"{field}: {text[:40]!r}… is too long for a {quantity} (at most 200 characters).",
+                        field, quantity, text)
+    try:
+        value = ureg.Quantity(text)
+    except Exception as exc:  # pint's parser raises many kinds; all mean "cannot read"
+        reason = str(exc) if str(exc) and not isinstance(exc, AssertionError) else "malformed number or unit"
+        raise UnitError(
+            f"{field}: cannot read {text!r} as a {quantity} ({reason}). "
+            f"Write a number and a unit, e.g. {_example(quantity)!r} (units: {QUANTITIES[quantity]}).",
+            field, quantity, text,
+        ) from None
+    if not isinstance(value, pint.Quantity):  # a plain number
+        value = ureg.Quantity(float(value), "")
+    return value
+
+
+def _example(quantity: str) -> str:
+    return {"speed": "1500 U/min", "torque": "143.24 kp*cm", "power": "3 PS"}[quantity]
+
+
+def _check_quantity(quantity: str) -> None:
+    if quantity not in CORE_UNITS:
+        raise UnitError(
+            f"unknown quantity {quantity!r}; expected one of {', '.join(CORE_UNITS)}.",
+            quantity=quantity, given=quantity,
+        )
+
+
+def _to_core_quantity(value: pint.Quantity, quantity: str, field: str, given: object) -> float:
+    ureg = registry()
+    core = ureg.Quantity(1.0, CORE_UNITS[quantity])
+    if quantity == "torque" and value.dimensionality == ureg.Quantity(1.0, "kg*m").dimensionality:
+        value = value * ureg.Quantity(G0, "N/kg")  # cm kg in the sources' sense: kp·cm
+    if value.dimensionality != core.dimensionality:
+        raise UnitError(
+            f"{field}: {given!r} is not a {quantity}: its unit has the dimension "
+            f"{value.dimensionality or 'dimensionless'}, expected that of {CORE_UNITS[quantity]} "
+            f"(units: {QUANTITIES[quantity]}).",
+            field, quantity, given,
+        )
+    result = float(value.to(CORE_UNITS[quantity]).magnitude)
+    if not math.isfinite(result):
+        raise UnitError(f"{field}: {given!r} is not a finite {quantity}.", field, quantity, given)
+    return result
+
+
+@lru_cache(maxsize=256)
+def unit_factor(unit: str, quantity: str, field: str = "units") -> float:
+    """Core units per one ``unit``: ``value_core = value_in_unit · factor``.
+
+    Parameters
+    ----------
+    unit : str
+        A unit such as ``"U/min"``, ``"kp*cm"``, ``"PS"``.
+    quantity : {"speed", "torque", "power"}
+    field : str
+        Where the unit was given (for the message).
+
+    Raises
+    ------
+    UnitError
+        The unit is unknown or has the wrong dimension.
+
+    Examples
+    --------
+    >>> unit_factor("PS", "power")
+    735.49875
+    >>> round(unit_factor("rad/s", "speed"), 6)  # 30/π, never through Hz
+    9.549297
+    """
+    _check_quantity(quantity)
+    if not isinstance(unit, str) or not unit.strip():
+        raise UnitError(
+            f"{field}: the {quantity} unit must be a non-empty string such as "
+            f"{CORE_UNITS[quantity]!r}, got {unit!r}.", field, quantity, unit,
+        )
+    parsed = _parse(f"1 {unit}" if not unit.strip()[0].isdigit() else unit, field, quantity)
+    return _to_core_quantity(parsed, quantity, field, unit)
+
+
+def to_core(value: object, quantity: str, *, field: str = "value", default_unit: str | None = None) -> float:
+    """Convert a value with or without unit into the core unit of ``quantity``.
+
+    Parameters
+    ----------
+    value : float, int or str
+        A number (read in ``default_unit``, or the core unit if that is None)
+        or a string with number and unit, e.g. ``"3 PS"``, ``"1500 U/min"``.
+    quantity : {"speed", "torque", "power"}
+    field : str
+        Where the value was given; named in error messages.
+    default_unit : str, optional
+        Unit of plain numbers.
+
+    Returns
+    -------
+    float
+        The value in 1/min, N·m or W.
+
+    Raises
+    ------
+    UnitError
+        Unreadable value, unknown unit, wrong dimension ("3 m" for a power).
+
+    Examples
+    --------
+    >>> to_core(2, "power", default_unit="kW")
+    2000.0
+    >>> to_core("3 m", "power", field="powers.II")
+    Traceback (most recent call last):
+    ...
+    epicyclic.units.UnitError: powers.II: '3 m' is not a power: its unit has the dimension [length], expected that of W (units: W, kW, PS, hp).
+    """
+    _check_quantity(quantity)
+    if isinstance(value, bool):
+        raise UnitError(f"{field}: expected a {quantity}, got the boolean {value!r}.", field, quantity, value)
+    if isinstance(value, (int, float)):
+        number = float(value)
+        if not math.isfinite(number):
+            raise UnitError(f"{field}: expected a finite {quantity}, got {value!r}.", field, quantity, value)
+        if default_unit is None:
+            return number
+        return number * unit_factor(default_unit, quantity, field)
+    if not isinstance(value, str):
+        raise UnitError(
+            f"{field}: expected a number or a string with unit such as {_example(quantity)!r}, "
+            f"got {type(value).__name__} {value!r}.", field, quantity, value,
+        )
+    text = value.strip()
+    if not text:
+        raise UnitError(f"{field}: expected a {quantity}, got an empty string.", field, quantity, value)
+    parsed = _parse(text, field, quantity)
+    if parsed.dimensionless and parsed.units == registry().dimensionless:
+        # a bare number in a string: same as a plain number
+        return to_core(float(parsed.magnitude), quantity, field=field, default_unit=default_unit)
+    return _to_core_quantity(parsed, quantity, field, value)
+
+
+def from_core(value: float, quantity: str, unit: str) -> float:
+    """Convert ``value`` from the core unit of ``quantity`` into ``unit``.
+
+    >>> round(from_core(14.047045, "torque", "kp*cm"), 2)
+    143.24
+    """
+    return value / unit_factor(unit, quantity)
+
+
+@dataclass(frozen=True)
+class Units:
+    """The units a user chose for speeds, torques and powers (defaults: core units).
+
+    Parameters
+    ----------
+    speed, torque, power : str
+        Unit strings; validated on construction.
+
+    Examples
+    --------
+    >>> u = Units(speed="U/min", torque="kp*cm", power="PS")
+    >>> round(u.power_from_core(2206.49625), 6)
+    3.0
+    """
+
+    speed: str = CORE_UNITS["speed"]
+    torque: str = CORE_UNITS["torque"]
+    power: str = CORE_UNITS["power"]
+
+    def __post_init__(self) -> None:
+        for quantity in CORE_UNITS:
+            unit_factor(getattr(self, quantity), quantity, f"units.{quantity}")
+
+    def of(self, quantity: str) -> str:
+        """The unit chosen for ``quantity``."""
+        _check_quantity(quantity)
+        return getattr(self, quantity)
+
+    def convert(self, value: float | None, quantity: str) -> float | None:
+        """A core value in the chosen unit (None stays None)."""
+        return None if value is None else from_core(value, quantity, self.of(quantity))
+
+    def speed_from_core(self, value: float) -> float:
+        return from_core(value, "speed", self.speed)
+
+    def torque_from_core(self, value: float) -> float:
+        return from_core(value, "torque", self.torque)
+
+    def power_from_core(self, value: float) -> float:
+        return from_core(value, "power", self.power)
+
+    def to_dict(self) -> dict[str, str]:
+        return {"speed": self.speed, "torque": self.torque, "power": self.power}
