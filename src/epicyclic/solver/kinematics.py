@@ -97,7 +97,7 @@ def _contradiction(mats: TrainMatrices, given: Sequence[str], values: np.ndarray
             details.append(
                 f"n[{shaft}] = {values[k]:g} 1/min is given, but the train"
                 + (" and the other given speeds imply " if others else " implies ")
-                + f"n[{shaft}] = {x[column]:.6g} 1/min"
+                + f"n[{shaft}] = {(0.0 if abs(x[column]) < 1e-9 * max(scale, 1.0) else x[column]):.6g} 1/min"
             )
     if not culprits:
         culprits = list(given)
