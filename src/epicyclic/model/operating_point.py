@@ -53,6 +53,10 @@ class OperatingPoint:
         Shafts where power is put in / taken out.  Shafts with a given torque or
         power are external too.  Every other shaft (but the housing) carries no
         external torque.
+    connected : iterable of str
+        Further shafts connected to the outside whose role (drive or load)
+        follows from the solution, e.g. both ends of a train run in either
+        direction.
 
     Examples
     --------
@@ -66,12 +70,13 @@ class OperatingPoint:
     powers: Mapping[str, float] = field(default_factory=dict)
     drives: tuple[str, ...] = ()
     loads: tuple[str, ...] = ()
+    connected: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "speeds", _frozen_values(self.speeds, "speeds"))
         object.__setattr__(self, "torques", _frozen_values(self.torques, "torques"))
         object.__setattr__(self, "powers", _frozen_values(self.powers, "powers"))
-        for name in ("drives", "loads"):
+        for name in ("drives", "loads", "connected"):
             value = getattr(self, name)
             if isinstance(value, str):
                 value = (value,)
@@ -91,7 +96,7 @@ class OperatingPoint:
     def external_shafts(self) -> tuple[str, ...]:
         """Shafts that carry an external torque (drives, loads, given torques/powers)."""
         ordered: list[str] = []
-        for group in (self.drives, self.loads, self.torques, self.powers):
+        for group in (self.drives, self.loads, self.connected, self.torques, self.powers):
             for shaft in group:
                 if shaft not in ordered:
                     ordered.append(shaft)

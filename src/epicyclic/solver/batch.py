@@ -113,6 +113,7 @@ def solve_batch(
     powers: Mapping[str, object] | None = None,
     drives: Sequence[str] = (),
     loads: Sequence[str] = (),
+    connected: Sequence[str] = (),
 ) -> BatchSolution:
     """Solve ``train`` at many operating points at once.
 
@@ -122,7 +123,8 @@ def solve_batch(
     speeds, torques, powers : mapping shaft → array_like
         As in :class:`~epicyclic.OperatingPoint` (1/min, N·m, W), each value
         an array; all broadcast to one shape.
-    drives, loads : sequence of str
+    drives, loads, connected : sequence of str
+        As in :class:`~epicyclic.OperatingPoint`.
 
     Returns
     -------
@@ -142,6 +144,7 @@ def solve_batch(
     template = OperatingPoint(
         speeds={k: 0.0 for k in speed_in}, torques={k: 0.0 for k in torque_in},
         powers={k: 0.0 for k in power_in}, drives=tuple(drives), loads=tuple(loads),
+        connected=tuple(connected),
     )
     _validate(train, template)
     mats = matrices(train, template.external_shafts)

@@ -45,7 +45,7 @@ ZERO_POWER = 1e-9
 def _validate(train: GearTrain, op: OperatingPoint) -> None:
     for shaft in op.shaft_names():
         train.check_shaft(shaft)
-    for group in ("drives", "loads"):
+    for group in ("drives", "loads", "connected"):
         if HOUSING in getattr(op, group):
             raise OperatingPointError(
                 f"operating point: the housing cannot be one of the {group}; it only takes reactions."
@@ -339,9 +339,9 @@ def _self_locking(solution: Solution, consistent: bool, mats, given, values, spe
     if wrong:
         reason = (
             "with losses, " + ", ".join(repr(s) for s in wrong)
-            + " would have to deliver power although designated as load" if any(
+            + " would have to deliver power although it is the load" if any(
                 solution.shafts[s].role == "load" for s in wrong) else
-            "with losses, " + ", ".join(repr(s) for s in wrong) + " would have to absorb power although designated as drive"
+            "with losses, " + ", ".join(repr(s) for s in wrong) + " would have to absorb power although it is the drive"
         )
     else:
         reason = "no loss-direction pattern is consistent with the given load"
