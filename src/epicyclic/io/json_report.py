@@ -1,0 +1,145 @@
+"""JSON report with a documented, stable schema, in the user's units.
+
+The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
+(core units) with every dimensioned number converted into the chosen
+:class:`~epicyclic.units.Units`, wrapped with metadata.  Layout (schema
+``"epicyclic-report/1"``, documented in ``docs/file-format.md``)::
+
+    {
+      "schema": "epicyclic-report/1",
+      "generator": "epicyclic 0.1.0",
+      "title": str, "source": str | null,
+      "units": {"speed": str, "torque": str, "power": str},
+      "solution": {                      # Solution.to_dict(), converted
+        "shafts": {name: {"speed", "torque", "power", "role"}},
+        "elements": {name: {"kind", "status", "ports", "torques", "speeds", "rolling_power",
+                            "coupling_power", "loss", "loss_direction", "efficiency_factor",
+                            "engaged", "slip_speed", "planet_speeds", "planet_speeds_relative"}},
+        "input_power", "output_power", "loss", "efficiency", "self_locking",
+        "circulating_power", "degrees_of_freedom", "warnings", "ratio"
+      },
+      "ideal": {... same as "solution", lossless ...} | null
+    }
+
+Efficiencies, ratios, ``circulating_power`` (a multiple of the input power)
+and ``loss_direction`` (w) are dimensionless.
+
+Examples
+--------
+>>> from epicyclic.io import loads_train_file
+>>> f = loads_train_file('''
+... [units]
+... power = "kW"
+... [[planetary]]
+... name = "P"; sun = "in"; ring = "ring"; carrier = "out"; stationary_ratio = -2
+... [[brake]]
+... name = "B"; shaft = "ring"
+... [operating_point]
+... speeds = { in = 3000 }; powers = { in = 10 }; drives = ["in"]; loads = ["out"]
+... ''')
+>>> report = report_dict(f.solve(), f.units)
+>>> report["units"]["power"], round(report["solution"]["output_power"], 6)
+('kW', 10.0)
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+from ..results.solution import Solution
+from ..units import Units
+
+__all__ = ["SCHEMA", "report_dict", "json_report"]
+
+#: Identifier of the layout; bumped on any incompatible change.
+SCHEMA = "epicyclic-report/1"
+
+
+def _convert_solution(data: dict[str, Any], units: Units) -> dict[str, Any]:
+    speed, torque, power = units.speed_from_core, units.torque_from_core, units.power_from_core
+    out = dict(data)
+    out.pop("schema", None)
+    out.pop("train", None)
+    out["units"] = units.to_dict()
+    out["shafts"] = {
+        name: {**s, "speed": speed(s["speed"]), "torque": torque(s["torque"]), "power": power(s["power"])}
+        for name, s in data["shafts"].items()
+    }
+    elements = {}
+    for name, e in data["elements"].items():
+        converted = dict(e)
+        converted["torques"] = {p: torque(t) for p, t in e["torques"].items()}
+        converted["speeds"] = {p: speed(n) for p, n in e["speeds"].items()}
+        for key in ("rolling_power", "coupling_power", "loss"):
+            converted[key] = power(e[key])
+        if e.get("slip_speed") is not None:
+            converted["slip_speed"] = speed(e["slip_speed"])
+        converted["planet_speeds"] = [speed(n) for n in e["planet_speeds"]]
+        converted["planet_speeds_relative"] = [speed(n) for n in e["planet_speeds_relative"]]
+        elements[name] = converted
+    out["elements"] = elements
+    for key in ("input_power", "output_power", "loss"):
+        out[key] = power(data[key])
+    return out
+
+
+def _finite(value: Any) -> Any:
+    """Replace non-finite floats (not valid JSON) by None, recursively."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(v) for v in value]
+    return value
+
+
+def report_dict(
+    solution: Solution,
+    units: Units | None = None,
+    *,
+    title: str | None = None,
+    source: str | None = None,
+) -> dict[str, Any]:
+    """The report as plain data (JSON-ready), numbers in ``units``.
+
+    Parameters
+    ----------
+    solution : Solution
+    units : Units, optional
+        Output units; core units (1/min, N·m, W) by default.
+    title, source : str, optional
+        Title (default: the train's name) and input file.
+
+    Returns
+    -------
+    dict
+        See the module docstring for the layout.
+    """
+    from .. import __version__
+
+    units = units or Units()
+    body = _convert_solution(solution.to_dict(), units)
+    body["ratio"] = solution.ratio
+    ideal = None
+    if solution.ideal is not None:
+        ideal = _convert_solution(solution.ideal.to_dict(), units)
+        ideal["ratio"] = solution.ideal.ratio
+    return _finite({
+        "schema": SCHEMA,
+        "generator": f"epicyclic {__version__}",
+        "title": title or solution.train.name,
+        "source": source,
+        "units": units.to_dict(),
+        "solution": body,
+        "ideal": ideal,
+    })
+
+
+def json_report(solution: Solution, units: Units | None = None, *, title: str | None = None,
+                source: str | None = None, indent: int = 2) -> str:
+    """The report as JSON text (see :func:`report_dict`)."""
+    return json.dumps(report_dict(solution, units, title=title, source=source), indent=indent,
+                      ensure_ascii=False) + "\n"
