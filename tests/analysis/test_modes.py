@@ -156,3 +156,13 @@ def test_mode_table_renders():
     assert "Tafel 1" in text and "self-locking (η0 < 0.9804)" in text
     assert "<table>" in table._repr_html_()
     assert table.to_dict()["modes"][0]["label"] == "I"
+
+
+def test_exactly_at_the_self_locking_limit_is_self_locking():
+    # Regression (found by hypothesis): plus set i0 = 0.5, sun held, ring → carrier at η0 = 0.5.
+    # Closed form η = (i0 − η0)/(i0 − 1) = 0: no power reaches the load, so the train self-locks
+    # (DESIGN.md §3: formal efficiency ≤ 0) — never an efficiency of −0.0000.
+    train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", 0.5, 0.5), Brake("B", "sun")])
+    sol = solve(train, OperatingPoint(speeds={"ring": 50}, torques={"ring": 1}, drives=["ring"], loads=["carrier"]))
+    assert sol.efficiency is None and sol.is_self_locking
+    assert "self-locking limit" in sol.self_locking.message

@@ -199,11 +199,13 @@ def solve_batch(
     for attempt in range(MAX_PATTERN_TRIES):
         if pending.size == 0:
             break
-        unique, inverse = np.unique(pattern[:, pending].T, axis=0, return_inverse=True)
-        inverse = np.asarray(inverse).ravel()
+        # one integer code per pattern (base 3) is much faster to group than rows
+        codes = ((pattern[:, pending] + 1) * (3 ** np.arange(pattern.shape[0]))[:, None]).sum(axis=0)
+        unique_codes, first_index, inverse = np.unique(codes, return_index=True, return_inverse=True)
         still_pending = []
-        for k, row in enumerate(unique):
-            members = pending[inverse == k]
+        for k in range(unique_codes.size):
+            row = pattern[:, pending[first_index[k]]]
+            members = pending[inverse.ravel() == k]
             solver = torque_solver(mats, given, row)
             solved.add(tuple(int(w) for w in row))
             xs = solver.operator @ tau[:, members]
@@ -255,7 +257,9 @@ def solve_batch(
         load_power -= np.where(is_load, power[s], 0.0)
         wrong |= is_drive & (power[s] < -1e-9 * scale)
         wrong |= is_load & (power[s] > 1e-9 * scale)
-    self_locking = wrong | ~consistent
+    with np.errstate(divide="ignore", invalid="ignore"):
+        nothing_out = (drive_power > 0) & (load_power <= 1e-12 * drive_power)  # formal η ≤ 0
+    self_locking = wrong | ~consistent | nothing_out
     loss = sum(losses.values(), np.zeros(points))
     with np.errstate(divide="ignore", invalid="ignore"):
         efficiency = np.where((drive_power > 0) & ~self_locking, load_power / drive_power, np.nan)

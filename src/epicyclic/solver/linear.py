@@ -48,7 +48,12 @@ class Pseudoinverse:
         return np.abs(self.matrix @ x - b)
 
     def is_consistent(self, x: np.ndarray, b: np.ndarray, scale: float | np.ndarray) -> np.ndarray | bool:
-        """Whether A x = b holds to round-off, relative to ``scale``."""
+        """Whether A x = b holds to round-off, relative to ``scale``.
+
+        With full row rank every right-hand side is reachable, so no check is needed.
+        """
+        if self.rank == self.matrix.shape[0]:
+            return True
         res = self.residual(x, b)
         limit = 1e-8 * (np.asarray(scale) + 1e-300)
         return np.all(res <= limit, axis=0)

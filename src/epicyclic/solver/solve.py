@@ -332,7 +332,8 @@ def _self_locking(solution: Solution, consistent: bool, mats, given, values, spe
         s.name for s in solution.shafts.values()
         if (s.role == "load" and s.power > 1e-9 * scale) or (s.role == "drive" and s.power < -1e-9 * scale)
     ]
-    if consistent and not wrong:
+    transmits = solution.efficiency is None or solution.efficiency > 1e-12
+    if consistent and not wrong and transmits:
         return None
     formal = _formal_efficiency(mats, given, values, speed_vector, first[2], solution)
     thresholds = _thresholds(mats, given, values, speed_vector, first[2], solution)
@@ -343,8 +344,10 @@ def _self_locking(solution: Solution, consistent: bool, mats, given, values, spe
                 solution.shafts[s].role == "load" for s in wrong) else
             "with losses, " + ", ".join(repr(s) for s in wrong) + " would have to absorb power although it is the drive"
         )
-    else:
+    elif not consistent:
         reason = "no loss-direction pattern is consistent with the given load"
+    else:
+        reason = "with losses, no power reaches the load (the train is exactly at its self-locking limit)"
     where = ", ".join(f"{name}: η0 < {eta:.6g}" for name, eta in thresholds.items())
     message = (
         f"the train self-locks in this direction of power flow: {reason}"
