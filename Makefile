@@ -15,6 +15,7 @@ $(STAMP): pyproject.toml
 
 demo: $(STAMP)
 	$(PY) -m epicyclic.demo
+	$(VENV)/bin/epicyclic analyze examples/brandenberger_1952.toml --format html --out out/brandenberger_1952.html
 
 test: $(STAMP)
 	$(PY) -m pytest -q src tests

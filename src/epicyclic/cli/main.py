@@ -22,6 +22,13 @@ def _root() -> None:
     """epicyclic — planetary gear train analysis."""
 
 
+from . import analyze as _analyze, explain as _explain, modes as _modes  # noqa: E402
+
+app.command("analyze")(_analyze.analyze)
+app.command("modes")(_modes.modes)
+app.command("explain")(_explain.explain)
+
+
 def main() -> None:
     """Console-script entry point."""
     app()

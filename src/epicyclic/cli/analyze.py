@@ -1,0 +1,65 @@
+"""``epicyclic analyze FILE``: solve a train description and report it.
+
+Formats: ``table`` (terminal), ``json`` (schema ``epicyclic-report/1``),
+``markdown`` and ``html`` (one self-contained file).  Numbers are in the
+file's ``[units]`` (core units 1/min, N·m, W otherwise).
+"""
+
+from __future__ import annotations
+
+from enum import Enum
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from ..io import load_train_file
+from ..io.html_report import html_report
+from ..io.json_report import json_report
+from ..io.tables import markdown_report, text_report
+from ._common import emit, guarded
+
+__all__ = ["ReportFormat", "analyze"]
+
+
+class ReportFormat(str, Enum):
+    """Output formats of ``analyze``."""
+
+    table = "table"
+    json = "json"
+    markdown = "markdown"
+    html = "html"
+
+
+@guarded
+def analyze(
+    file: Annotated[Path, typer.Argument(help="Train description (.toml), see docs/file-format.md.")],
+    format: Annotated[ReportFormat, typer.Option("--format", "-f", help="Output format.")] = ReportFormat.table,
+    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    gear: Annotated[Optional[str], typer.Option(
+        "--gear", "-g", help="Solve in this gear of the [transmission] schedule.")] = None,
+    lang: Annotated[str, typer.Option(help="Language of the worked solution in HTML reports: en or de.")] = "en",
+) -> None:
+    """Solve FILE: speeds, torques, powers, losses, efficiency, self-locking, circulating power."""
+    train_file = load_train_file(file)
+    if gear is not None:
+        from dataclasses import replace
+
+        from .. import ModelError
+
+        if train_file.transmission is None:
+            raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
+        train_file.transmission.train_in_gear(train_file.train, gear)  # validates the gear name
+        train_file = replace(train_file, gear=gear)
+    solution = train_file.solve()
+    units, title, source = train_file.units, train_file.title, str(file)
+    if format is ReportFormat.json:
+        text = json_report(solution, units, title=title, source=source)
+    elif format is ReportFormat.markdown:
+        text = markdown_report(solution, units, title=title)
+    elif format is ReportFormat.html:
+        text = html_report(solution, units, title=title, source=source, description=train_file.description,
+                           lang=lang)
+    else:
+        text = text_report(solution, units, title=title)
+    emit(text, out)

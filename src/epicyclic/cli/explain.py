@@ -1,0 +1,47 @@
+"""``epicyclic explain FILE``: the worked solution, equation by equation.
+
+``--lang de`` gives the German terms of the sources (Steg, Sonnenrad, Hohlrad,
+Standübersetzung, Wälzleistung, Kupplungsleistung, Wirkungsgrad).
+"""
+
+from __future__ import annotations
+
+from enum import Enum
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from ..explain import explain as worked_solution
+from ..io import load_train_file
+from ._common import emit, guarded
+
+__all__ = ["Language", "ExplainFormat", "explain"]
+
+
+class Language(str, Enum):
+    """Languages of the worked solution."""
+
+    en = "en"
+    de = "de"
+
+
+class ExplainFormat(str, Enum):
+    """Output formats of ``explain``."""
+
+    text = "text"
+    markdown = "markdown"
+
+
+@guarded
+def explain(
+    file: Annotated[Path, typer.Argument(help="Train description (.toml), see docs/file-format.md.")],
+    lang: Annotated[Language, typer.Option("--lang", "-l", help="Language: en or de.")] = Language.en,
+    format: Annotated[ExplainFormat, typer.Option("--format", "-f", help="Output format.")] = ExplainFormat.text,
+    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+) -> None:
+    """Show the worked solution of FILE: Willis, loss rule, torque balance, results, with numbers."""
+    train_file = load_train_file(file)
+    solution = train_file.solve()
+    result = worked_solution(solution, train_file.units, lang=lang.value, title=train_file.title)
+    emit(result.markdown() if format is ExplainFormat.markdown else result.text(), out)
