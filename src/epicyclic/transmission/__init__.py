@@ -1,0 +1,16 @@
+"""Multi-speed transmissions: shift schedules, per-gear analysis, exploration, a library."""
+
+from .explore import Combination, Exploration, explore
+from .results import GearResult, TransmissionAnalysis
+from .transmission import GearFreedomError, ShiftScheduleError, Transmission
+
+__all__ = [
+    "Combination",
+    "Exploration",
+    "GearFreedomError",
+    "GearResult",
+    "ShiftScheduleError",
+    "Transmission",
+    "TransmissionAnalysis",
+    "explore",
+]
