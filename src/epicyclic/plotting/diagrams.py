@@ -1,0 +1,342 @@
+"""Torque bars and power rectangles after Brandenberger 1952, Bild 5, 8 and 9.
+
+Torques are drawn as bars, powers as rectangles whose width is the speed
+(1/min) and whose height is the torque (N·m), so that the area is the power
+(``P = M·n·π/30`` W).  Power put into an element is hatched vertically, power
+taken out horizontally (Brandenberger: "Schraffiert man die Antriebsleistungen
+vertikal und die Abtriebsleistungen horizontal").
+
+The loss is its own rectangle, with the heavy outline of Bild 8: with the loss
+rule ``M_b' = −i0·η0^w·M_a'`` the torque of the central member that is driven
+relative to the carrier is smaller than without friction at the same other
+torque.  The loss rectangle has that torque difference as height and the
+member's speed *relative to the carrier* as width:
+
+* w = +1 (Bild 8): ``ΔM = M_b' − (−i0·M_a')``, width ``n_b − n_c``;
+* w = −1 (Bild 9): ``ΔM = M_a' − (−M_b'/i0)``, width ``n_a − n_c``.
+
+Its area ``|ΔM·Δn|·π/30`` equals the loss, and since only relative speeds
+enter it does not move when all speeds change by the same amount
+(Brandenberger: "Dieses Rechteck ist unabhängig von der jeweils gewählten
+Stelle A").  A fixed-axis stage is the same with the housing as carrier.
+
+References
+----------
+Brandenberger 1952, eqs. 2, 3', 7 and Bild 5, 8, 9 with Tabellen 1–3.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from ._common import ROLE_STYLE, RPM_TO_RAD_S, fmt, lever_elements, pyplot
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..results.solution import Solution
+
+__all__ = ["PowerRect", "ElementPowers", "PowerDiagram", "power_diagram", "TorqueBar", "TorqueDiagram",
+           "torque_diagram"]
+
+#: Powers below this fraction of the largest one count as zero (no hatching).
+_ZERO = 1e-9
+
+
+@dataclass(frozen=True)
+class PowerRect:
+    """A rectangle of the power diagram: width = speed, height = torque.
+
+    ``x0``/``width`` in 1/min, ``y0``/``height`` in N·m (height ≥ 0, the
+    torque's magnitude); ``power`` in W (signed: positive into the element);
+    ``role`` one of drive, load, loss, none.
+    """
+
+    label: str
+    x0: float
+    width: float
+    y0: float
+    height: float
+    power: float
+    role: str
+
+    @property
+    def area(self) -> float:
+        """|width·height|·π/30: the power the rectangle stands for, W."""
+        return abs(self.width * self.height) * RPM_TO_RAD_S
+
+
+@dataclass(frozen=True)
+class ElementPowers:
+    """Power rectangles of one element (set or stage), with its loss rectangle."""
+
+    element: str
+    kind: str
+    rects: tuple[PowerRect, ...]
+    loss_rect: PowerRect | None
+    loss: float
+    loss_direction: int
+
+    @property
+    def drive_power(self) -> float:
+        """Σ power put in at the ports, W."""
+        return sum(r.power for r in self.rects if r.power > 0)
+
+    @property
+    def load_power(self) -> float:
+        """Σ power taken out at the ports, W (positive)."""
+        return -sum(r.power for r in self.rects if r.power < 0)
+
+
+@dataclass(frozen=True)
+class PowerDiagram:
+    """Power rectangles of every geared element, with and without friction.
+
+    ``actual`` comes from the solution, ``ideal`` from ``solution.ideal`` (the
+    lossless solution at the same operating point); ``ideal`` is empty when the
+    solution has none.
+    """
+
+    title: str
+    actual: tuple[ElementPowers, ...]
+    ideal: tuple[ElementPowers, ...]
+
+    def to_dict(self) -> dict[str, Any]:
+        def one(e: ElementPowers) -> dict[str, Any]:
+            return {"element": e.element, "loss_W": e.loss, "loss_direction": e.loss_direction,
+                    "rects": [r.__dict__ for r in e.rects],
+                    "loss_rect": None if e.loss_rect is None else e.loss_rect.__dict__}
+
+        return {"title": self.title, "units": {"x": "1/min", "y": "N*m", "power": "W"},
+                "actual": [one(e) for e in self.actual], "ideal": [one(e) for e in self.ideal]}
+
+    def __repr__(self) -> str:
+        losses = ", ".join(f"{e.element} {fmt(e.loss)} W" for e in self.actual)
+        return f"<PowerDiagram {self.title!r}: loss rectangles {losses}>"
+
+    def plot(self) -> Any:
+        """Figure: one row per element, left without friction, right with friction."""
+        plt = pyplot()
+        rows = len(self.actual)
+        cols = 2 if self.ideal else 1
+        fig, axes = plt.subplots(rows, cols, figsize=(7.6 * cols, 4.4 * rows), squeeze=False)
+        for k, element in enumerate(self.actual):
+            panels = ([(self.ideal[k], "without friction")] if self.ideal else []) + [(element, "with friction")]
+            limits = _limits([p for p, _ in panels])
+            for ax, (data, what) in zip(axes[k], panels):
+                _draw_powers(ax, data, what, limits)
+        fig.suptitle(f"{self.title}: powers as areas (speed × torque), Brandenberger Bild 8/9", fontsize=12)
+        fig.tight_layout()
+        return fig
+
+
+def _limits(panels: list[ElementPowers]) -> tuple[float, float, float, float]:
+    xs, ys = [0.0], [0.0]
+    for p in panels:
+        for r in (*p.rects, *((p.loss_rect,) if p.loss_rect else ())):
+            xs += [r.x0, r.x0 + r.width]
+            ys += [r.y0, r.y0 + r.height]
+    dx = (max(xs) - min(xs)) or 1.0
+    dy = (max(ys) - min(ys)) or 1.0
+    return min(xs) - 0.08 * dx, max(xs) + 0.08 * dx, min(ys) - 0.05 * dy, max(ys) + 0.2 * dy
+
+
+def _draw_powers(ax: Any, data: ElementPowers, what: str, limits: tuple[float, float, float, float]) -> None:
+    from matplotlib.patches import Rectangle
+
+    seen: set[str] = set()
+    for rect in (*data.rects, *((data.loss_rect,) if data.loss_rect else ())):
+        style = ROLE_STYLE[rect.role]
+        label = style["label"] if rect.role not in seen else None
+        seen.add(rect.role)
+        heavy = rect.role == "loss"
+        ax.add_patch(Rectangle((rect.x0, rect.y0), rect.width, rect.height, facecolor=style["facecolor"],
+                               hatch=style["hatch"], edgecolor="black", lw=2.5 if heavy else 1.0, label=label))
+        if rect.width == 0.0:
+            continue  # a shaft at rest (the housing) carries no power: nothing to show
+        value = rect.area if rect.role == "loss" else _clean(rect.power, data)
+        text = f"{rect.label}\n{fmt(value)} W"
+        above = rect.role == "loss"
+        ax.text(rect.x0 + rect.width / 2, rect.y0 + (rect.height if above else rect.height / 2), text, ha="center",
+                va="bottom" if above else "center", fontsize=8,
+                bbox={"boxstyle": "round,pad=0.2", "fc": "white", "alpha": 0.85, "lw": 0})
+    ax.set_xlim(limits[0], limits[1])
+    ax.set_ylim(limits[2], limits[3])
+    ax.axvline(0, color="black", lw=0.8)
+    ax.set_xlabel("speed n in 1/min (rectangle width)")
+    ax.set_ylabel("|torque| M in N·m (rectangle height)")
+    ax.set_title(f"{data.element} ({data.kind}), {what}: loss {fmt(_clean(data.loss, data))} W", fontsize=10)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="power at the ports", title_fontsize=8)
+
+
+def _clean(value: float, data: ElementPowers) -> float:
+    """Round-off (|value| ≤ 1e-9 × the largest port power) shown as 0."""
+    scale = max((abs(r.power) for r in data.rects), default=0.0)
+    return 0.0 if abs(value) <= _ZERO * max(scale, 1e-300) else value
+
+
+def _element_powers(solution: Solution, element: Any, ports: tuple[str, str, str], i0: float) -> ElementPowers:
+    state = solution.elements[element.name]
+    scale = max((abs(p) for p in state.port_powers.values()), default=0.0)
+    rects = []
+    y = 0.0
+    for port in ports:
+        torque, speed = state.torques[port], state.speeds[port]
+        power = torque * speed * RPM_TO_RAD_S
+        role = "drive" if power > _ZERO * scale else "load" if power < -_ZERO * scale else "none"
+        rects.append(PowerRect(f"{port} ({state.ports[port]})", 0.0, speed, y, abs(torque), power, role))
+        y += abs(torque)
+    a, b, c = ports
+    t, n = state.torques, state.speeds
+    loss_rect = None
+    w = state.loss_direction
+    if w != 0 and state.loss > _ZERO * max(scale, 1e-300):
+        if w > 0:  # a drives relative to the carrier: b's torque is reduced (Bild 8)
+            member, delta = b, t[b] + i0 * t[a]
+        else:  # a is driven relative to the carrier: a's torque is reduced (Bild 9)
+            member, delta = a, t[a] + t[b] / i0
+        width = n[member] - n[c]
+        loss_rect = PowerRect(f"loss: ΔM_{member} × (n_{member} − n_{c})", n[c], width, y + 0.06 * max(y, 1e-12),
+                              abs(delta), delta * width * RPM_TO_RAD_S, "loss")
+    return ElementPowers(element.name, state.kind, tuple(rects), loss_rect, state.loss, w)
+
+
+def power_diagram(solution: Solution) -> PowerDiagram:
+    """Power rectangles of every planetary set and gear stage, with and without friction.
+
+    Parameters
+    ----------
+    solution : Solution
+
+    Returns
+    -------
+    PowerDiagram
+
+    References
+    ----------
+    Brandenberger 1952, Bild 8 and 9 (loss as the heavy rectangle).
+
+    Examples
+    --------
+    >>> from epicyclic.demo import brandenberger_1952
+    >>> from epicyclic import solve
+    >>> sol = solve(*brandenberger_1952())
+    >>> d = power_diagram(sol)
+    >>> round(sum(e.loss_rect.area for e in d.actual), 3) == round(sol.loss, 3)
+    True
+    """
+    levers = lever_elements(solution.train)
+    actual = tuple(_element_powers(solution, e, ports, i0) for e, ports, _, i0 in levers)
+    ideal: tuple[ElementPowers, ...] = ()
+    if solution.ideal is not None:
+        ideal = tuple(_element_powers(solution.ideal, e, ports, i0) for e, ports, _, i0 in levers)
+    return PowerDiagram(solution.train.name, actual, ideal)
+
+
+@dataclass(frozen=True)
+class TorqueBar:
+    """One bar pair: the torque without and with friction (N·m) at a port or shaft."""
+
+    group: str
+    label: str
+    ideal: float | None
+    actual: float
+    role: str
+
+
+@dataclass(frozen=True)
+class TorqueDiagram:
+    """Torque bars of the external shafts and of every geared element's ports.
+
+    Groups: ``"external"`` (torques acting on the train from outside) and one
+    group per element (torques on the element at each port; they sum to zero,
+    Brandenberger eq. 2).
+    """
+
+    title: str
+    bars: tuple[TorqueBar, ...]
+
+    @property
+    def groups(self) -> tuple[str, ...]:
+        out: list[str] = []
+        for bar in self.bars:
+            if bar.group not in out:
+                out.append(bar.group)
+        return tuple(out)
+
+    def group(self, name: str) -> tuple[TorqueBar, ...]:
+        return tuple(b for b in self.bars if b.group == name)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"title": self.title, "unit": "N*m", "bars": [b.__dict__ for b in self.bars]}
+
+    def __repr__(self) -> str:
+        return f"<TorqueDiagram {self.title!r}: {len(self.bars)} bars in {len(self.groups)} groups>"
+
+    def plot(self) -> Any:
+        """Figure: one panel per group, bars without friction (outline) and with friction (hatched)."""
+        plt = pyplot()
+        groups = self.groups
+        fig, axes = plt.subplots(1, len(groups), figsize=(4.6 * len(groups), 4.6), squeeze=False)
+        for ax, name in zip(axes[0], groups):
+            bars = self.group(name)
+            xs = range(len(bars))
+            if any(b.ideal is not None for b in bars):
+                ax.bar([x - 0.2 for x in xs], [b.ideal or 0.0 for b in bars], width=0.38, facecolor="white",
+                       edgecolor="grey", ls="--", lw=1.5, label="without friction")
+            seen: set[str] = set()
+            for x, bar in zip(xs, bars):
+                style = ROLE_STYLE[bar.role]
+                label = f"with friction, {style['label']}" if bar.role not in seen else None
+                seen.add(bar.role)
+                ax.bar([x + 0.2], [bar.actual], width=0.38, facecolor=style["facecolor"], hatch=style["hatch"],
+                       edgecolor="black", label=label)
+                ax.annotate(fmt(bar.actual), (x + 0.2, bar.actual), ha="center", fontsize=8,
+                            xytext=(0, 3 if bar.actual >= 0 else -11), textcoords="offset points")
+            ax.axhline(0, color="black", lw=0.8)
+            ax.set_xticks(list(xs), [b.label for b in bars], fontsize=9)
+            ax.set_ylabel("torque M in N·m")
+            ax.set_title("external torques on shafts" if name == "external" else f"torques on {name}", fontsize=10)
+            ax.grid(True, axis="y", alpha=0.3)
+            ax.margins(y=0.15)
+        handles: dict[str, Any] = {}
+        for ax in axes[0]:
+            for handle, label in zip(*ax.get_legend_handles_labels()):
+                handles.setdefault(label, handle)
+        fig.legend(list(handles.values()), list(handles), loc="lower center", ncol=len(handles), fontsize=9)
+        fig.suptitle(f"{self.title}: torques with and without friction (housing: reaction)", fontsize=12)
+        fig.tight_layout(rect=(0, 0.08, 1, 1))
+        return fig
+
+
+def _role(power: float, scale: float) -> str:
+    return "drive" if power > _ZERO * scale else "load" if power < -_ZERO * scale else "none"
+
+
+def torque_diagram(solution: Solution) -> TorqueDiagram:
+    """Torque bars, with and without friction, of the external shafts and element ports.
+
+    Examples
+    --------
+    >>> from epicyclic.demo import brandenberger_1952, KP_CM
+    >>> from epicyclic import solve
+    >>> d = torque_diagram(solve(*brandenberger_1952()))
+    >>> [round(abs(b.actual) / KP_CM, 1) for b in d.group("planetary")]  # Brandenberger: 66.7, 40.3, 26.4 cm·kg
+    [66.6, 40.3, 26.3]
+    """
+    ideal = solution.ideal
+    scale = max(solution.input_power, solution.output_power, 1e-300)
+    bars = []
+    for shaft in solution.shafts.values():
+        if shaft.role == "internal" or (shaft.torque == 0.0 and shaft.role != "housing"):
+            continue
+        ideal_torque = ideal.torque(shaft.name) if ideal is not None else None
+        bars.append(TorqueBar("external", shaft.name, ideal_torque, shaft.torque, _role(shaft.power, scale)))
+    for element, ports, _, _ in lever_elements(solution.train):
+        state = solution.elements[element.name]
+        powers = state.port_powers
+        for port in ports:
+            ideal_torque = ideal.elements[element.name].torques[port] if ideal is not None else None
+            bars.append(TorqueBar(element.name, f"{port}\n({state.ports[port]})", ideal_torque, state.torques[port],
+                                  _role(powers[port], scale)))
+    return TorqueDiagram(solution.train.name, tuple(bars))
