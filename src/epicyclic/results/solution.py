@@ -96,14 +96,21 @@ class ElementState:
 
     @property
     def status(self) -> str:
-        """A word for the element's state: rolling, locked, idle, open, engaged."""
+        """One word for the element's state.
+
+        Clutches and brakes: ``engaged`` or ``open``.  Sets and stages:
+        ``rolling`` (rolling power flows), ``locked`` (no relative motion: the set
+        turns as a block or stands still) or ``idle`` (relative motion, no torque).
+        """
         if self.kind in ("clutch", "brake"):
             return "engaged" if self.engaged else "open"
-        torque = max((abs(t) for t in self.torques.values()), default=0.0)
-        relative = max(abs(self.speeds[p] - self.speeds[list(self.ports)[2]]) for p in list(self.ports)[:2])
-        if torque == 0.0 or self.loss_direction == 0 and abs(self.rolling_power) <= 1e-9 * max(1.0, torque):
-            return "locked" if relative <= 1e-9 * max(1.0, max(abs(v) for v in self.speeds.values())) else "idle"
-        return "rolling"
+        if self.loss_direction != 0:
+            return "rolling"
+        ports = list(self.ports)
+        carrier = self.speeds[ports[2]]
+        relative = max(abs(self.speeds[p] - carrier) for p in ports[:2])
+        level = max(1.0, *(abs(v) for v in self.speeds.values()))
+        return "locked" if relative <= 1e-9 * level else "idle"
 
 
 @dataclass(frozen=True)

@@ -234,7 +234,7 @@ def _build(train, op, mats, speeds, x, pattern, solver: TorqueSolver, roles, ide
     shafts = {}
     for shaft in train.shafts:
         torque = float(x[mats.external_column(shaft)]) if shaft in mats.external else 0.0
-        power = torque * speeds[shaft] * RPM_TO_RAD_S
+        power = torque * speeds[shaft] * RPM_TO_RAD_S + 0.0  # no −0.0 at the housing
         shafts[shaft] = ShaftState(shaft, speeds[shaft], torque, power, roles[shaft])
 
     elements = {}
@@ -283,9 +283,9 @@ def _element_state(element, mats, x, speeds, pattern, lever_index, lossless) -> 
         torques = {p: float(x[idx[("port", element.name, p)]]) for p in lever.ports}
         port_speeds = {p: speeds[s] for p, s in ports.items()}
         a, b, c = lever.ports
-        w = 0 if lossless else int(pattern[lever_index[element.name]])
+        w = int(pattern[lever_index[element.name]])  # direction of rolling power (0: none)
         rolling = torques[a] * (port_speeds[a] - port_speeds[c]) * RPM_TO_RAD_S
-        coupling = torques[a] * port_speeds[c] * RPM_TO_RAD_S
+        coupling = torques[a] * port_speeds[c] * RPM_TO_RAD_S + 0.0
         loss = sum(torques[p] * port_speeds[p] for p in lever.ports) * RPM_TO_RAD_S
         planets: tuple[float, ...] = ()
         relative: tuple[float, ...] = ()
@@ -302,7 +302,7 @@ def _element_state(element, mats, x, speeds, pattern, lever_index, lossless) -> 
             coupling_power=coupling,
             loss=max(loss, 0.0) if abs(loss) <= 1e-9 * max(1.0, abs(rolling)) else loss,
             loss_direction=w,
-            efficiency_factor=lever.efficiency ** w,
+            efficiency_factor=1.0 if lossless else lever.efficiency ** w,
             planet_speeds=planets,
             planet_speeds_relative=relative,
         )

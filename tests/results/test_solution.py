@@ -1,0 +1,63 @@
+"""Results render themselves: table, plain data (JSON), HTML, repr; element states."""
+
+import json
+
+import pytest
+
+from epicyclic import Brake, Clutch, GearTrain, OperatingPoint, PlanetarySet, UnknownShaftError, solve
+from epicyclic.demo import brandenberger_1952
+
+
+@pytest.fixture(scope="module")
+def solution():
+    train, op = brandenberger_1952()
+    return solve(train, op)
+
+
+def test_table_lists_shafts_elements_and_summary(solution):
+    text = solution.table()
+    for word in ("shaft", "speed [1/min]", "torque [N*m]", "planetary", "stage", "rolling", "efficiency    0.849377"):
+        assert word in text
+    assert str(solution) == text
+
+
+def test_to_dict_is_json_and_states_units(solution):
+    data = json.loads(json.dumps(solution.to_dict()))
+    assert data["units"] == {"speed": "1/min", "torque": "N*m", "power": "W"}
+    assert data["shafts"]["II"]["role"] == "drive"
+    assert data["elements"]["planetary"]["loss_direction"] == 1
+    assert data["efficiency"] == pytest.approx(solution.efficiency)
+    assert data["self_locking"] is None
+
+
+def test_html_and_repr(solution):
+    assert solution._repr_html_().count("<table>") == 2
+    assert repr(solution).startswith("<Solution 'Brandenberger 1952, Bild 10': efficiency 0.8494")
+
+
+def test_unknown_shaft_lookup(solution):
+    with pytest.raises(UnknownShaftError, match="solution: unknown shaft 'IV'"):
+        solution.speed("IV")
+
+
+def test_element_states_rolling_locked_idle_open():
+    # Set P1 is locked by a clutch (direct drive); set P2 has no torque path (idle); brake B open.
+    train = GearTrain([
+        PlanetarySet("P1", "in", "out", "c1", -2.0, 0.97), Clutch("C", "in", "c1"),
+        PlanetarySet("P2", "in", "r2", "c2", -2.0, 0.97), Brake("B", "r2", engaged=False),
+    ])
+    op = OperatingPoint(speeds={"in": 1000, "c2": 200}, torques={"in": 10}, drives=["in"], loads=["out"])
+    sol = solve(train, op)
+    states = {name: e.status for name, e in sol.elements.items()}
+    assert states == {"P1": "locked", "C": "engaged", "P2": "idle", "B": "open"}
+    assert sol.elements["B"].slip_speed == pytest.approx(sol.speed("r2"))
+    assert sol.efficiency == pytest.approx(1.0)
+
+
+def test_self_locking_renders_without_negative_efficiency():
+    train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", 1.02, 0.95), Brake("B", "ring")])
+    sol = solve(train, OperatingPoint(speeds={"sun": 1000}, torques={"sun": 1}, drives=["sun"], loads=["carrier"]))
+    text = sol.table()
+    assert "SELF-LOCKING" in text and "efficiency    — (self-locking)" in text
+    assert "self-locking" in repr(sol)
+    assert sol.to_dict()["self_locking"]["thresholds"]["P"] == pytest.approx(1 / 1.02, rel=1e-6)
