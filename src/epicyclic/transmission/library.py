@@ -329,7 +329,7 @@ def to_toml(key: str, stationary_efficiency: float = 0.98) -> str:
             lines.append(f'stationary_ratio = "{s.ratio_text()}"')
         lines.append(f"stationary_efficiency = {stationary_efficiency}")
     for name, first, second, meshes in e.stages:
-        lines += ["", "[[stage]]", f'name = "{name}"', f'first = "{first}"', f'second = "{second}"',
+        lines += ["", "[[gear]]", f'name = "{name}"', f'first = "{first}"', f'second = "{second}"',
                   "meshes = [" + ", ".join(f'[{a}, {b}, "{k}"]' for a, b, k in meshes) + "]",
                   f"efficiency = {stationary_efficiency}"]
     for name, first, second in e.clutches:
