@@ -1,0 +1,663 @@
+"""Fitting conditions of a planetary set: do the planets fit, assemble and mesh?
+
+Each check returns a frozen result with ``passed``, the numbers behind it and a
+message that names the condition, says by how much it fails and what to
+change.  :func:`check_fitting` runs them all and returns a
+:class:`FittingReport`.
+
+Conditions
+----------
+coaxiality
+    The sun mesh and the ring mesh must have the same operating centre
+    distance (simple and stepped sets); for standard gears of a simple set
+    ``z_r = z_s + 2 z_p``.  A double-planet set closes a triangle
+    ``|a_1 − a_2| < a_12 < a_1 + a_2``.  (SDP/SI D785 eqs. 13-5, 13-6.)
+assembly
+    Planets can sit at carrier angles that are multiples of
+    ``φ_min = 360° g / D`` (Queitsch: φ_min), with ``D = |z_r + z_s|`` for a
+    simple set, ``|z_r − z_s|`` for a double-planet set and
+    ``D = |z_s z_c ± z_r z_b|`` with ``g = gcd(z_b, z_c)`` for a stepped set
+    (b meshes the sun, c the ring).  Equal spacing of N planets needs
+    ``D/(g N)`` whole (SDP/SI D785 eqs. 13-7, 13-8); otherwise the nearest
+    possible unequal spacing is reported.  Mesh phasing follows from
+    ``z mod N`` (in-phase 0, sequential ±1, counter-phase otherwise;
+    Drivetrain Hub, *Planetary Gears*).
+neighbours
+    Adjacent planets' tip circles keep a clearance:
+    ``2 a sin(π/N) − d_a > c_min`` (SDP/SI D785 eq. 13-10); the largest N
+    that fits is reported.
+undercut
+    ``x ≥ x_min = h_a* − z sin²α_t / (2 cos β)``, i.e. ``z ≥ z_g = 2 h_a* cos β / sin²α_t``
+    (Queitsch: Grenzzähnezahl z_g; ≈ 17 for 20°, practical limit 5/6 z_g ≈ 14).
+internal interference
+    Involute, trochoid and trimming interference of each internal mesh
+    (SDP/SI D785 section 5.2), reported as warnings.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, fields
+from types import MappingProxyType
+from typing import Any, Literal
+
+from ._render import html_table, text_table
+from .errors import FittingError, GeometryError
+from .gear import MeshGeometry
+from .involute import inv, profile_shift_sum
+from .set_geometry import SetGeometry
+
+__all__ = [
+    "Check",
+    "CoaxialityCheck",
+    "AssemblyCheck",
+    "NeighbourCheck",
+    "UndercutCheck",
+    "InterferenceCheck",
+    "FittingReport",
+    "check_coaxiality",
+    "check_assembly",
+    "check_neighbours",
+    "check_undercut",
+    "check_interference",
+    "check_fitting",
+    "assembly_ticks",
+    "mesh_phasing",
+    "max_planets",
+    "undercut_limit",
+    "min_profile_shift",
+]
+
+#: Numerical margin (mm) below which a clearance counts as contact.
+_EPS_MM = 1e-9
+
+
+@dataclass(frozen=True)
+class Check:
+    """Result of one fitting condition.
+
+    Attributes
+    ----------
+    condition : str
+        ``coaxiality``, ``assembly``, ``neighbours``, ``undercut`` or ``interference``.
+    passed : bool
+    message : str
+        Which condition, by how much, and what to change (or why it passes).
+    severity : {"error", "warning"}
+        Failing errors make the set unusable; warnings ask for a closer look.
+    """
+
+    condition: str
+    passed: bool
+    message: str
+    severity: str
+
+    def to_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+        for f in fields(self):
+            value = getattr(self, f.name)
+            out[f.name] = dict(value) if isinstance(value, Mapping) else (list(value) if isinstance(value, tuple) else value)
+        return out
+
+    def __str__(self) -> str:
+        state = "ok" if self.passed else ("FAIL" if self.severity == "error" else "WARNING")
+        return f"[{state}] {self.condition}: {self.message}"
+
+
+@dataclass(frozen=True)
+class CoaxialityCheck(Check):
+    """Coaxiality: centre distances of the meshes (mm), their difference and a fix."""
+
+    center_distances: Mapping[str, float]
+    difference: float
+    tolerance: float
+    suggestion: Mapping[str, float]
+
+
+@dataclass(frozen=True)
+class AssemblyCheck(Check):
+    """Assembly: possible planet positions, equal spacing, actual angles and phasing."""
+
+    planets: int
+    ticks: int
+    min_angle: float
+    equally_spaced: bool
+    angles: tuple[float, ...]
+    max_deviation: float
+    phasing: Mapping[str, str]
+
+
+@dataclass(frozen=True)
+class NeighbourCheck(Check):
+    """Neighbour condition: smallest clearance between planet tips (mm) and the most planets that fit."""
+
+    planets: int
+    clearance: float
+    min_clearance: float
+    max_planets: int
+
+
+@dataclass(frozen=True)
+class UndercutCheck(Check):
+    """Undercut of one external gear: z, x, the limit z_g and the least profile shift x_min."""
+
+    gear: str
+    teeth: int
+    profile_shift: float
+    limit_teeth: float
+    min_profile_shift: float
+    limit: str
+
+
+@dataclass(frozen=True)
+class InterferenceCheck(Check):
+    """Interference of an internal mesh: margins (≥ 0 passes) of the three KHK conditions."""
+
+    mesh: str
+    involute_margin: float
+    trochoid_margin: float
+    trimming_margin: float
+
+
+# ---------------------------------------------------------------------- coaxiality
+def check_coaxiality(geometry: SetGeometry, tolerance: float = 1e-3) -> CoaxialityCheck:
+    """Coaxiality of the set (tolerance on centre distances in mm).
+
+    References
+    ----------
+    SDP/SI D785, eqs. (13-5) z_c = z_a + 2 z_b and (13-6) a_x1 = a_x2.
+    """
+    meshes = {m.name: m.center_distance for m in geometry.meshes}
+    g = geometry.gears
+    if geometry.kind == "double":
+        a1, a12, a2 = (m.center_distance for m in geometry.meshes)
+        low, high = abs(a1 - a2), a1 + a2
+        diff = max(0.0, low - a12, a12 - high)
+        passed = diff == 0.0 and a12 > low + tolerance and a12 < high - tolerance
+        if passed:
+            gamma = math.degrees(math.acos((a1 * a1 + a2 * a2 - a12 * a12) / (2 * a1 * a2)))
+            message = (
+                f"planet1 axis at r = {a1:.3f} mm, planet2 axis at r = {a2:.3f} mm, {gamma:.2f}° apart; "
+                f"the planet1-planet2 centre distance {a12:.3f} mm closes the triangle"
+            )
+        else:
+            message = (
+                f"double planets cannot be placed: planet1-planet2 centre distance {a12:.3f} mm must lie "
+                f"strictly between |a1 - a2| = {low:.3f} mm and a1 + a2 = {high:.3f} mm; change the planet "
+                "tooth counts or the ring/sun tooth counts"
+            )
+        return CoaxialityCheck("coaxiality", passed, message, "error", MappingProxyType(meshes), diff, tolerance,
+                               MappingProxyType({}))
+    sun_mesh, ring_mesh = geometry.sun_mesh, geometry.ring_mesh
+    a_s, a_r = sun_mesh.center_distance, ring_mesh.center_distance
+    diff = a_r - a_s
+    suggestion: dict[str, float] = {}
+    if abs(diff) <= tolerance:
+        message = f"{sun_mesh.name} and {ring_mesh.name} both run at a_w = {a_s:.4f} mm (difference {diff:+.4f} mm)"
+        return CoaxialityCheck("coaxiality", True, message, "error", MappingProxyType(meshes), diff, tolerance,
+                               MappingProxyType(suggestion))
+    rack = ring_mesh.rack
+    planet, ring = ring_mesh.gear1, ring_mesh.gear2
+    z_sum = ring.teeth - planet.teeth if ring.internal else ring.teeth + planet.teeth
+    try:
+        needed = profile_shift_sum(a_s, z_sum, rack.module, rack.alpha_n, rack.beta)
+        suggestion["x_ring"] = needed + planet.profile_shift if ring.internal else needed - planet.profile_shift
+    except ValueError:
+        pass
+    hint = f"set x_ring = {suggestion['x_ring']:.4f} (other shifts kept)" if suggestion else "change the tooth counts"
+    if geometry.kind == "simple":
+        zs, zp, zr = (geometry.planetary_set.teeth.sun, geometry.planetary_set.teeth.planet[0],  # type: ignore[union-attr]
+                      geometry.planetary_set.teeth.ring)  # type: ignore[union-attr]
+        hint += f"; for standard gears z_ring = z_sun + 2 z_planet = {zs + 2 * zp} (given {zr})"
+    message = (
+        f"not coaxial: {sun_mesh.name} a_w = {a_s:.4f} mm but {ring_mesh.name} a_w = {a_r:.4f} mm "
+        f"(differ by {abs(diff):.4f} mm > {tolerance} mm); {hint}"
+    )
+    return CoaxialityCheck("coaxiality", False, message, "error", MappingProxyType(meshes), diff, tolerance,
+                           MappingProxyType(suggestion))
+
+
+# ---------------------------------------------------------------------- assembly
+def assembly_ticks(teeth) -> int:
+    """Number T of possible planet positions on the circle (φ_min = 360°/T).
+
+    For a simple set ``T = z_s + z_r``; double-planet ``T = |z_r − z_s|``;
+    stepped ``T = |z_s z_c ± z_r z_b| / gcd(z_b, z_c)`` (+ internal ring).
+
+    Derivation: with the carrier held the central gears turn by δ_s = i0 δ_r; a
+    copy of a planet at carrier angle φ meshes iff φ + δ_s and φ + δ_r are whole
+    tooth pitches of sun and ring.
+
+    >>> from epicyclic.model import Teeth
+    >>> assembly_ticks(Teeth("simple", 17, 49, (16,)))
+    66
+
+    References
+    ----------
+    SDP/SI D785, eqs. (13-7) and (13-8); Queitsch, φ_min (minimaler Drehwinkelabstand
+    zweier Planetenräder).
+    """
+    zs, zr, zp = teeth.sun, teeth.ring, teeth.planet
+    if teeth.kind == "simple":
+        return zs + zr
+    if teeth.kind == "double":
+        return abs(zr - zs)
+    zb, zc = zp
+    d = abs(zs * zc + zr * zb) if teeth.ring_internal else abs(zs * zc - zr * zb)
+    return d // math.gcd(zb, zc)
+
+
+def mesh_phasing(teeth: int, angles: Sequence[float]) -> str:
+    """Phasing of the meshes of one central gear with planets at ``angles`` (degrees).
+
+    Returns ``"in-phase"``, ``"sequential"``, ``"counter-phase"`` or ``"mixed"``
+    from the first-harmonic sums of the mesh excitations.
+
+    >>> mesh_phasing(48, [0, 90, 180, 270]), mesh_phasing(51, [0, 90, 180, 270])
+    ('in-phase', 'sequential')
+
+    References
+    ----------
+    Drivetrain Hub, *Geometry / Planetary Gears* (notebooks-gears, Chapter 4):
+    phase φ_i = 2π (θ_i z/2π mod 1); k_φ = z mod N.
+    """
+    n = len(angles)
+    fx = fy = torque = 0j
+    for theta in angles:
+        q = (math.radians(theta) * teeth / (2 * math.pi)) % 1.0
+        signal = complex(math.cos(2 * math.pi * q), math.sin(2 * math.pi * q))
+        fx += math.cos(math.radians(theta)) * signal
+        fy += math.sin(math.radians(theta)) * signal
+        torque += signal
+    f_sum = (abs(fx) + abs(fy)) / (n / 2)
+    t_sum = abs(torque) / n
+    f_zero, t_zero = f_sum < 1e-6, t_sum < 1e-6
+    if f_zero and abs(t_sum - 1) < 1e-6:
+        return "in-phase"
+    if f_zero and t_zero:
+        return "counter-phase"
+    if abs(f_sum - 2) < 1e-6 and t_zero:
+        return "sequential"
+    return "mixed"
+
+
+def check_assembly(geometry_or_teeth, planets: int, *, allow_unequal: bool = False) -> AssemblyCheck:
+    """Whether ``planets`` planets can be assembled equally spaced, and where they would sit otherwise.
+
+    Parameters
+    ----------
+    geometry_or_teeth : SetGeometry or Teeth
+    planets : int
+    allow_unequal : bool, default False
+        Pass with unequal (nearest possible) spacing when equal spacing is impossible.
+
+    References
+    ----------
+    SDP/SI D785, eqs. (13-7), (13-8); Drivetrain Hub, *Planetary Gears* (tick angle, phasing).
+    """
+    teeth = geometry_or_teeth.planetary_set.teeth if isinstance(geometry_or_teeth, SetGeometry) else geometry_or_teeth
+    if isinstance(planets, bool) or not isinstance(planets, int) or planets < 1:
+        raise GeometryError(f"check_assembly: planets must be a whole number >= 1, got {planets!r}.")
+    ticks = assembly_ticks(teeth)
+    equal = ticks % planets == 0
+    if equal:
+        positions = [i * ticks // planets for i in range(planets)]
+    else:
+        positions = [math.floor(i * ticks / planets + 0.5) for i in range(planets)]
+    angles = tuple(360.0 * p / ticks for p in positions) if ticks else tuple(0.0 for _ in range(planets))
+    deviation = max(abs(a - 360.0 * i / planets) for i, a in enumerate(angles))
+    distinct = ticks >= planets and len(set(positions)) == planets
+    ring_gear = teeth.ring
+    sun_gear = teeth.sun
+    phasing = {"sun": mesh_phasing(sun_gear, angles), "ring": mesh_phasing(ring_gear, angles)} if distinct else {}
+    min_angle = 360.0 / ticks if ticks else 360.0
+    formula = {"simple": "(z_sun + z_ring)", "double": "(z_ring - z_sun)", "stepped": "D/gcd(z_b, z_c)"}[teeth.kind]
+    if equal:
+        message = (
+            f"{planets} planets equally spaced at {360.0 / planets:g}°: {formula}/N = {ticks}/{planets} = "
+            f"{ticks // planets} (phi_min = {min_angle:.3f}°); phasing sun {phasing.get('sun')}, "
+            f"ring {phasing.get('ring')}"
+        )
+        passed = True
+    else:
+        good = [n for n in range(2, 13) if ticks % n == 0]
+        where = ", ".join(f"{a:.2f}°" for a in angles)
+        message = (
+            f"{planets} planets cannot be equally spaced: {formula}/N = {ticks}/{planets} = {ticks / planets:.3f} "
+            f"is not whole (phi_min = {min_angle:.3f}°). "
+            + (f"Nearest possible positions {where} (up to {deviation:.2f}° off equal spacing). " if distinct
+               else "Not even unequal spacing places them. ")
+            + f"Use N in {good or 'none up to 12'} or change z_ring by a tooth or two."
+        )
+        passed = allow_unequal and distinct
+    severity = "warning" if (not equal and passed) else "error"
+    return AssemblyCheck("assembly", passed, message, severity, planets, ticks, min_angle, equal, angles,
+                         deviation, MappingProxyType(phasing))
+
+
+# ---------------------------------------------------------------------- neighbours
+def max_planets(tip_diameter: float, center_distance: float, min_clearance: float = 0.0) -> int:
+    """Largest number of equally spaced planets whose tip circles keep ``min_clearance`` (mm).
+
+    Contact (zero clearance) counts as interference: ``2 a sin(π/N) − d_a > c_min``.
+
+    Examples
+    --------
+    Drivetrain Hub, *Planetary Gears*, standard example: d_a ≈ d_w2 = 34.667 mm at
+    a = 34.667 mm gives "Number of planets, max = 5":
+
+    >>> max_planets(104 / 3, 104 / 3)
+    5
+
+    References
+    ----------
+    SDP/SI D785, eq. (13-10) d_ab < 2 a_x sin θ; Drivetrain Hub l = 2a sin(π/N) > d_a2.
+    """
+    if tip_diameter <= 0 or center_distance <= 0:
+        raise GeometryError(
+            f"max_planets: tip_diameter and center_distance must be > 0 mm, got {tip_diameter!r}, {center_distance!r}."
+        )
+    n = 1
+    while n < 1000 and 2 * center_distance * math.sin(math.pi / (n + 1)) - tip_diameter - min_clearance > _EPS_MM:
+        n += 1
+    return n
+
+
+def _planet_circles(geometry: SetGeometry, angles: Sequence[float]) -> list[tuple[int, int, float, float, float]]:
+    """(body, plane, x, y, tip radius) of every planet gear for carrier angles in degrees."""
+    circles = []
+    g = geometry.gears
+    names = geometry.planet_gear_names
+    if geometry.kind == "double":
+        a1, a12, a2 = (m.center_distance for m in geometry.meshes)
+        cos_g = (a1 * a1 + a2 * a2 - a12 * a12) / (2 * a1 * a2)
+        gamma = math.acos(max(-1.0, min(1.0, cos_g)))
+    for body, theta in enumerate(angles):
+        t = math.radians(theta)
+        if geometry.kind == "double":
+            circles.append((body, 0, a1 * math.cos(t), a1 * math.sin(t), g[names[0]].tip_diameter / 2))
+            circles.append((body, 0, a2 * math.cos(t + gamma), a2 * math.sin(t + gamma), g[names[1]].tip_diameter / 2))
+        else:
+            a = geometry.carrier_radius
+            for plane, name in enumerate(names):
+                circles.append((body, plane, a * math.cos(t), a * math.sin(t), g[name].tip_diameter / 2))
+    return circles
+
+
+def _min_clearance(geometry: SetGeometry, angles: Sequence[float]) -> float:
+    circles = _planet_circles(geometry, angles)
+    best = math.inf
+    for i, (b1, p1, x1, y1, r1) in enumerate(circles):
+        for b2, p2, x2, y2, r2 in circles[i + 1:]:
+            if b1 != b2 and p1 == p2:
+                best = min(best, math.hypot(x2 - x1, y2 - y1) - r1 - r2)
+    if geometry.kind == "double":
+        g, names = geometry.gears, geometry.planet_gear_names
+        a1, _, a2 = (m.center_distance for m in geometry.meshes)
+        best = min(best, a2 - g[names[1]].tip_diameter / 2 - g["sun"].tip_diameter / 2)
+        best = min(best, g["ring"].tip_diameter / 2 - a1 - g[names[0]].tip_diameter / 2)
+    return best
+
+
+def check_neighbours(
+    geometry: SetGeometry, planets: int, angles: Sequence[float] | None = None, min_clearance: float = 0.0
+) -> NeighbourCheck:
+    """Neighbour condition: planet tip circles keep at least ``min_clearance`` mm.
+
+    Parameters
+    ----------
+    geometry : SetGeometry
+    planets : int
+    angles : sequence of float, optional
+        Carrier angles of the planets in degrees (default: equally spaced).
+    min_clearance : float, default 0
+        Required clearance between tip circles, mm (contact always fails).
+
+    References
+    ----------
+    SDP/SI D785, eqs. (13-9) z_b + 2 < (z_a + z_b) sin(180°/N) and (13-10).
+    """
+    if isinstance(planets, bool) or not isinstance(planets, int) or planets < 1:
+        raise GeometryError(f"check_neighbours: planets must be a whole number >= 1, got {planets!r}.")
+    if angles is None:
+        angles = [360.0 * i / planets for i in range(planets)]
+    elif len(angles) != planets:
+        raise GeometryError(f"check_neighbours: {planets} planets need {planets} angles, got {len(angles)}.")
+    clearance = _min_clearance(geometry, angles)
+    n_max = 1
+    while n_max < 200 and _min_clearance(geometry, [360.0 * i / (n_max + 1) for i in range(n_max + 1)]) - min_clearance > _EPS_MM:
+        n_max += 1
+    passed = clearance - min_clearance > _EPS_MM
+    if passed:
+        message = (
+            f"{planets} planets fit: smallest tip clearance {clearance:.3f} mm "
+            f"(required > {min_clearance:g} mm); at most {n_max} fit"
+        )
+    else:
+        how = f"tip circles overlap by {-clearance:.3f} mm" if clearance < 0 else (
+            f"tip clearance {clearance:.3f} mm is not more than the required {min_clearance:g} mm")
+        message = f"{planets} planets do not fit: {how}; at most {n_max} fit (use fewer planets or smaller planets)"
+    return NeighbourCheck("neighbours", passed, message, "error", planets, clearance, min_clearance, n_max)
+
+
+# ---------------------------------------------------------------------- undercut
+def undercut_limit(pressure_angle: float = 20.0, addendum: float = 1.0, helix_angle: float = 0.0) -> float:
+    """Limit tooth count z_g = 2 h_a* cos β / sin²α_t (degrees in; theoretical, without profile shift).
+
+    >>> round(undercut_limit(20.0), 3), round(undercut_limit(14.5), 2)
+    (17.097, 31.9)
+
+    References
+    ----------
+    Queitsch, Grenzzähnezahl z_g; DIN 3960 / ISO 21771; z_min = 2/sin²α ≈ 17.097 for 20°
+    (machinecalcs.com profile-shift calculator; easyengcalc.com: 17 at 20°, 32 at 14.5°).
+    """
+    alpha_n, beta = math.radians(pressure_angle), math.radians(helix_angle)
+    alpha_t = math.atan(math.tan(alpha_n) / math.cos(beta))
+    return 2.0 * addendum * math.cos(beta) / math.sin(alpha_t) ** 2
+
+
+def min_profile_shift(teeth: int, pressure_angle: float = 20.0, addendum: float = 1.0, helix_angle: float = 0.0,
+                      limit: Literal["theoretical", "practical"] = "theoretical") -> float:
+    """Least profile shift that avoids undercut: x_min = h_a* (z_lim − z)/z_lim.
+
+    ``limit="practical"`` uses z_lim = 5/6 z_g (slight undercut accepted;
+    ≈ 14 teeth for 20°).
+
+    Examples
+    --------
+    machinecalcs.com worked example: a 12-tooth 20° pinion needs x_min = 0.298:
+
+    >>> round(min_profile_shift(12), 3)
+    0.298
+
+    References
+    ----------
+    DIN 3960; Niemann/Winter, practical limit z_g' = 5/6 z_g (14 for 20°, 26 for 14.5°,
+    as quoted by easyengcalc.com "Gear Undercut & Profile Shift").
+    """
+    z_lim = undercut_limit(pressure_angle, addendum, helix_angle)
+    if limit == "practical":
+        z_lim *= 5.0 / 6.0
+    elif limit != "theoretical":
+        raise GeometryError(f"min_profile_shift: limit must be 'theoretical' or 'practical', got {limit!r}.")
+    return addendum * (z_lim - teeth) / z_lim
+
+
+def check_undercut(geometry: SetGeometry, limit: Literal["theoretical", "practical"] = "theoretical") -> tuple[UndercutCheck, ...]:
+    """Undercut of every external gear of the set (internal gears do not undercut this way).
+
+    References
+    ----------
+    Queitsch, z_g; DIN 3960 (x_min = h_a* − z sin²α_t/(2 cos β)).
+    """
+    out = []
+    for name, gear in geometry.gears.items():
+        if gear.internal:
+            continue
+        r = gear.rack
+        z_lim = undercut_limit(r.pressure_angle, r.addendum, r.helix_angle) * (5 / 6 if limit == "practical" else 1)
+        x_min = min_profile_shift(gear.teeth, r.pressure_angle, r.addendum, r.helix_angle, limit)
+        passed = gear.profile_shift >= x_min - 1e-9
+        if passed:
+            message = f"{name}: z = {gear.teeth}, x = {gear.profile_shift:+.4f} >= x_min = {x_min:+.4f} ({limit} z_g = {z_lim:.2f})"
+        else:
+            message = (
+                f"{name} is undercut: z = {gear.teeth} < z_g = {z_lim:.2f} at x = {gear.profile_shift:+.4f}; "
+                f"raise its profile shift by {x_min - gear.profile_shift:.4f} to x >= {x_min:.4f}, "
+                f"or use at least {math.ceil(z_lim * (1 - gear.profile_shift / r.addendum) - 1e-9)} teeth"
+            )
+        out.append(UndercutCheck("undercut", passed, message, "error", name, gear.teeth, gear.profile_shift,
+                                 z_lim, x_min, limit))
+    return tuple(out)
+
+
+# ---------------------------------------------------------------------- internal interference
+def _interference_margins(mesh: MeshGeometry) -> tuple[float, float, float]:
+    """(involute, trochoid, trimming) margins of an internal mesh, rad or ratio; ≥ 0 is free."""
+    p, ring = mesh.gear1, mesh.gear2
+    z1, z2 = p.teeth, ring.teeth
+    ra1, ra2 = p.tip_diameter / 2, ring.tip_diameter / 2
+    rb1, rb2 = p.base_diameter / 2, ring.base_diameter / 2
+    a, aw = mesh.center_distance, mesh.alpha_wt
+    if ra2 <= rb2:
+        return (-math.inf, -math.inf, -math.inf)
+    aa1, aa2 = math.acos(rb1 / ra1), math.acos(rb2 / ra2)
+    involute = z1 / z2 - (1 - math.tan(aa2) / math.tan(aw))
+    c1 = (ra2 * ra2 - ra1 * ra1 - a * a) / (2 * a * ra1)
+    c2 = (a * a + ra2 * ra2 - ra1 * ra1) / (2 * a * ra2)
+    if abs(c1) <= 1 and abs(c2) <= 1:
+        th1 = math.acos(c1) + inv(aa1) - inv(aw)
+        th2 = math.acos(c2)
+        trochoid = th1 * z1 / z2 + inv(aw) - inv(aa2) - th2
+    else:
+        trochoid = -math.inf  # tip circles do not intersect as the formula assumes
+    s1 = (1 - (math.cos(aa1) / math.cos(aa2)) ** 2) / (1 - (z1 / z2) ** 2)
+    s2 = ((math.cos(aa2) / math.cos(aa1)) ** 2 - 1) / ((z2 / z1) ** 2 - 1)
+    if 0 <= s1 <= 1 and 0 <= s2 <= 1:
+        t1, t2 = math.asin(math.sqrt(s1)), math.asin(math.sqrt(s2))
+        trimming = t1 + inv(aa1) - inv(aw) - (z2 / z1) * (t2 + inv(aa2) - inv(aw))
+    else:
+        trimming = math.inf if s2 < 0 else -math.inf
+    return involute, trochoid, trimming
+
+
+def check_interference(geometry: SetGeometry) -> tuple[InterferenceCheck, ...]:
+    """Involute, trochoid and trimming interference of each internal mesh (warnings).
+
+    References
+    ----------
+    SDP/SI D785 section 5.2 (KHK): involute z1/z2 ≥ 1 − tan α_a2/tan α_w;
+    trochoid θ1 z1/z2 + inv α_w − inv α_a2 ≥ θ2; trimming
+    θ1 + inv α_a1 − inv α_w ≥ (z2/z1)(θ2 + inv α_a2 − inv α_w).
+    """
+    out = []
+    for mesh in geometry.meshes:
+        if not mesh.internal:
+            continue
+        inv_m, tro_m, trim_m = _interference_margins(mesh)
+        bad = [name for name, m in (("involute", inv_m), ("trochoid", tro_m), ("trimming", trim_m)) if m < 0]
+        z1, z2 = mesh.gear1.teeth, mesh.gear2.teeth
+        if not bad:
+            message = f"{mesh.name}: no involute, trochoid or trimming interference (z2 - z1 = {z2 - z1})"
+        else:
+            message = (
+                f"{mesh.name}: {', '.join(bad)} interference (margins: involute {inv_m:+.4f}, trochoid "
+                f"{tro_m:+.4f} rad, trimming {trim_m:+.4f} rad); the planet ({z1} teeth) is too close in size "
+                f"to the ring ({z2} teeth): increase z_ring - z_planet, raise x_ring or shorten the tips"
+            )
+        out.append(InterferenceCheck("interference", not bad, message, "warning", mesh.name, inv_m, tro_m, trim_m))
+    return tuple(out)
+
+
+# ---------------------------------------------------------------------- report
+@dataclass(frozen=True)
+class FittingReport:
+    """All fitting conditions of one set.
+
+    Attributes
+    ----------
+    geometry : SetGeometry
+    checks : tuple of Check
+    """
+
+    geometry: SetGeometry
+    checks: tuple[Check, ...] = field(default_factory=tuple)
+
+    @property
+    def passed(self) -> bool:
+        """True when no error-level condition fails (warnings allowed)."""
+        return not self.failures
+
+    @property
+    def failures(self) -> tuple[Check, ...]:
+        return tuple(c for c in self.checks if not c.passed and c.severity == "error")
+
+    @property
+    def warnings(self) -> tuple[Check, ...]:
+        return tuple(c for c in self.checks if not c.passed and c.severity == "warning") + tuple(
+            c for c in self.checks if c.passed and c.severity == "warning"
+        )
+
+    def raise_if_failed(self) -> None:
+        """Raise :class:`~epicyclic.geometry.errors.FittingError` listing every failing condition."""
+        if self.failures:
+            lines = "; ".join(c.message for c in self.failures)
+            raise FittingError(
+                f"set {self.geometry.planetary_set.name!r} does not fit ({len(self.failures)} condition(s)): {lines}",
+                self.failures,
+            )
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"set": self.geometry.planetary_set.name, "passed": self.passed,
+                "checks": [c.to_dict() for c in self.checks]}
+
+    def _rows(self) -> list[list[object]]:
+        return [[c.condition, "ok" if c.passed else ("FAIL" if c.severity == "error" else "warning"), c.message]
+                for c in self.checks]
+
+    def table(self) -> str:
+        return text_table(["condition", "result", "numbers"], self._rows(),
+                          title=f"fitting of {self.geometry.planetary_set.name!r}: "
+                                + ("passes" if self.passed else "FAILS"))
+
+    def _repr_html_(self) -> str:
+        return html_table(["condition", "result", "numbers"], self._rows(),
+                          title=f"fitting of {self.geometry.planetary_set.name}")
+
+    def __repr__(self) -> str:
+        return f"FittingReport({self.geometry.planetary_set.name!r}, passed={self.passed}, " \
+               f"failures={[c.condition for c in self.failures]})"
+
+
+def check_fitting(
+    geometry: SetGeometry,
+    planets: int | None = None,
+    *,
+    allow_unequal: bool = False,
+    min_clearance: float = 0.0,
+    undercut: Literal["theoretical", "practical"] = "theoretical",
+    tolerance: float = 1e-3,
+) -> FittingReport:
+    """Run every fitting condition (number of planets from the set unless given).
+
+    Examples
+    --------
+    >>> from epicyclic import PlanetarySet
+    >>> p = PlanetarySet.simple("P", sun="s", ring="r", carrier="c", z_sun=30, z_planet=24, z_ring=78, planets=4)
+    >>> report = check_fitting(SetGeometry.create(p, module=2))
+    >>> report.passed, [c.condition for c in report.checks][:3]
+    (True, ['coaxiality', 'assembly', 'neighbours'])
+    """
+    n = geometry.planetary_set.planets if planets is None else planets
+    assembly = check_assembly(geometry, n, allow_unequal=allow_unequal)
+    angles = assembly.angles if (assembly.passed and not assembly.equally_spaced) else None
+    checks: list[Check] = [
+        check_coaxiality(geometry, tolerance),
+        assembly,
+        check_neighbours(geometry, n, angles, min_clearance),
+        *check_undercut(geometry, undercut),
+        *check_interference(geometry),
+    ]
+    return FittingReport(geometry, tuple(checks))
