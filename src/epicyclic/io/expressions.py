@@ -8,7 +8,7 @@ accepted: no names, calls, attributes or subscripts; ``eval`` is never used.
 
 Examples
 --------
->>> evaluate("(24/50)*(42/30)")
+>>> round(evaluate("(24/50)*(42/30)"), 12)
 0.672
 >>> evaluate("-78/30")
 -2.6
@@ -83,10 +83,10 @@ def evaluate(text: str, field: str = "expression") -> float:
     --------
     >>> evaluate("2 ** 3 / 4")
     2.0
-    >>> evaluate("__import__('os')", "stationary_ratio")
+    >>> evaluate("os.system", "stationary_ratio")
     Traceback (most recent call last):
     ...
-    epicyclic.io.expressions.ExpressionError: stationary_ratio: '__import__('os')' may only contain numbers, + - * / ** and parentheses; found a function call.
+    epicyclic.io.expressions.ExpressionError: stationary_ratio: 'os.system' may only contain numbers, + - * / ** and parentheses; found an attribute.
     """
     if not isinstance(text, str):
         raise ExpressionError(f"{field}: expected an expression string, got {text!r}.", str(text), field)

@@ -31,11 +31,19 @@ Examples
 ... [units]
 ... power = "kW"
 ... [[planetary]]
-... name = "P"; sun = "in"; ring = "ring"; carrier = "out"; stationary_ratio = -2
+... name = "P"
+... sun = "in"
+... ring = "ring"
+... carrier = "out"
+... stationary_ratio = -2
 ... [[brake]]
-... name = "B"; shaft = "ring"
+... name = "B"
+... shaft = "ring"
 ... [operating_point]
-... speeds = { in = 3000 }; powers = { in = 10 }; drives = ["in"]; loads = ["out"]
+... speeds = { in = 3000 }
+... powers = { in = 10 }
+... drives = ["in"]
+... loads = ["out"]
 ... ''')
 >>> report = report_dict(f.solve(), f.units)
 >>> report["units"]["power"], round(report["solution"]["output_power"], 6)

@@ -3,17 +3,25 @@
 The format is documented key by key in ``docs/file-format.md``; in short::
 
     title = "Brandenberger 1952, Bild 10"
-    [units]                                   # optional: units of plain numbers and of reports
-    speed = "U/min"; torque = "kp*cm"; power = "PS"
-    [[planetary]]                             # sets: teeth = {...} or stationary_ratio
-    name = "planetary"; sun = "I"; ring = "II"; carrier = "III"
+    [units]                      # optional: units of plain numbers and of reports
+    speed = "U/min"
+    torque = "kp*cm"
+    power = "PS"
+    [[planetary]]                # a set: teeth = {...} or stationary_ratio
+    name = "planetary"
+    sun = "I"
+    ring = "II"
+    carrier = "III"
     teeth = { kind = "stepped", sun = 50, planet_sun = 24, planet_ring = 30, ring = 42, ring_internal = false }
     stationary_efficiency = 0.9
-    [[gear]]                                  # fixed-axis stages: meshes or ratio
-    name = "stage"; first = "III"; second = "II"; meshes = [[40, 44, "external"], [20, 64, "external"]]
-    [[clutch]] / [[brake]]                    # shift elements
-    [operating_point]                         # speeds, torques, powers, drives, loads
-    [transmission]                            # optional: input, output, schedule
+    [[gear]]                     # a fixed-axis stage: meshes or ratio
+    name = "stage"
+    first = "III"
+    second = "II"
+    meshes = [[40, 44, "external"], [20, 64, "external"]]
+    [[clutch]], [[brake]]        # shift elements
+    [operating_point]            # speeds, torques, powers, drives, loads, gear
+    [transmission]               # optional: input, output, schedule
 
 Every problem is reported as an :class:`InputFileError` (or the model's own
 error, prefixed with the file and element) that names the file, the element,
@@ -202,12 +210,19 @@ def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
     --------
     >>> f = loads_train_file('''
     ... [[planetary]]
-    ... name = "P"; sun = "in"; ring = "ring"; carrier = "out"
+    ... name = "P"
+    ... sun = "in"
+    ... ring = "ring"
+    ... carrier = "out"
     ... teeth = { sun = 30, planet = 24, ring = 78 }
     ... [[brake]]
-    ... name = "B"; shaft = "ring"
+    ... name = "B"
+    ... shaft = "ring"
     ... [operating_point]
-    ... speeds = { in = "3000 rpm" }; torques = { in = 10 }; drives = ["in"]; loads = ["out"]
+    ... speeds = { in = "3000 rpm" }
+    ... torques = { in = 10 }
+    ... drives = ["in"]
+    ... loads = ["out"]
     ... ''')
     >>> round(f.solve().speed("out"), 6)
     833.333333

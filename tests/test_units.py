@@ -1,0 +1,109 @@
+"""Units at the edges (epicyclic.units): the sources' units and pint's traps."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from epicyclic.errors import EpicyclicError
+from epicyclic.units import UnitError, Units, from_core, to_core, unit_factor
+
+# Brandenberger 1952, text to eq. (2): M = 71620·N/n cm kg (N in PS, n in U/min), so
+# 3 PS at 1500 U/min is 143.24 cm kg; 1 PS = 75 kp·m/s = 735.49875 W (DIN 1301); 1 kp = 9.80665 N.
+# hp = 745.69987 W (mechanical), lbf·ft = 1.3558179 N·m (NIST SP 811). Relative tolerance 1e-9.
+CASES = [
+    ("3 PS", "power", 3 * 735.49875),
+    ("1 hp", "power", 745.6998715822702),
+    ("2.5 kW", "power", 2500.0),
+    ("1500 U/min", "speed", 1500.0),
+    ("1500 1/min", "speed", 1500.0),
+    ("1500 rpm", "speed", 1500.0),
+    ("25 1/s", "speed", 1500.0),
+    ("1 rad/s", "speed", 30 / math.pi),  # explicit factor, never through Hz
+    ("360 deg/s", "speed", 60.0),
+    ("143.24 kp*cm", "torque", 143.24 * 0.0980665),
+    ("143.24 cm*kg", "torque", 143.24 * 0.0980665),  # Brandenberger's "cm kg" is kp·cm
+    ("2 kp*m", "torque", 2 * 9.80665),
+    ("1 lbf*ft", "torque", 1.3558179483314004),
+    ("10 N*m", "torque", 10.0),
+    ("0.01 kN*m", "torque", 10.0),
+]
+
+
+@pytest.mark.parametrize("text, quantity, expected", CASES)
+def test_to_core_reads_the_sources_units(text, quantity, expected):
+    assert to_core(text, quantity) == pytest.approx(expected, rel=1e-9)
+
+
+def test_brandenberger_input_torque_from_ps_and_u_per_min():
+    # Brandenberger 1952: M_An' = 71620·3/1500 = 143.24 cm kg (printed to 2 decimals).
+    power = to_core("3 PS", "power")
+    omega = to_core("1500 U/min", "speed") * math.pi / 30
+    assert from_core(power / omega, "torque", "kp*cm") == pytest.approx(143.24, abs=0.005)
+
+
+def test_plain_numbers_use_the_default_unit_or_the_core_unit():
+    assert to_core(3, "power") == 3.0
+    assert to_core(3, "power", default_unit="PS") == pytest.approx(2206.49625)
+    assert to_core("3", "power", default_unit="kW") == 3000.0
+
+
+@pytest.mark.parametrize(
+    "value, quantity, match",
+    [
+        ("3 m", "power", r"powers\.II: '3 m' is not a power.*\[length\]"),
+        ("1500 N*m", "speed", "is not a speed"),
+        ("3 PS", "torque", "is not a torque"),
+        ("3 furlongs_per_fortnight", "power", "cannot read"),
+        ("3 PS/", "power", "cannot read"),
+        ("", "power", "empty string"),
+        (True, "power", "boolean"),
+        ([3], "power", "expected a number or a string"),
+        (float("nan"), "speed", "finite"),
+        ("1e999 W", "power", "finite"),
+        ("x" * 300, "power", "too long"),
+    ],
+)
+def test_bad_values_name_the_field(value, quantity, match):
+    with pytest.raises(UnitError, match=match) as info:
+        to_core(value, quantity, field="powers.II")
+    assert isinstance(info.value, EpicyclicError) and isinstance(info.value, ValueError)
+    assert info.value.field == "powers.II"
+
+
+def test_unknown_quantity_and_bad_unit():
+    with pytest.raises(UnitError, match="unknown quantity 'energy'"):
+        to_core("3 J", "energy")
+    with pytest.raises(UnitError, match="units.power.*is not a power"):
+        Units(power="U/min")
+    with pytest.raises(UnitError, match="non-empty string"):
+        unit_factor("", "speed")
+
+
+def test_ps_is_not_petasiemens_and_u_is_not_enzyme_units():
+    # pint's default registry reads PS as petasiemens and U as enzyme units.
+    assert unit_factor("PS", "power") == 735.49875
+    assert unit_factor("U/min", "speed") == 1.0
+
+
+def test_units_object_converts_and_serialises():
+    u = Units(speed="U/min", torque="kp*cm", power="PS")
+    assert u.to_dict() == {"speed": "U/min", "torque": "kp*cm", "power": "PS"}
+    assert u.convert(None, "power") is None
+    assert u.torque_from_core(9.80665) == pytest.approx(100.0)
+    assert u.speed_from_core(1500.0) == 1500.0
+
+
+UNITS = {"speed": ["1/min", "U/min", "rpm", "1/s", "rad/s"], "torque": ["N*m", "kp*cm", "cm*kg", "lbf*ft"],
+         "power": ["W", "kW", "PS", "hp"]}
+
+
+@given(st.sampled_from(sorted(UNITS)).flatmap(lambda q: st.tuples(st.just(q), st.sampled_from(UNITS[q]))),
+       st.floats(min_value=-1e6, max_value=1e6, allow_nan=False))
+def test_round_trip_through_any_unit(quantity_unit, value):
+    quantity, unit = quantity_unit
+    back = to_core(from_core(value, quantity, unit), quantity, default_unit=unit)
+    assert back == pytest.approx(value, rel=1e-12, abs=1e-9)
