@@ -28,6 +28,11 @@ app.command("analyze")(_analyze.analyze)
 app.command("modes")(_modes.modes)
 app.command("explain")(_explain.explain)
 
+from . import gears as _gears  # noqa: E402
+
+app.command("gears")(_gears.gears)
+app.command("explore")(_gears.explore)
+
 
 def main() -> None:
     """Console-script entry point."""

@@ -1,0 +1,69 @@
+"""``epicyclic gears FILE`` and ``epicyclic explore FILE``: multi-speed transmissions.
+
+``gears`` prints the per-gear table of a file with a ``[transmission]`` table
+(ratio, step, efficiency in drive and coast, circulating power, the most
+loaded shift element, rolling sets; then spread and mean step), with
+``--detail`` also every shift element's torque and slip per gear.
+``explore`` lists every combination of the file's clutches and brakes that
+gives a one-degree-of-freedom drive between input and output.
+"""
+
+from __future__ import annotations
+
+import json
+from enum import Enum
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from ..transmission import Transmission, explore as _explore
+from ._common import emit, guarded
+
+__all__ = ["gears", "explore"]
+
+
+class GearsFormat(str, Enum):
+    """Output formats of ``gears`` and ``explore``."""
+
+    table = "table"
+    json = "json"
+    markdown = "markdown"
+    html = "html"
+
+
+def _render(result, format: GearsFormat, detail_text: str = "") -> str:
+    if format is GearsFormat.json:
+        return json.dumps(result.to_dict(), indent=2, ensure_ascii=False)
+    if format is GearsFormat.markdown:
+        return result.markdown()
+    if format is GearsFormat.html:
+        return ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>epicyclic</title></head><body>"
+                + result._repr_html_() + "</body></html>")
+    return result.table() + (("\n\n" + detail_text) if detail_text else "")
+
+
+@guarded
+def gears(
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table.")],
+    format: Annotated[GearsFormat, typer.Option("--format", "-f", help="Output format.")] = GearsFormat.table,
+    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    detail: Annotated[bool, typer.Option("--detail", help="Also list every shift element and set per gear.")] = False,
+) -> None:
+    """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread."""
+    transmission = Transmission.from_file(file)
+    analysis = transmission.analyze_all()
+    detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
+    emit(_render(analysis, format, detail_text), out)
+
+
+@guarded
+def explore(
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table.")],
+    format: Annotated[GearsFormat, typer.Option("--format", "-f", help="Output format.")] = GearsFormat.table,
+    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    redundant: Annotated[bool, typer.Option("--redundant", help="Also list states with a redundant element.")] = False,
+) -> None:
+    """Every combination of the file's clutches and brakes that drives the output: ratio and kind."""
+    transmission = Transmission.from_file(file)
+    emit(_render(_explore(transmission, include_redundant=redundant), format), out)
