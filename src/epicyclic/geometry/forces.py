@@ -85,7 +85,7 @@ def mesh_forces(torque: float, pitch_diameter: float, mesh: MeshGeometry) -> tup
     >>> from epicyclic.geometry.gear import BasicRack, MeshGeometry
     >>> mesh = MeshGeometry.at_center_distance(15, 45, BasicRack(2.5, helix_angle=20), 80.0)
     >>> [round(f, 1) for f in mesh_forces(100.0, mesh.operating_pitch_diameters[0], mesh)]
-    [5000.0, 1971.1, 1824.0]
+    [5000.0, 1971.1, 1824.1]
     """
     if pitch_diameter <= 0:
         raise GeometryError(f"mesh_forces: pitch_diameter must be > 0 mm, got {pitch_diameter!r}.")
