@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import functools
 import os
-import textwrap
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any, TypeVar
@@ -28,10 +27,8 @@ F = TypeVar("F", bound=Callable[..., Any])
 
 
 def fail(message: str, code: int = EXIT_BAD_INPUT) -> None:
-    """Print ``message`` as one wrapped paragraph on stderr and exit with ``code``."""
-    paragraph = textwrap.fill(" ".join(message.split()), width=100, break_long_words=False,
-                              break_on_hyphens=False)
-    typer.echo(paragraph, err=True)
+    """Print ``message`` as one paragraph (one line; terminals wrap it) on stderr and exit with ``code``."""
+    typer.echo(" ".join(message.split()), err=True)
     raise typer.Exit(code)
 
 
