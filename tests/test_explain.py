@@ -1,0 +1,64 @@
+"""The worked solution (epicyclic.explain)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from epicyclic import Brake, Clutch, GearTrain, OperatingPoint, PlanetarySet, solve
+from epicyclic.demo import brandenberger_1952
+from epicyclic.errors import EpicyclicError
+from epicyclic.explain import LANGUAGES, explain
+from epicyclic.io import load_train_file
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+def test_brandenberger_equation_7_with_numbers_in_core_units():
+    # Brandenberger 1952, eq. (7): M1'(n1 − n3)η1η2 + M2'(n2 − n3) = 0; core units N·m, 1/min.
+    e = explain(solve(*brandenberger_1952()))
+    text = e.text()
+    assert "M1'·(n1 − n3)·η0 + M2'·(n2 − n3) = 0" in text
+    assert "(-6.53205)·(2739.84 − 5280)·0.9 + 3.95059·(1500 − 5280)" in text
+    # eq. (9) for the stage: the driving side (II) carries η
+    assert "M1'·(n1 − n3) + M2'·(n2 − n3)·η0 = 0" in text
+    assert [s.title[:2] for s in e.steps] == ["1.", "2.", "3.", "4.", "5."]
+    assert e.to_dict()["steps"][1]["lines"][0].startswith("planetary: Willis equation")
+    assert str(e) == text and e.markdown().startswith("# Worked solution") and "<pre>" in e._repr_html_()
+
+
+def test_every_shaft_balances_to_zero_and_results_end_the_text():
+    f = load_train_file(EXAMPLES / "brandenberger_1952.toml")
+    e = explain(f.solve(), f.units)
+    balance = e.steps[3].lines[1:]
+    assert any(line.startswith("III:") and line.endswith("= 0 kp*cm") for line in balance)
+    assert e.steps[-1].lines[-2].startswith("efficiency η = P_out/P_in")
+
+
+def test_german_terms():
+    text = explain(solve(*brandenberger_1952()), lang="de").text()
+    for term in ("Lösungsweg", "Steg", "Sonnenrad", "Hohlrad", "Standübersetzung", "Standwirkungsgrad",
+                 "Wälzleistung", "Kupplungsleistung", "Wirkungsgrad", "Momentengleichgewicht"):
+        assert term in text
+    assert set(LANGUAGES) == {"en", "de"}
+
+
+def test_shift_elements_lossless_sets_and_self_locking_are_explained():
+    train = GearTrain([
+        PlanetarySet("P", "sun", "ring", "carrier", -2.0, 1.0),
+        Brake("B", "ring"),
+        Clutch("C", "sun", "carrier", engaged=False),
+    ])
+    op = OperatingPoint(speeds={"sun": 3000}, torques={"sun": 10}, drives=["sun"], loads=["carrier"])
+    text = explain(solve(train, op)).text()
+    assert "engaged brake: the shaft stands still: n_ring = 0" in text
+    assert "open: no condition (slip speed 2000 1/min)" in text
+    assert "lossless element (η = 1)" in text
+    locked = load_train_file(EXAMPLES / "plus_set_self_locking.toml").solve()
+    assert "SELF-LOCKING" in explain(locked).text()
+
+
+def test_unknown_language():
+    with pytest.raises(EpicyclicError, match="lang must be one of en, de, got 'fr'"):
+        explain(solve(*brandenberger_1952()), lang="fr")
