@@ -30,7 +30,6 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ModelError
 from ..model.train import GearTrain
 from ..solver.assembly import matrices
 from ..solver.linear import RELATIVE_TOLERANCE
@@ -256,11 +255,9 @@ def explore(
 
     found: list[Combination] = []
     held = 0
-    states = 0
     sizes = range(0, len(chosen) + 1) if include_redundant else [needed] if 0 <= needed <= len(chosen) else []
     for size in sizes:
         for combo in itertools.combinations(chosen, size):
-            states += 1
             rows = np.vstack([base] + [link_row[c][None, :] for c in combo]) if combo else base
             rank = _rank(rows)
             if rank != n - 1:
@@ -278,7 +275,7 @@ def explore(
             ratio = float(1.0 / n_out)
             found.append(Combination(combo, ratio, classify(ratio), schedule.get(frozenset(combo)),
                                      redundant=rows.shape[0] > rank))
-    total_states = 2 ** len(chosen)
+    total_states = 2 ** len(chosen)  # states of other sizes cannot have exactly one DOF without redundancy
     # duplicates
     with_dups = []
     for c in found:
@@ -286,8 +283,6 @@ def explore(
                      if d is not c and abs(d.ratio - c.ratio) <= 1e-9 * max(1.0, abs(c.ratio)))
         with_dups.append(Combination(c.engaged, c.ratio, c.kind, c.gear, c.redundant, same))
     with_dups.sort(key=lambda c: (c.ratio < 0, -abs(c.ratio) if c.ratio > 0 else abs(c.ratio), len(c.engaged)))
-    if not include_redundant:
-        _ = states  # only states of the needed size were solved; the rest cannot have one DOF
     return Exploration(name, input, output, tuple(chosen), tuple(with_dups), total_states, held,
                        time.perf_counter() - start)
 
