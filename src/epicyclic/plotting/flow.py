@@ -85,6 +85,7 @@ class PowerFlow:
     circulating_power: float
     rolling: Mapping[str, float]
     losses: Mapping[str, float]
+    self_locking: bool = False
 
     def node(self, name: str) -> FlowNode:
         return next(n for n in self.nodes if n.name == name)
@@ -139,6 +140,8 @@ class PowerFlow:
                   title_fontsize=8)
         circ = (f"largest internal power {fmt(self.circulating_power, 3)} × input"
                 + (" — power circulates" if self.circulating_power > 1 + 1e-9 else ""))
+        if self.self_locking:
+            circ += " — SELF-LOCKING (formal solution shown)"
         ax.set_title(f"{self.title}: power flow, input {fmt(self.input_power)} W; {circ}", fontsize=11)
         fig.tight_layout()
         return fig
@@ -191,7 +194,7 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH) -> PowerFlow
     rolling = {e.name: e.rolling_power for e in solution.elements.values() if e.kind == "planetary set"}
     losses = {e.name: e.loss for e in solution.elements.values() if e.kind in ("planetary set", "gear stage")}
     return PowerFlow(solution.train.name, nodes, edges, per_watt, solution.input_power, solution.circulating_power,
-                     MappingProxyType(rolling), MappingProxyType(losses))
+                     MappingProxyType(rolling), MappingProxyType(losses), solution.self_locking is not None)
 
 
 def _layout(solution: Solution, elements: list[str], edges: tuple[FlowEdge, ...]) -> tuple[FlowNode, ...]:
