@@ -56,7 +56,7 @@ def report_figures(solution: Solution) -> tuple[list[tuple[str, str]], str | Non
     try:
         from ..plotting import report_figures as make_figures
     except ImportError:
-        return [], "diagrams need epicyclic.plotting, which is not installed"
+        return [], "diagrams need epicyclic.plotting.report_figures, which is not available"
     try:
         return list(make_figures(solution)), None
     except Exception as exc:  # a diagram must not cost the user the whole report
