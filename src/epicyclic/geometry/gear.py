@@ -294,8 +294,15 @@ class MeshGeometry:
                 f"z1={self.gear1.teeth}, z2={self.gear2.teeth}."
             )
         # Fail early if the profile shifts give no real operating pressure angle.
-        if not 0.0 < self.alpha_wt < math.pi / 2:
-            raise GeometryError(f"{owner}: the profile shifts give no operating pressure angle; reduce them.")
+        try:
+            alpha_wt = self.alpha_wt
+        except ValueError:
+            alpha_wt = -1.0
+        if not 0.0 < alpha_wt < math.pi / 2:
+            raise GeometryError(
+                f"{owner}: the profile-shift sum {self._x_sum:+.4f} gives no operating pressure angle for "
+                f"z = {self.gear1.teeth}/{self.gear2.teeth} (inv α_wt would be negative); raise the shifts."
+            )
 
     # ------------------------------------------------------------------ basics
     @classmethod
