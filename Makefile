@@ -14,7 +14,7 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 demo: $(STAMP)
-	$(PY) -m epicyclic.demo
+	$(VENV)/bin/epicyclic analyze examples/brandenberger_1952.toml
 	$(VENV)/bin/epicyclic analyze examples/brandenberger_1952.toml --format html --out out/brandenberger_1952.html
 
 test: $(STAMP)
