@@ -37,13 +37,20 @@ internal interference
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field, fields
+from collections.abc import Sequence
 from types import MappingProxyType
-from typing import Any, Literal
+from typing import Literal
 
-from ._render import html_table, text_table
-from .errors import FittingError, GeometryError
+from .checks import (
+    AssemblyCheck,
+    Check,
+    CoaxialityCheck,
+    FittingReport,
+    InterferenceCheck,
+    NeighbourCheck,
+    UndercutCheck,
+)
+from .errors import GeometryError
 from .gear import MeshGeometry
 from .involute import inv, profile_shift_sum
 from .set_geometry import SetGeometry
@@ -71,93 +78,6 @@ __all__ = [
 
 #: Numerical margin (mm) below which a clearance counts as contact.
 _EPS_MM = 1e-9
-
-
-@dataclass(frozen=True)
-class Check:
-    """Result of one fitting condition.
-
-    Attributes
-    ----------
-    condition : str
-        ``coaxiality``, ``assembly``, ``neighbours``, ``undercut`` or ``interference``.
-    passed : bool
-    message : str
-        Which condition, by how much, and what to change (or why it passes).
-    severity : {"error", "warning"}
-        Failing errors make the set unusable; warnings ask for a closer look.
-    """
-
-    condition: str
-    passed: bool
-    message: str
-    severity: str
-
-    def to_dict(self) -> dict[str, Any]:
-        out: dict[str, Any] = {}
-        for f in fields(self):
-            value = getattr(self, f.name)
-            out[f.name] = dict(value) if isinstance(value, Mapping) else (list(value) if isinstance(value, tuple) else value)
-        return out
-
-    def __str__(self) -> str:
-        state = "ok" if self.passed else ("FAIL" if self.severity == "error" else "WARNING")
-        return f"[{state}] {self.condition}: {self.message}"
-
-
-@dataclass(frozen=True)
-class CoaxialityCheck(Check):
-    """Coaxiality: centre distances of the meshes (mm), their difference and a fix."""
-
-    center_distances: Mapping[str, float]
-    difference: float
-    tolerance: float
-    suggestion: Mapping[str, float]
-
-
-@dataclass(frozen=True)
-class AssemblyCheck(Check):
-    """Assembly: possible planet positions, equal spacing, actual angles and phasing."""
-
-    planets: int
-    ticks: int
-    min_angle: float
-    equally_spaced: bool
-    angles: tuple[float, ...]
-    max_deviation: float
-    phasing: Mapping[str, str]
-
-
-@dataclass(frozen=True)
-class NeighbourCheck(Check):
-    """Neighbour condition: smallest clearance between planet tips (mm) and the most planets that fit."""
-
-    planets: int
-    clearance: float
-    min_clearance: float
-    max_planets: int
-
-
-@dataclass(frozen=True)
-class UndercutCheck(Check):
-    """Undercut of one external gear: z, x, the limit z_g and the least profile shift x_min."""
-
-    gear: str
-    teeth: int
-    profile_shift: float
-    limit_teeth: float
-    min_profile_shift: float
-    limit: str
-
-
-@dataclass(frozen=True)
-class InterferenceCheck(Check):
-    """Interference of an internal mesh: margins (≥ 0 passes) of the three KHK conditions."""
-
-    mesh: str
-    involute_margin: float
-    trochoid_margin: float
-    trimming_margin: float
 
 
 # ---------------------------------------------------------------------- coaxiality
@@ -569,66 +489,6 @@ def check_interference(geometry: SetGeometry) -> tuple[InterferenceCheck, ...]:
             )
         out.append(InterferenceCheck("interference", not bad, message, "warning", mesh.name, inv_m, tro_m, trim_m))
     return tuple(out)
-
-
-# ---------------------------------------------------------------------- report
-@dataclass(frozen=True)
-class FittingReport:
-    """All fitting conditions of one set.
-
-    Attributes
-    ----------
-    geometry : SetGeometry
-    checks : tuple of Check
-    """
-
-    geometry: SetGeometry
-    checks: tuple[Check, ...] = field(default_factory=tuple)
-
-    @property
-    def passed(self) -> bool:
-        """True when no error-level condition fails (warnings allowed)."""
-        return not self.failures
-
-    @property
-    def failures(self) -> tuple[Check, ...]:
-        return tuple(c for c in self.checks if not c.passed and c.severity == "error")
-
-    @property
-    def warnings(self) -> tuple[Check, ...]:
-        return tuple(c for c in self.checks if not c.passed and c.severity == "warning") + tuple(
-            c for c in self.checks if c.passed and c.severity == "warning"
-        )
-
-    def raise_if_failed(self) -> None:
-        """Raise :class:`~epicyclic.geometry.errors.FittingError` listing every failing condition."""
-        if self.failures:
-            lines = "; ".join(c.message for c in self.failures)
-            raise FittingError(
-                f"set {self.geometry.planetary_set.name!r} does not fit ({len(self.failures)} condition(s)): {lines}",
-                self.failures,
-            )
-
-    def to_dict(self) -> dict[str, Any]:
-        return {"set": self.geometry.planetary_set.name, "passed": self.passed,
-                "checks": [c.to_dict() for c in self.checks]}
-
-    def _rows(self) -> list[list[object]]:
-        return [[c.condition, "ok" if c.passed else ("FAIL" if c.severity == "error" else "warning"), c.message]
-                for c in self.checks]
-
-    def table(self) -> str:
-        return text_table(["condition", "result", "numbers"], self._rows(),
-                          title=f"fitting of {self.geometry.planetary_set.name!r}: "
-                                + ("passes" if self.passed else "FAILS"))
-
-    def _repr_html_(self) -> str:
-        return html_table(["condition", "result", "numbers"], self._rows(),
-                          title=f"fitting of {self.geometry.planetary_set.name}")
-
-    def __repr__(self) -> str:
-        return f"FittingReport({self.geometry.planetary_set.name!r}, passed={self.passed}, " \
-               f"failures={[c.condition for c in self.failures]})"
 
 
 def check_fitting(
