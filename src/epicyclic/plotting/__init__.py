@@ -1,5 +1,137 @@
-"""Pictures of a solved gear train (placeholder, completed below)."""
+"""Pictures of a solved gear train: speed plans, torque and power diagrams, levers, power flow, animation.
 
-from ._common import PlottingError
+Every picture is computed first into a frozen data object (``speed_plan``,
+``range_diagram``, ``torque_diagram``, ``power_diagram``, ``lever_diagram``,
+``power_flow``, ``planetary_animation``) and drawn from it (``.plot()``,
+``.svg()``); matplotlib is imported only when drawing.
 
-__all__ = ["PlottingError"]
+:func:`figure` draws one kind of picture; :func:`report_figures` returns every
+picture as inline SVG for the HTML report.
+
+References
+----------
+Brandenberger 1952, Bild 3–9; Queitsch, Bild 5; willis-equation.md;
+Benford & Leising 1981 (SAE 810102).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from ._common import FIGURE_SUFFIXES, PlottingError, figure_svg, save_figure
+from .animation import PlanetaryAnimation, planetary_animation
+from .diagrams import PowerDiagram, TorqueDiagram, power_diagram, torque_diagram
+from .flow import PowerFlow, power_flow
+from .lever import CompoundLever, LeverDiagram, compound_lever, lever_diagram
+from .speed_plan import RangeDiagram, SpeedPlan, plot_speed_plan, range_diagram, set_layout, speed_plan
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..results.solution import Solution
+
+__all__ = [
+    "KINDS",
+    "FIGURE_SUFFIXES",
+    "CompoundLever",
+    "LeverDiagram",
+    "PlanetaryAnimation",
+    "PlottingError",
+    "PowerDiagram",
+    "PowerFlow",
+    "RangeDiagram",
+    "SpeedPlan",
+    "TorqueDiagram",
+    "compound_lever",
+    "figure",
+    "figure_svg",
+    "lever_diagram",
+    "planetary_animation",
+    "plot_speed_plan",
+    "power_diagram",
+    "power_flow",
+    "range_diagram",
+    "report_figures",
+    "save_figure",
+    "save_plot",
+    "set_layout",
+    "speed_plan",
+    "torque_diagram",
+]
+
+#: The kinds of picture :func:`figure` draws.
+KINDS = ("speed", "torque", "power", "lever", "flow")
+
+
+def figure(solution: Solution, kind: str) -> Any:
+    """A matplotlib figure of one kind: speed, torque, power, lever or flow.
+
+    Raises
+    ------
+    PlottingError
+        Unknown kind, or a speed plan of a train without planetary set.
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> from epicyclic.demo import brandenberger_1952
+    >>> from epicyclic import solve
+    >>> fig = figure(solve(*brandenberger_1952()), "power")
+    >>> len(fig.axes)
+    4
+    """
+    if kind == "speed":
+        return plot_speed_plan(solution)
+    if kind == "torque":
+        return torque_diagram(solution).plot()
+    if kind == "power":
+        return power_diagram(solution).plot()
+    if kind == "lever":
+        return lever_diagram(solution).plot()
+    if kind == "flow":
+        return power_flow(solution).plot()
+    raise PlottingError(f"plot: kind must be one of {', '.join(KINDS)}, got {kind!r}.")
+
+
+def save_plot(solution: Solution, kind: str, path: str | Path, *, dpi: int = 150) -> Path:
+    """Draw ``kind`` and write it to ``path`` (.svg, .png or .pdf)."""
+    from ._common import check_suffix
+
+    check_suffix(path, FIGURE_SUFFIXES, "plot")
+    return save_figure(figure(solution, kind), path, dpi=dpi)
+
+
+def report_figures(solution: Solution) -> list[tuple[str, str]]:
+    """Every picture of a solution as (title, inline SVG text) for the HTML report.
+
+    The SVG texts start with ``<svg`` (no XML prolog) and contain no scripts
+    or external references.  Pictures that do not apply (a speed plan without
+    planetary set) are left out.  The last entry is the animation of the first
+    planetary set (SMIL, plays in the browser).
+
+    Examples
+    --------
+    >>> import matplotlib; matplotlib.use("Agg")
+    >>> from epicyclic.demo import brandenberger_1952
+    >>> from epicyclic import solve
+    >>> [title for title, _ in report_figures(solve(*brandenberger_1952()))]  # doctest: +NORMALIZE_WHITESPACE
+    ['Speed plan (Kutzbach) and speed ranges 1–7', 'Torques with and without friction',
+     'Powers as areas, loss rectangle (Brandenberger Bild 8/9)', 'Lever diagram', 'Power flow',
+     'Animation of set planetary']
+    """
+    titles = {
+        "speed": "Speed plan (Kutzbach) and speed ranges 1–7",
+        "torque": "Torques with and without friction",
+        "power": "Powers as areas, loss rectangle (Brandenberger Bild 8/9)",
+        "lever": "Lever diagram",
+        "flow": "Power flow",
+    }
+    out: list[tuple[str, str]] = []
+    has_sets = bool(solution.train.planetary_sets)
+    for kind in KINDS:
+        if kind == "speed" and not has_sets:
+            continue
+        out.append((titles[kind], figure_svg(figure(solution, kind))))
+    if has_sets:
+        anim = planetary_animation(solution)
+        out.append((f"Animation of set {anim.set_name}", anim.svg()))
+    return out
