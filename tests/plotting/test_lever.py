@@ -110,3 +110,26 @@ def test_figure_and_data(brandenberger):
 def test_errors():
     with pytest.raises(PlottingError, match="give a solution"):
         lever_diagram()
+
+
+EXAMPLES = __import__("pathlib").Path(__file__).resolve().parents[2] / "examples"
+
+
+@pytest.mark.parametrize(("example", "gear", "published"), [
+    # Ford C4 (Simpson): "Ratios are 2.46 low, 1.46 second and direct high", reverse 2.18 (sources in the file).
+    ("simpson_c4_3speed", "1", 2.46), ("simpson_c4_3speed", "2", 1.46), ("simpson_c4_3speed", "R", -2.18),
+    # Ford AOD (Ravigneaux): ATRA TSB 89-30: 2.40, 1.47, 1.00, 0.67, R −2.00.
+    ("ravigneaux_ford_aod_4speed", "1", 2.40), ("ravigneaux_ford_aod_4speed", "2", 1.47),
+    ("ravigneaux_ford_aod_4speed", "4", 0.67), ("ravigneaux_ford_aod_4speed", "R", -2.00),
+])
+def test_gear_ratio_read_from_the_compound_lever(example, gear, published):
+    # Rotate the compound lever about the held (housing) node: n_in/n_out = (Y_in − Y_h)/(Y_out − Y_h).
+    # The published ratios are printed to 2 digits: tolerance 0.005.
+    from epicyclic.io import load_train_file
+
+    spec = load_train_file(EXAMPLES / f"{example}.toml")
+    tr = spec.transmission
+    lever = compound_lever(tr.train_in_gear(spec.train, gear))
+    p = lever.positions
+    ratio = (p[tr.input] - p["housing"]) / (p[tr.output] - p["housing"])
+    assert ratio == pytest.approx(published, abs=0.005)

@@ -71,8 +71,12 @@ def figure_svg(fig: Any) -> str:
 
     The result starts with ``<svg`` and can be pasted into an HTML page.
     """
+    import matplotlib
+
     buffer = io.StringIO()
-    fig.savefig(buffer, format="svg", bbox_inches="tight")
+    # text stays text (small, searchable); one salt so that ids are reproducible
+    with matplotlib.rc_context({"svg.fonttype": "none", "svg.hashsalt": "epicyclic"}):
+        fig.savefig(buffer, format="svg", bbox_inches="tight")
     pyplot().close(fig)
     text = buffer.getvalue()
     start = text.find("<svg")

@@ -185,7 +185,7 @@ class LeverDiagram:
             elif kind == "brake" and engaged and ends:
                 x, y = ends[0]
                 ax.plot([x - 0.25, x], [y, y], color="red", lw=2.5, label=None if drawn_label else "engaged brake")
-                ax.annotate(f"{name} ⏚", (x - 0.25, y), color="red", fontsize=8, ha="right")
+                ax.annotate(f"{name} (held)", (x - 0.25, y), color="red", fontsize=8, ha="right")
                 drawn_label = True
         ax.plot([], [], color="grey", ls="--", label="same shaft (link)")
         ax.set_xlim(-0.9, len(self.levers) - 0.1)
