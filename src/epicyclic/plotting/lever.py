@@ -123,6 +123,7 @@ class LeverDiagram:
     links: tuple[tuple[str, int, int], ...]
     shift_elements: tuple[tuple[str, str, tuple[str, str], bool], ...]
     compound: CompoundLever | None
+    permanent: CompoundLever | None = None
 
     def to_dict(self) -> dict[str, Any]:
         return {
@@ -151,8 +152,10 @@ class LeverDiagram:
         return fig
 
     def _heights(self, lever: Lever) -> dict[str, float]:
-        if self.compound is not None:
-            return {n.port: self.compound.positions[n.shaft] for n in lever.nodes}
+        """Node heights for the left panel: the permanent compound lever if the sets and
+        stages alone form one, else each lever on its own scale."""
+        if self.permanent is not None and all(n.shaft in self.permanent.positions for n in lever.nodes):
+            return {n.port: self.permanent.positions[n.shaft] for n in lever.nodes}
         return {n.port: n.position for n in lever.nodes}
 
     def _plot_levers(self, ax: Any) -> None:
@@ -208,8 +211,10 @@ class LeverDiagram:
         alpha, beta = c.speed_line()
         ax.plot([alpha + beta * (min(ys) - 0.05), alpha + beta * (max(ys) + 0.05)], [min(ys) - 0.05, max(ys) + 0.05],
                 color="grey", lw=1.5, ls="-", label="speeds: one straight line")
+        top = max(abs(v) for v in c.speeds.values()) or 1.0
         for y, shafts in c.groups():
             n = c.speeds[shafts[0]]
+            n = 0.0 if abs(n) <= 1e-9 * top else n
             colour = colours[shafts[0]]
             ax.annotate("", (n, y), (0, y), arrowprops={"arrowstyle": "->", "color": colour, "lw": 2})
             ax.plot([n], [y], "o", color=colour, mec="black", ms=9, zorder=5)
@@ -356,7 +361,10 @@ def lever_diagram(solution: Solution | None = None, *, train: GearTrain | None =
     shift = tuple((e.name, "clutch" if isinstance(e, Clutch) else "brake", e.shafts, e.engaged)
                   for e in train.shift_elements if isinstance(e, (Clutch, Brake)))
     compound = compound_lever(train)
+    permanent = compound_lever(train.with_engaged([])) if train.shift_elements else compound
+    if permanent is not None and len({round(y, 9) for y in permanent.positions.values()}) < 2:
+        permanent = None
     if compound is not None and solution is not None:
         compound = CompoundLever(compound.positions,
                                  MappingProxyType({s: solution.speed(s) for s in compound.positions}))
-    return LeverDiagram(train.name, levers, tuple(links), shift, compound)
+    return LeverDiagram(train.name, levers, tuple(links), shift, compound, permanent)
