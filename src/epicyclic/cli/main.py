@@ -33,6 +33,11 @@ from . import gears as _gears  # noqa: E402
 app.command("gears")(_gears.gears)
 app.command("explore")(_gears.explore)
 
+from . import plot as _plot  # noqa: E402
+
+app.command("plot")(_plot.plot)
+app.command("animate")(_plot.animate)
+
 
 def main() -> None:
     """Console-script entry point."""

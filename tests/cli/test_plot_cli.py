@@ -1,0 +1,75 @@
+"""``epicyclic plot`` and ``epicyclic animate``: files written, exit code 2 on bad input."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib
+import pytest
+from typer.testing import CliRunner
+
+from epicyclic.cli.main import app
+
+matplotlib.use("Agg")
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+BRANDENBERGER = str(EXAMPLES / "brandenberger_1952.toml")
+runner = CliRunner()
+
+
+def run(*args: str):
+    return runner.invoke(app, list(args))
+
+
+@pytest.mark.parametrize("kind", ["speed", "torque", "power", "lever", "flow"])
+def test_plot_writes_svg(kind, tmp_path):
+    out = tmp_path / f"{kind}.svg"
+    result = run("plot", BRANDENBERGER, "--kind", kind, "--out", str(out))
+    assert result.exit_code == 0, result.output
+    assert out.read_text().lstrip().startswith("<?xml") and "<svg" in out.read_text()
+
+
+@pytest.mark.parametrize("suffix, magic", [(".png", b"\x89PNG"), (".pdf", b"%PDF")])
+def test_plot_png_and_pdf(suffix, magic, tmp_path):
+    out = tmp_path / f"power{suffix}"
+    result = run("plot", BRANDENBERGER, "-k", "power", "-o", str(out), "--dpi", "40")
+    assert result.exit_code == 0, result.output
+    assert out.read_bytes().startswith(magic)
+
+
+def test_lever_of_a_transmission_without_operating_point(tmp_path):
+    out = tmp_path / "lever.svg"
+    result = run("plot", str(EXAMPLES / "simpson_c4_3speed.toml"), "-k", "lever", "--gear", "1", "-o", str(out))
+    assert result.exit_code == 0, result.output
+    assert "compound lever" in out.read_text()
+
+
+def test_animate_html_and_gif(tmp_path):
+    html = tmp_path / "a.html"
+    result = run("animate", BRANDENBERGER, "--willis", "--out", str(html))
+    assert result.exit_code == 0, result.output
+    text = html.read_text()
+    assert text.startswith("<!DOCTYPE html>") and "animateTransform" in text and "Willis" in text
+    gif = tmp_path / "a.gif"
+    result = run("animate", BRANDENBERGER, "--out", str(gif), "--frames", "3")
+    assert result.exit_code == 0, result.output
+    assert gif.read_bytes()[:6] == b"GIF89a"
+
+
+@pytest.mark.parametrize("args, message", [
+    (["plot", BRANDENBERGER, "--out", "x.txt"], "suffix '.txt'; expected one of .svg, .png, .pdf"),
+    (["animate", BRANDENBERGER, "--out", "x.mp4"], "suffix '.mp4'; expected one of .svg, .html, .gif"),
+    (["animate", BRANDENBERGER, "--set", "nope"], "no planetary set named 'nope'"),
+    (["plot", str(EXAMPLES / "zf_8hp70_8speed.toml"), "-k", "power"], "no \\[operating_point\\] table"),
+    (["plot", "missing.toml"], "no such file"),
+    (["plot", BRANDENBERGER, "--gear", "2"], "needs a \\[transmission\\] table"),
+])
+def test_bad_input_exits_2_with_one_paragraph(args, message, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    result = run(*args)
+    assert result.exit_code == 2
+    assert "Traceback" not in result.output
+    import re
+
+    assert re.search(message, result.output.replace("\n", " "))
+    assert list(tmp_path.iterdir()) == []  # nothing written
