@@ -141,7 +141,7 @@ def planetary_set(solution: Solution, name: str | None) -> PlanetarySet:
 
 def fmt(value: float, digits: int = 4) -> str:
     """A compact number for labels (``-0`` shown as ``0``)."""
-    if 10**digits <= abs(value) < 1e12:
+    if 10 ** (digits - 1) <= abs(value) < 1e12:
         return f"{value:.0f}"
     text = f"{value:.{digits}g}"
     return "0" if re.fullmatch(r"-0(\.0*)?", text) else text

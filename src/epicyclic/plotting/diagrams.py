@@ -151,8 +151,8 @@ def _draw_powers(ax: Any, data: ElementPowers, what: str, limits: tuple[float, f
         heavy = rect.role == "loss"
         ax.add_patch(Rectangle((rect.x0, rect.y0), rect.width, rect.height, facecolor=style["facecolor"],
                                hatch=style["hatch"], edgecolor="black", lw=2.5 if heavy else 1.0, label=label))
-        if rect.width == 0.0:
-            continue  # a shaft at rest (the housing) carries no power: nothing to show
+        if abs(rect.width) <= _ZERO * max(1.0, *(abs(r.width) for r in data.rects)):
+            continue  # a shaft at rest (the housing, a held member) carries no power: nothing to show
         value = rect.area if rect.role == "loss" else _clean(rect.power, data)
         text = f"{rect.label}\n{fmt(value)} W"
         above = rect.role == "loss"

@@ -225,7 +225,7 @@ class LeverDiagram:
         ax.set_ylabel("node height on the compound lever")
         ax.set_title("speeds of the shift state across the lever", fontsize=10)
         ax.margins(x=0.25)
-        ax.legend(fontsize=8, loc="lower right")
+        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2)
         ax.grid(True, alpha=0.3)
 
 

@@ -260,15 +260,19 @@ class SpeedPlan:
             _, ax = plt.subplots(figsize=(6, 5))
         colours = dict(zip(("sun", "ring", "carrier"), SHAFT_COLOURS))
         names = {"sun": "sun", "ring": "ring" if self.layout.central["ring"][1] else "2nd central", "carrier": "carrier"}
+        top = max(abs(w) for w in (*self.omegas.values(), *self.planet_omegas)) or 1.0
+
+        def rpm(w: float) -> str:  # round-off (a held member) shown as 0
+            return fmt(0.0 if abs(w) <= 1e-9 * top else w / RPM_TO_RAD_S, 6)
+
         for port in ("sun", "ring", "carrier"):
             (r0, v0), (r1, v1) = self.member_points(port)
             ax.plot([v0, v1], [r0, r1], color=colours[port], lw=2,
-                    label=f"{names[port]} ({self.shafts[port]}): {fmt(self.omegas[port] / RPM_TO_RAD_S, 6)} 1/min")
+                    label=f"{names[port]} ({self.shafts[port]}): {rpm(self.omegas[port])} 1/min")
         for k, body in enumerate(self.layout.bodies):
             (r0, v0), (r1, v1) = self.planet_line(body)
-            wp = self.planet_omegas[body.index] / RPM_TO_RAD_S
             ax.plot([v0, v1], [r0, r1], color=SHAFT_COLOURS[3 + k], lw=3.5, alpha=0.8,
-                    label=f"{body.label}: {fmt(wp, 6)} 1/min")
+                    label=f"{body.label}: {rpm(self.planet_omegas[body.index])} 1/min")
             for name, (r, v) in self.planet_points(body).items():
                 ax.plot([v], [r], "o", color=colours[name], ms=7, mec="black", zorder=5)
                 ax.annotate(name if name != "carrier" else "axis", (v, r), textcoords="offset points",
