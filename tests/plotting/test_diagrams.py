@@ -108,6 +108,24 @@ def test_power_diagram_units_and_figure(brandenberger):
 
 def test_torque_figure(brandenberger):
     fig = torque_diagram(brandenberger).plot()
-    assert all("N·m" in ax.get_ylabel() for ax in fig.axes)
-    assert fig.legends, "a figure legend explains the hatching"
+    *panels, legend_ax = fig.axes
+    assert all("N·m" in ax.get_ylabel() for ax in panels)
+    labels = [t.get_text() for t in legend_ax.get_legend().get_texts()]
+    assert labels == ["without friction (outline)", "load (power out)", "drive (power in)", "no power"]
     assert RPM_TO_RAD_S == pytest.approx(0.10471975511965977)
+
+
+def test_report_svg_is_self_contained(brandenberger):
+    # The HTML report forbids external or internal references (url(, href=, src=): hatching is drawn
+    # as lines, markers are inlined, clip paths dropped.
+    import re
+    import xml.etree.ElementTree as ET
+
+    from epicyclic.plotting import report_figures
+
+    figures = report_figures(brandenberger)
+    assert len(figures) == 6
+    for title, svg in figures:
+        assert svg.startswith("<svg"), title
+        assert not re.search(r"<link|<script|\bsrc=|\bhref=|url\(|@import", svg), title
+        ET.fromstring(svg)  # well-formed

@@ -51,6 +51,67 @@ ROLE_STYLE = {
     "none": {"hatch": "", "facecolor": "#dddddd", "label": "no power"},
 }
 
+def hatched_rect(ax: Any, x0: float, y0: float, width: float, height: float, role: str, *,
+                 spacing: tuple[float, float], lw: float = 1.0, label: str | None = None, zorder: float = 2) -> None:
+    """A filled rectangle with Brandenberger's hatching drawn as plain lines.
+
+    Vertical lines for a drive, horizontal for a load, both for the loss.
+    Drawn as lines (not as a matplotlib hatch pattern) so that the SVG needs
+    no ``url(#pattern)`` reference and embeds in any page.  ``spacing`` is
+    (dx, dy) in data units.
+    """
+    from matplotlib.collections import LineCollection
+    from matplotlib.patches import Rectangle
+
+    style = ROLE_STYLE[role]
+    ax.add_patch(Rectangle((x0, y0), width, height, facecolor=style["facecolor"], edgecolor="black", lw=lw,
+                           zorder=zorder, label=label))
+    xa, xb = sorted((x0, x0 + width))
+    ya, yb = sorted((y0, y0 + height))
+    segments = []
+    if role in ("drive", "loss") and spacing[0] > 0:
+        k = math.floor(xa / spacing[0]) + 1
+        while k * spacing[0] < xb and len(segments) < 2000:
+            segments.append([(k * spacing[0], ya), (k * spacing[0], yb)])
+            k += 1
+    if role in ("load", "loss") and spacing[1] > 0:
+        k = math.floor(ya / spacing[1]) + 1
+        while k * spacing[1] < yb and len(segments) < 4000:
+            segments.append([(xa, k * spacing[1]), (xb, k * spacing[1])])
+            k += 1
+    if segments:
+        ax.add_collection(LineCollection(segments, colors="black", linewidths=0.6, zorder=zorder + 0.1))
+
+
+def hatch_legend(ax: Any, roles: list[str], **kwargs: Any) -> Any:
+    """A legend with one hatched swatch per role (drawn as lines, like the rectangles)."""
+    from matplotlib.legend_handler import HandlerBase
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Rectangle
+
+    class Swatch(HandlerBase):
+        def __init__(self, role: str) -> None:
+            super().__init__()
+            self.role = role
+
+        def create_artists(self, legend, orig_handle, xdescent, ydescent, width, height, fontsize, trans):
+            x0, y0 = -xdescent, -ydescent
+            art = [Rectangle((x0, y0), width, height, facecolor=ROLE_STYLE[self.role]["facecolor"],
+                             edgecolor="black", lw=2.0 if self.role == "loss" else 0.8, transform=trans)]
+            if self.role in ("drive", "loss"):
+                art += [Line2D([x0 + f * width] * 2, [y0, y0 + height], color="black", lw=0.6, transform=trans)
+                        for f in (0.25, 0.5, 0.75)]
+            if self.role in ("load", "loss"):
+                art += [Line2D([x0, x0 + width], [y0 + f * height] * 2, color="black", lw=0.6, transform=trans)
+                        for f in (0.33, 0.67)]
+            return art
+
+    proxies = [Rectangle((0, 0), 1, 1, label=ROLE_STYLE[r]["label"]) for r in roles]
+    handles, labels = ax.get_legend_handles_labels()
+    return ax.legend([*handles, *proxies], [*labels, *(p.get_label() for p in proxies)],
+                     handler_map={p: Swatch(r) for p, r in zip(proxies, roles)}, **kwargs)
+
+
 #: Colour cycle for shafts / members (colour-blind friendly, Okabe–Ito).
 SHAFT_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442")
 
@@ -80,7 +141,37 @@ def figure_svg(fig: Any) -> str:
     pyplot().close(fig)
     text = buffer.getvalue()
     start = text.find("<svg")
-    return text[start:] if start >= 0 else text
+    return self_contained_svg(text[start:] if start >= 0 else text)
+
+
+_USE = re.compile(r'<use xlink:href="#([^"]+)"((?: [a-z-]+="[^"]*")*)\s*/>')
+_DEF_PATH = re.compile(r'<path id="([^"]+)" d="([^"]*)"(?: style="([^"]*)")?\s*/>')
+
+
+def self_contained_svg(text: str) -> str:
+    """matplotlib SVG without internal references (``url(#…)``, ``xlink:href``).
+
+    Marker definitions (``<use xlink:href>``) are inlined as paths, clip
+    paths are dropped (the figures set limits that hold every artist) and the
+    RDF metadata removed, so that the SVG embeds in a page that forbids
+    ``url(`` and ``href=`` (the HTML report's self-containment check).
+    """
+    defs = {m.group(1): (m.group(2), m.group(3) or "") for m in _DEF_PATH.finditer(text)}
+
+    def inline(match: re.Match[str]) -> str:
+        d, def_style = defs.get(match.group(1), ("", ""))
+        attrs = dict(re.findall(r'([a-z-]+)="([^"]*)"', match.group(2)))
+        x, y = attrs.pop("x", "0"), attrs.pop("y", "0")
+        style = attrs.pop("style", def_style)
+        rest = "".join(f' {k}="{v}"' for k, v in attrs.items() if k != "clip-path")
+        return f'<path d="{d}" transform="translate({x} {y})" style="{style}"{rest}/>'
+
+    text = _USE.sub(inline, text)
+    text = re.sub(r'\s*clip-path="url\(#[^)]*\)"', "", text)
+    text = re.sub(r"<clipPath\b.*?</clipPath>\s*", "", text, flags=re.S)
+    text = re.sub(r"<metadata>.*?</metadata>\s*", "", text, flags=re.S)
+    text = re.sub(r'\s*xmlns:xlink="[^"]*"', "", text)
+    return text
 
 
 def check_suffix(path: str | Path, allowed: tuple[str, ...], what: str) -> Path:

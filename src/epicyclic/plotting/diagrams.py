@@ -30,7 +30,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from ._common import ROLE_STYLE, RPM_TO_RAD_S, fmt, lever_elements, pyplot
+from ._common import RPM_TO_RAD_S, fmt, hatch_legend, hatched_rect, lever_elements, pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
@@ -141,16 +141,14 @@ def _limits(panels: list[ElementPowers]) -> tuple[float, float, float, float]:
 
 
 def _draw_powers(ax: Any, data: ElementPowers, what: str, limits: tuple[float, float, float, float]) -> None:
-    from matplotlib.patches import Rectangle
-
-    seen: set[str] = set()
+    seen: list[str] = []
+    spacing = ((limits[1] - limits[0]) / 90, (limits[3] - limits[2]) / 45)
     for rect in (*data.rects, *((data.loss_rect,) if data.loss_rect else ())):
-        style = ROLE_STYLE[rect.role]
-        label = style["label"] if rect.role not in seen else None
-        seen.add(rect.role)
+        if rect.role not in seen:
+            seen.append(rect.role)
         heavy = rect.role == "loss"
-        ax.add_patch(Rectangle((rect.x0, rect.y0), rect.width, rect.height, facecolor=style["facecolor"],
-                               hatch=style["hatch"], edgecolor="black", lw=2.5 if heavy else 1.0, label=label))
+        hatched_rect(ax, rect.x0, rect.y0, rect.width, rect.height, rect.role, spacing=spacing,
+                     lw=2.5 if heavy else 1.0, zorder=3 if heavy else 2)
         if abs(rect.width) <= _ZERO * max(1.0, *(abs(r.width) for r in data.rects)):
             continue  # a shaft at rest (the housing, a held member) carries no power: nothing to show
         value = rect.area if rect.role == "loss" else _clean(rect.power, data)
@@ -166,7 +164,8 @@ def _draw_powers(ax: Any, data: ElementPowers, what: str, limits: tuple[float, f
     ax.set_ylabel("|torque| M in N·m (rectangle height)")
     ax.set_title(f"{data.element} ({data.kind}), {what}: loss {fmt(_clean(data.loss, data))} W", fontsize=10)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="power at the ports", title_fontsize=8)
+    hatch_legend(ax, seen, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="power at the ports",
+                 title_fontsize=8)
 
 
 def _clean(value: float, data: ElementPowers) -> float:
@@ -278,19 +277,18 @@ class TorqueDiagram:
         plt = pyplot()
         groups = self.groups
         fig, axes = plt.subplots(1, len(groups), figsize=(4.6 * len(groups), 4.6), squeeze=False)
+        roles: dict[str, None] = {}
         for ax, name in zip(axes[0], groups):
             bars = self.group(name)
             xs = range(len(bars))
             if any(b.ideal is not None for b in bars):
                 ax.bar([x - 0.2 for x in xs], [b.ideal or 0.0 for b in bars], width=0.38, facecolor="white",
                        edgecolor="grey", ls="--", lw=1.5, label="without friction")
-            seen: set[str] = set()
+            values = [0.0, *(b.actual for b in bars), *(b.ideal or 0.0 for b in bars)]
+            spacing = (0.38 / 5, (max(values) - min(values)) / 40)
             for x, bar in zip(xs, bars):
-                style = ROLE_STYLE[bar.role]
-                label = f"with friction, {style['label']}" if bar.role not in seen else None
-                seen.add(bar.role)
-                ax.bar([x + 0.2], [bar.actual], width=0.38, facecolor=style["facecolor"], hatch=style["hatch"],
-                       edgecolor="black", label=label)
+                roles.setdefault(bar.role, None)
+                hatched_rect(ax, x + 0.01, 0.0, 0.38, bar.actual, bar.role, spacing=spacing)
                 ax.annotate(fmt(bar.actual), (x + 0.2, bar.actual), ha="center", fontsize=8,
                             xytext=(0, 3 if bar.actual >= 0 else -11), textcoords="offset points")
             ax.axhline(0, color="black", lw=0.8)
@@ -299,13 +297,13 @@ class TorqueDiagram:
             ax.set_title("external torques on shafts" if name == "external" else f"torques on {name}", fontsize=10)
             ax.grid(True, axis="y", alpha=0.3)
             ax.margins(y=0.15)
-        handles: dict[str, Any] = {}
-        for ax in axes[0]:
-            for handle, label in zip(*ax.get_legend_handles_labels()):
-                handles.setdefault(label, handle)
-        fig.legend(list(handles.values()), list(handles), loc="lower center", ncol=len(handles), fontsize=9)
         fig.suptitle(f"{self.title}: torques with and without friction (housing: reaction)", fontsize=12)
-        fig.tight_layout(rect=(0, 0.08, 1, 1))
+        fig.tight_layout(rect=(0, 0.1, 1, 1))
+        legend_ax = fig.add_axes((0.0, 0.0, 1.0, 0.08))
+        legend_ax.set_axis_off()
+        legend_ax.plot([], [], color="grey", ls="--", lw=1.5, label="without friction (outline)")
+        hatch_legend(legend_ax, list(roles), loc="center", ncol=1 + len(roles), fontsize=9,
+                     title="hatched bars: with friction", title_fontsize=9)
         return fig
 
 
