@@ -180,3 +180,17 @@ def test_errors(simple):
         range_diagram(sol)
     with pytest.raises(PlottingError, match="has no planetary set"):
         plot_speed_plan(sol)
+
+
+@pytest.mark.parametrize("case", ["brandenberger", "simple"])
+def test_torques_are_distances_between_the_other_lines(case, request):
+    # Brandenberger 1952, text to Bild 3/4: a torque equals (in size) the distance between the lines
+    # of the two other systems.  Compared with the frictionless port torques; tolerance 1e-9.
+    sol = request.getfixturevalue(case)
+    d = range_diagram(sol)
+    name = d.set_name
+    torques = sol.ideal.elements[name].torques
+    graphical = d.graphical_torques()
+    scale = abs(torques[d.ports[0]]) / graphical[0]
+    for port, g in zip(d.ports, graphical):
+        assert abs(torques[port]) == pytest.approx(scale * g, rel=1e-9)

@@ -387,6 +387,16 @@ class RangeDiagram:
                 return 2 * k + 2
         return 1 + 2 * sum(x < point for point in p)
 
+    def graphical_torques(self) -> tuple[float, float, float]:
+        """Torque magnitudes of I, II, III read from the diagram (Bild 3), up to one factor.
+
+        "Ein Drehmoment entspricht der Grösse nach dem Abstand der Geraden, durch
+        welche die Drehzahlen der beiden anderen Systeme graphisch dargestellt
+        werden": |M1| ∝ |n2' − 0|, |M2| ∝ |n1' − 0|, |M3| ∝ |n1' − n2'| (frictionless).
+        """
+        n1, n2, n3 = self.offsets
+        return abs(n2 - n3), abs(n1 - n3), abs(n1 - n2)
+
     def to_dict(self) -> dict[str, Any]:
         return {"set": self.set_name, "labels": self.labels, "ports": self.ports, "shafts": self.shafts,
                 "offsets": self.offsets, "sign": self.sign, "x_operating": self.x_operating,
@@ -415,6 +425,11 @@ class RangeDiagram:
             mid = 0.5 * (edges[k] + edges[k + 1])
             ax.text(mid, 0.05, str(2 * k + 1), transform=ax.get_xaxis_transform(), ha="center", fontsize=12,
                     color="grey", weight="bold")
+        # Bild 3: a torque is the distance between the lines of the other two shafts (at x = 0)
+        tq = self.graphical_torques()
+        total = sum(tq) or 1.0
+        ax.plot([], [], " ", label="torques ∝ distance of the other two lines:\n"
+                + " : ".join(f"M{lab} {t / total:.3f}" for lab, t in zip(self.labels, tq)))
         ys = self.speeds_at(self.x_operating)
         ax.plot([self.x_operating] * 2, [min(*ys, 0), max(*ys, 0)], color="black", lw=2.5,
                 label=f"operating point (range {self.operating_range})")
