@@ -1,6 +1,8 @@
 """Torque bars and power rectangles (Brandenberger 1952, Bild 5, 8, 9): areas checked numerically."""
 
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from epicyclic import GearTrain, OperatingPoint, PlanetarySet, solve
 from epicyclic.demo import KP_CM
@@ -129,3 +131,18 @@ def test_report_svg_is_self_contained(brandenberger):
         assert svg.startswith("<svg"), title
         assert not re.search(r"<link|<script|\bsrc=|\bhref=|url\(|@import", svg), title
         ET.fromstring(svg)  # well-formed
+
+
+@settings(max_examples=30, deadline=None)
+@given(i0=st.floats(-6, 6).filter(lambda v: abs(v) > 0.05 and abs(v - 1) > 0.05), eta0=st.floats(0.5, 1.0),
+       n_sun=st.floats(-4000, 4000), n_carrier=st.floats(-4000, 4000), torque=st.floats(1, 500))
+def test_loss_rectangle_equals_loss_for_random_sets(i0, eta0, n_sun, n_carrier, torque):
+    # Invariant: for any set, speeds and torque, the loss rectangle's area is the solver's loss.
+    assume(abs(n_sun - n_carrier) > 1.0)
+    train = GearTrain([PlanetarySet("P", "a", "b", "c", i0, stationary_efficiency=eta0)])
+    op = OperatingPoint(speeds={"a": n_sun, "c": n_carrier}, torques={"a": torque}, connected=["a", "b", "c"])
+    sol = solve(train, op)
+    element = power_diagram(sol).actual[0]
+    loss = sol.elements["P"].loss
+    area = element.loss_rect.area if element.loss_rect is not None else 0.0
+    assert area == pytest.approx(loss, rel=1e-9, abs=1e-9 * max(1.0, abs(sol.elements["P"].rolling_power)))

@@ -314,6 +314,10 @@ def _role(power: float, scale: float) -> str:
 def torque_diagram(solution: Solution) -> TorqueDiagram:
     """Torque bars, with and without friction, of the external shafts and element ports.
 
+    References
+    ----------
+    Brandenberger 1952, eq. 2 and Bild 3, 8, 9 (M1' + M2' + M3' = 0).
+
     Examples
     --------
     >>> from epicyclic.demo import brandenberger_1952, KP_CM

@@ -448,6 +448,20 @@ class RangeDiagram:
 def range_diagram(solution: Solution, element: str | None = None) -> RangeDiagram:
     """Brandenberger's speed diagram (ranges 1–7) of a set at the solved point.
 
+    Parameters
+    ----------
+    solution : Solution
+    element : str, optional
+        Name of the planetary set (default: the first).
+
+    Returns
+    -------
+    RangeDiagram
+
+    References
+    ----------
+    Brandenberger 1952, eq. 1 and Bild 3–5.
+
     Examples
     --------
     >>> from epicyclic.demo import brandenberger_1952
