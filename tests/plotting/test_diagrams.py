@@ -146,3 +146,16 @@ def test_loss_rectangle_equals_loss_for_random_sets(i0, eta0, n_sun, n_carrier, 
     loss = sol.elements["P"].loss
     area = element.loss_rect.area if element.loss_rect is not None else 0.0
     assert area == pytest.approx(loss, rel=1e-9, abs=1e-9 * max(1.0, abs(sol.elements["P"].rolling_power)))
+
+
+def test_every_picture_renders_itself_in_a_notebook(brandenberger):
+    # _repr_html_ gives inline SVG (Jupyter shows it), with no url( or href references.
+    from epicyclic import plotting
+
+    objects = [plotting.speed_plan(brandenberger), plotting.range_diagram(brandenberger),
+               plotting.torque_diagram(brandenberger), plotting.power_diagram(brandenberger),
+               plotting.lever_diagram(brandenberger), plotting.power_flow(brandenberger),
+               plotting.planetary_animation(brandenberger)]
+    for obj in objects:
+        html = obj._repr_html_()
+        assert html.startswith("<svg") and "url(" not in html, type(obj).__name__

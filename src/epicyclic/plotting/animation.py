@@ -168,6 +168,9 @@ class PlanetaryAnimation:
                 "fps": self.fps, "frames": self.frames, "willis": self.willis, "planets": self.planets,
                 "factors": dict(self.factors), "i0": self.i0}
 
+    def _repr_html_(self) -> str:
+        return self.svg()
+
     def __repr__(self) -> str:
         speeds = ", ".join(f"{m} {fmt(n, 5)}" for m, n in self.speeds.items())
         return (f"<PlanetaryAnimation {self.set_name!r}: {speeds} 1/min, slowed down {fmt(self.slowdown, 3)}×"

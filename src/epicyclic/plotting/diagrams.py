@@ -30,7 +30,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from ._common import RPM_TO_RAD_S, fmt, hatch_legend, hatched_rect, lever_elements, pyplot
+from ._common import RPM_TO_RAD_S, figure_svg, fmt, hatch_legend, hatched_rect, lever_elements, pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
@@ -108,6 +108,9 @@ class PowerDiagram:
 
         return {"title": self.title, "units": {"x": "1/min", "y": "N*m", "power": "W"},
                 "actual": [one(e) for e in self.actual], "ideal": [one(e) for e in self.ideal]}
+
+    def _repr_html_(self) -> str:
+        return figure_svg(self.plot())
 
     def __repr__(self) -> str:
         losses = ", ".join(f"{e.element} {fmt(e.loss)} W" for e in self.actual)
@@ -268,6 +271,9 @@ class TorqueDiagram:
 
     def to_dict(self) -> dict[str, Any]:
         return {"title": self.title, "unit": "N*m", "bars": [b.__dict__ for b in self.bars]}
+
+    def _repr_html_(self) -> str:
+        return figure_svg(self.plot())
 
     def __repr__(self) -> str:
         return f"<TorqueDiagram {self.title!r}: {len(self.bars)} bars in {len(self.groups)} groups>"

@@ -25,7 +25,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 from ..model.elements import HOUSING
-from ._common import fmt, pyplot
+from ._common import figure_svg, fmt, pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
@@ -95,6 +95,9 @@ class PowerFlow:
                 "nodes": [n.__dict__ for n in self.nodes], "edges": [e.__dict__ for e in self.edges],
                 "input_power": self.input_power, "circulating_power": self.circulating_power,
                 "rolling": dict(self.rolling), "losses": dict(self.losses)}
+
+    def _repr_html_(self) -> str:
+        return figure_svg(self.plot())
 
     def __repr__(self) -> str:
         return (f"<PowerFlow {self.title!r}: {len(self.edges)} edges, input {fmt(self.input_power)} W, "

@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..model.elements import HOUSING, Brake, Clutch
-from ._common import SHAFT_COLOURS, fmt, lever_elements, pyplot
+from ._common import SHAFT_COLOURS, figure_svg, fmt, lever_elements, pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..model.train import GearTrain
@@ -136,6 +136,9 @@ class LeverDiagram:
                 "speeds": None if self.compound.speeds is None else dict(self.compound.speeds)},
             "units": {"speed": "1/min"},
         }
+
+    def _repr_html_(self) -> str:
+        return figure_svg(self.plot())
 
     def __repr__(self) -> str:
         state = "compound lever" if self.compound is not None else "no compound lever"

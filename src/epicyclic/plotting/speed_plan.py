@@ -41,7 +41,7 @@ from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 from ..model.planetary import PlanetarySet
-from ._common import RPM_TO_RAD_S, SHAFT_COLOURS, PlottingError, fmt, planetary_set, pyplot
+from ._common import RPM_TO_RAD_S, SHAFT_COLOURS, PlottingError, figure_svg, fmt, planetary_set, pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
@@ -249,6 +249,9 @@ class SpeedPlan:
                         for b in self.layout.bodies],
         }
 
+    def _repr_html_(self) -> str:
+        return figure_svg(self.plot().figure)
+
     def __repr__(self) -> str:
         speeds = ", ".join(f"{p} {fmt(w / RPM_TO_RAD_S)}" for p, w in self.omegas.items())
         return f"<SpeedPlan {self.layout.set_name!r}: {speeds} 1/min, {len(self.layout.bodies)} planet body/ies>"
@@ -401,6 +404,9 @@ class RangeDiagram:
         return {"set": self.set_name, "labels": self.labels, "ports": self.ports, "shafts": self.shafts,
                 "offsets": self.offsets, "sign": self.sign, "x_operating": self.x_operating,
                 "zero_points": self.zero_points, "operating_range": self.operating_range}
+
+    def _repr_html_(self) -> str:
+        return figure_svg(self.plot().figure)
 
     def __repr__(self) -> str:
         return f"<RangeDiagram {self.set_name!r}: operating point in range {self.operating_range}>"
