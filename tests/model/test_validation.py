@@ -28,6 +28,8 @@ def simple(**kw):
     ("make", "error", "match"),
     [
         (lambda: simple(z_ring=20), ToothCountError, r"ring must have more teeth than the sun.*z_ring=20"),
+        # regression: a ring smaller than the sun is named as such, not as a negative planet
+        (lambda: simple(z_ring=20, z_planet=-5), ToothCountError, r"ring must have more teeth than the sun"),
         (lambda: simple(z_planet=40), ToothCountError, r"cannot mesh coaxially.*78 - 30 - 2\*40 = -32.*z_planet=24"),
         (lambda: simple(z_planet=2), ToothCountError, r"z_planet must be at least 3 teeth, got 2"),
         (lambda: simple(z_sun=30.5), ToothCountError, r"z_sun must be a whole number of teeth, got 30.5"),

@@ -226,13 +226,13 @@ class PlanetarySet:
         """
         owner = f"planetary set {name!r}"
         zs = _check_teeth(z_sun, "z_sun", owner)
-        zp = _check_teeth(z_planet, "z_planet", owner)
         zr = _check_teeth(z_ring, "z_ring", owner)
         if zr <= zs:
             raise ToothCountError(
                 f"{owner}: the ring must have more teeth than the sun, got z_ring={zr}, z_sun={zs}. "
                 "Swap them, or use PlanetarySet.stepped for two external central gears."
             )
+        zp = _check_teeth(z_planet, "z_planet", owner)
         mismatch = zr - zs - 2 * zp
         if abs(mismatch) > COAXIAL_TOLERANCE_TEETH:
             raise ToothCountError(
