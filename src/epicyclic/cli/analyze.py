@@ -7,7 +7,6 @@ file's ``[units]`` (core units 1/min, N·m, W otherwise).
 
 from __future__ import annotations
 
-from enum import Enum
 from pathlib import Path
 from typing import Annotated, Optional
 
@@ -17,27 +16,19 @@ from ..io import load_train_file
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
-from ._common import emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
 
-__all__ = ["ReportFormat", "analyze"]
+__all__ = ["analyze"]
 
-
-class ReportFormat(str, Enum):
-    """Output formats of ``analyze``."""
-
-    table = "table"
-    json = "json"
-    markdown = "markdown"
-    html = "html"
 
 
 @guarded
 def analyze(
     file: Annotated[Path, typer.Argument(help="Train description (.toml), see docs/file-format.md.")],
-    format: Annotated[ReportFormat, typer.Option("--format", "-f", help="Output format.")] = ReportFormat.table,
-    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    format: FormatOption = OutputFormat.table,
+    out: OutOption = None,
     gear: Annotated[Optional[str], typer.Option(
-        "--gear", "-g", help="Solve in this gear of the [transmission] schedule.")] = None,
+        "--gear", "-g", help="Solve in this gear of the \\[transmission] schedule.")] = None,
     lang: Annotated[str, typer.Option(help="Language of the worked solution in HTML reports: en or de.")] = "en",
 ) -> None:
     """Solve FILE: speeds, torques, powers, losses, efficiency, self-locking, circulating power."""
@@ -53,11 +44,11 @@ def analyze(
         train_file = replace(train_file, gear=gear)
     solution = train_file.solve()
     units, title, source = train_file.units, train_file.title, str(file)
-    if format is ReportFormat.json:
+    if format is OutputFormat.json:
         text = json_report(solution, units, title=title, source=source)
-    elif format is ReportFormat.markdown:
+    elif format is OutputFormat.markdown:
         text = markdown_report(solution, units, title=title)
-    elif format is ReportFormat.html:
+    elif format is OutputFormat.html:
         text = html_report(solution, units, title=title, source=source, description=train_file.description,
                            lang=lang)
     else:

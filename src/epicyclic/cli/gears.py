@@ -11,33 +11,24 @@ gives a one-degree-of-freedom drive between input and output.
 from __future__ import annotations
 
 import json
-from enum import Enum
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
 from ..transmission import Transmission, explore as _explore
-from ._common import emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
 
 __all__ = ["gears", "explore"]
 
 
-class GearsFormat(str, Enum):
-    """Output formats of ``gears`` and ``explore``."""
 
-    table = "table"
-    json = "json"
-    markdown = "markdown"
-    html = "html"
-
-
-def _render(result, format: GearsFormat, detail_text: str = "") -> str:
-    if format is GearsFormat.json:
+def _render(result, format: OutputFormat, detail_text: str = "") -> str:
+    if format is OutputFormat.json:
         return json.dumps(result.to_dict(), indent=2, ensure_ascii=False)
-    if format is GearsFormat.markdown:
+    if format is OutputFormat.markdown:
         return result.markdown()
-    if format is GearsFormat.html:
+    if format is OutputFormat.html:
         return ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>epicyclic</title></head><body>"
                 + result._repr_html_() + "</body></html>")
     return result.table() + (("\n\n" + detail_text) if detail_text else "")
@@ -45,9 +36,9 @@ def _render(result, format: GearsFormat, detail_text: str = "") -> str:
 
 @guarded
 def gears(
-    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table.")],
-    format: Annotated[GearsFormat, typer.Option("--format", "-f", help="Output format.")] = GearsFormat.table,
-    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a \\[transmission] table.")],
+    format: FormatOption = OutputFormat.table,
+    out: OutOption = None,
     detail: Annotated[bool, typer.Option("--detail", help="Also list every shift element and set per gear.")] = False,
 ) -> None:
     """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread."""
@@ -59,9 +50,9 @@ def gears(
 
 @guarded
 def explore(
-    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table.")],
-    format: Annotated[GearsFormat, typer.Option("--format", "-f", help="Output format.")] = GearsFormat.table,
-    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a \\[transmission] table.")],
+    format: FormatOption = OutputFormat.table,
+    out: OutOption = None,
     redundant: Annotated[bool, typer.Option("--redundant", help="Also list states with a redundant element.")] = False,
 ) -> None:
     """Every combination of the file's clutches and brakes that drives the output: ratio and kind."""

@@ -57,7 +57,7 @@ def plot(
     kind: Annotated[PlotKind, typer.Option("--kind", "-k", help="Which picture.")] = PlotKind.speed,
     out: Annotated[Optional[Path], typer.Option(
         "--out", "-o", help="Output file: .svg, .png or .pdf (default: FILE-KIND.png here).")] = None,
-    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the [transmission] schedule.")] = None,
+    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
     dpi: Annotated[int, typer.Option(help="Resolution of .png output.")] = 150,
 ) -> None:
     """Draw FILE: speed plan, torque bars, power rectangles, lever diagram or power flow."""
@@ -83,7 +83,7 @@ def animate(
     element: Annotated[Optional[str], typer.Option("--set", "-s", help="Planetary set (default: the first).")] = None,
     willis: Annotated[bool, typer.Option(
         "--willis", help="Show the three superposed motions of the Willis derivation in turn.")] = False,
-    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the [transmission] schedule.")] = None,
+    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
     frames: Annotated[int, typer.Option(help="Frames of one GIF loop.")] = 48,
     fps: Annotated[int, typer.Option(help="Frames per second.")] = 16,
 ) -> None:
