@@ -5,7 +5,7 @@ named shafts; give an operating point; :func:`solve` returns every speed,
 torque, power, loss, the efficiency for the real direction of power flow,
 self-locking and circulating power.
 
-Core units: speed 1/min, torque N·m, power W (DESIGN.md §3).
+Core units: speed 1/min, torque N·m, power W.
 
 >>> from epicyclic import GearTrain, PlanetarySet, Brake, OperatingPoint, solve
 >>> train = GearTrain([PlanetarySet.simple("P", sun="in", ring="ring", carrier="out",

@@ -2,7 +2,7 @@
 
 References
 ----------
-Brandenberger 1952, Beispiel to Bild 10 (DESIGN.md §5).
+Brandenberger 1952, Beispiel to Bild 10.
 """
 
 from __future__ import annotations

@@ -33,7 +33,7 @@ True
 References
 ----------
 Brandenberger 1952, eqs. (1), (3'), (7), (8), (9) and Bild 8–9; Queitsch,
-eqs. 26–29; willis-equation.md; DESIGN.md §3.
+eqs. 26–29; tec-science, "Willis-Gleichung".
 """
 
 from __future__ import annotations

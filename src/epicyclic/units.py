@@ -1,6 +1,6 @@
 """Units at the edges: parse and print the sources' units with pint.
 
-The core works on plain floats in **1/min, N·m and W** (DESIGN.md §3).  This
+The core works on plain floats in **1/min, N·m and W**.  This
 module is the only place where units are parsed or converted.  It uses its own
 :class:`pint.UnitRegistry` (never pint's application registry) with the
 definitions the sources need and without pint's traps:

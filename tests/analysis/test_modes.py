@@ -32,7 +32,7 @@ def test_tafel_1_labels_are_the_papers_columns():
                     "VI": "ring", "VII": None}
 
 
-# willis-equation.md: z_S = 30, z_H = 78 (any simple set); the formulas of the article:
+# tec-science, "Willis-Gleichung": z_S = 30, z_H = 78 (any simple set); the formulas of the article:
 ZS, ZP, ZH = 30, 24, 78
 
 
@@ -70,7 +70,7 @@ def test_willis_article_direct_drive():
 
 @pytest.mark.parametrize(("n_sun", "n_carrier"), [(1000, 0), (1000, 300), (-500, 800), (0, 1200)])
 def test_willis_article_planet_speed(n_sun, n_carrier):
-    # willis-equation.md, Grundgleichung: n_P·z_P = n_T·(z_P + z_S) − n_S·z_S.
+    # tec-science, "Willis-Gleichung", Grundgleichung: n_P·z_P = n_T·(z_P + z_S) − n_S·z_S.
     s = PlanetarySet.simple("P", sun="s", ring="r", carrier="c", z_sun=ZS, z_planet=ZP, z_ring=ZH)
     speeds = three_shaft_speeds(s, sun=n_sun, carrier=n_carrier)
     assert speeds["planet"] * ZP == pytest.approx(n_carrier * (ZP + ZS) - n_sun * ZS, abs=1e-9)
@@ -96,7 +96,7 @@ def test_three_shaft_speeds_needs_two():
 # Also in H. W. Müller, "Die Umlaufgetriebe", 2nd ed. 1998, Tab. 4.1 (η of the six modes).
 def closed_forms(i0, e):
     return {
-        ("sun", "carrier"): (1 - i0 * e) / (1 - i0),          # ring held (DESIGN.md §3)
+        ("sun", "carrier"): (1 - i0 * e) / (1 - i0),          # ring held (Brandenberger 1952, eq. 7)
         ("carrier", "sun"): (1 - i0) / (1 - i0 / e),          # ring held, reversed
         ("ring", "carrier"): (i0 - e) / (i0 - 1),             # sun held: ring drives rel. carrier
         ("carrier", "ring"): (i0 - 1) / (i0 - 1 / e),         # sun held, reversed
@@ -120,7 +120,7 @@ def test_six_modes_of_a_minus_set_against_closed_forms(i0, e):
 
 
 def test_plus_set_self_locks_from_sun_to_carrier():
-    # DESIGN.md §3 (verified example): plus set i0 = 1.02, η0 = 0.95, ring held.
+    # Closed form of Brandenberger 1952's rule: plus set i0 = 1.02, η0 = 0.95, ring held.
     # carrier → sun (reduction 1:50): η = (1 − i0)/(1 − i0/η0) = 0.2714;
     # sun → carrier (step-up): formal η = (1 − i0·η0)/(1 − i0) = −1.55 → self-locking from η0 < 1/i0.
     table = two_shaft_modes(1.02, 0.95)
@@ -161,7 +161,7 @@ def test_mode_table_renders():
 def test_exactly_at_the_self_locking_limit_is_self_locking():
     # Regression (found by hypothesis): plus set i0 = 0.5, sun held, ring → carrier at η0 = 0.5.
     # Closed form η = (i0 − η0)/(i0 − 1) = 0: no power reaches the load, so the train self-locks
-    # (DESIGN.md §3: formal efficiency ≤ 0) — never an efficiency of −0.0000.
+    # (Brandenberger 1952, text to Bild 9: formal efficiency ≤ 0) — never an efficiency of −0.0000.
     train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", 0.5, 0.5), Brake("B", "sun")])
     sol = solve(train, OperatingPoint(speeds={"ring": 50}, torques={"ring": 1}, drives=["ring"], loads=["carrier"]))
     assert sol.efficiency is None and sol.is_self_locking

@@ -115,7 +115,7 @@ def test_explain_in_german():
 
 
 def test_modes_table_and_json():
-    # Queitsch Tafel 1 with s = −78/30; DESIGN.md §3: ring held, sun → carrier η = (1 − i0 η0)/(1 − i0).
+    # Queitsch Tafel 1 with s = −78/30; Brandenberger 1952, eq. 7: ring held, sun → carrier η = (1 − i0 η0)/(1 − i0).
     result = run("modes", "--sun", "30", "--ring", "78", "--eta0", "0.98", "-f", "json")
     assert result.exit_code == 0, result.output
     modes = {m["label"]: m for m in json.loads(result.stdout)["modes"]}

@@ -1,7 +1,7 @@
 """Every file in examples/ loads, and solves where it has an operating point.
 
 Published numbers: Brandenberger 1952 (Beispiel zu Bild 10), Queitsch Tafel 1 (two-shaft ratios),
-DESIGN.md §3 (plus set i0 = 1.02, η0 = 0.95: η = 0.2714 one way, self-locking the other way).
+Brandenberger 1952, eq. 7 and text to Bild 9 (plus set i0 = 1.02, η0 = 0.95: η = 0.2714 one way, self-locking the other way).
 """
 
 from __future__ import annotations
@@ -50,7 +50,7 @@ def test_brandenberger_in_original_units():
 
 
 S, ETA0 = -78 / 30, 0.98
-# Closed forms of Brandenberger's loss rule for a minus set (DESIGN.md §3 gives the first; the others
+# Closed forms of Brandenberger's loss rule for a minus set (Brandenberger 1952, eq. 7 gives the first; the others
 # follow from the same rule, eq. 7, with the roles of the shafts exchanged). Ratios: Queitsch Tafel 1.
 MODES = [
     ("simple_set_ring_held_sun_drives.toml", "sun", "carrier", 1 - S, (1 - S * ETA0) / (1 - S)),
@@ -72,7 +72,7 @@ def test_two_shaft_mode_files(name, drive, load, ratio, efficiency):
 
 
 def test_plus_set_files():
-    # DESIGN.md §3: i0 = 1.02, η0 = 0.95, ring held: carrier → sun η = 0.2714; sun → carrier self-locks
+    # Brandenberger 1952, eq. 7: i0 = 1.02, η0 = 0.95, ring held: carrier → sun η = 0.2714; sun → carrier self-locks
     # (formal η = −1.55), threshold η0 = 1/i0.
     reduction = load_train_file(EXAMPLES / "plus_set_reduction.toml").solve()
     assert round(reduction.efficiency, 4) == 0.2714
@@ -83,7 +83,7 @@ def test_plus_set_files():
 
 
 def test_power_split_file():
-    # Ideal torque split M_s : M_r : M_c = 1 : −i0 : −(1 − i0) (DESIGN.md §3), i0 = −78/30.
+    # Ideal torque split M_s : M_r : M_c = 1 : −i0 : −(1 − i0) (Queitsch eqs. 26–29), i0 = −78/30.
     f = load_train_file(EXAMPLES / "three_shaft_power_split.toml")
     s = f.solve()
     ideal = s.ideal

@@ -82,7 +82,7 @@ def test_values_are_frozen():
 @pytest.mark.parametrize(
     ("factory", "expected"),
     [
-        # Simple set: i0 = −z_ring/z_sun (willis-equation.md, "Festgestellter Steg").
+        # Simple set: i0 = −z_ring/z_sun (tec-science, "Willis-Gleichung", "Festgestellter Steg").
         (lambda: simple(), -78 / 30),
         # Double planet: sun–p1–p2–ring, two external meshes and one internal: i0 = +z_ring/z_sun.
         (lambda: PlanetarySet.double_planet("D", sun="s", ring="r", carrier="c", z_sun=30, z_planet_sun=18,

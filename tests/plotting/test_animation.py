@@ -27,7 +27,7 @@ def test_angular_steps_match_solved_speeds(case, request):
 
 
 def test_brandenberger_planet_speed_from_teeth(brandenberger):
-    # willis-equation.md: n_P z_P = n_T (z_P + z_S) − n_S z_S with z_S = 50, z_P = 24:
+    # tec-science, "Willis-Gleichung": n_P z_P = n_T (z_P + z_S) − n_S z_S with z_S = 50, z_P = 24:
     # n_P = (5280·74 − 2739.84·50)/24 = 10572 1/min.
     anim = planetary_animation(brandenberger)
     assert anim.speeds["planet"] == pytest.approx((5280 * 74 - brandenberger.speed("I") * 50) / 24, rel=1e-9)
@@ -40,7 +40,7 @@ def test_fastest_member_shown_at_the_chosen_rate(simple):
 
 
 def test_willis_phases_add_up_to_the_real_motion(simple):
-    # willis-equation.md: φ_P = φ_T + (d_S/d_P)·φ_T − (d_S/d_P)·φ_S; the ring (held) ends where it began.
+    # tec-science, "Willis-Gleichung": φ_P = φ_T + (d_S/d_P)·φ_T − (d_S/d_P)·φ_S; the ring (held) ends where it began.
     anim = planetary_animation(simple, willis=True, frames=48)
     real = planetary_animation(simple, frames=48)
     end = anim.angles(3 * anim.phase_frames)

@@ -29,7 +29,7 @@ def test_batch_matches_scalar_on_the_brandenberger_train():
 
 
 def test_batch_flags_self_locking_and_both_directions():
-    # Plus set i0 = 1.02, η0 = 0.95, ring held (DESIGN.md §3): carrier → sun η = 0.2714;
+    # Plus set i0 = 1.02, η0 = 0.95, ring held (closed form of Brandenberger 1952, eq. 7): carrier → sun η = 0.2714;
     # sun → carrier self-locks.  Signed torque at the sun with no roles: the power direction decides.
     train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", 1.02, 0.95), Brake("B", "ring")])
     sun_speed = np.array([1000.0, 1000.0, -400.0, -400.0])

@@ -1,5 +1,5 @@
 """Brandenberger 1952, "Die Berechnung des Reibungsverlustes und des Wirkungsgrades von
-Umlaufrädergetrieben", Schweiz. Bauzeitung 70 (39), Beispiel zu Bild 10 (DESIGN.md §5).
+Umlaufrädergetrieben", Schweiz. Bauzeitung 70 (39), Beispiel zu Bild 10.
 
 Units of the paper: U/min, PS, cm·kg (= kp·cm).  1 PS = 735.49875 W, 1 kp·cm = 0.0980665 N·m;
 the paper's M = 71620·N/n cm·kg for N in PS is the same conversion to 4 digits.

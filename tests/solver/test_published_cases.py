@@ -41,7 +41,7 @@ def test_power_split_with_losses_balances_power():
 @pytest.mark.parametrize("eta0", [1.0, 0.95, 0.8])
 @pytest.mark.parametrize("radius_over_track", [3.0, 10.0, 50.0])
 def test_bevel_differential_torque_bias(eta0, radius_over_track):
-    # DESIGN.md §3: a bevel differential is a set with i0 = −1.  Cornering with curve radius R and
+    # A bevel differential is a set with i0 = −1.  Cornering with curve radius R and
     # track b: wheel speeds n_c·(1 ∓ b/(2R)).  With η0 < 1 the slower wheel gets the larger torque,
     # by the factor 1/η0 (the torque bias ratio); with η0 = 1 the split is 50/50.
     diff = GearTrain([PlanetarySet("diff", "left", "right", "case", -1.0, eta0)])

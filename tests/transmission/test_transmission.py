@@ -20,7 +20,7 @@ def _two_speed():
 
 
 def test_two_speed_ratios_and_efficiency():
-    """Ring held, sun in, carrier out: i = 1 − i0 = 3, η = (1 − i0·η0)/(1 − i0) (DESIGN.md §3)."""
+    """Ring held, sun in, carrier out: i = 1 − i0 = 3, η = (1 − i0·η0)/(1 − i0) (Brandenberger 1952, eq. 7)."""
     t = Transmission(_two_speed(), {"1": ["B"], "2": ["C"]}, "in", "out")
     assert t.ratio("1") == pytest.approx(3.0)
     g = t.analyze("1")

@@ -10,7 +10,7 @@
 References
 ----------
 Queitsch, Tafel 1 and eqs. 12, 20, 21; Brandenberger 1952, Bild 3–4 (ranges 1–7);
-willis-equation.md (fixed sun / ring / carrier).
+tec-science, "Willis-Gleichung" (fixed sun / ring / carrier).
 """
 
 from __future__ import annotations
@@ -224,7 +224,7 @@ def three_shaft_speeds(planetary: PlanetarySet, **speeds: float) -> dict[str, fl
 
     References
     ----------
-    Queitsch, eq. 12: (1 − s)·n_51 + s·n_41 − n_21 = 0; willis-equation.md, Grundgleichung.
+    Queitsch, eq. 12: (1 − s)·n_51 + s·n_41 − n_21 = 0; tec-science, "Willis-Gleichung", Grundgleichung.
 
     Examples
     --------

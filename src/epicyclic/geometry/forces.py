@@ -6,7 +6,7 @@ the set, N·m) are turned into forces on the planets, in the carrier frame
 (x, y in mm, forces in N, planet k at carrier angle θ_k):
 
 * tangential force at a mesh of a central gear G with operating pitch radius
-  r_wG: ``F_t = 1000 |T_G| / (N r_wG)`` (Queitsch eqs. 23–25; DESIGN.md §3);
+  r_wG: ``F_t = 1000 |T_G| / (N r_wG)`` (Queitsch eqs. 23–25);
 * radial (separating) force with the OPERATING transverse pressure angle:
   ``F_r = F_t tan α_wt`` (Queitsch eq. 30 with α_b for α_0);
 * axial force of helical meshes ``F_a = F_t tan β_w`` (β_w helix angle at the
@@ -326,7 +326,7 @@ def planetary_forces(
 
     References
     ----------
-    Queitsch part I, eqs. (23)–(26), (30); DESIGN.md §3 (F_t = 2000 M/d per planet).
+    Queitsch part I, eqs. (23)–(26), (30) (F_t = 2000 M/d per planet).
     """
     try:
         state = solution.elements[set_name]

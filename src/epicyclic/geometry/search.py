@@ -17,7 +17,7 @@ candidates (``benchmarks/bench_tooth_search.py``).
 
 References
 ----------
-Willis equation n_s − i0 n_r − (1 − i0) n_c = 0 with i0 = −z_r/z_s (DESIGN.md §3);
+Willis equation n_s − i0 n_r − (1 − i0) n_c = 0 with i0 = −z_r/z_s (Queitsch eqs. 4, 12);
 SDP/SI D785 eqs. (13-5), (13-7), (13-9); Drivetrain Hub, *Planetary Gears*
 (target ratio with ± deviation, candidate table).
 """

@@ -29,7 +29,7 @@ the key, what was expected and what was given.  Unknown keys are errors.
 
 References
 ----------
-DESIGN.md §4 (a train is a graph of named shafts); Brandenberger 1952, Beispiel
+Brandenberger 1952, Beispiel
 (the closed train of Bild 10 in ``examples/brandenberger_1952.toml``).
 """
 

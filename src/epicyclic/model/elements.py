@@ -1,12 +1,12 @@
 """Fixed-axis gear stages, clutches and brakes.
 
 A fixed-axis stage is a planetary set whose carrier is the housing
-(DESIGN.md §3): the solver treats both with one rule.  A clutch joins two
+(Queitsch, Bild 3): the solver treats both with one rule.  A clutch joins two
 shafts when engaged; a brake joins a shaft to the housing.
 
 References
 ----------
-DESIGN.md §3–4; Queitsch, Bild 3 (the stationary gear train as a set with the
+Queitsch, Bild 3 (the stationary gear train as a set with the
 carrier held).
 """
 

@@ -1,6 +1,6 @@
 """The operating point: what is given about a train's motion and load.
 
-Core units (DESIGN.md §3): speeds in 1/min, torques in N·m, powers in W.
+Core units: speeds in 1/min, torques in N·m, powers in W.
 Torque and power are *external* values acting on a shaft from outside:
 positive power flows into the train (a drive), negative power out (a load).
 Units other than these are converted at the edges (:mod:`epicyclic.units`).

@@ -15,7 +15,7 @@ References
 ----------
 Brandenberger 1952, eq. 1 (written there with the inverse ratio ac/bd).
 Queitsch, eqs. 3, 4 and 12 (s = i0).
-willis-equation.md, "Festgestellter Steg" (i0 = -z_H/z_S).
+tec-science, "Willis-Gleichung", "Festgestellter Steg" (i0 = -z_H/z_S).
 """
 
 from __future__ import annotations
@@ -118,7 +118,7 @@ class Teeth:
 
         References
         ----------
-        willis-equation.md, Grundgleichung: n_P z_P = n_T (z_P + z_S) - n_S z_S.
+        tec-science, "Willis-Gleichung", Grundgleichung: n_P z_P = n_T (z_P + z_S) - n_S z_S.
         """
         s, p = self.sun, self.planet
         if self.kind == "simple":
@@ -151,7 +151,7 @@ class PlanetarySet:
 
     References
     ----------
-    Brandenberger 1952, eqs. 1, 2, 3' and 7; DESIGN.md §3.
+    Brandenberger 1952, eqs. 1, 2, 3' and 7.
 
     Examples
     --------
@@ -222,7 +222,7 @@ class PlanetarySet:
 
         References
         ----------
-        willis-equation.md, eq. i_0; Queitsch, eq. 4.
+        tec-science, "Willis-Gleichung", Standübersetzung i_0; Queitsch, eq. 4.
         """
         owner = f"planetary set {name!r}"
         zs = _check_teeth(z_sun, "z_sun", owner)

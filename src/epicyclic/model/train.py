@@ -7,7 +7,7 @@ speed zero.  A train is immutable; a shift state is a new train made with
 
 References
 ----------
-DESIGN.md §4 (one mechanism for every case).
+Queitsch, eq. 12 (one Willis equation per set); Brandenberger 1952, Bild 10 (a closed train as a graph of sets and stages).
 """
 
 from __future__ import annotations

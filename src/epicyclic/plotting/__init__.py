@@ -10,7 +10,7 @@ picture as inline SVG for the HTML report.
 
 References
 ----------
-Brandenberger 1952, Bild 3–9; Queitsch, Bild 5; willis-equation.md;
+Brandenberger 1952, Bild 3–9; Queitsch, Bild 5; tec-science, "Willis-Gleichung";
 Benford & Leising 1981 (SAE 810102).
 """
 

@@ -199,7 +199,7 @@ def lever_elements(train: GearTrain) -> list[tuple[Any, tuple[str, str, str], tu
 
     A planetary set has ports (sun, ring, carrier) and ratio i0; a fixed-axis
     stage has ports (first, second, housing) and its speed ratio: it is a set
-    whose carrier is the housing (DESIGN.md §3).
+    whose carrier is the housing (Queitsch, Bild 3).
     """
     out = []
     for element in train.elements:

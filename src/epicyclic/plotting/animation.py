@@ -23,7 +23,7 @@ GIF (matplotlib ``PillowWriter``).
 
 References
 ----------
-willis-equation.md, "Superposition der Bewegungen" (φ_P = φ_T + (d_S/d_P)·φ_T −
+tec-science, "Willis-Gleichung", "Superposition der Bewegungen" (φ_P = φ_T + (d_S/d_P)·φ_T −
 (d_S/d_P)·φ_S) and the animations of the planetary gear; Queitsch eq. 12.
 """
 

@@ -13,7 +13,7 @@ the part that passes the teeth relative to the carrier and alone causes loss.
 
 References
 ----------
-Brandenberger 1952, Bild 10–12 and text; DESIGN.md §3 (rolling and coupling
+Brandenberger 1952, Bild 10–12 and text (rolling and coupling
 power, circulating power).
 """
 
@@ -161,7 +161,7 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH) -> PowerFlow
 
     References
     ----------
-    Brandenberger 1952, text to Bild 11 and 12 (circulating power); DESIGN.md §3.
+    Brandenberger 1952, text to Bild 11 and 12 (circulating power).
 
     Examples
     --------

@@ -22,8 +22,8 @@ null space of the Willis equations ``n_a − i0·n_b − (1 − i0)·n_c = 0`` (
 References
 ----------
 Benford, H. L.; Leising, M. B.: The lever analogy: a new tool in transmission
-analysis.  SAE Technical Paper 810102 (1981).  Willis equation as in
-DESIGN.md §3; Queitsch eq. 12 (s = i0).
+analysis.  SAE Technical Paper 810102 (1981).  Willis equation:
+Queitsch eq. 12 (s = i0).
 """
 
 from __future__ import annotations
@@ -334,7 +334,7 @@ def lever_diagram(solution: Solution | None = None, *, train: GearTrain | None =
 
     References
     ----------
-    Benford & Leising 1981 (SAE 810102); Willis equation (DESIGN.md §3).
+    Benford & Leising 1981 (SAE 810102); Willis equation (Queitsch eq. 12).
 
     Examples
     --------

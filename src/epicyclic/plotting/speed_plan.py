@@ -30,7 +30,7 @@ References
 ----------
 Queitsch, Bild 5 and eqs. 7–12; Brandenberger 1952, eq. 1 and Bild 3–5
 (text: "je vier verschiedene Bereiche 1, 3, 5, 7 … neben drei Einzelfällen
-2, 4, 6"); willis-equation.md (Geschwindigkeitsverteilung am Planetenrad).
+2, 4, 6"); tec-science, "Willis-Gleichung" (Geschwindigkeitsverteilung am Planetenrad).
 """
 
 from __future__ import annotations
@@ -313,7 +313,7 @@ def speed_plan(solution: Solution, element: str | None = None, *, module: float 
 
     References
     ----------
-    Queitsch, Bild 5 and eq. 7; willis-equation.md (planet speed,
+    Queitsch, Bild 5 and eq. 7; tec-science, "Willis-Gleichung" (planet speed,
     n_P z_P = n_T (z_P + z_S) − n_S z_S).
 
     Examples

@@ -1,6 +1,6 @@
 """Result objects of an analysis: immutable, self-describing, renderable.
 
-Units (DESIGN.md §3): speeds in 1/min, torques in N·m, powers and losses in W.
+Units: speeds in 1/min, torques in N·m, powers and losses in W.
 Power is positive where it flows *into* the train (a drive) and negative at a
 load (Brandenberger's convention).  Port torques are the torques a shaft
 exerts on an element.
@@ -71,7 +71,7 @@ class ElementState:
 
     References
     ----------
-    Brandenberger 1952, eq. 3' and Bild 8; DESIGN.md §3 (rolling and coupling power).
+    Brandenberger 1952, eq. 3' and Bild 8; Queitsch, Wälz- und Kupplungsleistung (P_w, P_k).
     """
 
     name: str
@@ -128,7 +128,7 @@ class SelfLocking:
 
     References
     ----------
-    Brandenberger 1952, text to Bild 9 (self-locking at η = bd/ac); DESIGN.md §3.
+    Brandenberger 1952, text to Bild 9 (self-locking at η = bd/ac).
     """
 
     message: str

@@ -20,8 +20,7 @@ carrier, and w = 0 (no rolling power: an idling or locked set) carries no loss.
 
 References
 ----------
-Brandenberger 1952, eqs. 1, 2, 3', 7 and 7'; Queitsch, eqs. 12 and 26;
-DESIGN.md §3–4.
+Brandenberger 1952, eqs. 1, 2, 3', 7 and 7'; Queitsch, eqs. 12 and 26.
 """
 
 from __future__ import annotations

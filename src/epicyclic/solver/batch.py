@@ -1,7 +1,7 @@
 """Batch solution: the same analysis over numpy arrays of operating points.
 
 The equations depend on the train and on the loss-direction pattern w, not
-on the operating point (DESIGN.md §4).  So the speeds of all points come from
+on the operating point.  So the speeds of all points come from
 one matrix product, the ideal torques from another, and the lossy torques
 from one product per distinct pattern w — typically one or two for a whole
 efficiency map.  Self-locking points are flagged, never given a negative
@@ -9,7 +9,7 @@ efficiency.
 
 References
 ----------
-Brandenberger 1952, eqs. 1–10; DESIGN.md §3–4.
+Brandenberger 1952, eqs. 1–10.
 """
 
 from __future__ import annotations

@@ -7,7 +7,7 @@ speed is still free; a non-zero residual names the givens in conflict.
 
 References
 ----------
-Brandenberger 1952, eq. 1; Queitsch, eq. 12; willis-equation.md (Grundgleichung).
+Brandenberger 1952, eq. 1; Queitsch, eq. 12; tec-science, "Willis-Gleichung" (Grundgleichung).
 """
 
 from __future__ import annotations

@@ -13,7 +13,7 @@
 
 References
 ----------
-Brandenberger 1952, eqs. 1–10 and Bild 8–9; DESIGN.md §3 ("Which sign w?").
+Brandenberger 1952, eqs. 1–10 and Bild 8–9 (the sign of the rolling power decides where η0 acts).
 """
 
 from __future__ import annotations
@@ -155,7 +155,7 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
 
     References
     ----------
-    Brandenberger 1952, eqs. 1–10; DESIGN.md §3.
+    Brandenberger 1952, eqs. 1–10.
 
     Examples
     --------

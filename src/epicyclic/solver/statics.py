@@ -7,7 +7,7 @@ shaft, and one row per given external torque.
 
 References
 ----------
-Brandenberger 1952, eqs. 2, 7, 7', 8, 9; Queitsch, eqs. 26–29; DESIGN.md §3.
+Brandenberger 1952, eqs. 2, 7, 7', 8, 9; Queitsch, eqs. 26–29.
 """
 
 from __future__ import annotations

@@ -2,12 +2,12 @@
 
 Per gear the equations depend only on the shift state and the loss-direction
 pattern, so each gear is one batch solve over numpy arrays of input speeds and
-torques (DESIGN.md §4).  Drive puts power in at the input; coast drives the
+torques.  Drive puts power in at the input; coast drives the
 output with the torque ``input_torque · |i|`` (engine braking).
 
 References
 ----------
-Brandenberger 1952, eqs. 7–10; DESIGN.md §4 (batch).
+Brandenberger 1952, eqs. 7–10.
 """
 
 from __future__ import annotations

@@ -16,7 +16,7 @@ drive); such states are listed only on request.  4 sets and 6 elements
 
 References
 ----------
-Queitsch part 1, eq. 12 (Willis); DESIGN.md §4 (rank tells the degrees of freedom).
+Queitsch part 1, eq. 12 (Willis) and the Getriebefreiheitsgrad F.
 """
 
 from __future__ import annotations

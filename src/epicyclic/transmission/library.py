@@ -59,7 +59,7 @@ class SetSpec:
 
     @property
     def stationary_ratio(self) -> Fraction:
-        """i0 as an exact fraction (Queitsch eq. 4; DESIGN.md §2)."""
+        """i0 as an exact fraction (Queitsch eq. 4)."""
         sign = -1 if self.kind == "simple" else 1
         return Fraction(sign * self.z_ring, self.z_sun)
 

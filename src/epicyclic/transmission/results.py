@@ -8,7 +8,7 @@ per input speed, rolling power and losses per input power.
 References
 ----------
 Brandenberger 1952, eq. 3' (rolling power) and eqs. 7–10 (efficiency);
-DESIGN.md §3 (circulating power, rolling and coupling power).
+Brandenberger 1952, text to Bild 11 and 12 (circulating power).
 """
 
 from __future__ import annotations

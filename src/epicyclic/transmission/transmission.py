@@ -16,7 +16,7 @@ step ratios, spread and the summary table.
 References
 ----------
 Brandenberger 1952, eqs. 1–10 (losses by the direction of rolling power);
-Queitsch part 1, eqs. 12 and 26 (Willis and torque relations); DESIGN.md §3–4.
+Queitsch part 1, eqs. 12 and 26 (Willis and torque relations).
 """
 
 from __future__ import annotations
@@ -109,7 +109,7 @@ class Transmission:
 
     References
     ----------
-    DESIGN.md §4 (a shift state is a new train); Brandenberger 1952, eqs. 1–10.
+    Brandenberger 1952, eqs. 1–10; Benford & Leising 1981 (a shift state is a new lever).
 
     Examples
     --------
@@ -254,7 +254,7 @@ class Transmission:
         gear : str
         input_speed : float, default 1000
             1/min.  The results are ratios and multiples, independent of the
-            level (losses depend on rolling power only, DESIGN.md §3).
+            level (losses depend on rolling power only, Brandenberger 1952, eq. 7).
         input_torque : float, default 100
             N·m at the input in drive; in coast the output is driven with the
             torque ``input_torque · |ratio|``.
