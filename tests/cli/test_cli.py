@@ -237,3 +237,11 @@ def test_internal_error_exits_1(monkeypatch):
     result = run("analyze", BRANDENBERGER)
     assert result.exit_code == 1
     assert "internal error: RuntimeError: boom" in result.stderr and "Traceback" not in result.output
+
+
+def test_version_option_prints_the_package_version_and_exits_0():
+    from epicyclic import __version__
+
+    result = run("--version")
+    assert result.exit_code == 0, result.output
+    assert result.stdout.strip() == f"epicyclic {__version__}"
