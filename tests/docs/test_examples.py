@@ -1,7 +1,8 @@
 """Every code example of the documentation runs.
 
 ``python`` blocks run in page order in one namespace per page (a tutorial builds on its earlier
-blocks); ``sh`` / ``bash`` / ``console`` blocks run in bash (``$`` prompts stripped) with the
+blocks); ``pycon`` blocks (``>>>`` sessions) run as doctests in the same namespace, so the output
+they show is checked; ``sh`` / ``bash`` / ``console`` blocks run in bash (``$`` prompts stripped) with the
 installed ``epicyclic`` command on the PATH and must exit 0; ``toml`` blocks must parse.  Each page
 runs in a fresh folder that holds ``examples/`` (a link), so outputs never land in the repository.
 A block preceded by ``<!-- docs-test: skip (reason) -->`` is not run; the reason is required.
@@ -9,6 +10,7 @@ A block preceded by ``<!-- docs-test: skip (reason) -->`` is not run; the reason
 
 from __future__ import annotations
 
+import doctest
 import os
 import re
 import subprocess
@@ -75,6 +77,12 @@ def test_page_examples_run(page, tmp_path, monkeypatch):
                 exec(compile(code, where, "exec"), namespace)
             except Exception as exc:  # report the page and line, not this file
                 pytest.fail(f"{where}: the Python example fails: {type(exc).__name__}: {exc}")
+        elif lang == "pycon":
+            test = doctest.DocTestParser().get_doctest(code, namespace, where, str(page), line)
+            runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+            report: list[str] = []
+            runner.run(test, out=report.append, clear_globs=False)
+            assert not runner.failures, f"{where}: the session's output differs:\n" + "".join(report)
         elif lang in SHELLS:
             script = _shell(code, lang)
             done = subprocess.run(["bash", "-e", "-o", "pipefail", "-c", script], cwd=work, env=env,
@@ -94,5 +102,5 @@ def test_skips_give_a_reason_and_pages_have_examples():
         text = page.read_text(encoding="utf-8")
         assert "docs-test: skip" not in text or _SKIP.search(text), f"{page}: a skip needs '(reason)'"
         runnable += sum(1 for lang, _, _, skipped in code_blocks(page)
-                        if not skipped and (lang == "python" or lang in SHELLS))
+                        if not skipped and (lang in ("python", "pycon") or lang in SHELLS))
     assert runnable >= 30
