@@ -2,8 +2,11 @@
 
 ``python`` blocks run in page order in one namespace per page (a tutorial builds on its earlier
 blocks); ``pycon`` blocks (``>>>`` sessions) run as doctests in the same namespace, so the output
-they show is checked; ``sh`` / ``bash`` / ``console`` blocks run in bash (``$`` prompts stripped) with the
-installed ``epicyclic`` command on the PATH and must exit 0; ``toml`` blocks must parse.  Each page
+they show is checked; ``sh`` / ``bash`` / ``console`` blocks (``$`` prompts stripped) run line by
+line and every line must succeed: a plain ``epicyclic …`` command runs in-process through typer's
+test runner (the same app as the installed command, without a new interpreter per line — the
+installed command itself is tested in tests/test_package.py), anything else (other programs, pipes,
+redirections, ``||``) in bash with the installed ``epicyclic`` on the PATH; ``toml`` blocks must parse.  Each page
 runs in a fresh folder that holds ``examples/`` (a link), so outputs never land in the repository.
 A block preceded by ``<!-- docs-test: skip (reason) -->`` is not run; the reason is required.
 """
@@ -12,6 +15,7 @@ from __future__ import annotations
 
 import doctest
 import os
+import shlex
 import re
 import subprocess
 import sys
@@ -54,10 +58,43 @@ def _workdir(tmp_path: Path) -> Path:
     return tmp_path
 
 
-def _shell(code: str, lang: str) -> str:
+def _shell_lines(code: str, lang: str) -> list[str]:
+    """The commands of a shell block: prompts stripped, continuation lines joined, comments dropped."""
+    lines = code.splitlines()
     if lang == "console":  # only the prompted lines are commands
-        return "\n".join(line[2:] for line in code.splitlines() if line.startswith("$ ")) + "\n"
-    return code
+        lines = [line[2:] for line in lines if line.startswith("$ ")]
+    joined = "\n".join(lines).replace("\\\n", " ")
+    return [line for line in joined.splitlines() if line.strip() and not line.lstrip().startswith("#")]
+
+
+def _epicyclic_args(line: str) -> list[str] | None:
+    """The arguments of a plain ``epicyclic …`` line; None if the line needs a shell."""
+    lexer = shlex.shlex(line, posix=True, punctuation_chars=True)
+    lexer.whitespace_split = True
+    lexer.commenters = "#"
+    tokens = list(lexer)
+    if not tokens or tokens[0] != "epicyclic" or "$" in line or "`" in line:
+        return None
+    if any(t and set(t) <= set("();<>|&") for t in tokens):
+        return None
+    return tokens[1:]
+
+
+def _run_shell_line(line: str, where: str, work: Path, env: dict[str, str]) -> None:
+    args = _epicyclic_args(line)
+    if args is not None:
+        from typer.testing import CliRunner
+
+        from epicyclic.cli.main import app
+
+        result = CliRunner().invoke(app, args, env={"COLUMNS": "100"})
+        assert result.exit_code == 0, f"{where}: `{line}` exits {result.exit_code}:\n{result.output[-3000:]}" \
+            + (f"\n{result.exception!r}" if result.exception and not isinstance(result.exception, SystemExit) else "")
+        return
+    done = subprocess.run(["bash", "-e", "-o", "pipefail", "-c", line], cwd=work, env=env,
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, f"{where}: `{line}` fails (exit {done.returncode}):\n" \
+                                 f"{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
 
 
 @pytest.mark.parametrize("page", PAGES, ids=[str(p.relative_to(DOCS)) for p in PAGES])
@@ -84,11 +121,8 @@ def test_page_examples_run(page, tmp_path, monkeypatch):
             runner.run(test, out=report.append, clear_globs=False)
             assert not runner.failures, f"{where}: the session's output differs:\n" + "".join(report)
         elif lang in SHELLS:
-            script = _shell(code, lang)
-            done = subprocess.run(["bash", "-e", "-o", "pipefail", "-c", script], cwd=work, env=env,
-                                  capture_output=True, text=True, timeout=300)
-            assert done.returncode == 0, f"{where}: the shell example fails (exit {done.returncode}):\n" \
-                                         f"{script}\n{done.stdout[-2000:]}\n{done.stderr[-2000:]}"
+            for command in _shell_lines(code, lang):
+                _run_shell_line(command, where, work, env)
         elif lang == "toml":
             try:
                 tomllib.loads(code)
