@@ -37,6 +37,7 @@ U/min (71620 = 75·100·60/(2π)).  DIN 1301 for PS = 735.49875 W.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -194,9 +195,11 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
 
     Parameters
     ----------
-    value : float, int or str
-        A number (read in ``default_unit``, or the core unit if that is None)
-        or a string with number and unit, e.g. ``"3 PS"``, ``"1500 U/min"``.
+    value : float, int, str or pint.Quantity
+        A number (read in ``default_unit``, or the core unit if that is None),
+        a string with number and unit, e.g. ``"3 PS"``, ``"1500 U/min"``, or a
+        pint quantity of any registry (its unit names are read in ours, so
+        ``rpm`` stays 1/min and ``PS`` is the metric horsepower).
     quantity : {"speed", "torque", "power"}
     field : str
         Where the value was given; named in error messages.
@@ -232,6 +235,8 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
         if default_unit is None:
             return number
         return number * unit_factor(default_unit, quantity, field)
+    if _is_quantity(value):
+        return _from_quantity(value, quantity, field)
     if not isinstance(value, str):
         raise UnitError(
             f"{field}: expected a number or a string with unit such as {_example(quantity)!r}, "
@@ -245,6 +250,33 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
         # a bare number in a string: same as a plain number
         return to_core(float(parsed.magnitude), quantity, field=field, default_unit=default_unit)
     return _to_core_quantity(parsed, quantity, field, value)
+
+
+def _is_quantity(value: object) -> bool:
+    """Whether ``value`` is a pint quantity (of any registry: the user's, pint's application registry)."""
+    return all(hasattr(value, name) for name in ("to_tuple", "magnitude", "units", "dimensionality"))
+
+
+def _from_quantity(value: object, quantity: str, field: str) -> float:
+    """A pint quantity of any registry in core units, read unit name by unit name in ours.
+
+    The names are looked up in this module's registry, so a user's ``1500 rpm`` is 1500 1/min
+    (not 1500·2π as pint's default turns revolutions into radians) and ``3 PS`` is metric horsepower.
+    """
+    magnitude, units = value.to_tuple()  # type: ignore[attr-defined]
+    if isinstance(magnitude, bool) or not isinstance(magnitude, numbers.Real):
+        raise UnitError(f"{field}: expected one {quantity}, got the quantity {value!r} "
+                        f"(its magnitude is {type(magnitude).__name__}, not a number).", field, quantity, value)
+    ureg = registry()
+    unit = ureg.Unit("")
+    for name, power in units:
+        try:
+            unit = unit * ureg.Unit(name) ** power
+        except Exception:  # pint: UndefinedUnitError and friends
+            raise UnitError(f"{field}: the unit {name!r} of {value!r} is not known here; give the {quantity} "
+                            f"as a string such as {_example(quantity)!r} (units: {QUANTITIES[quantity]}).",
+                            field, quantity, value) from None
+    return _to_core_quantity(ureg.Quantity(float(magnitude), unit), quantity, field, value)
 
 
 def from_core(value: float, quantity: str, unit: str) -> float:

@@ -59,7 +59,7 @@ def test_animate_html_and_gif(tmp_path):
 @pytest.mark.parametrize("args, message", [
     (["plot", BRANDENBERGER, "--out", "x.txt"], "suffix '.txt'; expected one of .svg, .png, .pdf"),
     (["animate", BRANDENBERGER, "--out", "x.mp4"], "suffix '.mp4'; expected one of .svg, .html, .gif"),
-    (["animate", BRANDENBERGER, "--set", "nope"], "no planetary set named 'nope'"),
+    (["animate", BRANDENBERGER, "--element", "nope"], "no planetary set named 'nope'"),
     (["plot", str(EXAMPLES / "zf_8hp70_8speed.toml"), "-k", "power"], "no \\[operating_point\\] table"),
     (["plot", "missing.toml"], "no such file"),
     (["plot", BRANDENBERGER, "--gear", "2"], "needs a \\[transmission\\] table"),

@@ -19,7 +19,7 @@ import typer
 from ..errors import EpicyclicError
 
 __all__ = ["EXIT_OK", "EXIT_INTERNAL", "EXIT_BAD_INPUT", "OutputFormat", "FormatOption", "OutOption",
-           "guarded", "emit", "fail"]
+           "SetOption", "guarded", "emit", "fail"]
 
 EXIT_OK = 0
 EXIT_INTERNAL = 1
@@ -40,6 +40,11 @@ class OutputFormat(str, Enum):
 #: The ``--format`` and ``--out`` options, the same on every reporting sub-command.
 FormatOption = Annotated[OutputFormat, typer.Option("--format", "-f", help="Output format.")]
 OutOption = Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")]
+#: ``--set KEY=VALUE`` (repeatable): override a value of the train file before it is read.
+SetOption = Annotated[Optional[list[str]], typer.Option(
+    "--set", metavar="KEY=VALUE",
+    help="Override a value of FILE before it is read (repeatable): a dotted key and a TOML value, "
+         "e.g. --set operating_point.speeds.sun=\"2000 rpm\" or --set planetary.P1.stationary_efficiency=0.97.")]
 
 
 def fail(message: str, code: int = EXIT_BAD_INPUT) -> None:

@@ -16,7 +16,7 @@ from ..io import load_train_file
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, SetOption, emit, guarded
 
 __all__ = ["analyze"]
 
@@ -30,9 +30,10 @@ def analyze(
     gear: Annotated[Optional[str], typer.Option(
         "--gear", "-g", help="Solve in this gear of the \\[transmission] schedule.")] = None,
     lang: Annotated[str, typer.Option(help="Language of the worked solution in HTML reports: en or de.")] = "en",
+    set_: SetOption = None,
 ) -> None:
     """Solve FILE: speeds, torques, powers, losses, efficiency, self-locking, circulating power."""
-    train_file = load_train_file(file)
+    train_file = load_train_file(file, overrides=set_ or ())
     if gear is not None:
         from dataclasses import replace
 

@@ -14,7 +14,7 @@ import typer
 
 from ..explain import explain as worked_solution
 from ..io import load_train_file
-from ._common import emit, guarded
+from ._common import SetOption, emit, guarded
 
 __all__ = ["Language", "ExplainFormat", "explain"]
 
@@ -39,9 +39,10 @@ def explain(
     lang: Annotated[Language, typer.Option("--lang", "-l", help="Language: en or de.")] = Language.en,
     format: Annotated[ExplainFormat, typer.Option("--format", "-f", help="Output format.")] = ExplainFormat.text,
     out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    set_: SetOption = None,
 ) -> None:
     """Show the worked solution of FILE: Willis, loss rule, torque balance, results, with numbers."""
-    train_file = load_train_file(file)
+    train_file = load_train_file(file, overrides=set_ or ())
     solution = train_file.solve()
     result = worked_solution(solution, train_file.units, lang=lang.value, title=train_file.title)
     emit(result.markdown() if format is ExplainFormat.markdown else result.text(), out)

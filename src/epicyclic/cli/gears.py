@@ -17,7 +17,7 @@ from typing import Annotated
 import typer
 
 from ..transmission import Transmission, explore as _explore
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, SetOption, emit, guarded
 
 __all__ = ["gears", "explore"]
 
@@ -40,9 +40,10 @@ def gears(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     detail: Annotated[bool, typer.Option("--detail", help="Also list every shift element and set per gear.")] = False,
+    set_: SetOption = None,
 ) -> None:
     """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread."""
-    transmission = Transmission.from_file(file)
+    transmission = Transmission.from_file(file, overrides=set_ or ())
     analysis = transmission.analyze_all()
     detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
     emit(_render(analysis, format, detail_text), out)
@@ -54,7 +55,8 @@ def explore(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     redundant: Annotated[bool, typer.Option("--redundant", help="Also list states with a redundant element.")] = False,
+    set_: SetOption = None,
 ) -> None:
     """Every combination of the file's clutches and brakes that drives the output: ratio and kind."""
-    transmission = Transmission.from_file(file)
+    transmission = Transmission.from_file(file, overrides=set_ or ())
     emit(_render(_explore(transmission, include_redundant=redundant), format), out)

@@ -14,7 +14,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import guarded
+from ._common import SetOption, guarded
 
 __all__ = ["PlotKind", "plot", "animate"]
 
@@ -29,14 +29,14 @@ class PlotKind(str, Enum):
     flow = "flow"
 
 
-def _load(file: Path, gear: str | None):
-    """(train file, operating train) with ``--gear`` applied."""
+def _load(file: Path, gear: str | None, overrides: list[str] | None):
+    """(train file, operating train) with ``--set`` and ``--gear`` applied."""
     from dataclasses import replace
 
     from ..errors import ModelError
     from ..io import load_train_file
 
-    train_file = load_train_file(file)
+    train_file = load_train_file(file, overrides=overrides or ())
     if gear is not None:
         if train_file.transmission is None:
             raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
@@ -59,6 +59,7 @@ def plot(
         "--out", "-o", help="Output file: .svg, .png or .pdf (default: FILE-KIND.png here).")] = None,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
     dpi: Annotated[int, typer.Option(help="Resolution of .png output.")] = 150,
+    set_: SetOption = None,
 ) -> None:
     """Draw FILE: speed plan, torque bars, power rectangles, lever diagram or power flow."""
     from ..plotting import FIGURE_SUFFIXES, lever_diagram, save_figure, save_plot
@@ -67,7 +68,7 @@ def plot(
     out = Path(out) if out is not None else Path(f"{file.stem}-{kind.value}.png")
     check_suffix(out, FIGURE_SUFFIXES, "plot --out")
     _agg()
-    train_file = _load(file, gear)
+    train_file = _load(file, gear, set_)
     if kind is PlotKind.lever and train_file.operating_point is None:
         written = save_figure(lever_diagram(train=train_file.operating_train).plot(), out, dpi=dpi)
     else:
@@ -80,12 +81,14 @@ def animate(
     file: Annotated[Path, typer.Argument(help="Train description (.toml), see docs/file-format.md.")],
     out: Annotated[Optional[Path], typer.Option(
         "--out", "-o", help="Output file: .html, .svg or .gif (default: FILE-animation.html here).")] = None,
-    element: Annotated[Optional[str], typer.Option("--set", "-s", help="Planetary set (default: the first).")] = None,
+    element: Annotated[Optional[str], typer.Option(
+        "--element", "-e", help="Name of the planetary set to animate (default: the first).")] = None,
     willis: Annotated[bool, typer.Option(
         "--willis", help="Show the three superposed motions of the Willis derivation in turn.")] = False,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
     frames: Annotated[int, typer.Option(help="Frames of one GIF loop.")] = 48,
     fps: Annotated[int, typer.Option(help="Frames per second.")] = 16,
+    set_: SetOption = None,
 ) -> None:
     """Animate a planetary set of FILE at its solved speeds (HTML/SVG plays offline; or GIF)."""
     from ..plotting import planetary_animation
@@ -95,6 +98,6 @@ def animate(
     out = Path(out) if out is not None else Path(f"{file.stem}-animation.html")
     check_suffix(out, ANIMATION_SUFFIXES, "animate --out")
     _agg()
-    solution = _load(file, gear).solve()
+    solution = _load(file, gear, set_).solve()
     anim = planetary_animation(solution, element, willis=willis, frames=frames, fps=fps)
     typer.echo(f"wrote {anim.save(out).resolve()}")

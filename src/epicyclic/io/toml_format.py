@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import math
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -47,6 +47,7 @@ from ..errors import EpicyclicError, ModelError
 from ..model import Brake, Clutch, GearStage, GearTrain, OperatingPoint, PlanetarySet
 from ..units import Units, to_core
 from .expressions import evaluate
+from .overrides import OverrideError, apply_overrides
 
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
@@ -173,12 +174,15 @@ class TrainFile:
 
 
 # ---------------------------------------------------------------------- public functions
-def load_train_file(path: str | Path) -> TrainFile:
+def load_train_file(path: str | Path, overrides: Sequence[str] = ()) -> TrainFile:
     """Read a train description from a TOML file.
 
     Parameters
     ----------
     path : str or Path
+    overrides : sequence of str
+        ``KEY=VALUE`` overrides applied to the parsed file before it is read
+        (the CLI's ``--set``; see :mod:`epicyclic.io.overrides`).
 
     Returns
     -------
@@ -200,11 +204,11 @@ def load_train_file(path: str | Path) -> TrainFile:
                              str(path)) from None
     except (OSError, UnicodeDecodeError) as exc:
         raise InputFileError(f"{path}: cannot read the file ({exc}).", str(path)) from None
-    return loads_train_file(text, source=str(path))
+    return loads_train_file(text, source=str(path), overrides=overrides)
 
 
-def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
-    """Read a train description from TOML text.
+def loads_train_file(text: str, source: str = "<string>", overrides: Sequence[str] = ()) -> TrainFile:
+    """Read a train description from TOML text (``overrides`` as in :func:`load_train_file`).
 
     Examples
     --------
@@ -232,6 +236,11 @@ def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
     except tomllib.TOMLDecodeError as exc:
         raise InputFileError(f"{source}: not valid TOML: {exc}. Check quotes, brackets and '=' signs.",
                              source) from None
+    if overrides:
+        try:
+            data = apply_overrides(data, overrides)
+        except OverrideError as exc:
+            raise OverrideError(f"{source}: {exc}") from None
     return _Reader(source).read(data)
 
 
