@@ -38,12 +38,15 @@ from __future__ import annotations
 
 import math
 import numbers
+import re
 from dataclasses import dataclass
 from functools import lru_cache
-
-import pint
+from typing import TYPE_CHECKING
 
 from .errors import EpicyclicError
+
+if TYPE_CHECKING:  # pragma: no cover
+    import pint
 
 __all__ = [
     "CORE_UNITS",
@@ -98,9 +101,35 @@ class UnitError(EpicyclicError, ValueError):
         super().__init__(message)
 
 
+#: Core units per unit for the units of the sources, the examples and the documentation, so that
+#: reading them needs neither pint nor its registry (importing pint and building the registry cost
+#: about 0.3 s of every start).  Not a second definition: tests/test_units.py checks every entry
+#: against the registry, which stays the reference for every other unit.
+_KNOWN_FACTORS: dict[str, dict[str, float]] = {
+    "speed": {"1/min": 1.0, "U/min": 1.0, "rpm": 1.0, "1/s": 60.0, "rad/s": 30.0 / math.pi},
+    "torque": {"N*m": 1.0, "kN*m": 1000.0, "kp*cm": G0 / 100, "cm*kg": G0 / 100, "kp*m": G0, "m*kg": G0,
+               "lbf*ft": 0.45359237 * G0 * 0.3048},
+    "power": {"W": 1.0, "kW": 1000.0, "MW": 1e6, "PS": 735.49875, "hp": 0.45359237 * G0 * 0.3048 * 550},
+}
+#: A number and one of the known units, e.g. "1500 U/min" (anything else goes to the registry).
+_KNOWN_VALUE = re.compile(r"\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d{1,3})?)\s*(\S+)\s*")
+
+
+def _known(text: str, quantity: str) -> float | None:
+    """``text`` in core units if it is a finite number with a known unit, else None."""
+    match = _KNOWN_VALUE.fullmatch(text)
+    factor = _KNOWN_FACTORS[quantity].get(match.group(2)) if match else None
+    if factor is None:
+        return None
+    value = float(match.group(1)) * factor
+    return value if math.isfinite(value) else None
+
+
 @lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
-    """The project's unit registry (built once; pint's defaults plus the sources' units)."""
+    """The project's unit registry (built once, on first use; pint's defaults plus the sources' units)."""
+    import pint  # imported here: most files need only the known units above
+
     ureg = pint.UnitRegistry(on_redefinition="ignore", cache_folder=None)
     for definition in _DEFINITIONS:
         ureg.define(definition)
@@ -121,7 +150,7 @@ def _parse(text: str, field: str, quantity: str) -> pint.Quantity:
             f"Write a number and a unit, e.g. {_example(quantity)!r} (units: {QUANTITIES[quantity]}).",
             field, quantity, text,
         ) from None
-    if not isinstance(value, pint.Quantity):  # a plain number
+    if not hasattr(value, "units"):  # a plain number
         value = ureg.Quantity(float(value), "")
     return value
 
@@ -186,6 +215,9 @@ def unit_factor(unit: str, quantity: str, field: str = "units") -> float:
             f"{field}: the {quantity} unit must be a non-empty string such as "
             f"{CORE_UNITS[quantity]!r}, got {unit!r}.", field, quantity, unit,
         )
+    known = _KNOWN_FACTORS[quantity].get(unit.strip())
+    if known is not None:
+        return known
     parsed = _parse(f"1 {unit}" if not unit.strip()[0].isdigit() else unit, field, quantity)
     return _to_core_quantity(parsed, quantity, field, unit)
 
@@ -245,6 +277,9 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
     text = value.strip()
     if not text:
         raise UnitError(f"{field}: expected a {quantity}, got an empty string.", field, quantity, value)
+    known = _known(text, quantity)
+    if known is not None:
+        return known
     parsed = _parse(text, field, quantity)
     if parsed.dimensionless and parsed.units == registry().dimensionless:
         # a bare number in a string: same as a plain number

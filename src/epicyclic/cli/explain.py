@@ -12,7 +12,6 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..explain import explain as worked_solution
 from ..io import load_train_file
 from ._common import SetOption, emit, guarded
 
@@ -42,6 +41,8 @@ def explain(
     set_: SetOption = None,
 ) -> None:
     """Show the worked solution of FILE: Willis, loss rule, torque balance, results, with numbers."""
+    from ..explain import explain as worked_solution  # imported here: other commands start faster
+
     train_file = load_train_file(file, overrides=set_ or ())
     solution = train_file.solve()
     result = worked_solution(solution, train_file.units, lang=lang.value, title=train_file.title)

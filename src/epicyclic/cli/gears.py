@@ -16,7 +16,6 @@ from typing import Annotated
 
 import typer
 
-from ..transmission import Transmission, explore as _explore
 from ._common import FormatOption, OutOption, OutputFormat, SetOption, emit, guarded
 
 __all__ = ["gears", "explore"]
@@ -43,6 +42,8 @@ def gears(
     set_: SetOption = None,
 ) -> None:
     """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread."""
+    from ..transmission import Transmission  # imported here: other commands start faster without it
+
     transmission = Transmission.from_file(file, overrides=set_ or ())
     analysis = transmission.analyze_all()
     detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
@@ -58,5 +59,7 @@ def explore(
     set_: SetOption = None,
 ) -> None:
     """Every combination of the file's clutches and brakes that drives the output: ratio and kind."""
+    from ..transmission import Transmission, explore as _explore
+
     transmission = Transmission.from_file(file, overrides=set_ or ())
     emit(_render(_explore(transmission, include_redundant=redundant), format), out)

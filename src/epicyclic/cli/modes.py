@@ -20,7 +20,6 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..analysis.modes import two_shaft_modes
 from ..errors import ModelError
 from ..io.expressions import evaluate
 from ..io.tables import ReportTable
@@ -95,6 +94,8 @@ def modes(
     out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
 ) -> None:
     """The seven two-shaft ratios of a set (Queitsch Tafel 1) with efficiencies in both directions."""
+    from ..analysis.modes import two_shaft_modes  # imported here: other commands start faster
+
     planetary = planetary_from_options(kind, sun, ring, planet, planet_sun, planet_ring, external_ring, i0, eta0)
     table = two_shaft_modes(planetary)
     if format is ModesFormat.json:
