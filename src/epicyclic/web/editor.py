@@ -1,0 +1,123 @@
+"""Where in the TOML text a load error points: the line of the table and key the message names.
+
+The loader's messages name the place as the command line prints it, e.g.
+``"<file>: [[planetary]] #2 'P2', key 'teeth': ..."``,
+``"<file>: [operating_point] speeds: unknown shaft 'x'"`` or, for bad TOML,
+``"... (at line 7, column 3)"``.  :func:`locate` finds that line in the text
+so that the editor can mark it; the message itself is shown unchanged.
+
+Examples
+--------
+>>> text = '''title = "t"
+... [[planetary]]
+... name = "P1"
+... [[planetary]]
+... name = "P2"
+... teeth = { sun = 0 }
+... '''
+>>> locate(text, "f.toml: [[planetary]] #2 'P2', key 'teeth': tooth counts must be positive.")
+6
+>>> locate(text, "f.toml: [[planetary]] #1 'P1': missing key 'sun'.")
+2
+>>> locate(text, "f.toml: not valid TOML: Expected '=' (at line 3, column 6).")
+3
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+__all__ = ["Problem", "locate", "problem"]
+
+_TOML_POSITION = re.compile(r"\(at line (\d+), column (\d+)\)")
+_ARRAY = re.compile(r"\[\[(\w+)\]\] #(\d+)")
+_TABLE = re.compile(r"(?<!\[)\[([A-Za-z_][\w.]*)\](?!\])(?:\s+(?:key\s+)?'?([A-Za-z_]\w*)'?)?")
+_KEY = re.compile(r"key '([A-Za-z_]\w*)")
+_HEADER = re.compile(r"""^\s*(\[\[|\[)\s*([A-Za-z0-9_\-."' ]+?)\s*\]\]?\s*(?:#.*)?$""")
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A load error as the editor shows it.
+
+    Attributes
+    ----------
+    message : str
+        The loader's message, unchanged.
+    line : int or None
+        1-based line of the text it points at.
+    excerpt : tuple of (int, str, bool)
+        Up to five numbered lines around ``line`` (number, text, is the line).
+    """
+
+    message: str
+    line: int | None = None
+    excerpt: tuple[tuple[int, str, bool], ...] = ()
+
+
+def _headers(lines: list[str]) -> list[tuple[int, str]]:
+    """(index, header text without brackets) of every table header line."""
+    return [(k, match.group(1) + match.group(2)) for k, line in enumerate(lines) if (match := _HEADER.match(line))]
+
+
+def _section_end(lines: list[str], start: int) -> int:
+    return next((k for k in range(start + 1, len(lines)) if _HEADER.match(lines[k])), len(lines))
+
+
+def _find_key(lines: list[str], start: int, end: int, key: str) -> int | None:
+    pattern = re.compile(rf"^\s*[\"']?{re.escape(key)}[\"']?\s*[.=]")
+    for k in range(start, end):
+        if pattern.match(lines[k]):
+            return k
+    return None
+
+
+def locate(text: str, message: str) -> int | None:
+    """The 1-based line of ``text`` that ``message`` points at, or None if it names no place."""
+    position = _TOML_POSITION.search(message)
+    if position:
+        return int(position.group(1))
+    lines = text.splitlines()
+    headers = _headers(lines)
+    start = end = None
+    key = None
+    array = _ARRAY.search(message)
+    if array:
+        kind, number = array.group(1), int(array.group(2))
+        matching = [k for k, h in headers if h == f"[[{kind}"]
+        if 0 < number <= len(matching):
+            start = matching[number - 1]
+    else:
+        table = _TABLE.search(message)
+        if table and not message[:table.start()].rstrip().endswith("key"):
+            name = table.group(1)
+            start = next((k for k, h in headers if h == f"[{name}"), None)
+            key = table.group(2)
+    found = _KEY.search(message)
+    if found:
+        key = found.group(1)
+    if start is None:
+        if "top level" in message and key:
+            first = headers[0][0] if headers else len(lines)
+            line = _find_key(lines, 0, first, key)
+            return None if line is None else line + 1
+        return None
+    end = _section_end(lines, start)
+    if key:
+        line = _find_key(lines, start + 1, end, key)
+        if line is not None:
+            return line + 1
+    return start + 1
+
+
+def problem(text: str, message: str, context: int = 2) -> Problem:
+    """A :class:`Problem` with the line and a numbered excerpt around it."""
+    line = locate(text, message)
+    if line is None:
+        return Problem(message)
+    lines = text.splitlines() or [""]
+    line = min(max(line, 1), len(lines))
+    first, last = max(1, line - context), min(len(lines), line + context)
+    excerpt = tuple((k, lines[k - 1], k == line) for k in range(first, last + 1))
+    return Problem(message, line, excerpt)
