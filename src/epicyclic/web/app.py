@@ -164,6 +164,8 @@ def create_app(limits: Limits | None = None) -> Starlette:
     async def form_of(request: Request) -> Any:
         try:
             return await request.form(max_files=1, max_fields=3000, max_part_size=limits.max_body)
+        except _TooLarge:
+            raise
         except Exception as exc:  # starlette's multipart errors: too many fields, malformed body
             raise FormError(f"the request's form cannot be read ({getattr(exc, 'detail', exc)}).") from None
 

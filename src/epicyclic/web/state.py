@@ -57,7 +57,7 @@ ROLES = ("", "drive", "load")
 #: What the second value of a row is.
 MOMENTS = ("torque", "power")
 #: At most this many shaft rows, characters per value and characters of a name.
-MAX_ROWS, MAX_VALUE, MAX_NAME = 200, 200, 200
+MAX_ROWS, MAX_VALUE, MAX_NAME = 200, 1000, 200
 
 
 class FormError(EpicyclicError, ValueError):

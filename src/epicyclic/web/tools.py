@@ -92,6 +92,8 @@ def _read(tool: Tool, given: Mapping[str, str], context: Context) -> dict[str, A
     values: dict[str, Any] = {}
     for field in tool.fields:
         text = (given.get(f"tool_{tool.name}_{field.name}") or "").strip() or field.default
+        if not text and field.choices == ("set",):
+            text = next(iter(_set_choices(context)), "")
         if not text:
             if field.optional:
                 values[field.name] = None

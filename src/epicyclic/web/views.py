@@ -82,13 +82,16 @@ def _load(text: str, source: str) -> TrainFile:
         return loads_train_file(text, source=source)
     except EpicyclicError as exc:
         raise _Bad(problem(text, str(exc)), text) from None
+    except RecursionError:  # the TOML parser recurses once per level of nested arrays or inline tables
+        raise _Bad(Problem(f"{source}: the text nests arrays or tables too deeply to be read; a train description "
+                           "needs at most a few levels."), text) from None
 
 
 def _proposed(text: str, source: str) -> tuple[str, list[str]]:
     """``text`` with a proposed operating point if it describes a transmission without one."""
     try:
         data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError:
+    except (tomllib.TOMLDecodeError, RecursionError):
         return text, []
     spec = data.get("transmission")
     if "operating_point" in data or not isinstance(spec, dict):
@@ -107,7 +110,7 @@ def _rewritten(state: PageState) -> str:
     """The text with the form's operating point written into it."""
     try:
         return write_operating_point(state.text, state.rows, state.gear)
-    except tomllib.TOMLDecodeError:
+    except (tomllib.TOMLDecodeError, RecursionError):
         _load(state.text, state.source)  # raises the loader's message for bad TOML
         raise
 
@@ -288,7 +291,7 @@ def download(state: PageState, kind: str) -> Reply:
         title = "epicyclic"
         try:
             title = tomllib.loads(state.text).get("title", title)
-        except tomllib.TOMLDecodeError:
+        except (tomllib.TOMLDecodeError, RecursionError):
             pass
         return Reply(state.text, media_type=_DOWNLOADS[kind],
                      filename=_file_name(str(title), state.source, ".toml"))
