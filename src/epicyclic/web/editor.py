@@ -32,9 +32,12 @@ __all__ = ["Problem", "locate", "problem"]
 
 _TOML_POSITION = re.compile(r"\(at line (\d+), column (\d+)\)")
 _ARRAY = re.compile(r"\[\[(\w+)\]\] #(\d+)")
-_TABLE = re.compile(r"(?<!\[)\[([A-Za-z_][\w.]*)\](?!\])(?:\s+(?:key\s+)?'?([A-Za-z_]\w*)'?)?")
-_KEY = re.compile(r"key '([A-Za-z_]\w*)")
+_TABLE = re.compile(r"(?<!\[)\[([A-Za-z_][\w.]*)\](?!\]):?(?:\s+(?:key\s+)?'?([A-Za-z_][\w.]*))?")
+_KEY = re.compile(r"key '([A-Za-z_][\w.]*)")
 _HEADER = re.compile(r"""^\s*(\[\[|\[)\s*([A-Za-z0-9_\-."' ]+?)\s*\]\]?\s*(?:#.*)?$""")
+#: Names in messages that stand for a key of the file (tooth counts are the key 'teeth').
+_ALIASES = {"z_sun": "teeth", "z_planet": "teeth", "z_ring": "teeth", "z_planet_sun": "teeth",
+            "z_planet_ring": "teeth", "i0": "stationary_ratio", "eta0": "stationary_efficiency"}
 
 
 @dataclass(frozen=True)
@@ -73,47 +76,59 @@ def _find_key(lines: list[str], start: int, end: int, key: str) -> int | None:
     return None
 
 
-def locate(text: str, message: str) -> int | None:
-    """The 1-based line of ``text`` that ``message`` points at, or None if it names no place."""
+def _candidates(message: str, after_table: str | None) -> list[str]:
+    """Keys the message may point at, most specific first (``speeds.II`` → ``speeds``, ``II``)."""
+    names = [m.group(1) for m in _KEY.finditer(message)]
+    if after_table:
+        names.append(after_table)
+    names += [alias for word, alias in _ALIASES.items() if re.search(rf"\b{word}\b", message)]
+    found: list[str] = []
+    for name in names:
+        for part in (name, *name.replace("[", ".").split(".")):
+            if part and part not in found:
+                found.append(part)
+    return found
+
+
+def locate(text: str, message: str, fallback: str | None = None) -> int | None:
+    """The 1-based line of ``text`` that ``message`` points at, or None if it names no place.
+
+    ``fallback`` is a table (e.g. ``"operating_point"``) to point at when the
+    message names no place.
+    """
     position = _TOML_POSITION.search(message)
     if position:
         return int(position.group(1))
     lines = text.splitlines()
     headers = _headers(lines)
-    start = end = None
-    key = None
+    start, after = None, None
     array = _ARRAY.search(message)
+    table = None if array else _TABLE.search(message)
     if array:
-        kind, number = array.group(1), int(array.group(2))
-        matching = [k for k, h in headers if h == f"[[{kind}"]
+        matching = [k for k, h in headers if h == f"[[{array.group(1)}"]
+        number = int(array.group(2))
         if 0 < number <= len(matching):
             start = matching[number - 1]
-    else:
-        table = _TABLE.search(message)
-        if table and not message[:table.start()].rstrip().endswith("key"):
-            name = table.group(1)
-            start = next((k for k, h in headers if h == f"[{name}"), None)
-            key = table.group(2)
-    found = _KEY.search(message)
-    if found:
-        key = found.group(1)
+    elif table:
+        start = next((k for k, h in headers if h == f"[{table.group(1)}"), None)
+        after = table.group(2)
+    keys = _candidates(message, after)
     if start is None:
-        if "top level" in message and key:
-            first = headers[0][0] if headers else len(lines)
-            line = _find_key(lines, 0, first, key)
+        first = headers[0][0] if headers else len(lines)
+        if "top level" in message:
+            line = next((found for key in keys if (found := _find_key(lines, 0, first, key)) is not None), None)
             return None if line is None else line + 1
+        if fallback:
+            return next((k + 1 for k, h in headers if h == f"[{fallback}"), None)
         return None
     end = _section_end(lines, start)
-    if key:
-        line = _find_key(lines, start + 1, end, key)
-        if line is not None:
-            return line + 1
-    return start + 1
+    line = next((found for key in keys if (found := _find_key(lines, start + 1, end, key)) is not None), None)
+    return (start if line is None else line) + 1
 
 
-def problem(text: str, message: str, context: int = 2) -> Problem:
-    """A :class:`Problem` with the line and a numbered excerpt around it."""
-    line = locate(text, message)
+def problem(text: str, message: str, context: int = 2, fallback: str | None = None) -> Problem:
+    """A :class:`Problem` with the line and a numbered excerpt around it (see :func:`locate`)."""
+    line = locate(text, message, fallback)
     if line is None:
         return Problem(message)
     lines = text.splitlines() or [""]

@@ -157,7 +157,7 @@ def _results(train_file: TrainFile, state: PageState, notices: list[str]) -> dic
         try:
             solution = train_file.solve()
         except EpicyclicError as exc:
-            solve_problem = problem(state.text, str(exc))
+            solve_problem = problem(state.text, str(exc), fallback="operating_point")
     context = Context(train_file, solution)
     result: dict[str, Any] = {
         "title": train_file.title, "description": train_file.description, "units": units,
