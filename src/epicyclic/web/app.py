@@ -182,8 +182,9 @@ def create_app(limits: Limits | None = None) -> Starlette:
     async def page(request: Request) -> Response:
         from .. import __version__
 
+        chosen = request.query_params.get("example", DEFAULT_EXAMPLE)
         body = views.render("page.html", examples=[(e.key, e.title) for e in examples.values()],
-                            initial=DEFAULT_EXAMPLE, version=__version__)
+                            initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__)
         return HTMLResponse(body, headers={"Cache-Control": "no-store"})
 
     async def open_example(request: Request) -> Response:

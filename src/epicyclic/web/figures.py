@@ -8,7 +8,7 @@ picture does not hold up the tables), in a worker process.
 Examples
 --------
 >>> [kind.name for kind in FIGURES.values()]
-['speed', 'lever', 'torque', 'power', 'flow', 'animation']
+['speed', 'animation', 'lever', 'torque', 'power', 'flow']
 """
 
 from __future__ import annotations
@@ -82,11 +82,11 @@ def _animation(picture: Picture) -> str:
 
 FIGURES: dict[str, FigureKind] = {k.name: k for k in (
     FigureKind("speed", "Speed plan (Kutzbach) and speed ranges", _matplotlib("speed"), _has_sets),
+    FigureKind("animation", "Animation at the solved speeds", _animation, _has_sets, _set_names),
     FigureKind("lever", "Lever diagram", _matplotlib("lever")),
     FigureKind("torque", "Torques with and without friction", _matplotlib("torque")),
     FigureKind("power", "Powers as areas, loss rectangle (Brandenberger Bild 8/9)", _matplotlib("power")),
     FigureKind("flow", "Power flow", _matplotlib("flow")),
-    FigureKind("animation", "Animation at the solved speeds", _animation, _has_sets, _set_names),
 )}
 
 

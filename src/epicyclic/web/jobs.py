@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import asyncio
 import multiprocessing
+import sys
+import traceback
 from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
 from typing import Any
@@ -24,11 +26,21 @@ __all__ = ["Jobs", "failure"]
 
 
 def _start_worker() -> None:
-    """Worker process setup: files-only matplotlib backend, library imported once."""
-    import matplotlib
+    """Worker process setup: files-only matplotlib backend; one small drawing so that the first picture
+    a user asks for does not pay for matplotlib's first-time setup (fonts, text layout)."""
+    try:  # never fail here: a worker whose setup fails would be restarted without end
+        import matplotlib
 
-    matplotlib.use("Agg")
-    from .. import plotting  # noqa: F401  (warm import: the first picture is not slower)
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        from ..plotting import figure_svg
+
+        fig, ax = plt.subplots(figsize=(1, 1))
+        ax.set_title("n in 1/min")
+        figure_svg(fig)
+    except Exception:  # pragma: no cover - the pictures then just start slower
+        traceback.print_exc(file=sys.stderr)
 
 
 def failure(message: str, status: int) -> Reply:
@@ -47,15 +59,18 @@ class Jobs:
         Worker processes (at least 1).
     max_queue : int
         Jobs waiting or running at most; more are refused with 503.
+    queue_wait : float
+        Seconds a job may wait for a worker on top of its own time limit (then 504).
     """
 
-    def __init__(self, workers: int = 2, max_queue: int = 1000):
+    def __init__(self, workers: int = 2, max_queue: int = 1000, queue_wait: float = 120.0):
         from pebble import ProcessPool
 
         context = multiprocessing.get_context("forkserver")
         context.set_forkserver_preload(["epicyclic.web.views", "epicyclic.plotting", "matplotlib.pyplot"])
         self.pool = ProcessPool(max_workers=max(1, int(workers)), initializer=_start_worker, context=context)
         self.max_queue = max_queue
+        self.queue_wait = queue_wait
         self.pending = 0
 
     async def run(self, function: Callable[..., Reply], *args: Any, timeout: float) -> Reply:
@@ -65,8 +80,9 @@ class Jobs:
         self.pending += 1
         try:
             future = self.pool.schedule(function, args=args, timeout=timeout)
-            return await asyncio.wrap_future(future)
-        except FutureTimeout:
+            # pebble stops the work after `timeout`; the outer limit also bounds the wait in the queue
+            return await asyncio.wait_for(asyncio.wrap_future(future), timeout + self.queue_wait)
+        except (FutureTimeout, asyncio.TimeoutError):
             return failure(f"the computation took longer than {timeout:g} s and was stopped; the limit keeps the "
                            "server responsive. Simplify the input (fewer elements, narrower search bounds).", 504)
         except Exception as exc:  # a worker that died (memory, signal) or could not send its answer
