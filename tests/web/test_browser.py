@@ -211,3 +211,15 @@ def test_script_in_a_name_stays_text(browser, server):
     wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#results .title"), payload))
     assert not browser.find_elements(By.CSS_SELECTOR, "#results img, #results script")
     assert no_alert(browser)
+
+
+def test_geometry_form_and_german_explanation(browser, server):
+    open_example(browser, server, "simple_set_ring_held_sun_drives")
+    browser.find_element(By.CSS_SELECTOR, "#tool-fit summary").click()
+    browser.find_element(By.CSS_SELECTOR, "#tool-fit button").click()
+    assert "coaxiality" in text_of(browser, "#tool-fit-result table")
+    Select(browser.find_element(By.ID, "lang")).select_by_value("de")
+    wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#explain summary"), "Deutsch"))
+    browser.find_element(By.CSS_SELECTOR, "#explain summary").click()
+    assert "Wirkungsgrad" in text_of(browser, "#explain .epicyclic-explanation")
+    shot(browser, "6-geometry-german")
