@@ -223,3 +223,15 @@ def test_geometry_form_and_german_explanation(browser, server):
     browser.find_element(By.CSS_SELECTOR, "#explain summary").click()
     assert "Wirkungsgrad" in text_of(browser, "#explain .epicyclic-explanation")
     shot(browser, "6-geometry-german")
+
+
+def test_open_a_file_from_disk(browser, server, tmp_path):
+    text = bundled_examples()["simple_set_sun_held_ring_drives"].text.replace('title = "', 'title = "Uploaded: ', 1)
+    path = tmp_path / "my_train.toml"
+    path.write_text(text, encoding="utf-8")
+    browser.get(server + "/")
+    wait(browser, ec.presence_of_element_located((By.ID, "efficiency")))
+    browser.find_element(By.ID, "upload").send_keys(str(path))
+    wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#results .title"), "Uploaded: "))
+    assert browser.find_element(By.CSS_SELECTOR, ".editor .source").text == "my_train.toml"
+    assert browser.find_element(By.ID, "toml").get_attribute("value") == text

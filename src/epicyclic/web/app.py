@@ -217,15 +217,19 @@ def create_app(limits: Limits | None = None) -> Starlette:
                                   "save it as UTF-8.", 422))
         return await work(views.open_text, text, name, state.units, state.lang)
 
-    async def apply(request: Request) -> Response:
-        origin = request.path_params["origin"]
-        if origin not in ("text", "form"):
-            return _reply(failure(f"no such action {origin!r}.", 404))
+    async def with_state(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Response:
+        """Read the page's form and run ``function(state, *args)`` in a worker."""
         try:
             state = await state_of(request)
         except FormError as exc:
             return bad(exc)
-        return await work(views.apply, state, origin)
+        return await work(function, state, *args, timeout=timeout)
+
+    async def apply(request: Request) -> Response:
+        origin = request.path_params["origin"]
+        if origin not in ("text", "form"):
+            return _reply(failure(f"no such action {origin!r}.", 404))
+        return await with_state(request, views.apply, origin)
 
     async def figure(request: Request) -> Response:
         kind = request.path_params["kind"]
@@ -238,18 +242,10 @@ def create_app(limits: Limits | None = None) -> Starlette:
         return await work(views.figure, state, kind, option)
 
     async def tool(request: Request) -> Response:
-        try:
-            state = await state_of(request)
-        except FormError as exc:
-            return bad(exc)
-        return await work(views.tool, state, request.path_params["name"])
+        return await with_state(request, views.tool, request.path_params["name"])
 
     async def download(request: Request) -> Response:
-        try:
-            state = await state_of(request)
-        except FormError as exc:
-            return bad(exc)
-        return await work(views.download, state, request.path_params["kind"], timeout=limits.report_timeout)
+        return await with_state(request, views.download, request.path_params["kind"], timeout=limits.report_timeout)
 
     async def health(request: Request) -> Response:
         return PlainTextResponse("ok")
