@@ -194,7 +194,7 @@ def test_downloads(client, examples, page_form):
     assert report.status_code == 200
     assert report.headers["content-disposition"] == 'attachment; filename="brandenberger_1952.json"'
     body = json.loads(report.text)
-    assert body["schema"] == "epicyclic-report/1" and body["units"]["power"] == "PS"
+    assert body["schema"].startswith("epicyclic-report/") and body["units"]["power"] == "PS"
     assert body["solution"]["efficiency"] == pytest.approx(loads_train_file(text).solve().efficiency)
     page = client.post("/download/html", data=data)
     assert page.status_code == 200 and page.text.startswith("<!DOCTYPE html>") and "<script" not in page.text

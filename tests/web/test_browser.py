@@ -181,7 +181,7 @@ def test_download_reports(browser, server, downloads):
         wait(browser, lambda _: target.exists() and target.stat().st_size > 0)
         wait(browser, ec.text_to_be_present_in_element((By.ID, "download-status"), f"downloaded brandenberger_1952.{kind}"))
     report = json.loads((downloads / "brandenberger_1952.json").read_text())
-    assert report["schema"] == "epicyclic-report/1" and abs(report["solution"]["efficiency"] - 0.85) < 0.005
+    assert report["schema"].startswith("epicyclic-report/") and abs(report["solution"]["efficiency"] - 0.85) < 0.005
     assert (downloads / "brandenberger_1952.html").read_text().startswith("<!DOCTYPE html>")
     assert (downloads / "brandenberger_1952.toml").read_text() == bundled_examples()["brandenberger_1952"].text
 
