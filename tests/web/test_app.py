@@ -156,6 +156,17 @@ def test_every_picture_is_inline_svg(client, examples, page_form, kind):
         assert "<animateTransform" in answer.text
 
 
+def test_animation_options(client, examples, page_form):
+    """A set at its speeds, the same set in the Willis phases (tec-science), an unknown set is a message."""
+    data = page_form(examples["simple_set_ring_held_sun_drives"].text)
+    plain = client.post("/figure/animation", data={**data, "option_animation": "P"})
+    willis = client.post("/figure/animation", data={**data, "option_animation": "P|willis"})
+    assert plain.status_code == willis.status_code == 200
+    assert "carrier turns" not in plain.text and "carrier turns" in willis.text
+    unknown = client.post("/figure/animation", data={**data, "option_animation": "Q"})
+    assert unknown.status_code == 422 and "Q" in unknown.text
+
+
 def test_unknown_picture(client, examples, page_form):
     answer = client.post("/figure/../../etc", data=page_form(examples["brandenberger_1952"].text))
     assert answer.status_code == 404

@@ -46,23 +46,30 @@ class FigureKind:
         Inline SVG (starts with ``<svg``, no scripts, all text escaped).
     applies : callable Solution → bool
         Whether the picture exists for this solution.
-    options : callable Solution → list of str
-        Choices (e.g. which planetary set); empty for none.
+    options : callable Solution → list of (value, label)
+        Choices (e.g. which planetary set); empty for none.  The chosen value
+        reaches ``draw`` as ``Picture.option``.
     """
 
     name: str
     title: str
     draw: Callable[[Picture], str]
     applies: Callable[[Solution], bool] = lambda solution: True
-    options: Callable[[Solution], list[str]] = lambda solution: []
+    options: Callable[[Solution], list[tuple[str, str]]] = lambda solution: []
 
 
 def _has_sets(solution: Solution) -> bool:
     return bool(solution.train.planetary_sets)
 
 
-def _set_names(solution: Solution) -> list[str]:
-    return [s.name for s in solution.train.planetary_sets]
+#: Suffix of an animation option that shows the three superposed motions of the Willis derivation.
+WILLIS = "|willis"
+
+
+def _animation_options(solution: Solution) -> list[tuple[str, str]]:
+    """Each planetary set at its solved speeds, then each in the three Willis phases."""
+    names = [s.name for s in solution.train.planetary_sets]
+    return [(n, f"set {n}") for n in names] + [(n + WILLIS, f"set {n}, Willis phases") for n in names]
 
 
 def _matplotlib(kind: str) -> Callable[[Picture], str]:
@@ -77,12 +84,15 @@ def _matplotlib(kind: str) -> Callable[[Picture], str]:
 def _animation(picture: Picture) -> str:
     from ..plotting import planetary_animation
 
-    return planetary_animation(picture.solution, picture.option).svg()
+    option = picture.option or ""
+    willis = option.endswith(WILLIS)
+    name = option.removesuffix(WILLIS) or None
+    return planetary_animation(picture.solution, name, willis=willis).svg()
 
 
 FIGURES: dict[str, FigureKind] = {k.name: k for k in (
     FigureKind("speed", "Speed plan (Kutzbach) and speed ranges", _matplotlib("speed"), _has_sets),
-    FigureKind("animation", "Animation at the solved speeds", _animation, _has_sets, _set_names),
+    FigureKind("animation", "Animation at the solved speeds", _animation, _has_sets, _animation_options),
     FigureKind("lever", "Lever diagram", _matplotlib("lever")),
     FigureKind("torque", "Torques with and without friction", _matplotlib("torque")),
     FigureKind("power", "Powers as areas, loss rectangle (Brandenberger Bild 8/9)", _matplotlib("power")),
