@@ -222,3 +222,21 @@ def test_upload(client, examples):
     latin = client.post("/upload", files={"file": ("x.toml", "title = 'Übersetzung'".encode("latin-1"))})
     assert latin.status_code == 422 and "UTF-8" in latin.text
     assert client.post("/upload", data={"units": "file"}).status_code == 400
+
+
+def test_geometry_from_the_file_when_it_has_one():
+    """A file's geometry table of a set (when the file format has one) is used unless the form is chosen."""
+    from types import SimpleNamespace
+
+    from epicyclic.geometry import SetGeometry
+    from epicyclic.web.tools import FROM_FILE, FROM_FORM, Context, run_tool
+
+    train_file = loads_train_file(bundled_examples()["simple_set_ring_held_sun_drives"].text)
+    pset = train_file.train.element("P")
+    with_geometry = SimpleNamespace(train=train_file.train, geometry={"P": SetGeometry.create(pset, module=3.5)})
+    from_file = run_tool("fit", {"tool_fit_source": FROM_FILE}, Context(with_geometry))
+    from_form = run_tool("fit", {"tool_fit_source": FROM_FORM, "tool_fit_module": "2"}, Context(with_geometry))
+    # pitch diameters d = m z (ISO 21771): sun 30 teeth → 105 mm at m = 3.5, 60 mm at m = 2
+    assert "<td>105.0000</td>" in from_file and "<td>60.0000</td>" in from_form
+    without = run_tool("fit", {"tool_fit_source": FROM_FILE, "tool_fit_module": "2"}, Context(train_file))
+    assert "<td>60.0000</td>" in without

@@ -119,9 +119,17 @@ def _set_choices(context: Context) -> tuple[str, ...]:
     return tuple(s.name for s in context.train_file.train.planetary_sets if s.teeth is not None)
 
 
+#: Choices of where a set's geometry comes from: the file's geometry table of the set when it has one,
+#: else (or always, with the second choice) the form's fields.
+FROM_FILE, FROM_FORM = "the file's, if it has one", "these fields"
+
+
 def _geometry(context: Context, v: Mapping[str, Any]):
     from ..geometry import SetGeometry
 
+    given = getattr(context.train_file, "geometry", None) or {}
+    if v["source"] == FROM_FILE and v["set"] in given:
+        return given[v["set"]]
     pset = context.train_file.train.element(v["set"])
     x_planet = v["x_planet"] if len(v["x_planet"]) > 1 else v["x_planet"][0]
     return SetGeometry.create(pset, v["module"], pressure_angle=v["pressure_angle"], helix_angle=v["helix_angle"],
@@ -159,6 +167,7 @@ def _search(context: Context, v: Mapping[str, Any]) -> str:
 _MEMBERS = ("sun", "ring", "carrier")
 _GEOMETRY = (
     Field("set", "planetary set", kind="choice", choices=("set",)),
+    Field("source", "geometry", FROM_FILE, kind="choice", choices=(FROM_FILE, FROM_FORM)),
     Field("module", "module [mm]", "2", low=0.05, high=100),
     Field("pressure_angle", "pressure angle [°]", "20", low=10, high=35),
     Field("helix_angle", "helix angle [°]", "0", low=0, high=45),
