@@ -135,13 +135,11 @@ def _gears(train_file: TrainFile) -> dict[str, Any] | None:
         analysis = _transmission(train_file).analyze_all()
     except EpicyclicError as exc:
         return {"error": str(exc), "rows": [], "current": None}
-    steps = {}
-    forward = analysis.forward
-    for a, b in zip(forward, forward[1:]):
-        steps[b.gear] = a.ratio / b.ratio
+    # the transmission's own table (its header and formatted rows), one row per gear in schedule order
+    rows = [(g.gear, cells) for g, cells in zip(analysis.gears, analysis._rows())]
     current = next((g for g in analysis.gears if g.gear == train_file.gear), None)
-    return {"error": None, "rows": analysis.gears, "steps": steps, "spread": analysis.spread,
-            "mean_step": analysis.mean_step, "current": current, "current_name": train_file.gear}
+    return {"error": None, "header": analysis.HEADER, "rows": rows, "footer": analysis._footer(),
+            "current": current, "current_name": train_file.gear}
 
 
 def _results(train_file: TrainFile, state: PageState, notices: list[str]) -> dict[str, Any]:
