@@ -30,9 +30,9 @@ from dataclasses import dataclass
 
 __all__ = ["Problem", "locate", "problem"]
 
-_TOML_POSITION = re.compile(r"\(at line (\d+), column (\d+)\)")
+_TOML_POSITION = re.compile(r"\(at line (\d+), column (\d+)\)|: line (\d+)[,:]")
 _ARRAY = re.compile(r"\[\[(\w+)\]\] #(\d+)")
-_TABLE = re.compile(r"(?<!\[)\[([A-Za-z_][\w.]*)\](?!\]):?(?:\s+(?:key\s+)?'?([A-Za-z_][\w.]*))?")
+_TABLE = re.compile(r"(?<!\[)\[([A-Za-z_][\w.]*)\](?!\]):?,?(?:\s+(?:key\s+)?'?([A-Za-z_][\w.]*))?")
 _KEY = re.compile(r"key '([A-Za-z_][\w.]*)")
 _HEADER = re.compile(r"""^\s*(\[\[|\[)\s*([A-Za-z0-9_\-."' ]+?)\s*\]\]?\s*(?:#.*)?$""")
 #: Names in messages that stand for a key of the file (tooth counts are the key 'teeth').
@@ -98,7 +98,7 @@ def locate(text: str, message: str, fallback: str | None = None) -> int | None:
     """
     position = _TOML_POSITION.search(message)
     if position:
-        return int(position.group(1))
+        return int(position.group(1) or position.group(3))
     lines = text.splitlines()
     headers = _headers(lines)
     start, after = None, None
