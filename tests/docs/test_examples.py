@@ -3,7 +3,8 @@
 ``python`` blocks run in page order in one namespace per page (a tutorial builds on its earlier
 blocks); ``pycon`` blocks (``>>>`` sessions) run as doctests in the same namespace, so the output
 they show is checked; ``sh`` / ``bash`` / ``console`` blocks (``$`` prompts stripped) run line by
-line and every line must succeed: a plain ``epicyclic …`` command runs in-process through typer's
+line and every line must succeed (``epicyclic serve``, which runs until stopped, is parsed with
+its options, not started): a plain ``epicyclic …`` command runs in-process through typer's
 test runner (the same app as the installed command, without a new interpreter per line — the
 installed command itself is tested in tests/test_package.py), anything else (other programs, pipes,
 redirections, ``||``) in bash with the installed ``epicyclic`` on the PATH; ``toml`` blocks must parse.  Each page
@@ -80,8 +81,30 @@ def _epicyclic_args(line: str) -> list[str] | None:
     return tokens[1:]
 
 
+#: Commands that run until stopped (a server): their command lines are parsed, not run.
+LONG_RUNNING = {"serve"}
+
+
+def _parse_only(args: list[str], where: str, line: str) -> None:
+    """Check a long-running command's options the way the command would, without starting it."""
+    from typer.main import get_command
+
+    from epicyclic.cli.main import app
+
+    group = get_command(app)
+    command = group.get_command(group.make_context("epicyclic", [args[0]], resilient_parsing=True), args[0])
+    assert command is not None, f"{where}: `{line}`: no command {args[0]!r}"
+    try:
+        command.make_context(args[0], list(args[1:]))
+    except Exception as exc:  # click's usage errors
+        pytest.fail(f"{where}: `{line}` does not parse: {exc}")
+
+
 def _run_shell_line(line: str, where: str, work: Path, env: dict[str, str]) -> None:
     args = _epicyclic_args(line)
+    if args and args[0] in LONG_RUNNING:
+        _parse_only(args, where, line)
+        return
     if args is not None:
         from typer.testing import CliRunner
 
