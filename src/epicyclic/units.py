@@ -148,7 +148,7 @@ def _read_number(text: str, field: str, quantity: str) -> tuple[float | None, st
     exponent = match.group("exponent")
     if exponent is not None and (len(exponent.lstrip("+-")) > 4 or abs(int(exponent)) > MAX_DECIMAL_EXPONENT):
         raise _grammar_error(text, field, quantity, f"the exponent e{exponent} is beyond "
-                                                    f"±{MAX_DECIMAL_EXPONENT}, outside double precision")
+                                                    f"±{MAX_DECIMAL_EXPONENT}: not a finite, normal double")
     value = float(match.group())
     if not math.isfinite(value):
         raise UnitError(f"{field}: {text!r} is not a finite {quantity} (it overflows a double).",
