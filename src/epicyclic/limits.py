@@ -36,6 +36,7 @@ __all__ = [
     "FILE_BYTES_VARIABLE",
     "max_file_bytes",
     "MAX_NESTING",
+    "MAX_TOML_VALUES",
     "MAX_STRING_CHARS",
     "MAX_TITLE_CHARS",
     "MAX_NAME_CHARS",
@@ -66,6 +67,9 @@ MAX_FILE_BYTES = 1 << 20
 FILE_BYTES_VARIABLE = "EPICYCLIC_MAX_FILE_BYTES"
 #: Deepest nesting of arrays and tables in a TOML file (the format needs 5).
 MAX_NESTING = 16
+#: Most keys and values in a TOML file (keys, strings, arrays, tables, list items); the
+#: largest example holds about 400.
+MAX_TOML_VALUES = 20_000
 #: Longest string value anywhere in a file (characters), e.g. a ``description``.
 MAX_STRING_CHARS = 10_000
 #: Longest ``title`` (characters).

@@ -25,8 +25,9 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from ..errors import EfficiencyError, ModelError, ToothCountError
+from ..limits import MAX_NAME_CHARS, MAX_PLANETS, MAX_TEETH, MIN_TEETH
 
-__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name"]
+__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "check_planets"]
 
 #: Largest mismatch |z_ring - z_sun - 2 z_planet| (in teeth) that profile shift
 #: can absorb in a simple set; larger ones cannot be made coaxial.
@@ -34,9 +35,30 @@ COAXIAL_TOLERANCE_TEETH = 2
 
 
 def check_name(value: object, field_name: str, owner: str) -> str:
-    """Return ``value`` if it is a non-empty string, else raise ModelError."""
+    """Return ``value`` if it is a usable name, else raise ModelError.
+
+    A name is a non-empty string of at most :data:`~epicyclic.limits.MAX_NAME_CHARS`
+    printable characters without leading or trailing spaces (names appear in
+    tables, terminals and file names).
+
+    >>> check_name("sun", "sun", "set P1")
+    'sun'
+    """
     if not isinstance(value, str) or not value.strip():
-        raise ModelError(f"{owner}: {field_name} must be a non-empty shaft name, got {value!r}.")
+        raise ModelError(f"{owner}: {field_name} must be a non-empty shaft name, got {value!r:.60}.")
+    if len(value) > MAX_NAME_CHARS:
+        raise ModelError(f"{owner}: {field_name} {value[:20]!r}… is {len(value)} characters long; at most "
+                         f"{MAX_NAME_CHARS} are accepted.")
+    if not value.isprintable() or value != value.strip():
+        raise ModelError(f"{owner}: {field_name} {value!r} contains control characters or leading/trailing "
+                         "spaces; use letters, digits and punctuation.")
+    return value
+
+
+def check_planets(value: object, field_name: str, owner: str) -> int:
+    """Return ``value`` if it is a whole number of planets in 1 … MAX_PLANETS, else raise ModelError."""
+    if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_PLANETS:
+        raise ModelError(f"{owner}: {field_name} must be a whole number >= 1 and <= {MAX_PLANETS}, got {value!r:.40}.")
     return value
 
 
@@ -57,15 +79,20 @@ def check_efficiency(value: object, field_name: str, owner: str) -> float:
     return value
 
 
-def _check_teeth(value: object, field_name: str, owner: str, minimum: int = 3) -> int:
+def check_teeth(value: object, field_name: str, owner: str) -> int:
+    """Return ``value`` as int if it is a whole number of teeth in MIN_TEETH … MAX_TEETH, else raise."""
     if isinstance(value, bool) or not isinstance(value, int):
         if isinstance(value, float) and value.is_integer():
             value = int(value)
         else:
-            raise ToothCountError(f"{owner}: {field_name} must be a whole number of teeth, got {value!r}.")
-    if value < minimum:
+            raise ToothCountError(f"{owner}: {field_name} must be a whole number of teeth, got {value!r:.40}.")
+    if value < MIN_TEETH:
         raise ToothCountError(
-            f"{owner}: {field_name} must be at least {minimum} teeth, got {value}."
+            f"{owner}: {field_name} must be at least {MIN_TEETH} teeth, got {value}."
+        )
+    if value > MAX_TEETH:
+        raise ToothCountError(
+            f"{owner}: {field_name} must be at most {MAX_TEETH} teeth, got {value:.4g} (see docs/limits.md)."
         )
     return value
 
@@ -196,8 +223,7 @@ class PlanetarySet:
             "stationary_efficiency",
             check_efficiency(self.stationary_efficiency, "stationary_efficiency", owner),
         )
-        if isinstance(self.planets, bool) or not isinstance(self.planets, int) or self.planets < 1:
-            raise ModelError(f"{owner}: planets must be a whole number >= 1, got {self.planets!r}.")
+        check_planets(self.planets, "planets", owner)
 
     # ------------------------------------------------------------------ constructors
     @classmethod
@@ -225,14 +251,14 @@ class PlanetarySet:
         tec-science, "Willis-Gleichung", Standübersetzung i_0; Queitsch, eq. 4.
         """
         owner = f"planetary set {name!r}"
-        zs = _check_teeth(z_sun, "z_sun", owner)
-        zr = _check_teeth(z_ring, "z_ring", owner)
+        zs = check_teeth(z_sun, "z_sun", owner)
+        zr = check_teeth(z_ring, "z_ring", owner)
         if zr <= zs:
             raise ToothCountError(
                 f"{owner}: the ring must have more teeth than the sun, got z_ring={zr}, z_sun={zs}. "
                 "Swap them, or use PlanetarySet.stepped for two external central gears."
             )
-        zp = _check_teeth(z_planet, "z_planet", owner)
+        zp = check_teeth(z_planet, "z_planet", owner)
         mismatch = zr - zs - 2 * zp
         if abs(mismatch) > COAXIAL_TOLERANCE_TEETH:
             raise ToothCountError(
@@ -268,10 +294,10 @@ class PlanetarySet:
         ``mesh_efficiencies`` are the three meshes' efficiencies (combined by product).
         """
         owner = f"planetary set {name!r}"
-        zs = _check_teeth(z_sun, "z_sun", owner)
-        z1 = _check_teeth(z_planet_sun, "z_planet_sun", owner)
-        z2 = _check_teeth(z_planet_ring, "z_planet_ring", owner)
-        zr = _check_teeth(z_ring, "z_ring", owner)
+        zs = check_teeth(z_sun, "z_sun", owner)
+        z1 = check_teeth(z_planet_sun, "z_planet_sun", owner)
+        z2 = check_teeth(z_planet_ring, "z_planet_ring", owner)
+        zr = check_teeth(z_ring, "z_ring", owner)
         if zr <= zs:
             raise ToothCountError(
                 f"{owner}: the ring must have more teeth than the sun, got z_ring={zr}, z_sun={zs}."
@@ -317,10 +343,10 @@ class PlanetarySet:
         0.672
         """
         owner = f"planetary set {name!r}"
-        zs = _check_teeth(z_sun, "z_sun", owner)
-        zb = _check_teeth(z_planet_sun, "z_planet_sun", owner)
-        zc = _check_teeth(z_planet_ring, "z_planet_ring", owner)
-        zr = _check_teeth(z_ring, "z_ring", owner)
+        zs = check_teeth(z_sun, "z_sun", owner)
+        zb = check_teeth(z_planet_sun, "z_planet_sun", owner)
+        zc = check_teeth(z_planet_ring, "z_planet_ring", owner)
+        zr = check_teeth(z_ring, "z_ring", owner)
         if ring_internal and zr <= zc:
             raise ToothCountError(
                 f"{owner}: an internal ring must have more teeth than the planet gear meshing it, "
