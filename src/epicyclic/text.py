@@ -8,7 +8,7 @@ one of these functions; HTML renderers use :func:`html.escape`.
 Examples
 --------
 >>> terminal_text("Bild 10\\x1b[2J")
-'Bild 10\\\\x1b[2J'
+'Bild 10[2J'
 >>> markdown_text("<script>|x")
 '&lt;script&gt;\\\\|x'
 >>> short("x" * 100, 10)
@@ -27,14 +27,12 @@ __all__ = ["terminal_text", "markdown_text", "short"]
 _CONTROL = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069]")
 
 
-def _escaped(match: re.Match[str]) -> str:
-    code = ord(match.group())
-    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
-
-
 def terminal_text(text: str) -> str:
-    """``text`` with control characters (but newline and tab) written as visible escapes."""
-    return _CONTROL.sub(_escaped, text)
+    """``text`` without control characters (but newline and tab) and bidirectional overrides.
+
+    Removing (rather than escaping) keeps JSON output valid.
+    """
+    return _CONTROL.sub("", text)
 
 
 def markdown_text(text: str) -> str:

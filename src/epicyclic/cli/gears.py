@@ -17,10 +17,9 @@ from typing import Annotated
 import typer
 
 from ..transmission import Transmission, explore as _explore
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, check_finite, emit, guarded
 
 __all__ = ["gears", "explore"]
-
 
 
 def _render(result, format: OutputFormat, detail_text: str = "") -> str:
@@ -44,6 +43,7 @@ def gears(
     """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread."""
     transmission = Transmission.from_file(file)
     analysis = transmission.analyze_all()
+    check_finite(analysis.to_dict(), file)
     detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
     emit(_render(analysis, format, detail_text), out)
 
@@ -57,4 +57,6 @@ def explore(
 ) -> None:
     """Every combination of the file's clutches and brakes that drives the output: ratio and kind."""
     transmission = Transmission.from_file(file)
-    emit(_render(_explore(transmission, include_redundant=redundant), format), out)
+    states = _explore(transmission, include_redundant=redundant)
+    check_finite(states.to_dict(), file)
+    emit(_render(states, format), out)

@@ -25,7 +25,7 @@ from ..errors import ModelError
 from ..io.expressions import evaluate
 from ..io.tables import ReportTable
 from ..model import PlanetarySet
-from ._common import emit, guarded
+from ._common import check_finite, emit, guarded
 
 __all__ = ["SetKind", "ModesFormat", "modes", "planetary_from_options"]
 
@@ -97,6 +97,7 @@ def modes(
     """The seven two-shaft ratios of a set (Queitsch Tafel 1) with efficiencies in both directions."""
     planetary = planetary_from_options(kind, sun, ring, planet, planet_sun, planet_ring, external_ring, i0, eta0)
     table = two_shaft_modes(planetary)
+    check_finite(table.to_dict(), "modes")
     if format is ModesFormat.json:
         text = json.dumps(table.to_dict(), indent=2, ensure_ascii=False) + "\n"
     elif format is ModesFormat.markdown:

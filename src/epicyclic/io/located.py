@@ -61,6 +61,8 @@ def located(exc: EpicyclicError, source: str, where: str = "", owner: str = "") 
         message = message[len(owner) + 2:]
     new = exc.__class__.__new__(exc.__class__)
     new.__dict__.update(exc.__dict__)
+    if message.startswith(f"{source}: "):  # the file is named already (e.g. by Transmission.from_file)
+        message = message[len(source) + 2:]
     new.args = (f"{source}: {where}: {message}" if where else f"{source}: {message}",)
     new.source, new.where = source, where
     new.__cause__, new.__suppress_context__ = None, True
