@@ -336,12 +336,19 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
     if isinstance(value, bool):
         raise UnitError(f"{field}: expected a {quantity}, got the boolean {value!r}.", field, quantity, value)
     if isinstance(value, (int, float)):
-        number = float(value)
+        try:
+            number = float(value)
+        except OverflowError:  # an integer beyond double precision
+            number = math.inf
         if not math.isfinite(number):
             raise UnitError(f"{field}: expected a finite {quantity}, got {value!r}.", field, quantity, value)
         if default_unit is None:
             return number
-        return number * unit_factor(default_unit, quantity, field)
+        core = number * unit_factor(default_unit, quantity, field)
+        if not math.isfinite(core):
+            raise UnitError(f"{field}: {value!r} {default_unit} is not a finite {quantity} in "
+                            f"{CORE_UNITS[quantity]} (it overflows a double).", field, quantity, value)
+        return core
     if not isinstance(value, str):
         raise UnitError(
             f"{field}: expected a number or a string with unit such as {_example(quantity)!r}, "

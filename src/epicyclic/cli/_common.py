@@ -10,6 +10,7 @@ from __future__ import annotations
 import functools
 import os
 import sys
+import warnings
 from collections.abc import Callable
 from enum import Enum
 from pathlib import Path
@@ -69,7 +70,9 @@ def guarded(command: F) -> F:
         try:
             if kwargs.get("out") is not None:
                 refuse_input(kwargs["out"], [source])
-            return command(*args, **kwargs)
+            with warnings.catch_warnings():  # overflow shows as one clear error, never as numpy warnings
+                warnings.simplefilter("ignore", RuntimeWarning)
+                return command(*args, **kwargs)
         except typer.Exit:
             raise
         except EpicyclicError as exc:

@@ -131,13 +131,14 @@ class TableReader:
         if isinstance(value, bool):
             raise self.error(at_key(where, key), f"expected a number, got the boolean {value!r}.")
         if isinstance(value, (int, float)):
-            if not math.isfinite(value):
-                raise self.error(at_key(where, key), f"expected a finite number, got {value!r}.")
             try:
-                return float(value)
+                number = float(value)
             except OverflowError:  # an integer beyond double precision
                 raise self.error(at_key(where, key), f"the number {short(value, 30)} is beyond double precision "
                                                      "(about 1.8e308).") from None
+            if not math.isfinite(number):
+                raise self.error(at_key(where, key), f"expected a finite number, got {value!r}.")
+            return number
         if isinstance(value, str):
             try:
                 return evaluate(value, "expression")

@@ -52,7 +52,7 @@ from ..model import HOUSING, Brake, Clutch, GearStage, GearTrain, OperatingPoint
 from ..model.planetary import check_planets
 from ..text import short
 from ..units import Units, to_core
-from .located import locate_error
+from .located import locate_error, operating_point_where
 from .reader import TableReader, at_key, kind_of
 from .source import InputFileError, parse_toml, read_source
 
@@ -435,7 +435,10 @@ class _Reader(TableReader):
                 raise self.error(at_key(where, "gear"), f"expected one of the schedule's gears "
                                                         f"{', '.join(repr(g) for g in transmission.schedule)}, "
                                                         f"got {short(gear)}.")
-        op = self.checked(where, "", OperatingPoint, values["speeds"], values["torques"], values["powers"], **roles)
+        try:
+            op = OperatingPoint(values["speeds"], values["torques"], values["powers"], **roles)
+        except EpicyclicError as exc:
+            raise self.wrap(operating_point_where(exc), exc, "operating point") from None
         return op, gear
 
     def known_shaft(self, train: GearTrain, name: str, where: str) -> None:

@@ -12,13 +12,12 @@ carrier held).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 from ..errors import ModelError, ToothCountError, TopologyError
 from ..limits import MAX_MESHES, MIN_TEETH
-from .planetary import check_efficiency, check_name, check_teeth
+from .planetary import check_efficiency, check_name, check_teeth, finite_float
 
 __all__ = ["GearStage", "Clutch", "Brake", "HOUSING", "Mesh"]
 
@@ -79,7 +78,7 @@ class GearStage:
                 "housing already); use a Brake to hold a shaft."
             )
         r = self.ratio
-        if isinstance(r, bool) or not isinstance(r, (int, float)) or not math.isfinite(r) or r == 0:
+        if finite_float(r) is None or r == 0:
             raise ModelError(f"{owner}: ratio must be a finite, non-zero number n_first/n_second, got {r!r}.")
         object.__setattr__(self, "ratio", float(r))
         object.__setattr__(self, "efficiency", check_efficiency(self.efficiency, "efficiency", owner))

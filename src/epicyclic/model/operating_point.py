@@ -8,12 +8,12 @@ Units other than these are converted at the edges (:mod:`epicyclic.units`).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from ..errors import OperatingPointError
+from .planetary import finite_float
 
 __all__ = ["OperatingPoint"]
 
@@ -29,7 +29,7 @@ def _frozen_values(values: Mapping[str, float] | None, field_name: str) -> Mappi
                 f"operating point: {field_name}[{shaft!r}] must be a number, got {value!r}.",
                 group=field_name, shafts=[shaft],
             )
-        if not math.isfinite(value):
+        if finite_float(value) is None:
             raise OperatingPointError(
                 f"operating point: {field_name}[{shaft!r}] must be finite, got {value!r}.",
                 group=field_name, shafts=[shaft],

@@ -27,7 +27,7 @@ from typing import Literal
 from ..errors import EfficiencyError, ModelError, ToothCountError
 from ..limits import MAX_NAME_CHARS, MAX_PLANETS, MAX_TEETH, MIN_TEETH
 
-__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "check_planets"]
+__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "check_planets", "finite_float"]
 
 #: Largest mismatch |z_ring - z_sun - 2 z_planet| (in teeth) that profile shift
 #: can absorb in a simple set; larger ones cannot be made coaxial.
@@ -62,16 +62,34 @@ def check_planets(value: object, field_name: str, owner: str) -> int:
     return value
 
 
+def finite_float(value: object) -> float | None:
+    """``value`` as float if it is a finite real number (not a boolean), else None.
+
+    Integers beyond double precision (``10**400``) are not finite numbers here.
+
+    >>> finite_float(3), finite_float(float("nan")), finite_float(10**400), finite_float(True)
+    (3.0, None, None, None)
+    """
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return None
+    try:
+        number = float(value)
+    except OverflowError:
+        return None
+    return number if math.isfinite(number) else None
+
+
 def check_efficiency(value: object, field_name: str, owner: str) -> float:
     """Return ``value`` as float if it lies in (0, 1], else raise EfficiencyError.
 
     >>> check_efficiency(0.97, "stationary_efficiency", "set P1")
     0.97
     """
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise EfficiencyError(f"{owner}: {field_name} must be a number in (0, 1], got {value!r}.")
-    value = float(value)
-    if not (0.0 < value <= 1.0) or math.isnan(value):
+    number = finite_float(value)
+    if number is None and not (isinstance(value, float) and math.isnan(value)):
+        raise EfficiencyError(f"{owner}: {field_name} must be a number in (0, 1], got {value!r:.40}.")
+    value = float("nan") if number is None else number
+    if not (0.0 < value <= 1.0):
         raise EfficiencyError(
             f"{owner}: {field_name} must lie in (0, 1] (1 = lossless), got {value!r}. "
             "Give an efficiency such as 0.98, not a percentage or a loss."
@@ -210,7 +228,7 @@ class PlanetarySet:
                 "To lock the set, join two of its shafts with a Clutch instead."
             )
         ratio = self.stationary_ratio
-        if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) or not math.isfinite(ratio):
+        if finite_float(ratio) is None:
             raise ModelError(f"{owner}: stationary_ratio must be a finite number, got {ratio!r}.")
         if ratio == 0.0 or abs(ratio - 1.0) < 1e-12:
             raise ModelError(
