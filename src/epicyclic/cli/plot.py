@@ -40,6 +40,7 @@ def _agg() -> None:
     import matplotlib
 
     matplotlib.use("Agg")  # files only: no display needed
+    matplotlib.rcParams["text.parse_math"] = False  # a '$' in a title or name is text, not TeX math
 
 
 @guarded

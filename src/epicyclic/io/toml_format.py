@@ -50,7 +50,7 @@ from ..errors import EpicyclicError, ModelError
 from ..limits import MAX_ELEMENTS, MAX_GEARS, MAX_MESHES, MAX_SHAFTS, MAX_TITLE_CHARS, check_count
 from ..model import HOUSING, Brake, Clutch, GearStage, GearTrain, OperatingPoint, PlanetarySet
 from ..model.planetary import check_planets
-from ..text import short
+from ..text import short, terminal_text
 from ..units import Units, to_core
 from .located import locate_error, operating_point_where
 from .reader import TableReader, at_key, kind_of
@@ -271,6 +271,7 @@ class _Reader(TableReader):
         description = data.get("description", "")
         if not isinstance(description, str):
             raise self.error("top level, key 'description'", f"expected a string, got {kind_of(description)}.")
+        title, description = terminal_text(title), terminal_text(description)  # no escapes in reports or figures
         if "units" in data:
             self.units = self.read_units(self.table(data["units"], "[units]"))
         tables = {kind: self.array_of_tables(data, kind) for kind in ("planetary", "gear", "clutch", "brake")}
