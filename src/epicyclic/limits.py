@@ -91,7 +91,7 @@ MIN_TEETH = 3
 #: Most teeth of a gear (large slewing rings have a few hundred).
 MAX_TEETH = 1000
 #: Most planets of one set.
-MAX_PLANETS = 64
+MAX_PLANETS = 24
 
 # ---------------------------------------------------------------- numbers and units
 #: Longest arithmetic expression such as ``"(24/50)*(42/30)"`` (characters).
@@ -111,7 +111,7 @@ UNIT_FACTOR_RANGE = (1e-12, 1e12)
 #: ``plot --dpi`` (dots per inch of PNG output).
 DPI_RANGE = (20, 600)
 #: ``animate --frames`` (frames of one loop).
-FRAMES_RANGE = (2, 480)
+FRAMES_RANGE = (2, 240)
 #: ``animate --fps`` (frames per second).
 FPS_RANGE = (1, 60)
 

@@ -79,7 +79,7 @@ def animate(
     willis: Annotated[bool, typer.Option(
         "--willis", help="Show the three superposed motions of the Willis derivation in turn.")] = False,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
-    frames: Annotated[int, typer.Option(help="Frames of one GIF loop (2 … 480).")] = 48,
+    frames: Annotated[int, typer.Option(help="Frames of one GIF loop (2 … 240).")] = 48,
     fps: Annotated[int, typer.Option(help="Frames per second (1 … 60).")] = 16,
 ) -> None:
     """Animate a planetary set of FILE at its solved speeds (HTML/SVG plays offline; or GIF)."""
