@@ -222,20 +222,6 @@ def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
 
 
 # ---------------------------------------------------------------------- the reader
-_TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission"}
-_PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
-                   "mesh_efficiencies", "planets"}
-_TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
-               "double": {"kind", "sun", "planet_sun", "planet_ring", "ring"},
-               "stepped": {"kind", "sun", "planet_sun", "planet_ring", "ring", "ring_internal"}}
-_GEAR_KEYS = {"name", "first", "second", "meshes", "ratio", "efficiency"}
-_CLUTCH_KEYS = {"name", "first", "second", "engaged"}
-_BRAKE_KEYS = {"name", "shaft", "engaged"}
-_UNIT_KEYS = {"speed", "torque", "power"}
-_OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
-_TRANSMISSION_KEYS = {"input", "output", "schedule"}
-_OWNER = {"planetary": "planetary set", "gear": "gear stage", "clutch": "clutch", "brake": "brake"}
 
 
 class _Reader(TableReader):
