@@ -59,21 +59,7 @@ loads = ["out"]
 """
 
 #: A two-speed transmission (ring braked: 3.6; set locked by the clutch: 1).
-TRANS = """\
-title = "two speeds"
-
-[[planetary]]
-name = "P"
-sun = "in"
-ring = "ring"
-carrier = "out"
-teeth = { sun = 30, planet = 24, ring = 78 }
-stationary_efficiency = 0.98
-
-[[brake]]
-name = "B"
-shaft = "ring"
-
+TRANS = GOOD.split("[operating_point]")[0].replace('"simple set"', '"two speeds"') + """\
 [[clutch]]
 name = "C"
 first = "in"

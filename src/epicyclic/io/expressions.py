@@ -21,13 +21,10 @@ import math
 import operator
 
 from ..errors import ModelError
+from ..limits import MAX_EXPRESSION_CHARS as MAX_LENGTH
+from ..limits import MAX_EXPRESSION_EXPONENT as MAX_EXPONENT
 
 __all__ = ["ExpressionError", "evaluate", "MAX_LENGTH"]
-
-#: Longest expression accepted (characters).
-MAX_LENGTH = 200
-#: Largest |exponent| accepted in ``a ** b``.
-MAX_EXPONENT = 16
 
 _BINARY = {
     ast.Add: operator.add,

@@ -103,12 +103,13 @@ def operating_point_where(exc: BaseException, operating_point: Any = None) -> st
     return "[operating_point]"
 
 
-def locate_error(exc: EpicyclicError, source: str, operating_point: Any = None) -> EpicyclicError:
+def locate_error(exc: EpicyclicError, source: str, operating_point: Any = None, default: str = "") -> EpicyclicError:
     """Locate an error raised *after* the file was read (solver, transmission) in the file.
 
     Transmission errors with a ``gear`` point at ``[transmission], key
     'schedule.<gear>'``; operating-point errors at the keys of
-    :func:`operating_point_where`; anything else names the file only.
+    :func:`operating_point_where`; anything else at ``default`` (e.g.
+    ``"[operating_point]"`` for an error of the solver).
     """
     if getattr(exc, "source", None):
         return exc
@@ -122,7 +123,7 @@ def locate_error(exc: EpicyclicError, source: str, operating_point: Any = None) 
     elif type(exc).__name__ in ("ShiftScheduleError", "GearFreedomError"):
         where = "[transmission]"
     else:
-        where = ""
+        where = default
     return located(exc, source, where)
 
 

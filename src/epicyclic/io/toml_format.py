@@ -163,7 +163,7 @@ class TrainFile:
         try:
             return solve(self.operating_train, self.operating_point, lossless=lossless)
         except EpicyclicError as exc:
-            raise locate_error(exc, self.source, self.operating_point) from None
+            raise locate_error(exc, self.source, self.operating_point, "[operating_point]") from None
 
 
 # ---------------------------------------------------------------------- public functions
