@@ -47,6 +47,7 @@ __all__ = [
     "MIN_TEETH",
     "MAX_TEETH",
     "MAX_PLANETS",
+    "RATIO_RANGE",
     "MAX_EXPRESSION_CHARS",
     "MAX_EXPRESSION_EXPONENT",
     "MAX_UNIT_CHARS",
@@ -90,6 +91,9 @@ MAX_MESHES = 32
 MIN_TEETH = 3
 #: Most teeth of a gear (large slewing rings have a few hundred).
 MAX_TEETH = 1000
+#: Accepted |stationary_ratio| and |ratio| in files and ``modes --i0`` (real sets and stages lie
+#: within 1/100 … 100; beyond this range a train is numerically singular).
+RATIO_RANGE = (1e-6, 1e6)
 #: Most planets of one set.
 MAX_PLANETS = 24
 

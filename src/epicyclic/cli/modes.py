@@ -24,6 +24,7 @@ from ..analysis.modes import two_shaft_modes
 from ..errors import ModelError
 from ..io.expressions import evaluate
 from ..io.tables import ReportTable
+from ..limits import RATIO_RANGE, LimitError
 from ..model import PlanetarySet
 from ._common import check_finite, emit, guarded
 
@@ -54,7 +55,11 @@ def planetary_from_options(kind: SetKind, sun: int | None, ring: int | None, pla
     if i0 is not None:
         if teeth_given:
             raise ModelError("modes: give tooth counts (--sun, --ring, ...) or --i0, not both.")
-        return PlanetarySet("set", "sun", "ring", "carrier", evaluate(i0, "--i0"), eta0)
+        ratio = evaluate(i0, "--i0")
+        if ratio != 0 and not RATIO_RANGE[0] <= abs(ratio) <= RATIO_RANGE[1]:
+            raise LimitError(f"--i0: |{ratio:.6g}| is outside the accepted {RATIO_RANGE[0]:g} … "
+                             f"{RATIO_RANGE[1]:g} (see docs/limits.md).", "--i0")
+        return PlanetarySet("set", "sun", "ring", "carrier", ratio, eta0)
     if sun is None or ring is None:
         raise ModelError("modes: give --sun and --ring tooth counts (and --planet-sun/--planet-ring for "
                          "double or stepped planets), or the stationary ratio --i0.")

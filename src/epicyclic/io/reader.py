@@ -24,7 +24,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from ..errors import EpicyclicError
-from ..limits import MAX_NAME_CHARS
+from ..limits import MAX_NAME_CHARS, RATIO_RANGE
 from ..text import short
 from .expressions import evaluate
 from .located import located
@@ -146,6 +146,15 @@ class TableReader:
                 raise self.wrap(at_key(where, key), exc, "expression") from None
         raise self.error(at_key(where, key), f"expected a number or an expression such as '(24/50)*(42/30)', "
                                              f"got {kind_of(value)} {short(value)}.")
+
+    def ratio(self, value: object, key: str, where: str) -> float:
+        """A speed ratio (number or expression) with 1e-6 <= |ratio| <= 1e6 (or exactly 0, for the model)."""
+        ratio = self.number(value, key, where)
+        low, high = RATIO_RANGE
+        if ratio != 0 and not low <= abs(ratio) <= high:
+            raise self.error(at_key(where, key), f"|{ratio:.6g}| is outside the accepted {low:g} … {high:g}; "
+                                                 "no gear stage or set has such a ratio (see docs/limits.md).")
+        return ratio
 
     def efficiency(self, value: object, key: str, where: str) -> float:
         eta = self.number(value, key, where)

@@ -324,7 +324,7 @@ class _Reader(TableReader):
                                     + ("not both." if has_teeth else "got neither."))
         if has_ratio:
             key = at_key(where, "stationary_ratio")
-            ratio = self.number(table["stationary_ratio"], "stationary_ratio", where)
+            ratio = self.ratio(table["stationary_ratio"], "stationary_ratio", where)
             if meshes is not None:
                 eta = math.prod(meshes)
             return self.checked(key, owner, PlanetarySet, name, stationary_ratio=ratio,
@@ -365,7 +365,7 @@ class _Reader(TableReader):
             raise self.error(where, "give either 'meshes' (tooth counts) or 'ratio' (n_first/n_second), "
                                     + ("not both." if has_meshes else "got neither."))
         if has_ratio:
-            ratio = self.number(table["ratio"], "ratio", where)
+            ratio = self.ratio(table["ratio"], "ratio", where)
             return self.checked(at_key(where, "ratio"), owner, GearStage, name, first, second, ratio, eta)
         meshes = table["meshes"]
         key = at_key(where, "meshes")
