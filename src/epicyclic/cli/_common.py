@@ -22,7 +22,7 @@ from typer.core import TyperGroup
 from ..errors import EpicyclicError
 
 __all__ = ["EXIT_OK", "EXIT_INTERNAL", "EXIT_BAD_INPUT", "OutputFormat", "FormatOption", "OutOption",
-           "guarded", "emit", "fail", "check_finite", "load", "solved", "OneLineErrors"]
+           "guarded", "emit", "say", "fail", "check_finite", "load", "solved", "OneLineErrors"]
 
 EXIT_OK = 0
 EXIT_INTERNAL = 1
@@ -98,7 +98,14 @@ def emit(text: str, out: Path | None) -> None:
     if out is None:
         typer.echo(text, nl=not text.endswith("\n"))
         return
-    typer.echo(f"wrote {write_atomic(out, text).resolve()}")
+    say(f"wrote {write_atomic(out, text).resolve()}")
+
+
+def say(line: str) -> None:
+    """Print a status line (e.g. ``wrote PATH``) without control characters."""
+    from ..text import terminal_text
+
+    typer.echo(terminal_text(line))
 
 
 def check_finite(data: Any, file: Path | str | None, what: str = "") -> None:

@@ -16,7 +16,7 @@ import typer
 
 from ..io.output import atomic_path, refuse_input
 from ..limits import DPI_RANGE, FPS_RANGE, FRAMES_RANGE, check_range
-from ._common import guarded, load, solved
+from ._common import guarded, load, say, solved
 
 __all__ = ["PlotKind", "plot", "animate"]
 
@@ -67,7 +67,7 @@ def plot(
             save_figure(lever_diagram(train=train_file.operating_train).plot(), temporary, dpi=dpi)
         else:
             save_plot(solved(train_file, file), kind.value, temporary, dpi=dpi)
-    typer.echo(f"wrote {out.resolve()}")
+    say(f"wrote {out.resolve()}")
 
 
 @guarded
@@ -97,4 +97,4 @@ def animate(
     anim = planetary_animation(solution, element, willis=willis, frames=frames, fps=fps)
     with atomic_path(out) as temporary:
         anim.save(temporary)
-    typer.echo(f"wrote {out.resolve()}")
+    say(f"wrote {out.resolve()}")
