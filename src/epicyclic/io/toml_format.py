@@ -222,8 +222,6 @@ def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
 
 
 # ---------------------------------------------------------------------- the reader
-
-
 class _Reader(TableReader):
     def __init__(self, source: str):
         super().__init__(source)
