@@ -87,3 +87,25 @@ def test_check_finite_names_the_first_non_finite_quantity():
     with pytest.raises(NonFiniteResultError, match=r"t.toml: result 'a\[1\]\.b' is nan") as info:
         check_finite({"a": [1.0, {"b": float("nan")}], "z": float("inf")}, "t.toml")
     assert info.value.quantity == "a[1].b"
+
+
+def test_gears_names_the_gear_a_solver_error_comes_from(monkeypatch):
+    from pathlib import Path
+
+    from typer.testing import CliRunner
+
+    from epicyclic.cli.main import app
+    from epicyclic.transmission import Transmission
+
+    original = Transmission.analyze
+
+    def analyze(self, gear, **kwargs):
+        if gear == "2":
+            raise UnderdeterminedError("the torques at 'x' are not determined.", ["x"], "torque")
+        return original(self, gear, **kwargs)
+
+    monkeypatch.setattr(Transmission, "analyze", analyze)
+    path = Path(__file__).resolve().parents[2] / "examples" / "simpson_c4_3speed.toml"
+    result = CliRunner().invoke(app, ["gears", str(path)])
+    assert result.exit_code == 2
+    assert result.stderr == f"error: {path}: [transmission], key 'schedule.2': the torques at 'x' are not determined.\n"
