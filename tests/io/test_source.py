@@ -148,3 +148,26 @@ def test_long_strings_and_keys_are_refused_with_their_key():
         parse_toml('description = "' + "d" * 20_000 + '"', "t.toml")
     with pytest.raises(InputFileError, match=r"a key of 20,000 characters"):
         parse_toml("k" * 20_000 + " = 1", "t.toml")
+
+
+# ---- any text: a train file or an InputFileError/EpicyclicError, at once, never another exception
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from epicyclic.errors import EpicyclicError  # noqa: E402
+
+_TOML_PIECES = ["[", "]", "{", "}", "[[planetary]]", "[[brake]]", "name", "=", '"', "'", '"""', "'''", ".", ",",
+                "\n", "\r\n", " ", "#", "sun", "ring", "carrier", "teeth", "1", "-2", "1e999", "nan", "inf", "x",
+                "\\", "\\u001b", "housing", "stationary_ratio", "[operating_point]", "speeds", "drives", "\ufeff",
+                "\x00", "true", "1979-05-27"]
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.sampled_from(_TOML_PIECES), max_size=60).map("".join) | st.text(max_size=300))
+def test_any_text_is_a_train_or_a_located_error(text):
+    start = time.monotonic()
+    try:
+        loads_train_file(text, "t.toml")
+    except EpicyclicError as exc:
+        assert str(exc).startswith("t.toml:"), str(exc)
+    assert time.monotonic() - start < 1.0

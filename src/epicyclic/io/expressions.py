@@ -19,6 +19,7 @@ from __future__ import annotations
 import ast
 import math
 import operator
+import warnings
 
 from ..errors import ModelError
 from ..limits import MAX_EXPRESSION_CHARS as MAX_LENGTH
@@ -96,7 +97,9 @@ def evaluate(text: str, field: str = "expression") -> float:
         raise ExpressionError(f"{field}: expected a number or an expression such as '(24/50)*(42/30)', "
                               "got an empty string.", text, field)
     try:
-        tree = ast.parse(text.strip(), mode="eval")
+        with warnings.catch_warnings():  # "1if 2" warns about the literal: the error below says enough
+            warnings.simplefilter("ignore")
+            tree = ast.parse(text.strip(), mode="eval")
     except SyntaxError:
         raise ExpressionError(
             f"{field}: {text!r} is not a valid arithmetic expression; write numbers with "
