@@ -133,3 +133,22 @@ def test_plot_and_animate_write_complete_files_atomically(tmp_path):
         result = runner.invoke(app, [*args, "--out", str(out)])
         assert result.exit_code == 0, result.output
         assert out.stat().st_size > 1000 and no_temporaries(tmp_path)
+
+
+def test_an_interrupted_command_exits_130_and_leaves_no_file(tmp_path):
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    out = tmp_path / "movie.gif"
+    process = subprocess.Popen([sys.executable, "-c", "from epicyclic.cli.main import main; main()", "animate",
+                                str(EXAMPLE), "--frames", "240", "--out", str(out)],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 20
+    while not list(tmp_path.iterdir()) and time.monotonic() < deadline:  # the temporary file: drawing has begun
+        time.sleep(0.05)
+    process.send_signal(signal.SIGINT)
+    _, err = process.communicate(timeout=30)
+    assert process.returncode == 130 and "Traceback" not in err
+    assert not out.exists() and no_temporaries(tmp_path)
