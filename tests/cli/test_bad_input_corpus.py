@@ -478,6 +478,15 @@ CORPUS: list[Bad] = [
     Bad("modes double without planets", "modes", None, "--planet-sun", ("--sun", "30", "--ring", "78", "--kind",
                                                                         "double")),
     Bad("modes --out is a folder", "modes", None, "is a folder", ("--i0", "-2", "--out", "{tmp}")),
+    # serve: a row that wrongly passed would start a server, so those that reach the command run in a process
+    Bad("serve --port 0", "serve", None, "--port", ("--port", "0")),
+    Bad("serve --port 70000", "serve", None, "--port", ("--port", "70000")),
+    Bad("serve --workers 0", "serve", None, "--workers", ("--workers", "0")),
+    Bad("serve --timeout nan", "serve", None, "--timeout", ("--timeout", "nan")),
+    Bad("serve --max-body 10^9", "serve", None, "--max-body", ("--max-body", "1000000000")),
+    Bad("serve --host unresolvable", "serve", None, "cannot be resolved", ("--host", "::::"), process=True),
+    Bad("serve --host not on this computer", "serve", None, "cannot listen there", ("--host", "192.0.2.1"),
+        process=True),
 ]
 
 IDS = [case.id for case in CORPUS]
@@ -512,7 +521,7 @@ def test_the_corpus_is_large_and_its_classes_distinct():
     assert len(set(IDS)) == len(IDS)
     assert len(CORPUS) >= 150
     commands = {case.command for case in CORPUS}
-    assert {"analyze", "explain", "gears", "explore", "plot", "animate", "modes"} <= commands
+    assert {"analyze", "explain", "gears", "explore", "plot", "animate", "modes", "serve"} <= commands
 
 
 @pytest.mark.parametrize("case", CORPUS, ids=IDS)
@@ -532,3 +541,15 @@ def test_bad_input_gives_one_clear_line_and_exit_2(case: Bad, tmp_path: Path):
         assert str(path) in message, (case.id, message)
     assert case.says in message, (case.id, message)
     assert elapsed < TIME_LIMIT_S, (case.id, elapsed)
+
+
+def test_serve_on_a_busy_port_exits_2():
+    import socket
+
+    with socket.socket() as busy:
+        busy.bind(("127.0.0.1", 0))
+        busy.listen()
+        port = busy.getsockname()[1]
+        code, stdout, stderr = _run(Bad("busy port", "serve", None, "", process=True), ["serve", "--port", str(port)])
+    assert code == 2 and stderr.startswith("error: serve") and "cannot listen there" in stderr
+    assert len(stderr.splitlines()) == 1
