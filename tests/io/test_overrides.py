@@ -84,9 +84,9 @@ def test_loading_with_overrides_changes_the_solution():
 
 
 def test_overridden_values_are_validated_like_the_file_and_named():
-    with pytest.raises(UnitError, match=r"brandenberger_1952.toml: \[operating_point\]: speeds\.II: cannot read 'fast'"):
+    with pytest.raises(UnitError, match=r"brandenberger_1952.toml: \[operating_point\], key 'speeds\.II': cannot read 'fast'"):
         load_train_file(BRANDENBERGER, overrides=["operating_point.speeds.II=fast"])
-    with pytest.raises(InputFileError, match=r"\[\[planetary\]\] #1 'planetary': key 'stationary_efficiency': "
+    with pytest.raises(InputFileError, match=r"\[\[planetary\]\] #1 'planetary', key 'stationary_efficiency': "
                                              r"expected an efficiency in \(0, 1\]"):
         load_train_file(BRANDENBERGER, overrides=["planetary.1.stationary_efficiency=1.5"])
     with pytest.raises(InputFileError, match=r"unknown key 'sped'.*did you mean 'speeds'"):

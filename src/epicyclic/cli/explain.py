@@ -12,8 +12,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..io import load_train_file
-from ._common import SetOption, emit, guarded
+from ._common import SetOption, emit, guarded, load, solved
 
 __all__ = ["Language", "ExplainFormat", "explain"]
 
@@ -43,7 +42,7 @@ def explain(
     """Show the worked solution of FILE: Willis, loss rule, torque balance, results, with numbers."""
     from ..explain import explain as worked_solution  # imported here: other commands start faster
 
-    train_file = load_train_file(file, overrides=set_ or ())
-    solution = train_file.solve()
+    train_file = load(file, None, set_)
+    solution = solved(train_file, file)
     result = worked_solution(solution, train_file.units, lang=lang.value, title=train_file.title)
     emit(result.markdown() if format is ExplainFormat.markdown else result.text(), out)

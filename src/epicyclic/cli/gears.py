@@ -12,14 +12,18 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from ._common import FormatOption, OutOption, OutputFormat, SetOption, emit, guarded
+from ..errors import EpicyclicError
+from ..io.located import located
+from ._common import FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..transmission import Transmission
 
 __all__ = ["gears", "explore"]
-
 
 
 def _render(result, format: OutputFormat, detail_text: str = "") -> str:
@@ -31,6 +35,16 @@ def _render(result, format: OutputFormat, detail_text: str = "") -> str:
         return ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>epicyclic</title></head><body>"
                 + result._repr_html_() + "</body></html>")
     return result.table() + (("\n\n" + detail_text) if detail_text else "")
+
+
+def _failing_gear(transmission: Transmission) -> str:
+    """The first gear whose analysis fails (called only after analyze_all failed)."""
+    for gear in transmission.gears:
+        try:
+            transmission.analyze(gear)
+        except EpicyclicError:
+            return gear
+    return "?"
 
 
 @guarded
@@ -45,7 +59,11 @@ def gears(
     from ..transmission import Transmission  # imported here: other commands start faster without it
 
     transmission = Transmission.from_file(file, overrides=set_ or ())
-    analysis = transmission.analyze_all()
+    try:
+        analysis = transmission.analyze_all()
+    except EpicyclicError as exc:  # name the gear: the file has no [operating_point] to blame
+        raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission)}'!r}") from None
+    check_finite(analysis.to_dict(), file)
     detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
     emit(_render(analysis, format, detail_text), out)
 
@@ -62,4 +80,6 @@ def explore(
     from ..transmission import Transmission, explore as _explore
 
     transmission = Transmission.from_file(file, overrides=set_ or ())
-    emit(_render(_explore(transmission, include_redundant=redundant), format), out)
+    states = _explore(transmission, include_redundant=redundant)
+    check_finite(states.to_dict(), file)
+    emit(_render(states, format), out)

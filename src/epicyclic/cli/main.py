@@ -11,7 +11,10 @@ from typing import Annotated
 
 import typer
 
+from ._common import OneLineErrors
+
 app = typer.Typer(
+    cls=OneLineErrors,
     name="epicyclic",
     help="Analyse epicyclic (planetary) gear trains: speeds, torques, losses, efficiency, pictures.",
     no_args_is_help=True,

@@ -8,13 +8,13 @@ Units other than these are converted at the edges (:mod:`epicyclic.units`).
 
 from __future__ import annotations
 
-import math
 import numbers
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from ..errors import OperatingPointError
+from .planetary import finite_float
 
 __all__ = ["OperatingPoint"]
 
@@ -27,19 +27,24 @@ def _frozen_values(values: Mapping[str, object] | None, field_name: str) -> Mapp
     checked: dict[str, float] = {}
     for shaft, value in dict(values or {}).items():
         if not isinstance(shaft, str):
-            raise OperatingPointError(f"operating point: {field_name} keys must be shaft names, got {shaft!r}.")
+            raise OperatingPointError(f"operating point: {field_name} keys must be shaft names, got {shaft!r}.",
+                                      group=field_name)
         if isinstance(value, bool):
             raise OperatingPointError(
-                f"operating point: {field_name}[{shaft!r}] must be a number, got {value!r}."
+                f"operating point: {field_name}[{shaft!r}] must be a number, got {value!r}.",
+                group=field_name, shafts=[shaft],
             )
         if not isinstance(value, numbers.Real):
             # a unit string or a pint quantity: converted at this boundary, by the one converter
             from ..units import to_core
 
             value = to_core(value, _QUANTITIES[field_name], field=f"operating_point.{field_name}.{shaft}")
-        if not math.isfinite(value):
+        elif not isinstance(value, (int, float)):
+            value = float(value)  # numpy scalars and other real numbers
+        if finite_float(value) is None:
             raise OperatingPointError(
-                f"operating point: {field_name}[{shaft!r}] must be finite, got {value!r}."
+                f"operating point: {field_name}[{shaft!r}] must be finite, got {value!r}.",
+                group=field_name, shafts=[shaft],
             )
         checked[shaft] = float(value)
     return MappingProxyType(checked)
@@ -107,12 +112,14 @@ class OperatingPoint:
         both = set(self.drives) & set(self.loads)
         if both:
             raise OperatingPointError(
-                f"operating point: shaft(s) {', '.join(sorted(both))} are named both as drive and as load."
+                f"operating point: shaft(s) {', '.join(sorted(both))} are named both as drive and as load.",
+                group="loads", shafts=sorted(both),
             )
         twice = set(self.torques) & set(self.powers)
         if twice:
             raise OperatingPointError(
-                f"operating point: give a torque or a power at shaft(s) {', '.join(sorted(twice))}, not both."
+                f"operating point: give a torque or a power at shaft(s) {', '.join(sorted(twice))}, not both.",
+                group="powers", shafts=sorted(twice),
             )
 
     @property
