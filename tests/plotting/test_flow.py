@@ -50,14 +50,17 @@ def test_brandenberger_edges_are_the_solved_powers(brandenberger):
 
 def test_circulating_power_is_highlighted_in_bild_11():
     # Brandenberger, text to Bild 11/12: in these arrangements power circulates in the coupling stage.
+    # The red edges are exactly those of the loop around which it circulates (results.circulation).
     sol = _bild11()
     flow = power_flow(sol)
-    assert sol.self_locking is None and sol.circulating_power > 2.0
+    assert sol.self_locking is None and sol.circulation.loops
+    loop = sol.circulation.loops[0]
     circulating = [e for e in flow.edges if e.circulating]
-    assert circulating, "edges above the input power are marked"
-    assert all(e.power > sol.input_power for e in circulating)
-    assert all(e.power <= sol.input_power * (1 + 1e-9) for e in flow.edges if e.kind == "port" and not e.circulating)
-    assert max(e.power for e in flow.edges) / sol.input_power == pytest.approx(sol.circulating_power, rel=1e-9)
+    assert {(e.source, e.target) for e in circulating} == set(zip(loop.path, (*loop.path[1:], loop.path[0])))
+    assert all(e.power >= loop.power * (1 - 1e-12) for e in circulating)  # the loop's bottleneck
+    assert not any(e.circulating for e in flow.edges if e.kind != "port")
+    assert max(e.power for e in flow.edges) / sol.input_power == pytest.approx(
+        sol.circulation.largest_element_ratio, rel=1e-9)
     fig = flow.plot()
     assert "power circulates" in fig.axes[0].get_title()
 

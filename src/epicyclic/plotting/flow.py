@@ -5,9 +5,10 @@ element is an edge between its shaft and the element, pointing the way power
 flows (``P = T·n·π/30`` into the element when positive).  Drives enter from a
 source above their shaft, loads leave to a sink; each element's loss leaves
 downwards to its own loss node.  Edge widths are proportional to the power
-they carry (one scale for the whole figure).  Edges carrying more than the
-input power are *circulating* power (Brandenberger, text to Bild 11 and 12:
-"zirkulieren im Vorgelege Leistungen") and are drawn in red.  Each planetary
+they carry (one scale for the whole figure).  Edges on a closed loop around
+which power circulates (Brandenberger, text to Bild 11 and 12: "zirkulieren
+im Vorgelege Leistungen"; see :mod:`epicyclic.results.circulation`) are drawn
+in red.  Each planetary
 set is labelled with its rolling power ``P_w = T_sun·(n_sun − n_carrier)·π/30``,
 the part that passes the teeth relative to the carrier and alone causes loss.
 
@@ -28,6 +29,7 @@ from ..model.elements import HOUSING
 from ._common import figure_svg, fmt, pyplot
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..results.circulation import Circulation
     from ..results.solution import Solution
 
 __all__ = ["FlowNode", "FlowEdge", "PowerFlow", "power_flow"]
@@ -71,8 +73,8 @@ class PowerFlow:
     width_per_watt : float
         Points of line width per W (the same for every edge).
     input_power : float
-    circulating_power : float
-        Largest port power as a multiple of the input power.
+    circulation : Circulation
+        Circulating power per loop and in total, and the largest element power.
     rolling : mapping element → W
     losses : mapping element → W
     """
@@ -82,7 +84,7 @@ class PowerFlow:
     edges: tuple[FlowEdge, ...]
     width_per_watt: float
     input_power: float
-    circulating_power: float
+    circulation: Circulation
     rolling: Mapping[str, float]
     losses: Mapping[str, float]
     self_locking: bool = False
@@ -93,7 +95,7 @@ class PowerFlow:
     def to_dict(self) -> dict[str, Any]:
         return {"title": self.title, "units": {"power": "W", "width": "pt"},
                 "nodes": [n.__dict__ for n in self.nodes], "edges": [e.__dict__ for e in self.edges],
-                "input_power": self.input_power, "circulating_power": self.circulating_power,
+                "input_power": self.input_power, "circulation": self.circulation.to_dict(),
                 "rolling": dict(self.rolling), "losses": dict(self.losses)}
 
     def _repr_html_(self) -> str:
@@ -101,7 +103,17 @@ class PowerFlow:
 
     def __repr__(self) -> str:
         return (f"<PowerFlow {self.title!r}: {len(self.edges)} edges, input {fmt(self.input_power)} W, "
-                f"largest internal power {fmt(self.circulating_power, 3)} × input>")
+                f"{self._circulation_text()}>")
+
+    def _circulation_text(self) -> str:
+        circ = self.circulation
+        if circ.indeterminate:
+            return "circulating power not defined (indeterminate torque split)"
+        if circ.loops and circ.ratio is not None:
+            return f"power circulates: {fmt(circ.ratio, 3)} × input"
+        if circ.largest_element_ratio is None:
+            return "no power flows"
+        return f"no circulating power, largest element power {fmt(circ.largest_element_ratio, 3)} × input"
 
     def plot(self, ax: Any = None) -> Any:
         """Draw the graph; returns the figure."""
@@ -132,7 +144,7 @@ class PowerFlow:
                     bbox={"boxstyle": style[0], "fc": style[1], "ec": "black"})
         for kind, colour, label in (("drive", "#D55E00", "power in (drive)"), ("load", "#0072B2", "power out (load)"),
                                     ("port", "#009E73", "power through a port"), ("loss", "#999999", "loss"),
-                                    ("circ", "#CC0000", "circulating (> input power)")):
+                                    ("circ", "#CC0000", "circulating (closed loop)")):
             ax.plot([], [], color=colour, lw=4, label=label)
         ax.plot([], [], color="black", lw=MAX_WIDTH * 0.25, label=f"width: {fmt(1 / self.width_per_watt, 3)} W per pt")
         xs, ys = [n.x for n in self.nodes], [n.y for n in self.nodes]
@@ -141,8 +153,7 @@ class PowerFlow:
         ax.set_axis_off()
         ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.0, 1.0), title="arrow width ∝ power (W)",
                   title_fontsize=8)
-        circ = (f"largest internal power {fmt(self.circulating_power, 3)} × input"
-                + (" — power circulates" if self.circulating_power > 1 + 1e-9 else ""))
+        circ = self._circulation_text()
         if self.self_locking:
             circ += " — SELF-LOCKING (formal solution shown)"
         ax.set_title(f"{self.title}: power flow, input {fmt(self.input_power)} W; {circ}", fontsize=11)
@@ -190,13 +201,14 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH) -> PowerFlow
             raw.append((shaft.name, f"out: {shaft.name}", -shaft.power, "load"))
     largest = max((p for *_, p, _ in raw), default=1.0)
     per_watt = max_width / largest
-    limit = solution.input_power * (1 + 1e-9)
-    edges = tuple(FlowEdge(a, b, p, kind, kind == "port" and solution.input_power > 0 and p > limit, p * per_watt)
+    on_loop = {pair for loop in solution.circulation.loops
+               for pair in zip(loop.path, (*loop.path[1:], loop.path[0]))}
+    edges = tuple(FlowEdge(a, b, p, kind, kind == "port" and (a, b) in on_loop, p * per_watt)
                   for a, b, p, kind in raw)
     nodes = _layout(solution, [e.name for e in elements], edges)
     rolling = {e.name: e.rolling_power for e in solution.elements.values() if e.kind == "planetary set"}
     losses = {e.name: e.loss for e in solution.elements.values() if e.kind in ("planetary set", "gear stage")}
-    return PowerFlow(solution.train.name, nodes, edges, per_watt, solution.input_power, solution.circulating_power,
+    return PowerFlow(solution.train.name, nodes, edges, per_watt, solution.input_power, solution.circulation,
                      MappingProxyType(rolling), MappingProxyType(losses), solution.self_locking is not None)
 
 

@@ -10,13 +10,28 @@ Kinematics (Willis):  n_a − i0·n_b − (1 − i0)·n_c = 0;  link: n_a − n_
 Statics, with T the torque a shaft exerts on an element port and M the
 external torque on a shaft:
 
-* lever:  T_b + i0·η0^w·T_a = 0  and  T_a + T_b + T_c = 0;
+* lever:  T_b + i0·η0^w·T_a = 0  and  T_c + (1 − i0·η0^w)·T_a = 0;
 * link:   T_a + T_b = 0;
-* shaft:  M_s − Σ_e T_(e,s) = 0  (M_s exists only at external shafts and the housing).
+* shaft:  M_s − Σ_e T_(e,s) = 0  for every shaft but the housing (M_s exists
+  only at drives and loads).
+
+The second lever row is the torque sum T_a + T_b + T_c = 0 with T_b
+eliminated: each coefficient is formed once, exactly rounded, so that a set
+with i0 near 1 or |i0| = 1e6 gives no cancellation in the matrix.  The
+housing's balance is not a row: its reaction is the sum of the port torques
+on it, computed afterwards (the global equilibrium makes the row redundant,
+and a row that sums every element's reaction would couple torques of every
+size).
 
 The exponent w = sign(P_wa) ∈ {−1, 0, +1} is the direction of the rolling
 power T_a·(ω_a − ω_c): η0 acts in the direction power flows relative to the
 carrier, and w = 0 (no rolling power: an idling or locked set) carries no loss.
+
+Structure known before any number: shafts the train holds still (a brake, a
+clutch to such a shaft, a stage from one, a set with two such members) have
+speed exactly 0, and ports that can carry no torque (a shaft with no external
+torque and one live port, and whatever that makes idle in turn) have torque
+exactly 0; the solver sets these exactly instead of computing round-off.
 
 References
 ----------
@@ -26,16 +41,19 @@ Brandenberger 1952, eqs. 1, 2, 3', 7 and 7'; Queitsch, eqs. 12 and 26.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
-from functools import cached_property
+from dataclasses import dataclass, field
+from fractions import Fraction
+from functools import cached_property, lru_cache
 
 import numpy as np
 
+from ..errors import NonFiniteResultError
 from ..model.elements import HOUSING, Brake, Clutch, GearStage
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
+from .linear import rank
 
-__all__ = ["Lever", "Link", "TrainMatrices", "matrices"]
+__all__ = ["Layout", "Lever", "Link", "TrainMatrices", "matrices"]
 
 
 @dataclass(frozen=True)
@@ -47,6 +65,28 @@ class Lever:
     shafts: tuple[str, str, str]  # shaft names (a, b, c)
     ratio: float
     efficiency: float
+
+    def factors(self, w: int) -> tuple[float, float]:
+        """(i0·η0^w, 1 − i0·η0^w), each exactly rounded: the torque ratios T_b/T_a and T_c/T_a, negated.
+
+        Raises
+        ------
+        NonFiniteResultError
+            η0^w overflows (an efficiency so small that 1/η0 is not a float).
+        """
+        if w == 0 or self.efficiency == 1.0:
+            return self.ratio, 1.0 - self.ratio  # 1 − i0 is exact where it matters (Sterbenz)
+        i0, eta = Fraction(self.ratio), Fraction(self.efficiency)
+        k = i0 * eta if w > 0 else i0 / eta
+        try:
+            return float(k), float(1 - k)
+        except OverflowError:
+            raise NonFiniteResultError(
+                f"{self.element.name!r}: the stationary efficiency {self.efficiency!r} is too small to compute "
+                f"with (i0/η0 = {self.ratio!r}/{self.efficiency!r} overflows); give an efficiency of at least "
+                "1e-300, or 1 to ignore the losses of this element.",
+                "efficiency", self.element.name,
+            ) from None
 
 
 @dataclass(frozen=True)
@@ -79,6 +119,24 @@ def _levers_and_links(train: GearTrain) -> tuple[tuple[Lever, ...], tuple[Link, 
 
 
 @dataclass(frozen=True, eq=False)
+class Layout:
+    """Where every port, shaft and lever sits in the arrays of a solution."""
+
+    rows: dict[str, int]  # shaft → row (train order, housing last)
+    parts: int  # levers, then links
+    port_columns: np.ndarray  # torque column of every port (order of port_shaft_columns)
+    port_rows: np.ndarray  # shaft row of every port
+    port_parts: np.ndarray  # part of every port
+    reacting: np.ndarray  # shafts with an external torque or reaction (externals, housing)
+    external_rows: np.ndarray
+    external_columns: np.ndarray
+    lever_a_rows: np.ndarray
+    lever_c_rows: np.ndarray
+    lever_a_columns: np.ndarray
+    efficiencies: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
 class TrainMatrices:
     """The train's equations, independent of the operating point.
 
@@ -87,7 +145,9 @@ class TrainMatrices:
     """
 
     train: GearTrain
-    external: tuple[str, ...]  # shafts with an external torque (housing last)
+    external: tuple[str, ...]  # moving shafts with an external torque (drives, loads, connected, given)
+    #: Prepared speed and torque solvers, keyed by what they were prepared for (see solver.kinematics/statics).
+    solvers: dict = field(default_factory=dict, repr=False, compare=False)
 
     # --------------------------------------------------------------- structure
     @cached_property
@@ -106,6 +166,25 @@ class TrainMatrices:
     def speed_index(self) -> dict[str, int]:
         """Column of each moving shaft's speed (the housing has none)."""
         return {s: k for k, s in enumerate(self.train.moving_shafts)}
+
+    @cached_property
+    def held_shafts(self) -> frozenset[str]:
+        """Moving shafts that the train itself holds still, whatever speeds are given.
+
+        A brake (or clutch) to a held shaft, a stage from one, a set with two held
+        members: Willis' equation then leaves only 0 for the third.
+        """
+        held = {HOUSING}
+        changed = True
+        while changed:
+            changed = False
+            for part in (*self.links, *self.levers):
+                shafts = set(part.shafts)
+                inside = shafts & held
+                if inside and len(shafts - held) == 1 and len(inside) >= len(shafts) - 1:
+                    held |= shafts
+                    changed = True
+        return frozenset(held - {HOUSING})
 
     # --------------------------------------------------------------- kinematics
     @cached_property
@@ -127,6 +206,12 @@ class TrainMatrices:
             rows.append(row)
         return np.array(rows).reshape(len(rows), len(col))
 
+    @cached_property
+    def degrees_of_freedom(self) -> int:
+        """Number of speeds that must be given to fix every shaft speed."""
+        k = self.kinematics
+        return k.shape[1] - rank(k) if k.shape[0] else k.shape[1]
+
     # --------------------------------------------------------------- statics
     @cached_property
     def torque_columns(self) -> list[tuple[str, str, str]]:
@@ -145,7 +230,7 @@ class TrainMatrices:
 
     @cached_property
     def _statics_template(self) -> tuple[np.ndarray, list[tuple[int, int, int]]]:
-        """Static rows with η = 1 and the (row, col_a, lever) slots that carry i0·η0^w."""
+        """Static rows with η = 1 and the (row, col_a, lever) slots of each lever's two factors."""
         idx = self.torque_index
         ncol = len(idx)
         rows: list[np.ndarray] = []
@@ -153,20 +238,19 @@ class TrainMatrices:
         for k, lever in enumerate(self.levers):
             name = lever.element.name
             a, b, c = (idx[("port", name, p)] for p in lever.ports)
-            ratio_row = np.zeros(ncol)
-            ratio_row[b] = 1.0
-            ratio_row[a] = lever.ratio
+            k_b, k_c = lever.factors(0)
             slots.append((len(rows), a, k))
-            rows.append(ratio_row)
-            sum_row = np.zeros(ncol)
-            sum_row[[a, b, c]] = 1.0
-            rows.append(sum_row)
+            for col, factor in ((b, k_b), (c, k_c)):
+                row = np.zeros(ncol)
+                row[col] = 1.0
+                row[a] = factor
+                rows.append(row)
         for link in self.links:
             name = link.element.name
             row = np.zeros(ncol)
             row[[idx[("port", name, p)] for p in link.ports]] = 1.0
             rows.append(row)
-        for shaft in self.train.shafts:
+        for shaft in self.train.moving_shafts:
             row = np.zeros(ncol)
             if ("external", shaft, "") in idx:
                 row[idx[("external", shaft, "")]] = 1.0
@@ -174,7 +258,7 @@ class TrainMatrices:
                 if port == shaft:
                     row[col] -= 1.0
             rows.append(row)
-        return np.array(rows), slots
+        return np.array(rows).reshape(len(rows), ncol), slots
 
     @cached_property
     def port_shaft_columns(self) -> list[tuple[str, str, int]]:
@@ -192,14 +276,75 @@ class TrainMatrices:
         matrix = template.copy()
         if pattern is not None:
             for (row, col, k), w in zip(slots, pattern):
-                matrix[row, col] = self.levers[k].ratio * self.levers[k].efficiency ** float(w)
+                matrix[row, col], matrix[row + 1, col] = self.levers[k].factors(int(w))
         return matrix
+
+    def idle_columns(self, pattern: Sequence[int] | np.ndarray | None = None) -> list[int]:
+        """Port columns whose torque is exactly 0 for any given torque (idle elements).
+
+        A shaft without external torque and with one live port leaves that port
+        no torque; the element is then idle (a lever's three torques are
+        proportional, unless T_c = 0 meets 1 − i0·η0^w = 0), which may leave
+        another shaft with one live port, and so on.
+        """
+        parts = [*self.levers, *self.links]
+        factors = [lever.factors(0 if pattern is None else int(w))
+                   for lever, w in zip(self.levers, pattern if pattern is not None else [0] * len(self.levers))]
+        idle: set[int] = set()  # indices into parts
+        changed = True
+        while changed:
+            changed = False
+            for shaft in self.train.moving_shafts:
+                if shaft in self.external:
+                    continue
+                live = [(k, j) for k, part in enumerate(parts) if k not in idle
+                        for j, s in enumerate(part.shafts) if s == shaft]
+                if len(live) != 1:
+                    continue
+                k, j = live[0]
+                if k < len(self.levers) and j == 2 and factors[k][1] == 0.0:
+                    continue  # T_c = 0 with 1 − i0·η0^w = 0 leaves T_a free
+                idle.add(k)
+                changed = True
+        idx = self.torque_index
+        return sorted(idx[("port", parts[k].element.name, p)] for k in idle for p in parts[k].ports)
+
+    @cached_property
+    def layout(self) -> Layout:
+        """Index arrays for evaluating solutions (see :mod:`epicyclic.solver.evaluate`)."""
+        rows = {s: k for k, s in enumerate(self.train.shafts)}
+        ports = self.port_shaft_columns
+        part_names = [part.element.name for part in (*self.levers, *self.links)]
+        part_index = {name: k for k, name in enumerate(part_names)}
+        idx = self.torque_index
+        return Layout(
+            rows=rows,
+            parts=len(part_names),
+            port_columns=np.array([col for _, _, col in ports], dtype=int),
+            port_rows=np.array([rows[s] for _, s, _ in ports], dtype=int),
+            port_parts=np.array([part_index[name] for name, _, _ in ports], dtype=int),
+            reacting=np.array([s in self.external or s == HOUSING for s in self.train.shafts]),
+            external_rows=np.array([rows[s] for s in self.external], dtype=int),
+            external_columns=np.array([self.external_column(s) for s in self.external], dtype=int),
+            lever_a_rows=np.array([rows[lv.shafts[0]] for lv in self.levers], dtype=int),
+            lever_c_rows=np.array([rows[lv.shafts[2]] for lv in self.levers], dtype=int),
+            lever_a_columns=np.array([idx[("port", lv.element.name, lv.ports[0])] for lv in self.levers], dtype=int),
+            efficiencies=np.array([lv.efficiency for lv in self.levers], dtype=float),
+        )
 
     def external_column(self, shaft: str) -> int:
         return self.torque_index[("external", shaft, "")]
 
 
 def matrices(train: GearTrain, external: Sequence[str]) -> TrainMatrices:
-    """The equations of ``train`` with external torques at ``external`` (housing added)."""
-    ext = tuple(s for s in external if s != HOUSING) + (HOUSING,)
-    return TrainMatrices(train, ext)
+    """The equations of ``train`` with external torques at ``external`` (the housing's reaction is implied).
+
+    The same train and external shafts give the same (cached) object, so that
+    repeated solves reuse its prepared solvers.
+    """
+    return _matrices(train, tuple(dict.fromkeys(s for s in external if s != HOUSING)))
+
+
+@lru_cache(maxsize=64)
+def _matrices(train: GearTrain, external: tuple[str, ...]) -> TrainMatrices:
+    return TrainMatrices(train, external)

@@ -4,6 +4,11 @@ The train's constraint rows K (one Willis row per lever, one equality per
 engaged clutch or brake) and one row per given speed form A n = b.  The rank
 of K gives the degrees of freedom; the null space of A names the shafts whose
 speed is still free; a non-zero residual names the givens in conflict.
+Shafts the train holds still get exactly 0; a speed that cancels to round-off
+of the given speeds it is made of is exactly 0 (the rule of
+:mod:`epicyclic.results.zero`).  Equations too close to singular raise
+:class:`~epicyclic.errors.NearSingularError` instead of a result that
+round-off decides.
 
 References
 ----------
@@ -14,23 +19,22 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
-from ..errors import ContradictionError, UnderdeterminedError
+from ..errors import ContradictionError, NearSingularError, NonFiniteResultError, UnderdeterminedError
 from ..model.elements import HOUSING
+from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
 from .linear import Pseudoinverse, pseudoinverse
 
-__all__ = ["SpeedSolver", "speed_solver", "degrees_of_freedom", "free_speed_shafts"]
+__all__ = ["SpeedSolver", "speed_solver", "degrees_of_freedom", "free_speed_shafts", "solve_speeds", "check_speeds"]
 
 
 def degrees_of_freedom(mats: TrainMatrices) -> int:
     """Number of speeds that must be given to fix every shaft speed."""
-    k = mats.kinematics
-    if k.shape[0] == 0:
-        return k.shape[1]
-    return k.shape[1] - pseudoinverse(k).rank
+    return mats.degrees_of_freedom
 
 
 def free_speed_shafts(mats: TrainMatrices, given: Sequence[str] = ()) -> list[str]:
@@ -61,9 +65,27 @@ class SpeedSolver:
     given: tuple[str, ...]
     system: Pseudoinverse
 
+    @cached_property
+    def operator(self) -> np.ndarray:
+        """Matrix S with speeds = S @ given speeds; rows of held shafts exactly 0."""
+        rows = self.mats.kinematics.shape[0]
+        unit = np.zeros((self.system.matrix.shape[0], len(self.given)))
+        unit[rows:] = np.eye(len(self.given))
+        s = self.system.solve(unit)
+        for shaft in self.mats.held_shafts:
+            s[self.mats.speed_index[shaft]] = 0.0
+        return s
+
     def speeds(self, values: Sequence[float] | np.ndarray) -> np.ndarray:
+        """Speeds of the moving shafts (1/min): givens exactly, round-off of zero exactly 0."""
         g = np.asarray(values, dtype=float)
-        return self.system.inverse[:, self.mats.kinematics.shape[0]:] @ g
+        s = self.operator
+        n = s @ g
+        terms = np.abs(s) @ np.abs(g)
+        n = np.where(np.abs(n) <= ZERO_TOLERANCE * terms, 0.0, n) + 0.0
+        for r, shaft in enumerate(self.given):
+            n[self.mats.speed_index[shaft]] = g[r]
+        return n
 
     def check(self, values: Sequence[float] | np.ndarray, speeds: np.ndarray) -> None:
         """Raise ContradictionError if the given speeds violate the constraints."""
@@ -120,8 +142,13 @@ def speed_solver(mats: TrainMatrices, given: Sequence[str]) -> SpeedSolver:
         Some shaft speeds are not fixed: the message names them.
     """
     given = tuple(given)
+    key = ("speed", given)
+    if key in mats.solvers:
+        return mats.solvers[key]
     system = pseudoinverse(_system(mats, given))
     free = [mats.train.moving_shafts[c] for c in system.free_columns()]
+    if system.near_singular and not free:
+        raise _near_singular(mats, given, system)
     if free:
         dof = degrees_of_freedom(mats)
         missing = mats.train.moving_shafts.__len__() - system.rank
@@ -134,7 +161,42 @@ def speed_solver(mats: TrainMatrices, given: Sequence[str]) -> SpeedSolver:
             free,
             "speed",
         )
-    return SpeedSolver(mats, given, system)
+    mats.solvers[key] = SpeedSolver(mats, given, system)
+    return mats.solvers[key]
+
+
+def _near_singular(mats: TrainMatrices, given: Sequence[str], system: Pseudoinverse) -> NearSingularError:
+    distance, direction, row_weights = system.near_singular[-1]
+    shafts = mats.train.moving_shafts
+    weak = [shafts[c] for c in np.flatnonzero(np.abs(direction) > 0.1 * np.abs(direction).max())]
+    parts = [*mats.levers, *mats.links]
+    involved = [parts[r].element.name for r in np.flatnonzero(np.abs(row_weights[:len(parts)]) > 0.1 * np.abs(row_weights).max())]
+    near_one = [f"{lv.element.name!r} has i0 − 1 = {lv.ratio - 1.0:.3g}" for lv in mats.levers
+                if lv.element.name in involved and abs(lv.ratio - 1.0) < 1e-6]
+    return NearSingularError(
+        f"the speed of {', '.join(repr(s) for s in weak)} is fixed only by nearly cancelling ratios of "
+        f"{', '.join(repr(n) for n in involved) or 'the train'}"
+        + (f" ({'; '.join(near_one)})" if near_one else "")
+        + f": the equations are {distance:.2g} (relative) from singular, so round-off would decide the result "
+        f"(it would be amplified about {1 / distance:.1g} times). Give the speed of {' or '.join(repr(s) for s in weak)} "
+        "instead, or check these ratios.",
+        "speed", distance, weak, involved,
+    )
+
+
+def check_speeds(mats: TrainMatrices, speeds: np.ndarray) -> None:
+    """Raise NonFiniteResultError if a speed overflows (``speeds``: moving shafts, points trailing)."""
+    bad = ~np.isfinite(speeds)
+    if not bad.any():
+        return
+    where = np.argwhere(bad)[0]
+    shaft = mats.train.moving_shafts[where[0]]
+    point = f" at operating point {int(where[1])}" if speeds.ndim > 1 and speeds.shape[1] > 1 else ""
+    raise NonFiniteResultError(
+        f"the speed of shaft {shaft!r}{point} overflows the floating-point range (about 1.8e308 1/min): "
+        "the given speeds are too large for the ratios of this train; give smaller speeds.",
+        "speed", shaft,
+    )
 
 
 def solve_speeds(mats: TrainMatrices, speeds: Mapping[str, float]) -> dict[str, float]:
@@ -142,9 +204,10 @@ def solve_speeds(mats: TrainMatrices, speeds: Mapping[str, float]) -> dict[str, 
     given = [s for s in speeds if s != HOUSING]
     values = np.array([speeds[s] for s in given], dtype=float)
     solver = speed_solver(mats, given)
-    n = solver.speeds(values)
+    with np.errstate(all="ignore"):
+        n = solver.speeds(values)
+    check_speeds(mats, n)
     solver.check(values, n)
     result = {s: float(n[c]) for s, c in mats.speed_index.items()}
-    result.update({s: float(v) for s, v in zip(given, values)})  # givens exactly, not round-off
     result[HOUSING] = 0.0
     return result

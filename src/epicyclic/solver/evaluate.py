@@ -1,0 +1,171 @@
+"""From solved speeds and torques to the quantities of a result, cleaned once.
+
+The scalar solver and the batch solver both call :func:`evaluate`, with the
+operating points along the last axis of every array, so that they agree point
+for point.  Here the zero rule of :mod:`epicyclic.results.zero` is applied:
+
+* an element whose torques are round-off of the torques at its shafts is idle
+  (all its torques exactly 0);
+* a lever whose relative speed is round-off of its port speeds is locked
+  (relative speed, rolling power and loss exactly 0);
+* external torques are the given values exactly, and elsewhere the balance of
+  the (cleaned) port torques on the shaft: the housing's reaction, a load's
+  torque;
+* powers are products of cleaned torques and speeds (0 where either is 0);
+* the loss of a lever is P_w·(1 − η0^w), never a difference of large port powers.
+
+References
+----------
+Brandenberger 1952, eqs. 3' and 7 (the loss is the rolling power times 1 − η0^w);
+Queitsch, Wälz- und Kupplungsleistung.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import NonFiniteResultError
+from ..results.solution import RPM_TO_RAD_S
+from ..results.zero import ZERO_TOLERANCE, clean_array
+from .assembly import TrainMatrices
+
+__all__ = ["Evaluation", "evaluate", "check_finite"]
+
+
+@dataclass(frozen=True, eq=False)
+class Evaluation:
+    """Cleaned quantities, shafts/columns/levers along axis 0, points along the last axis.
+
+    Attributes
+    ----------
+    speeds : ndarray (shafts, P)
+        1/min, in ``train.shafts`` order (housing last, exactly 0).
+    x : ndarray (columns, P)
+        Port torques (idle ones exactly 0) and external torques, N·m.
+    torques, powers : ndarray (shafts, P)
+        External torque (N·m) and power (W) of every shaft; 0 where none acts.
+    relative : ndarray (levers, P)
+        n_a − n_c of every lever, 1/min (exactly 0 when locked).
+    rolling, coupling, loss : ndarray (levers, P)
+        W.
+    pattern : ndarray of int (levers, P)
+        Sign of the rolling power (0 exactly where it is 0).
+    direction : ndarray of int (levers, P)
+        The loss direction w the torques were solved with where rolling power
+        flows, 0 where none flows (equal to ``pattern`` in a consistent solution).
+    """
+
+    speeds: np.ndarray
+    x: np.ndarray
+    torques: np.ndarray
+    powers: np.ndarray
+    relative: np.ndarray
+    rolling: np.ndarray
+    coupling: np.ndarray
+    loss: np.ndarray
+    pattern: np.ndarray
+    direction: np.ndarray
+
+
+def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
+             given: Mapping[str, np.ndarray]) -> Evaluation:
+    """Clean the solved torques and derive torques, powers, rolling powers and losses.
+
+    Parameters
+    ----------
+    mats : TrainMatrices
+    speeds : ndarray (shafts, P)
+        All shaft speeds in ``train.shafts`` order, 1/min.
+    x : ndarray (columns, P)
+        Solved torques, N·m (columns of ``mats.torque_columns``).
+    pattern : ndarray (levers, P) or None
+        Loss directions the torques were solved with (None: lossless).
+    given : mapping shaft → ndarray (P,)
+        Given external torques (signed), N·m.
+
+    Returns
+    -------
+    Evaluation
+    """
+    with np.errstate(all="ignore"):  # overflow is reported by check_finite, by name
+        result = _evaluate(mats, speeds, x, pattern, given)
+    check_finite(mats, result)
+    return result
+
+
+def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
+              given: Mapping[str, np.ndarray]) -> Evaluation:
+    lay = mats.layout
+    points = speeds.shape[1:]
+    x = np.array(x, dtype=float)
+
+    # idle elements: torques that are round-off of the torques at their shafts
+    port = x[lay.port_columns]
+    size = np.abs(port)
+    shaft_scale = np.zeros((len(lay.rows),) + points)
+    np.maximum.at(shaft_scale, lay.port_rows, size)
+    for shaft, value in given.items():
+        shaft_scale[lay.rows[shaft]] = np.maximum(shaft_scale[lay.rows[shaft]], np.abs(value))
+    own = np.zeros((lay.parts,) + points)
+    np.maximum.at(own, lay.port_parts, size)
+    scale = np.zeros((lay.parts,) + points)
+    np.maximum.at(scale, lay.port_parts, shaft_scale[lay.port_rows])
+    idle = own <= ZERO_TOLERANCE * scale
+    port = np.where(idle[lay.port_parts], 0.0, port) + 0.0
+    x[lay.port_columns] = port
+
+    # external torques: given exactly, else the balance of the port torques on the shaft
+    total = np.zeros((len(lay.rows),) + points)
+    np.add.at(total, lay.port_rows, port)
+    terms = np.zeros((len(lay.rows),) + points)
+    np.maximum.at(terms, lay.port_rows, np.abs(port))
+    torques = np.where(lay.reacting[(slice(None),) + (None,) * len(points)], clean_array(total, terms), 0.0)
+    for shaft, value in given.items():
+        torques[lay.rows[shaft]] = value
+    x[lay.external_columns] = torques[lay.external_rows]
+    powers = torques * speeds * RPM_TO_RAD_S + 0.0
+
+    # levers: relative speed, rolling and coupling power, loss
+    a, c = speeds[lay.lever_a_rows], speeds[lay.lever_c_rows]
+    relative = clean_array(a - c, np.maximum(np.abs(a), np.abs(c)))
+    t_a = x[lay.lever_a_columns]
+    rolling = t_a * relative * RPM_TO_RAD_S + 0.0
+    coupling = t_a * c * RPM_TO_RAD_S + 0.0
+    used = np.zeros(rolling.shape, dtype=int) if pattern is None else np.asarray(pattern, dtype=int)
+    eta = lay.efficiencies[(slice(None),) + (None,) * len(points)]
+    factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
+    loss = rolling * (1.0 - factor) + 0.0
+    observed = np.sign(rolling).astype(int)
+    direction = np.where(observed == 0, 0, used)
+    return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction)
+
+
+def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
+    """Raise :class:`~epicyclic.errors.NonFiniteResultError` naming the first quantity that overflows."""
+    shafts = mats.train.shafts
+    ports = [f"{element!r} at shaft {shaft!r}" for element, shaft, _ in mats.port_shaft_columns]
+    levers = [repr(lever.element.name) for lever in mats.levers]
+    port_rows = [col for _, _, col in mats.port_shaft_columns]
+    for quantity, array, labels, unit in (
+        ("speed", ev.speeds, [f"shaft {s!r}" for s in shafts], "1/min"),
+        ("torque", ev.x[port_rows], ports, "N·m"),
+        ("torque", ev.torques, [f"shaft {s!r}" for s in shafts], "N·m"),
+        ("power", ev.powers, [f"shaft {s!r}" for s in shafts], "W"),
+        ("rolling power", ev.rolling, levers, "W"),
+        ("coupling power", ev.coupling, levers, "W"),
+        ("loss", ev.loss, levers, "W"),
+    ):
+        bad = ~np.isfinite(array)
+        if not bad.any():
+            continue
+        where = np.argwhere(bad)[0]
+        point = f" at operating point {int(where[1])}" if array.ndim > 1 and array.shape[1] > 1 else ""
+        raise NonFiniteResultError(
+            f"the {quantity} of {labels[where[0]]}{point} overflows the floating-point range "
+            f"(about 1.8e308 {unit}): the given speeds, torques or powers are too large (or too small) for "
+            "this train; give them in a range where speeds × torques stay below about 1e300.",
+            quantity, labels[where[0]],
+        )
