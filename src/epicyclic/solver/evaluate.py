@@ -4,8 +4,9 @@ The scalar solver and the batch solver both call :func:`evaluate`, with the
 operating points along the last axis of every array, so that they agree point
 for point.  Here the zero rule of :mod:`epicyclic.results.zero` is applied:
 
-* an element whose torques are round-off of the torques at its shafts is idle
-  (all its torques exactly 0);
+* an element whose torques are round-off of the torques at its shafts (the
+  housing, which takes every element's reaction, aside) is idle (all its
+  torques exactly 0);
 * a lever whose relative speed is round-off of its port speeds is locked
   (relative speed, rolling power and loss exactly 0);
 * external torques are the given values exactly, and elsewhere the balance of
@@ -33,6 +34,9 @@ from ..results.zero import ZERO_TOLERANCE, clean_array
 from .assembly import TrainMatrices
 
 __all__ = ["Evaluation", "evaluate", "check_finite"]
+
+#: The smallest normal float: below it a result has lost its precision (underflow).
+_TINY = np.finfo(float).tiny
 
 
 @dataclass(frozen=True, eq=False)
@@ -109,6 +113,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     np.maximum.at(shaft_scale, lay.port_rows, size)
     for shaft, value in given.items():
         shaft_scale[lay.rows[shaft]] = np.maximum(shaft_scale[lay.rows[shaft]], np.abs(value))
+    shaft_scale[-1] = 0.0  # the housing takes every reaction: not a scale for any one element
     own = np.zeros((lay.parts,) + points)
     np.maximum.at(own, lay.port_parts, size)
     scale = np.zeros((lay.parts,) + points)
@@ -138,13 +143,27 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     eta = lay.efficiencies[(slice(None),) + (None,) * len(points)]
     factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
     loss = rolling * (1.0 - factor) + 0.0
+    x[lay.port_columns] = _flush(x[lay.port_columns])
+    torques, powers, rolling, coupling, loss = (_flush(a) for a in (torques, powers, rolling, coupling, loss))
     observed = np.sign(rolling).astype(int)
     direction = np.where(observed == 0, 0, used)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction)
 
 
+def _flush(values: np.ndarray) -> np.ndarray:
+    """Subnormal values that are numerically zero next to their kind at the same point become 0.
+
+    What stays subnormal is a whole quantity below the float range: :func:`check_finite` names it.
+    """
+    size = np.abs(values)
+    if values.size == 0 or not np.any((size < _TINY) & (size > 0)):
+        return values
+    scale = size.max(axis=0, keepdims=True)
+    return np.where((size < _TINY) & (size <= ZERO_TOLERANCE * scale), 0.0, values) + 0.0
+
+
 def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
-    """Raise :class:`~epicyclic.errors.NonFiniteResultError` naming the first quantity that overflows."""
+    """Raise :class:`~epicyclic.errors.NonFiniteResultError` naming the first quantity that over- or underflows."""
     shafts = mats.train.shafts
     ports = [f"{element!r} at shaft {shaft!r}" for element, shaft, _ in mats.port_shaft_columns]
     levers = [repr(lever.element.name) for lever in mats.levers]
@@ -158,14 +177,17 @@ def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
         ("coupling power", ev.coupling, levers, "W"),
         ("loss", ev.loss, levers, "W"),
     ):
-        bad = ~np.isfinite(array)
+        size = np.abs(array)
+        bad = ~np.isfinite(array) | ((size < _TINY) & (size > 0))
         if not bad.any():
             continue
         where = np.argwhere(bad)[0]
         point = f" at operating point {int(where[1])}" if array.ndim > 1 and array.shape[1] > 1 else ""
+        how = "overflows" if not np.isfinite(array[tuple(where)]) else "underflows"
         raise NonFiniteResultError(
-            f"the {quantity} of {labels[where[0]]}{point} overflows the floating-point range "
-            f"(about 1.8e308 {unit}): the given speeds, torques or powers are too large (or too small) for "
-            "this train; give them in a range where speeds × torques stay below about 1e300.",
+            f"the {quantity} of {labels[where[0]]}{point} {how} the floating-point range "
+            f"(about 2.2e-308 to 1.8e308 {unit}): the given speeds, torques or powers are too "
+            f"{'large' if how == 'overflows' else 'small'} for this train; give them in a range where "
+            "speeds and torques and their products stay between about 1e-300 and 1e300.",
             quantity, labels[where[0]],
         )

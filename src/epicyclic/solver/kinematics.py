@@ -25,7 +25,7 @@ import numpy as np
 
 from ..errors import ContradictionError, NearSingularError, NonFiniteResultError, UnderdeterminedError
 from ..model.elements import HOUSING
-from ..results.zero import ZERO_TOLERANCE
+from ..results.zero import ZERO_TOLERANCE, clean_array
 from .assembly import TrainMatrices
 from .linear import Pseudoinverse, pseudoinverse
 
@@ -80,9 +80,9 @@ class SpeedSolver:
         """Speeds of the moving shafts (1/min): givens exactly, round-off of zero exactly 0."""
         g = np.asarray(values, dtype=float)
         s = self.operator
-        n = s @ g
-        terms = np.abs(s) @ np.abs(g)
-        n = np.where(np.abs(n) <= ZERO_TOLERANCE * terms, 0.0, n) + 0.0
+        n = clean_array(s @ g, np.abs(s) @ np.abs(g))
+        tiny = np.abs(n) < np.finfo(float).tiny  # subnormal next to the other speeds: zero
+        n = np.where(tiny & (np.abs(n) <= ZERO_TOLERANCE * np.max(np.abs(n), axis=0, initial=0.0)), 0.0, n) + 0.0
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
         return n
@@ -186,15 +186,19 @@ def _near_singular(mats: TrainMatrices, given: Sequence[str], system: Pseudoinve
 
 def check_speeds(mats: TrainMatrices, speeds: np.ndarray) -> None:
     """Raise NonFiniteResultError if a speed overflows (``speeds``: moving shafts, points trailing)."""
-    bad = ~np.isfinite(speeds)
+    size = np.abs(speeds)
+    bad = ~np.isfinite(speeds) | ((size < np.finfo(float).tiny) & (size > 0))
     if not bad.any():
         return
     where = np.argwhere(bad)[0]
     shaft = mats.train.moving_shafts[where[0]]
     point = f" at operating point {int(where[1])}" if speeds.ndim > 1 and speeds.shape[1] > 1 else ""
+    large = not np.isfinite(speeds[tuple(where)])
     raise NonFiniteResultError(
-        f"the speed of shaft {shaft!r}{point} overflows the floating-point range (about 1.8e308 1/min): "
-        "the given speeds are too large for the ratios of this train; give smaller speeds.",
+        f"the speed of shaft {shaft!r}{point} {'overflows' if large else 'underflows'} the floating-point "
+        "range (about 2.2e-308 to 1.8e308 1/min): the given speeds are too "
+        f"{'large' if large else 'small'} for the ratios of this train; give "
+        f"{'smaller' if large else 'larger'} speeds.",
         "speed", shaft,
     )
 

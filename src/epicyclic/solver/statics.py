@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import ContradictionError, NearSingularError, UnderdeterminedError
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, equilibrate, pseudoinverse
+from .linear import Pseudoinverse, pseudoinverse
 
 __all__ = ["TorqueSolver", "torque_solver"]
 
@@ -118,9 +118,7 @@ def torque_solver(mats: TrainMatrices, given: Sequence[str], pattern: Sequence[i
     key = None if pattern is None else tuple(int(w) for w in pattern)
     if ("torque", given, key) in mats.solvers:
         return mats.solvers[("torque", given, key)]
-    if ("scaling", given) not in mats.solvers:  # from the ideal equations; loss factors are near 1
-        mats.solvers[("scaling", given)] = equilibrate(_system(mats, given, None))
-    system = pseudoinverse(_system(mats, given, key), mats.solvers[("scaling", given)])
+    system = pseudoinverse(_system(mats, given, key))
     columns = mats.torque_columns
     free = system.free_columns()
     free_external = [columns[c][1] for c in free if columns[c][0] == "external"]
