@@ -40,9 +40,11 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from .zero import ZERO_TOLERANCE
+__all__ = ["PowerLoop", "Circulation", "circulation", "indeterminate_circulation", "CIRCULATION_FLOOR"]
 
-__all__ = ["PowerLoop", "Circulation", "circulation", "indeterminate_circulation"]
+#: Loops carrying less than this fraction of the largest element power are not reported: the zero
+#: rule (1e-12 of the neighbouring torques) can leave flows of that order, which are no circulation.
+CIRCULATION_FLOOR = 1e-9
 
 
 @dataclass(frozen=True)
@@ -177,7 +179,7 @@ def circulation(port_powers: Sequence[tuple[str, str, float]], input_power: floa
         source, target = (a, b) if power > 0 else (b, a)
         flow.setdefault(source, {})
         flow[source][target] = flow[source].get(target, 0.0) + abs(power)
-    floor = ZERO_TOLERANCE * largest
+    floor = CIRCULATION_FLOOR * largest
     loops: dict[tuple[str, ...], float] = {}
     while True:
         cycles = _simple_cycles(flow, floor)

@@ -47,7 +47,7 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
-from ..errors import NonFiniteResultError
+from ..errors import EpicyclicError, NonFiniteResultError
 from ..model.elements import HOUSING, Brake, Clutch, GearStage
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
@@ -74,19 +74,24 @@ class Lever:
         NonFiniteResultError
             η0^w overflows (an efficiency so small that 1/η0 is not a float).
         """
-        if w == 0 or self.efficiency == 1.0:
-            return self.ratio, 1.0 - self.ratio  # 1 − i0 is exact where it matters (Sterbenz)
-        i0, eta = Fraction(self.ratio), Fraction(self.efficiency)
-        k = i0 * eta if w > 0 else i0 / eta
-        try:
-            return float(k), float(1 - k)
-        except OverflowError:
-            raise NonFiniteResultError(
-                f"{self.element.name!r}: the stationary efficiency {self.efficiency!r} is too small to compute "
-                f"with (i0/η0 = {self.ratio!r}/{self.efficiency!r} overflows); give an efficiency of at least "
-                "1e-300, or 1 to ignore the losses of this element.",
-                "efficiency", self.element.name,
-            ) from None
+        return _factors(self.element.name, self.ratio, self.efficiency, int(w))
+
+
+@lru_cache(maxsize=4096)
+def _factors(name: str, ratio: float, efficiency: float, w: int) -> tuple[float, float]:
+    if w == 0 or efficiency == 1.0:
+        return ratio, 1.0 - ratio  # 1 − i0 is exact where it matters (Sterbenz)
+    i0, eta = Fraction(ratio), Fraction(efficiency)
+    k = i0 * eta if w > 0 else i0 / eta
+    try:
+        return float(k), float(1 - k)
+    except OverflowError:
+        raise NonFiniteResultError(
+            f"{name!r}: the stationary efficiency {efficiency!r} is too small to compute with "
+            f"(i0/η0 = {ratio!r}/{efficiency!r} overflows); give an efficiency of at least 1e-300, "
+            "or 1 to ignore the losses of this element.",
+            "efficiency", name,
+        ) from None
 
 
 @dataclass(frozen=True)
@@ -127,12 +132,21 @@ class Layout:
     port_columns: np.ndarray  # torque column of every port (order of port_shaft_columns)
     port_rows: np.ndarray  # shaft row of every port
     port_parts: np.ndarray  # part of every port
-    reacting: np.ndarray  # shafts with an external torque or reaction (externals, housing)
     external_rows: np.ndarray
     external_columns: np.ndarray
     lever_a_rows: np.ndarray
     lever_c_rows: np.ndarray
     lever_a_columns: np.ndarray
+    lever_b_columns: np.ndarray
+    lever_c_columns: np.ndarray
+    lever_factors: np.ndarray  # (levers, w + 1, 2): (i0·η0^w, 1 − i0·η0^w), NaN where η0^w overflows
+    link_first_columns: np.ndarray
+    link_second_columns: np.ndarray
+    part_starts: np.ndarray  # first port of every part (ports are grouped by part)
+    parts_at: tuple[tuple[int, ...], ...]  # per shaft row: the parts with a port there
+    ports_at: tuple[np.ndarray, ...]  # per shaft row: its ports
+    reacting_rows: tuple[int, ...]  # rows of shafts with an external torque or reaction
+    neighbours: tuple[np.ndarray, ...]  # per part: the parts sharing a moving shaft with it (itself included)
     efficiencies: np.ndarray
 
 
@@ -317,18 +331,47 @@ class TrainMatrices:
         part_names = [part.element.name for part in (*self.levers, *self.links)]
         part_index = {name: k for k, name in enumerate(part_names)}
         idx = self.torque_index
+        parts = (*self.levers, *self.links)
+        moving = [set(part.shafts) - {HOUSING} for part in parts]
+        neighbours = tuple(np.array([j for j, other in enumerate(moving) if j == k or mine & other], dtype=int)
+                           for k, mine in enumerate(moving))
+        port_rows = np.array([rows[s] for _, s, _ in ports], dtype=int)
+        reacting = [rows[s] for s in self.train.shafts if s in self.external or s == HOUSING]
+
+        def factors(lever: Lever) -> list[tuple[float, float]]:
+            out = []
+            for w in (-1, 0, 1):
+                try:
+                    out.append(lever.factors(w))
+                except EpicyclicError:  # 1/η0 overflows: never used, the solve would have said so
+                    out.append((np.nan, np.nan))
+            return out
+
+        def columns(names, port) -> np.ndarray:
+            return np.array([idx[("port", part.element.name, part.ports[port])] for part in names], dtype=int)
+
         return Layout(
             rows=rows,
             parts=len(part_names),
             port_columns=np.array([col for _, _, col in ports], dtype=int),
-            port_rows=np.array([rows[s] for _, s, _ in ports], dtype=int),
+            port_rows=port_rows,
             port_parts=np.array([part_index[name] for name, _, _ in ports], dtype=int),
-            reacting=np.array([s in self.external or s == HOUSING for s in self.train.shafts]),
             external_rows=np.array([rows[s] for s in self.external], dtype=int),
             external_columns=np.array([self.external_column(s) for s in self.external], dtype=int),
             lever_a_rows=np.array([rows[lv.shafts[0]] for lv in self.levers], dtype=int),
             lever_c_rows=np.array([rows[lv.shafts[2]] for lv in self.levers], dtype=int),
-            lever_a_columns=np.array([idx[("port", lv.element.name, lv.ports[0])] for lv in self.levers], dtype=int),
+            lever_a_columns=columns(self.levers, 0),
+            lever_b_columns=columns(self.levers, 1),
+            lever_c_columns=columns(self.levers, 2),
+            lever_factors=np.array([factors(lv) for lv in self.levers], dtype=float).reshape(len(self.levers), 3, 2),
+            link_first_columns=columns(self.links, 0),
+            link_second_columns=columns(self.links, 1),
+            part_starts=np.cumsum([0] + [len(part.ports) for part in parts[:-1]]).astype(int),
+            parts_at=tuple(tuple(sorted({part_index[name] for name, s, _ in ports if rows[s] == r}))
+                           for r in range(len(rows))),
+            ports_at=tuple(np.flatnonzero(port_rows == r) for r in range(len(rows))),
+            reacting_rows=tuple(reacting),
+            neighbours=neighbours,
             efficiencies=np.array([lv.efficiency for lv in self.levers], dtype=float),
         )
 

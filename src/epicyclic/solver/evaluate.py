@@ -4,9 +4,13 @@ The scalar solver and the batch solver both call :func:`evaluate`, with the
 operating points along the last axis of every array, so that they agree point
 for point.  Here the zero rule of :mod:`epicyclic.results.zero` is applied:
 
-* an element whose torques are round-off of the torques at its shafts (the
-  housing, which takes every element's reaction, aside) is idle (all its
-  torques exactly 0);
+* every element's torques keep its own ratios exactly (T_b = −i0·η0^w·T_a,
+  T_c = −(1 − i0·η0^w)·T_a, the two torques of a clutch or brake opposite),
+  and a port torque that is round-off of the element's largest is 0;
+* an element whose torques are round-off of the torques of the elements it
+  shares a shaft with (the housing, which takes every element's reaction,
+  aside) is idle (all its torques exactly 0), and so is an element whose
+  torques are round-off of the scale by which a neighbour was found idle;
 * a lever whose relative speed is round-off of its port speeds is locked
   (relative speed, rolling power and loss exactly 0);
 * external torques are the given values exactly, and elsewhere the balance of
@@ -59,7 +63,8 @@ class Evaluation:
         Sign of the rolling power (0 exactly where it is 0).
     direction : ndarray of int (levers, P)
         The loss direction w the torques were solved with where rolling power
-        flows, 0 where none flows (equal to ``pattern`` in a consistent solution).
+        flows, 0 where none flows (equal to ``pattern`` in a consistent solution,
+        and to it without losses).
     """
 
     speeds: np.ndarray
@@ -106,28 +111,44 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     points = speeds.shape[1:]
     x = np.array(x, dtype=float)
 
-    # idle elements: torques that are round-off of the torques at their shafts
+    used = np.zeros((len(mats.levers),) + points, dtype=int) if pattern is None else np.asarray(pattern, dtype=int)
+
+    # every element's torques exactly in its own ratios: T_b = −k_b·T_a, T_c = −k_c·T_a, link T_2 = −T_1
+    if len(mats.levers):
+        k_b = np.take_along_axis(lay.lever_factors[:, :, 0], used.reshape(len(mats.levers), -1) + 1, axis=1)
+        k_c = np.take_along_axis(lay.lever_factors[:, :, 1], used.reshape(len(mats.levers), -1) + 1, axis=1)
+        t_a = x[lay.lever_a_columns]
+        x[lay.lever_b_columns] = -k_b.reshape(t_a.shape) * t_a + 0.0
+        x[lay.lever_c_columns] = -k_c.reshape(t_a.shape) * t_a + 0.0
+    x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
+
+    # idle elements: torques that are round-off of the torques of the elements they share a shaft with
     port = x[lay.port_columns]
     size = np.abs(port)
-    shaft_scale = np.zeros((len(lay.rows),) + points)
-    np.maximum.at(shaft_scale, lay.port_rows, size)
-    for shaft, value in given.items():
-        shaft_scale[lay.rows[shaft]] = np.maximum(shaft_scale[lay.rows[shaft]], np.abs(value))
-    shaft_scale[-1] = 0.0  # the housing takes every reaction: not a scale for any one element
-    own = np.zeros((lay.parts,) + points)
-    np.maximum.at(own, lay.port_parts, size)
-    scale = np.zeros((lay.parts,) + points)
-    np.maximum.at(scale, lay.port_parts, shaft_scale[lay.port_rows])
+    own = np.maximum.reduceat(size, lay.part_starts, axis=0) if lay.parts else np.zeros((0,) + points)
+    scale = np.array([np.max(own[n], axis=0) for n in lay.neighbours]).reshape(own.shape)
+    for shaft, value in given.items():  # a given torque at one of its shafts
+        for k in lay.parts_at[lay.rows[shaft]]:
+            scale[k] = np.maximum(scale[k], np.abs(value))
     idle = own <= ZERO_TOLERANCE * scale
-    port = np.where(idle[lay.port_parts], 0.0, port) + 0.0
+    # an idle element hands the scale it was judged by on to its neighbours (an isolated group of
+    # elements that only a now-idle element joined to the rest is round-off of the same scale)
+    for _ in range(lay.parts):
+        inherited = np.where(idle, scale, 0.0)
+        reach = np.array([np.max(inherited[n], axis=0) for n in lay.neighbours]).reshape(scale.shape)
+        more = ~idle & (own <= ZERO_TOLERANCE * reach)
+        if not more.any():
+            break
+        scale = np.maximum(scale, np.where(more, reach, 0.0))
+        idle |= more
+    port = np.where(idle[lay.port_parts], 0.0, clean_array(port, own[lay.port_parts])) + 0.0
     x[lay.port_columns] = port
 
     # external torques: given exactly, else the balance of the port torques on the shaft
-    total = np.zeros((len(lay.rows),) + points)
-    np.add.at(total, lay.port_rows, port)
-    terms = np.zeros((len(lay.rows),) + points)
-    np.maximum.at(terms, lay.port_rows, np.abs(port))
-    torques = np.where(lay.reacting[(slice(None),) + (None,) * len(points)], clean_array(total, terms), 0.0)
+    torques = np.zeros((len(lay.rows),) + points)
+    for row in lay.reacting_rows:
+        at = port[lay.ports_at[row]]
+        torques[row] = clean_array(np.sum(at, axis=0), np.max(np.abs(at), axis=0)) if len(at) else 0.0
     for shaft, value in given.items():
         torques[lay.rows[shaft]] = value
     x[lay.external_columns] = torques[lay.external_rows]
@@ -139,14 +160,13 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     t_a = x[lay.lever_a_columns]
     rolling = t_a * relative * RPM_TO_RAD_S + 0.0
     coupling = t_a * c * RPM_TO_RAD_S + 0.0
-    used = np.zeros(rolling.shape, dtype=int) if pattern is None else np.asarray(pattern, dtype=int)
     eta = lay.efficiencies[(slice(None),) + (None,) * len(points)]
     factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
     loss = rolling * (1.0 - factor) + 0.0
     x[lay.port_columns] = _flush(x[lay.port_columns])
     torques, powers, rolling, coupling, loss = (_flush(a) for a in (torques, powers, rolling, coupling, loss))
     observed = np.sign(rolling).astype(int)
-    direction = np.where(observed == 0, 0, used)
+    direction = observed if pattern is None else np.where(observed == 0, 0, used)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction)
 
 
@@ -164,18 +184,17 @@ def _flush(values: np.ndarray) -> np.ndarray:
 
 def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
     """Raise :class:`~epicyclic.errors.NonFiniteResultError` naming the first quantity that over- or underflows."""
-    shafts = mats.train.shafts
+    arrays = (ev.speeds, ev.x[mats.layout.port_columns], ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)
+    every = np.concatenate([a.ravel() for a in arrays])
+    size = np.abs(every)
+    if np.all(np.isfinite(every)) and not np.any((size < _TINY) & (size > 0)):
+        return
+    shafts = [f"shaft {s!r}" for s in mats.train.shafts]
     ports = [f"{element!r} at shaft {shaft!r}" for element, shaft, _ in mats.port_shaft_columns]
     levers = [repr(lever.element.name) for lever in mats.levers]
-    port_rows = [col for _, _, col in mats.port_shaft_columns]
-    for quantity, array, labels, unit in (
-        ("speed", ev.speeds, [f"shaft {s!r}" for s in shafts], "1/min"),
-        ("torque", ev.x[port_rows], ports, "N·m"),
-        ("torque", ev.torques, [f"shaft {s!r}" for s in shafts], "N·m"),
-        ("power", ev.powers, [f"shaft {s!r}" for s in shafts], "W"),
-        ("rolling power", ev.rolling, levers, "W"),
-        ("coupling power", ev.coupling, levers, "W"),
-        ("loss", ev.loss, levers, "W"),
+    for quantity, array, labels, unit in zip(
+        ("speed", "torque", "torque", "power", "rolling power", "coupling power", "loss"), arrays,
+        (shafts, ports, shafts, shafts, levers, levers, levers), ("1/min", "N·m", "N·m", "W", "W", "W", "W"),
     ):
         size = np.abs(array)
         bad = ~np.isfinite(array) | ((size < _TINY) & (size > 0))

@@ -27,7 +27,7 @@ from ..errors import ContradictionError, NearSingularError, NonFiniteResultError
 from ..model.elements import HOUSING
 from ..results.zero import ZERO_TOLERANCE, clean_array
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, pseudoinverse
+from .linear import Pseudoinverse, pseudoinverse, unreached_columns
 
 __all__ = ["SpeedSolver", "speed_solver", "degrees_of_freedom", "free_speed_shafts", "solve_speeds", "check_speeds"]
 
@@ -74,6 +74,7 @@ class SpeedSolver:
         s = self.system.solve(unit)
         for shaft in self.mats.held_shafts:
             s[self.mats.speed_index[shaft]] = 0.0
+        s[unreached_columns(self.mats.kinematics, [self.mats.speed_index[g] for g in self.given])] = 0.0
         return s
 
     def speeds(self, values: Sequence[float] | np.ndarray) -> np.ndarray:

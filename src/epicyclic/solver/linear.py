@@ -36,8 +36,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "RANK_TOLERANCE", "NEAR_SINGULAR",
-           "RELATIVE_TOLERANCE"]
+__all__ = ["Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "unreached_columns", "RANK_TOLERANCE",
+           "NEAR_SINGULAR", "RELATIVE_TOLERANCE"]
 
 #: Relative singular values at or below this are exact zeros (round-off of an exact dependence).
 RANK_TOLERANCE = 1e-13
@@ -203,3 +203,25 @@ def rank(matrix: np.ndarray) -> int:
     r, c = equilibrate(matrix)
     s = np.linalg.svd(matrix * r[:, None] * c[None, :], compute_uv=False)
     return int(np.sum(s > RANK_TOLERANCE * s[0])) if s[0] > 0 else 0
+
+
+def unreached_columns(matrix: np.ndarray, sources: list[int]) -> np.ndarray:
+    """Columns of ``matrix`` that no row chain joins to a column in ``sources``.
+
+    The equations A x = 0 fall apart into blocks that share no unknown; a block
+    that holds none of the given unknowns (``sources``) has the solution 0,
+    exactly, and its unknowns are set so instead of to round-off.
+
+    >>> unreached_columns(np.array([[1.0, -2.0, 0.0], [0.0, 0.0, 1.0]]), [0]).tolist()
+    [2]
+    """
+    a = np.asarray(matrix) != 0
+    n = a.shape[1]
+    reached = np.zeros(n, dtype=bool)
+    reached[list(sources)] = True
+    while True:
+        rows = a[:, reached].any(axis=1)
+        grown = reached | a[rows].any(axis=0)
+        if (grown == reached).all():
+            return np.flatnonzero(~reached)
+        reached = grown

@@ -12,7 +12,9 @@ solution agrees with.  Round-off
 its limit is self-locking.
 
 The threshold of an element is the η0 (others unchanged) at which η_f crosses
-the margin, found by bisection on the same equations.
+the margin: η0 enters the equations through one rank-one change, so η_f is a
+Möbius function of i0·η0^w, fixed by three solves and checked on both sides
+of its crossing (bisection where that check fails).
 
 References
 ----------
@@ -109,32 +111,63 @@ def formal_efficiency(mats: TrainMatrices, given, values, speeds, pattern, solut
 
 
 def _thresholds(mats, given, values, speeds, pattern, solution) -> dict[str, float]:
-    """Per lossy element: the η0 at which the formal efficiency crosses the margin."""
+    """Per lossy element: the η0 at which the formal efficiency crosses the margin (others unchanged)."""
     out: dict[str, float] = {}
     for k, lever in enumerate(mats.levers):
-        if lever.efficiency == 1.0 or pattern[k] == 0:
+        w = int(pattern[k])
+        if lever.efficiency == 1.0 or w == 0:
             continue
 
-        def efficiency(eta: float) -> float:
+        def efficiency(eta: float, name: str = lever.element.name) -> float:
             try:
-                value = formal_efficiency(mats, given, values, speeds, pattern, solution, {lever.element.name: eta})
+                value = formal_efficiency(mats, given, values, speeds, pattern, solution, {name: eta})
             except EpicyclicError:  # singular (or nearly) exactly at the threshold
                 return 0.0
             return -np.inf if value is None else value
 
-        hi = 1.0
-        if efficiency(hi) <= SELF_LOCKING_MARGIN:
-            continue
-        lo = lever.efficiency
-        if efficiency(lo) > SELF_LOCKING_MARGIN:
-            continue
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            if efficiency(mid) > SELF_LOCKING_MARGIN:
-                hi = mid
-            else:
-                lo = mid
-            if hi - lo <= 1e-15:
-                break
-        out[lever.element.name] = 0.5 * (lo + hi)
+        if efficiency(1.0) <= SELF_LOCKING_MARGIN or efficiency(lever.efficiency) > SELF_LOCKING_MARGIN:
+            continue  # locks even without this element's loss, or does not lock because of it
+        eta = _moebius_crossing(efficiency, lever.ratio, w, lever.efficiency)
+        out[lever.element.name] = eta if eta is not None else _bisection(efficiency, lever.efficiency)
     return out
+
+
+def _moebius_crossing(efficiency, ratio: float, w: int, low: float) -> float | None:
+    """The η0 where ``efficiency`` crosses the margin, from three samples.
+
+    η0 enters the equations only through k = i0·η0^w, in one column of the
+    matrix (a rank-one change), so the formal efficiency is a Möbius function
+    (p1 + q1·k)/(p2 + q2·k) of k: three samples fix it, its crossing is
+    closed-form.  Checked on both sides; None if the samples do not fit.
+    """
+    etas = (1.0, 0.5 * (1.0 + low), low + 0.25 * (1.0 - low))
+    ks = [ratio * e**w for e in etas]
+    ys = [efficiency(e) for e in etas]
+    if not all(np.isfinite(ys)):
+        return None
+    rows = np.array([[1.0, kk, -y, -y * kk] for kk, y in zip(ks, ys)])
+    p1, q1, p2, q2 = np.linalg.svd(rows)[2][-1]
+    m = SELF_LOCKING_MARGIN
+    if q1 - m * q2 == 0:
+        return None
+    k_star = (m * p2 - p1) / (q1 - m * q2)
+    eta = (k_star / ratio) ** w if k_star / ratio > 0 else None
+    if eta is None or not low < eta < 1.0:
+        return None
+    step = 1e-9 * eta
+    if efficiency(min(eta + step, 1.0)) > m and efficiency(max(eta - step, low)) <= m:
+        return float(eta)
+    return None
+
+
+def _bisection(efficiency, low: float) -> float:
+    lo, hi = low, 1.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if efficiency(mid) > SELF_LOCKING_MARGIN:
+            hi = mid
+        else:
+            lo = mid
+        if hi - lo <= 1e-15:
+            break
+    return 0.5 * (lo + hi)

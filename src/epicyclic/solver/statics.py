@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import ContradictionError, NearSingularError, UnderdeterminedError
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, pseudoinverse
+from .linear import Pseudoinverse, pseudoinverse, unreached_columns
 
 __all__ = ["TorqueSolver", "torque_solver"]
 
@@ -61,6 +61,8 @@ class TorqueSolver:
         unit[rows:] = np.eye(len(self.given))
         s = self.system.solve(unit)
         s[self.mats.idle_columns(self.pattern)] = 0.0
+        s[unreached_columns(self.mats.statics(self.pattern),
+                            [self.mats.external_column(g) for g in self.given])] = 0.0
         return s
 
     def torques(self, values: Sequence[float] | np.ndarray) -> np.ndarray:

@@ -26,15 +26,15 @@ import itertools
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
 from ..model.train import GearTrain
 from ..solver.assembly import matrices
 from ..solver.linear import RELATIVE_TOLERANCE
+from .errors import ShiftScheduleError
 from .results import RATIO_TOLERANCE, classify
-from .transmission import ShiftScheduleError, Transmission
 
 __all__ = ["Combination", "Exploration", "explore"]
 
@@ -160,6 +160,16 @@ class Exploration:
                 f"{len(self.distinct_ratios)} distinct ratios from {self.states} states>")
 
 
+class Scheduled(Protocol):
+    """What :func:`explore` reads of a :class:`~epicyclic.transmission.Transmission`."""
+
+    train: GearTrain
+    input: str
+    output: str
+    name: str
+    schedule: Any
+
+
 def _rank(matrix: np.ndarray) -> int:
     if matrix.shape[0] == 0:
         return 0
@@ -168,7 +178,7 @@ def _rank(matrix: np.ndarray) -> int:
 
 
 def explore(
-    transmission: Transmission | GearTrain,
+    transmission: Scheduled | GearTrain,
     input: str | None = None,
     output: str | None = None,
     *,
@@ -207,7 +217,7 @@ def explore(
     """
     start = time.perf_counter()
     schedule: dict[frozenset, str] = {}
-    if isinstance(transmission, Transmission):
+    if not isinstance(transmission, GearTrain) and isinstance(getattr(transmission, "train", None), GearTrain):
         train = transmission.train
         input = input or transmission.input
         output = output or transmission.output

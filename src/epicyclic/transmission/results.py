@@ -18,14 +18,20 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 from ..model.elements import Clutch
 from ..model.planetary import PlanetarySet
 from ..results.solution import Solution
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .transmission import Transmission
+
+class Scheduled(Protocol):
+    """What the results read of a :class:`~epicyclic.transmission.Transmission`."""
+
+    train: Any
+    input: str
+    output: str
+    schedule: Any
 
 __all__ = ["GearResult", "TransmissionAnalysis", "gear_result"]
 
@@ -159,7 +165,7 @@ def classify(ratio: float) -> str:
     return "overdrive" if ratio < 1.0 else "reduction"
 
 
-def _element_torques(t: Transmission, solution: Solution, input_torque: float) -> dict[str, float]:
+def _element_torques(t: Scheduled, solution: Solution, input_torque: float) -> dict[str, float]:
     out = {}
     for element in t.train.shift_elements:
         state = solution.elements[element.name]
@@ -169,7 +175,7 @@ def _element_torques(t: Transmission, solution: Solution, input_torque: float) -
     return out
 
 
-def gear_result(t: Transmission, gear: str, ratio: float, drive: Solution, coast: Solution) -> GearResult:
+def gear_result(t: Scheduled, gear: str, ratio: float, drive: Solution, coast: Solution) -> GearResult:
     """Assemble a :class:`GearResult` from the drive and coast solutions of ``gear``."""
     n_in = drive.speed(t.input)
     m_in = drive.torque(t.input)
