@@ -28,8 +28,9 @@ power T_a·(ω_a − ω_c): η0 acts in the direction power flows relative to th
 carrier, and w = 0 (no rolling power: an idling or locked set) carries no loss.
 
 Structure known before any number: shafts the train holds still (a brake, a
-clutch to such a shaft, a stage from one, a set with two such members) have
-speed exactly 0, and ports that can carry no torque (a shaft with no external
+clutch to such a shaft, a stage from one, a set with two such members, a set
+locked with one) have speed exactly 0, shafts the train makes turn together
+(clutches, locked sets) have exactly the same speed, and ports that can carry no torque (a shaft with no external
 torque and one live port, and whatever that makes idle in turn) have torque
 exactly 0; the solver sets these exactly instead of computing round-off.
 
@@ -40,7 +41,7 @@ Brandenberger 1952, eqs. 1, 2, 3', 7 and 7'; Queitsch, eqs. 12 and 26.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cached_property, lru_cache
@@ -144,9 +145,11 @@ class Layout:
     link_second_columns: np.ndarray
     part_starts: np.ndarray  # first port of every part (ports are grouped by part)
     parts_at: tuple[tuple[int, ...], ...]  # per shaft row: the parts with a port there
-    ports_at: tuple[np.ndarray, ...]  # per shaft row: its ports
-    reacting_rows: tuple[int, ...]  # rows of shafts with an external torque or reaction
-    neighbours: tuple[np.ndarray, ...]  # per part: the parts sharing a moving shaft with it (itself included)
+    reacting_rows: np.ndarray  # rows of shafts with an external torque or reaction and a port
+    reacting_ports: np.ndarray  # their ports, grouped by shaft
+    reacting_starts: np.ndarray  # first of each group
+    neighbours: np.ndarray  # (parts, most): the parts sharing a moving shaft with each (itself included),
+    #                         padded with the index ``parts`` (no part)
     efficiencies: np.ndarray
 
 
@@ -182,23 +185,48 @@ class TrainMatrices:
         return {s: k for k, s in enumerate(self.train.moving_shafts)}
 
     @cached_property
-    def held_shafts(self) -> frozenset[str]:
-        """Moving shafts that the train itself holds still, whatever speeds are given.
+    def speed_classes(self) -> dict[str, str]:
+        """Every shaft → the shaft that represents all shafts turning at exactly its speed.
 
-        A brake (or clutch) to a held shaft, a stage from one, a set with two held
-        members: Willis' equation then leaves only 0 for the third.
+        The representative is the housing for the shafts the train holds still, else the first
+        shaft of the class in train order.
+
+        Clutches and brakes join two shafts; a set (or stage) with two members
+        turning together turns as a block (Willis: n_a = n_c gives n_b = n_c), so
+        its third member joins them.  The housing's class holds the shafts the
+        train holds still: a brake, a stage from a held shaft, a set with two held
+        members, a set locked with a held member.
         """
-        held = {HOUSING}
+        parent = {s: s for s in self.train.shafts}
+
+        def find(s: str) -> str:
+            while parent[s] != s:
+                parent[s] = parent[parent[s]]
+                s = parent[s]
+            return s
+
+        def union(members) -> bool:
+            roots = sorted({find(m) for m in members}, key=lambda r: (r != HOUSING, self.train.shafts.index(r)))
+            for r in roots[1:]:
+                parent[r] = roots[0]
+            return len(roots) > 1
+
         changed = True
         while changed:
             changed = False
-            for part in (*self.links, *self.levers):
-                shafts = set(part.shafts)
-                inside = shafts & held
-                if inside and len(shafts - held) == 1 and len(inside) >= len(shafts) - 1:
-                    held |= shafts
-                    changed = True
-        return frozenset(held - {HOUSING})
+            for link in self.links:
+                changed |= union(link.shafts)
+            for lever in self.levers:
+                roots = [find(s) for s in lever.shafts]
+                if len(set(roots)) < 3:
+                    changed |= union(lever.shafts)
+        return {s: find(s) for s in self.train.shafts}
+
+    @cached_property
+    def held_shafts(self) -> frozenset[str]:
+        """Moving shafts that the train itself holds still, whatever speeds are given."""
+        classes = self.speed_classes
+        return frozenset(s for s in self.train.moving_shafts if classes[s] == classes[HOUSING])
 
     # --------------------------------------------------------------- kinematics
     @cached_property
@@ -284,13 +312,20 @@ class TrainMatrices:
                 out.append((part.element.name, shaft, idx[("port", part.element.name, port)]))
         return out
 
-    def statics(self, pattern: Sequence[int] | np.ndarray | None = None) -> np.ndarray:
-        """Static rows for a loss-direction pattern w (one entry per lever; None = ideal)."""
+    def statics(self, pattern: Sequence[int] | np.ndarray | None = None,
+                efficiencies: Mapping[str, float] | None = None) -> np.ndarray:
+        """Static rows for a loss-direction pattern w (one entry per lever; None = ideal).
+
+        ``efficiencies`` (element name → η0) replaces the stationary efficiency
+        of some levers (used to find self-locking thresholds).
+        """
         template, slots = self._statics_template
         matrix = template.copy()
         if pattern is not None:
             for (row, col, k), w in zip(slots, pattern):
-                matrix[row, col], matrix[row + 1, col] = self.levers[k].factors(int(w))
+                lever = self.levers[k]
+                eta = (efficiencies or {}).get(lever.element.name, lever.efficiency)
+                matrix[row, col], matrix[row + 1, col] = _factors(lever.element.name, lever.ratio, eta, int(w))
         return matrix
 
     def idle_columns(self, pattern: Sequence[int] | np.ndarray | None = None) -> list[int]:
@@ -333,10 +368,13 @@ class TrainMatrices:
         idx = self.torque_index
         parts = (*self.levers, *self.links)
         moving = [set(part.shafts) - {HOUSING} for part in parts]
-        neighbours = tuple(np.array([j for j, other in enumerate(moving) if j == k or mine & other], dtype=int)
-                           for k, mine in enumerate(moving))
+        near = [[j for j, other in enumerate(moving) if j == k or mine & other] for k, mine in enumerate(moving)]
+        most = max((len(n) for n in near), default=0)
+        neighbours = np.array([n + [len(parts)] * (most - len(n)) for n in near], dtype=int).reshape(len(parts), most)
         port_rows = np.array([rows[s] for _, s, _ in ports], dtype=int)
-        reacting = [rows[s] for s in self.train.shafts if s in self.external or s == HOUSING]
+        reacting = [rows[s] for s in self.train.shafts
+                    if (s in self.external or s == HOUSING) and np.any(port_rows == rows[s])]
+        groups = [np.flatnonzero(port_rows == r) for r in reacting]
 
         def factors(lever: Lever) -> list[tuple[float, float]]:
             out = []
@@ -369,8 +407,9 @@ class TrainMatrices:
             part_starts=np.cumsum([0] + [len(part.ports) for part in parts[:-1]]).astype(int),
             parts_at=tuple(tuple(sorted({part_index[name] for name, s, _ in ports if rows[s] == r}))
                            for r in range(len(rows))),
-            ports_at=tuple(np.flatnonzero(port_rows == r) for r in range(len(rows))),
-            reacting_rows=tuple(reacting),
+            reacting_rows=np.array(reacting, dtype=int),
+            reacting_ports=np.concatenate(groups).astype(int) if groups else np.zeros(0, dtype=int),
+            reacting_starts=np.cumsum([0] + [len(g) for g in groups[:-1]]).astype(int),
             neighbours=neighbours,
             efficiencies=np.array([lv.efficiency for lv in self.levers], dtype=float),
         )

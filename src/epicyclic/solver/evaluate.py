@@ -126,29 +126,32 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     port = x[lay.port_columns]
     size = np.abs(port)
     own = np.maximum.reduceat(size, lay.part_starts, axis=0) if lay.parts else np.zeros((0,) + points)
-    scale = np.array([np.max(own[n], axis=0) for n in lay.neighbours]).reshape(own.shape)
+    padded = np.zeros((lay.parts + 1,) + points)  # the last row: no neighbour
+    padded[:-1] = own
+    scale = np.max(padded[lay.neighbours], axis=1) if lay.parts else own
     for shaft, value in given.items():  # a given torque at one of its shafts
         for k in lay.parts_at[lay.rows[shaft]]:
             scale[k] = np.maximum(scale[k], np.abs(value))
     idle = own <= ZERO_TOLERANCE * scale
     # an idle element hands the scale it was judged by on to its neighbours (an isolated group of
     # elements that only a now-idle element joined to the rest is round-off of the same scale)
-    for _ in range(lay.parts):
-        inherited = np.where(idle, scale, 0.0)
-        reach = np.array([np.max(inherited[n], axis=0) for n in lay.neighbours]).reshape(scale.shape)
-        more = ~idle & (own <= ZERO_TOLERANCE * reach)
-        if not more.any():
+    for _ in range(lay.parts if idle.any() else 0):
+        padded[:-1] = np.where(idle, scale, 0.0)
+        reach = np.max(padded[lay.neighbours], axis=1)
+        grown = np.where(idle | (own <= ZERO_TOLERANCE * reach), np.maximum(scale, reach), scale)
+        more = own <= ZERO_TOLERANCE * grown
+        if (more == idle).all() and (grown == scale).all():
             break
-        scale = np.maximum(scale, np.where(more, reach, 0.0))
-        idle |= more
+        scale, idle = grown, idle | more
     port = np.where(idle[lay.port_parts], 0.0, clean_array(port, own[lay.port_parts])) + 0.0
     x[lay.port_columns] = port
 
     # external torques: given exactly, else the balance of the port torques on the shaft
     torques = np.zeros((len(lay.rows),) + points)
-    for row in lay.reacting_rows:
-        at = port[lay.ports_at[row]]
-        torques[row] = clean_array(np.sum(at, axis=0), np.max(np.abs(at), axis=0)) if len(at) else 0.0
+    if len(lay.reacting_rows):
+        ordered = port[lay.reacting_ports]
+        torques[lay.reacting_rows] = clean_array(np.add.reduceat(ordered, lay.reacting_starts, axis=0),
+                                                 np.maximum.reduceat(np.abs(ordered), lay.reacting_starts, axis=0))
     for shaft, value in given.items():
         torques[lay.rows[shaft]] = value
     x[lay.external_columns] = torques[lay.external_rows]

@@ -72,21 +72,31 @@ class SpeedSolver:
         unit = np.zeros((self.system.matrix.shape[0], len(self.given)))
         unit[rows:] = np.eye(len(self.given))
         s = self.system.solve(unit)
-        for shaft in self.mats.held_shafts:
-            s[self.mats.speed_index[shaft]] = 0.0
         s[unreached_columns(self.mats.kinematics, [self.mats.speed_index[g] for g in self.given])] = 0.0
-        return s
+        follow = self._representatives
+        return np.where((follow >= 0)[:, None], s[np.maximum(follow, 0)], 0.0)
+
+    @cached_property
+    def _representatives(self) -> np.ndarray:
+        """Per moving shaft: the column whose speed it has exactly (a given shaft of its class if
+        there is one), or −1 where the train holds it still."""
+        index = self.mats.speed_index
+        classes = self.mats.speed_classes
+        chosen = {classes[g]: g for g in reversed(self.given)}
+        return np.array([-1 if classes[s] == HOUSING else index[chosen.get(classes[s], classes[s])]
+                         for s in self.mats.train.moving_shafts], dtype=int)
 
     def speeds(self, values: Sequence[float] | np.ndarray) -> np.ndarray:
         """Speeds of the moving shafts (1/min): givens exactly, round-off of zero exactly 0."""
         g = np.asarray(values, dtype=float)
         s = self.operator
         n = clean_array(s @ g, np.abs(s) @ np.abs(g))
-        tiny = np.abs(n) < np.finfo(float).tiny  # subnormal next to the other speeds: zero
-        n = np.where(tiny & (np.abs(n) <= ZERO_TOLERANCE * np.max(np.abs(n), axis=0, initial=0.0)), 0.0, n) + 0.0
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
-        return n
+        follow = self._representatives  # shafts turning together: bit for bit the same speed
+        n = np.where((follow >= 0).reshape((-1,) + (1,) * (n.ndim - 1)), n[np.maximum(follow, 0)], 0.0) + 0.0
+        tiny = np.abs(n) < np.finfo(float).tiny  # subnormal next to the other speeds: zero
+        return np.where(tiny & (np.abs(n) <= ZERO_TOLERANCE * np.max(np.abs(n), axis=0, initial=0.0)), 0.0, n) + 0.0
 
     def check(self, values: Sequence[float] | np.ndarray, speeds: np.ndarray) -> None:
         """Raise ContradictionError if the given speeds violate the constraints."""

@@ -37,14 +37,12 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = ["Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "unreached_columns", "RANK_TOLERANCE",
-           "NEAR_SINGULAR", "RELATIVE_TOLERANCE"]
+           "NEAR_SINGULAR"]
 
 #: Relative singular values at or below this are exact zeros (round-off of an exact dependence).
 RANK_TOLERANCE = 1e-13
 #: Relative singular values at or below this (and above RANK_TOLERANCE) are too close to singular.
 NEAR_SINGULAR = 1e-10
-#: Former name of :data:`RANK_TOLERANCE` (kept for callers that count a rank).
-RELATIVE_TOLERANCE = RANK_TOLERANCE
 
 
 def equilibrate(matrix: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

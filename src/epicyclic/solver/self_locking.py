@@ -23,16 +23,14 @@ Brandenberger 1952, text to Bild 9 (self-locking where M3' = 0, η = bd/ac).
 
 from __future__ import annotations
 
-from dataclasses import replace
 from types import MappingProxyType
 
 import numpy as np
 
 from ..errors import EpicyclicError
-from ..results.solution import SelfLocking, Solution
+from ..results.solution import RPM_TO_RAD_S, SelfLocking, Solution
 from .assembly import TrainMatrices
-from .evaluate import evaluate
-from .statics import torque_solver
+from .linear import pseudoinverse
 
 __all__ = ["SELF_LOCKING_MARGIN", "self_locking", "formal_efficiency"]
 
@@ -89,19 +87,22 @@ def self_locking(solution: Solution, consistent: bool, mats: TrainMatrices, give
 
 
 def formal_efficiency(mats: TrainMatrices, given, values, speeds, pattern, solution, etas=None) -> float | None:
-    """Efficiency from the loss rule with ``pattern`` held fixed (may be ≤ 0); None if no power flows."""
-    if etas is not None:
-        levers = tuple(replace(lv, efficiency=etas.get(lv.element.name, lv.efficiency)) for lv in mats.levers)
-        clone = TrainMatrices(mats.train, mats.external)
-        clone.__dict__["_parts"] = (levers, mats.links)
-        mats = clone
-    solver = torque_solver(mats, given, pattern)
-    x = solver.torques(values)
-    ev = evaluate(mats, speeds, x[:, None], np.asarray(pattern)[:, None],
-                  {s: np.array([v]) for s, v in zip(given, values)})
+    """Efficiency from the loss rule with ``pattern`` held fixed (may be ≤ 0); None if no power flows.
+
+    ``etas`` (element → η0) replaces stationary efficiencies.  Computed straight from the equations
+    (no zero rule): it is compared with the margin only.
+    """
+    matrix = mats.statics(pattern, etas)
+    rows = np.zeros((len(given), matrix.shape[1]))
+    for r, shaft in enumerate(given):
+        rows[r, mats.external_column(shaft)] = 1.0
+    system = pseudoinverse(np.vstack([matrix, rows]))
+    x = system.solve(np.concatenate([np.zeros(matrix.shape[0]), np.asarray(values, dtype=float)]))
     shafts = mats.train.shafts
-    drive = sum(ev.powers[k, 0] for k, s in enumerate(shafts) if solution.shafts[s].role == "drive")
-    load = -sum(ev.powers[k, 0] for k, s in enumerate(shafts) if solution.shafts[s].role == "load")
+    powers = {s: x[mats.external_column(s)] * speeds[k, 0] * RPM_TO_RAD_S
+              for k, s in enumerate(shafts) if s in mats.external}
+    drive = sum(p for s, p in powers.items() if solution.shafts[s].role == "drive")
+    load = -sum(p for s, p in powers.items() if solution.shafts[s].role == "load")
     if drive == 0.0 and load == 0.0:
         return None
     # The ratio is invariant to which side's torque is given (a load torque makes both signs flip).

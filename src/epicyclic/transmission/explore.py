@@ -32,7 +32,6 @@ import numpy as np
 
 from ..model.train import GearTrain
 from ..solver.assembly import matrices
-from ..solver.linear import RELATIVE_TOLERANCE
 from .errors import ShiftScheduleError
 from .results import RATIO_TOLERANCE, classify
 
@@ -170,11 +169,16 @@ class Scheduled(Protocol):
     schedule: Any
 
 
+#: Singular values below this fraction of the largest count as zero (unscaled kinematic rows: ratios of
+#: real transmissions are within a few decades of 1, and the search tries up to 2^20 states).
+_RANK_TOLERANCE = 1e-10
+
+
 def _rank(matrix: np.ndarray) -> int:
     if matrix.shape[0] == 0:
         return 0
     s = np.linalg.svd(matrix, compute_uv=False)
-    return int(np.sum(s > RELATIVE_TOLERANCE * max(s[0], 1e-300))) if s.size and s[0] > 0 else 0
+    return int(np.sum(s > _RANK_TOLERANCE * max(s[0], 1e-300))) if s.size and s[0] > 0 else 0
 
 
 def explore(
