@@ -328,6 +328,13 @@ class TrainMatrices:
                 matrix[row, col], matrix[row + 1, col] = _factors(lever.element.name, lever.ratio, eta, int(w))
         return matrix
 
+    @cached_property
+    def _ports_at_internal_shafts(self) -> list[list[tuple[int, int]]]:
+        """Per moving shaft without external torque: its ports as (part index, port index)."""
+        parts = [*self.levers, *self.links]
+        return [[(k, j) for k, part in enumerate(parts) for j, s in enumerate(part.shafts) if s == shaft]
+                for shaft in self.train.moving_shafts if shaft not in self.external]
+
     def idle_columns(self, pattern: Sequence[int] | np.ndarray | None = None) -> list[int]:
         """Port columns whose torque is exactly 0 for any given torque (idle elements).
 
@@ -339,15 +346,13 @@ class TrainMatrices:
         parts = [*self.levers, *self.links]
         factors = [lever.factors(0 if pattern is None else int(w))
                    for lever, w in zip(self.levers, pattern if pattern is not None else [0] * len(self.levers))]
+        at_shaft = self._ports_at_internal_shafts
         idle: set[int] = set()  # indices into parts
         changed = True
         while changed:
             changed = False
-            for shaft in self.train.moving_shafts:
-                if shaft in self.external:
-                    continue
-                live = [(k, j) for k, part in enumerate(parts) if k not in idle
-                        for j, s in enumerate(part.shafts) if s == shaft]
+            for ports in at_shaft:
+                live = [(k, j) for k, j in ports if k not in idle]
                 if len(live) != 1:
                     continue
                 k, j = live[0]

@@ -83,11 +83,10 @@ def equilibrate(matrix: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     # normal equations of the least-squares problem; the tiny ridge fixes the gauge (ρ + t, γ − t)
     logs = -np.log2(np.abs(a[rows, cols]))
     normal = np.zeros((m + n, m + n))
-    np.add.at(normal, (rows, rows), 1.0)
-    np.add.at(normal, (m + cols, m + cols), 1.0)
-    np.add.at(normal, (rows, m + cols), 1.0)
-    np.add.at(normal, (m + cols, rows), 1.0)
-    normal[np.diag_indices(m + n)] += 1e-9
+    normal[rows, m + cols] = 1.0  # each non-zero once
+    normal[m + cols, rows] = 1.0
+    normal[np.diag_indices(m + n)] = np.concatenate([np.bincount(rows, minlength=m),
+                                                     np.bincount(cols, minlength=n)]) + 1e-9
     rhs = np.concatenate([np.bincount(rows, logs, m), np.bincount(cols, logs, n)])
     scale = np.exp2(np.round(np.linalg.solve(normal, rhs)))
     return scale[:m], scale[m:]
