@@ -167,3 +167,21 @@ def test_tiny_efficiency_is_computed_or_named():
         solve(train, OperatingPoint(speeds={"carrier": 1000.0}, torques={"carrier": 10.0}, drives=["carrier"],
                                     loads=["sun"]))
     assert info.value.quantity == "efficiency" and info.value.where == "P"
+
+
+def test_a_better_eta0_can_open_a_lossy_path():
+    # Not a round-off effect: Brandenberger's rule itself.  P0 (sun in, ring out, carrier x2, i0 = 2)
+    # and P1 (sun in, ring x2, carrier x0 held, i0 = 1.25), both η0.  Hand calculation (Brandenberger
+    # eqs. 1, 2, 7): n_x2 = n_in/1.25 = 8, n_out = 9 for n_in = 10; w = +1 for both.  T_c0 =
+    # −(1 − 2η0)·T_s0 vanishes at η0 = 0.5, so P1 carries nothing and η = n_out/n_in·|T_r0/T_s0|·… =
+    # 0.9; at η0 = 0.6 the carrier path through the lossy P1 opens: T_s1 = 0.2·T_s0/(1.25·0.6),
+    # T_s0 = 1/(1 + 0.2/0.75), η = 1.2·T_s0·9/10 = 0.85263.  A better η0 gives a lower η here.
+    def efficiency(eta0):
+        train = GearTrain([PlanetarySet("P0", "in", "out", "x2", 2.0, eta0),
+                           PlanetarySet("P1", "in", "x2", "x0", 1.25, eta0), Brake("B", "x0")])
+        return solve(train, OperatingPoint(speeds={"in": 10.0}, torques={"in": 1.0}, drives=["in"],
+                                           loads=["out"])).efficiency
+    assert efficiency(0.5) == pytest.approx(0.9, rel=1e-12)
+    t_s0 = 1 / (1 + 0.2 / 0.75)
+    assert efficiency(0.6) == pytest.approx(1.2 * t_s0 * 9 / 10, rel=1e-12)
+    assert efficiency(0.6) < efficiency(0.5) < efficiency(1.0) == 1.0

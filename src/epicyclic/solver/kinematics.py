@@ -4,9 +4,10 @@ The train's constraint rows K (one Willis row per lever, one equality per
 engaged clutch or brake) and one row per given speed form A n = b.  The rank
 of K gives the degrees of freedom; the null space of A names the shafts whose
 speed is still free; a non-zero residual names the givens in conflict.
-Shafts the train holds still get exactly 0; a speed that cancels to round-off
-of the given speeds it is made of is exactly 0 (the rule of
-:mod:`epicyclic.results.zero`).  Equations too close to singular raise
+Shafts the train holds still get exactly 0, shafts it makes turn together get
+exactly the same speed; a speed that is round-off of the given speeds it is
+made of, or of the largest speed in the units in which the equations balance,
+is exactly 0 (the rule of :mod:`epicyclic.results.zero`).  Equations too close to singular raise
 :class:`~epicyclic.errors.NearSingularError` instead of a result that
 round-off decides.
 
@@ -94,9 +95,23 @@ class SpeedSolver:
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
         follow = self._representatives  # shafts turning together: bit for bit the same speed
-        n = np.where((follow >= 0).reshape((-1,) + (1,) * (n.ndim - 1)), n[np.maximum(follow, 0)], 0.0) + 0.0
-        tiny = np.abs(n) < np.finfo(float).tiny  # subnormal next to the other speeds: zero
-        return np.where(tiny & (np.abs(n) <= ZERO_TOLERANCE * np.max(np.abs(n), axis=0, initial=0.0)), 0.0, n) + 0.0
+        shape = (-1,) + (1,) * (n.ndim - 1)
+        n = np.where((follow >= 0).reshape(shape), n[np.maximum(follow, 0)], 0.0) + 0.0
+        # a speed that is round-off of the largest speed, each in the units in which the train's
+        # equations balance (Curtis-Reid), is 0: e.g. the members of sets that share their shafts and
+        # a held member, zero by their ratios; a chain of stages keeps its 3^-30 (its units scale too)
+        size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
+        balanced = size / self._scale.reshape(shape)
+        zero = balanced <= ZERO_TOLERANCE * np.max(balanced, axis=0, initial=0.0)
+        zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given …
+        zero |= (size < np.finfo(float).tiny) & (size <= ZERO_TOLERANCE * np.max(size, axis=0, initial=0.0))
+        zero &= np.isfinite(n)  # … unless it is subnormal next to normal speeds
+        return np.where(zero, 0.0, n) + 0.0
+
+    @cached_property
+    def _scale(self) -> np.ndarray:
+        scale = self.system.column_scale
+        return np.ones(len(self.mats.speed_index)) if scale is None else scale
 
     def check(self, values: Sequence[float] | np.ndarray, speeds: np.ndarray) -> None:
         """Raise ContradictionError if the given speeds violate the constraints."""
