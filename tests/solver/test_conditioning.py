@@ -171,11 +171,12 @@ def test_tiny_efficiency_is_computed_or_named():
 
 def test_a_better_eta0_can_open_a_lossy_path():
     # Not a round-off effect: Brandenberger's rule itself.  P0 (sun in, ring out, carrier x2, i0 = 2)
-    # and P1 (sun in, ring x2, carrier x0 held, i0 = 1.25), both η0.  Hand calculation (Brandenberger
-    # eqs. 1, 2, 7): n_x2 = n_in/1.25 = 8, n_out = 9 for n_in = 10; w = +1 for both.  T_c0 =
-    # −(1 − 2η0)·T_s0 vanishes at η0 = 0.5, so P1 carries nothing and η = n_out/n_in·|T_r0/T_s0|·… =
-    # 0.9; at η0 = 0.6 the carrier path through the lossy P1 opens: T_s1 = 0.2·T_s0/(1.25·0.6),
-    # T_s0 = 1/(1 + 0.2/0.75), η = 1.2·T_s0·9/10 = 0.85263.  A better η0 gives a lower η here.
+    # and P1 (sun in, ring x2, carrier x0 held, i0 = 1.25), both η0; M_in = 1 at n_in = 10.  Hand
+    # calculation (Brandenberger eqs. 1, 2, 7, w = +1 for both): n_x2 = n_in/1.25 = 8, n_out = 9;
+    # T_r0 = −2η0·T_s0, T_c0 = −(1 − 2η0)·T_s0 = −T_r1 = 1.25·η0·T_s1, T_s0 + T_s1 = 1.
+    # η0 = 0.5: T_c0 = 0, P1 carries nothing, T_s0 = 1, η = |T_r0|·n_out/(M_in·n_in) = 0.9.
+    # η0 = 0.6: T_s1 = 0.2·T_s0/0.75, T_s0 = 1/(1 + 0.2/0.75), η = 1.2·T_s0·9/10 = 0.85263: the
+    # carrier path through the lossy P1 opens, and a better η0 gives a lower η.
     def efficiency(eta0):
         train = GearTrain([PlanetarySet("P0", "in", "out", "x2", 2.0, eta0),
                            PlanetarySet("P1", "in", "x2", "x0", 1.25, eta0), Brake("B", "x0")])
