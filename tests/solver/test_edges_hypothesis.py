@@ -85,7 +85,10 @@ def _raised(train: GearTrain) -> GearTrain:
     return GearTrain(out, train.shafts, train.name)
 
 
-def check(train: GearTrain, op: OperatingPoint) -> None:
+def check(train: GearTrain, op: OperatingPoint, one_loss_path: bool = False) -> None:
+    """The invariants; ``one_loss_path``: check monotonicity in η0 only where at most one lossy
+    element rolls (compounds: a better η0 of one set can send more torque through another lossy set,
+    see test_conditioning.test_a_better_eta0_can_open_a_lossy_path)."""
     try:
         sol = solve(train, op)
     except ALLOWED:
@@ -128,6 +131,9 @@ def check(train: GearTrain, op: OperatingPoint) -> None:
         better = None
     same_paths = better is not None and all(
         better.elements[n].loss_direction == e.loss_direction for n, e in sol.elements.items())
+    if one_loss_path:
+        rolling = [e for e in sol.elements.values() if e.loss_direction and e.efficiency_factor != 1.0]
+        same_paths = same_paths and len(rolling) <= 1
     if same_paths and sol.input_power > 0:
         if better.is_self_locking:
             assert sol.is_self_locking
@@ -225,7 +231,7 @@ def test_closed_trains(case):
 @_settings(EXAMPLES["compound"])
 @given(compounds())
 def test_compounds_with_clutches_and_brakes(case):
-    check(*case)
+    check(*case, one_loss_path=True)
 
 
 @_settings(EXAMPLES["near_one"])

@@ -191,9 +191,9 @@ class TrainMatrices:
         The representative is the housing for the shafts the train holds still, else the first
         shaft of the class in train order.
 
-        Clutches and brakes join two shafts; a set (or stage) with two members
-        turning together turns as a block (Willis: n_a = n_c gives n_b = n_c), so
-        its third member joins them.  The housing's class holds the shafts the
+        Clutches and brakes join two shafts, and so does a stage of ratio exactly 1;
+        a set (or stage) with two members turning together turns as a block
+        (Willis: n_a = n_c gives n_b = n_c), so its third member joins them.  The housing's class holds the shafts the
         train holds still: a brake, a stage from a held shaft, a set with two held
         members, a set locked with a held member.
         """
@@ -217,8 +217,9 @@ class TrainMatrices:
             for link in self.links:
                 changed |= union(link.shafts)
             for lever in self.levers:
-                roots = [find(s) for s in lever.shafts]
-                if len(set(roots)) < 3:
+                if lever.ports[2] == "housing" and lever.ratio == 1.0:  # a stage of ratio 1: a clutch
+                    changed |= union(lever.shafts[:2])
+                elif len({find(s) for s in lever.shafts}) < 3:
                     changed |= union(lever.shafts)
         return {s: find(s) for s in self.train.shafts}
 

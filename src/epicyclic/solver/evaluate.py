@@ -205,11 +205,12 @@ def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
             continue
         where = np.argwhere(bad)[0]
         point = f" at operating point {int(where[1])}" if array.ndim > 1 and array.shape[1] > 1 else ""
-        how = "overflows" if not np.isfinite(array[tuple(where)]) else "underflows"
+        how = ("is not a finite number: it overflows" if not np.isfinite(array[tuple(where)])
+               else "underflows")
         raise NonFiniteResultError(
             f"the {quantity} of {labels[where[0]]}{point} {how} the floating-point range "
             f"(about 2.2e-308 to 1.8e308 {unit}): the given speeds, torques or powers are too "
-            f"{'large' if how == 'overflows' else 'small'} for this train; give them in a range where "
+            f"{'small' if how == 'underflows' else 'large'} for this train; give them in a range where "
             "speeds and torques and their products stay between about 1e-300 and 1e300.",
             quantity, labels[where[0]],
         )

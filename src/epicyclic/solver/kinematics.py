@@ -5,9 +5,9 @@ engaged clutch or brake) and one row per given speed form A n = b.  The rank
 of K gives the degrees of freedom; the null space of A names the shafts whose
 speed is still free; a non-zero residual names the givens in conflict.
 Shafts the train holds still get exactly 0, shafts it makes turn together get
-exactly the same speed; a speed that is round-off of the given speeds it is
-made of, or of the largest speed in the units in which the equations balance,
-is exactly 0 (the rule of :mod:`epicyclic.results.zero`).  Equations too close to singular raise
+exactly the same speed; a speed that is round-off of the terms it is computed
+from is exactly 0 (the rule of :mod:`epicyclic.results.zero`, with the
+componentwise error bound of the solve as the scale).  Equations too close to singular raise
 :class:`~epicyclic.errors.NearSingularError` instead of a result that
 round-off decides.
 
@@ -26,7 +26,7 @@ import numpy as np
 
 from ..errors import ContradictionError, NearSingularError, NonFiniteResultError, UnderdeterminedError
 from ..model.elements import HOUSING
-from ..results.zero import ZERO_TOLERANCE, clean_array
+from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
 from .linear import Pseudoinverse, pseudoinverse, unreached_columns
 
@@ -88,30 +88,29 @@ class SpeedSolver:
                          for s in self.mats.train.moving_shafts], dtype=int)
 
     def speeds(self, values: Sequence[float] | np.ndarray) -> np.ndarray:
-        """Speeds of the moving shafts (1/min): givens exactly, round-off of zero exactly 0."""
+        """Speeds of the moving shafts (1/min): givens exactly, round-off of zero exactly 0.
+
+        A speed n_j is round-off when |n_j| ≤ ZERO_TOLERANCE · (|A⁺|·|A|·|n|)_j: the magnitude of
+        the terms it is computed from, every equation's terms weighted by how much n_j depends on
+        that equation (A: the equations with the given speeds, A⁺ their pseudoinverse).  This is
+        the componentwise error bound of the solve, scaled up; it keeps a chain's 3^-30, and zeroes
+        what stands still by the ratios (sets sharing their shafts and a held member).
+        """
         g = np.asarray(values, dtype=float)
-        s = self.operator
-        n = clean_array(s @ g, np.abs(s) @ np.abs(g))
+        shape = (-1,) + (1,) * (g.ndim - 1)
+        n = self.operator @ g
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
-        follow = self._representatives  # shafts turning together: bit for bit the same speed
-        shape = (-1,) + (1,) * (n.ndim - 1)
-        n = np.where((follow >= 0).reshape(shape), n[np.maximum(follow, 0)], 0.0) + 0.0
-        # a speed that is round-off of the largest speed, each in the units in which the train's
-        # equations balance (Curtis-Reid), is 0: e.g. the members of sets that share their shafts and
-        # a held member, zero by their ratios; a chain of stages keeps its 3^-30 (its units scale too)
         size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
-        balanced = size / self._scale.reshape(shape)
-        zero = balanced <= ZERO_TOLERANCE * np.max(balanced, axis=0, initial=0.0)
+        terms = np.abs(self.system.inverse) @ (np.abs(self.system.matrix) @ size)
+        zero = size <= ZERO_TOLERANCE * terms
         zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given …
-        zero |= (size < np.finfo(float).tiny) & (size <= ZERO_TOLERANCE * np.max(size, axis=0, initial=0.0))
-        zero &= np.isfinite(n)  # … unless it is subnormal next to normal speeds
-        return np.where(zero, 0.0, n) + 0.0
-
-    @cached_property
-    def _scale(self) -> np.ndarray:
-        scale = self.system.column_scale
-        return np.ones(len(self.mats.speed_index)) if scale is None else scale
+        n = np.where(zero & np.isfinite(n), 0.0, n)
+        follow = self._representatives  # shafts turning together: bit for bit the same speed
+        n = np.where((follow >= 0).reshape(shape), n[np.maximum(follow, 0)], 0.0) + 0.0
+        size = np.abs(n)  # … unless it is subnormal next to normal speeds
+        tiny = (size < np.finfo(float).tiny) & (size <= ZERO_TOLERANCE * np.max(size, axis=0, initial=0.0))
+        return np.where(tiny, 0.0, n) + 0.0
 
     def check(self, values: Sequence[float] | np.ndarray, speeds: np.ndarray) -> None:
         """Raise ContradictionError if the given speeds violate the constraints."""
@@ -221,7 +220,8 @@ def check_speeds(mats: TrainMatrices, speeds: np.ndarray) -> None:
     point = f" at operating point {int(where[1])}" if speeds.ndim > 1 and speeds.shape[1] > 1 else ""
     large = not np.isfinite(speeds[tuple(where)])
     raise NonFiniteResultError(
-        f"the speed of shaft {shaft!r}{point} {'overflows' if large else 'underflows'} the floating-point "
+        f"the speed of shaft {shaft!r}{point} {'is not a finite number: it overflows' if large else 'underflows'} "
+        "the floating-point "
         "range (about 2.2e-308 to 1.8e308 1/min): the given speeds are too "
         f"{'large' if large else 'small'} for the ratios of this train; give "
         f"{'smaller' if large else 'larger'} speeds.",

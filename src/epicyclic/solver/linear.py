@@ -112,9 +112,6 @@ class Pseudoinverse:
         the direction of the unknowns (right singular vector, original
         coordinates, unit length) and the weights of the rows (left singular
         vector) that nearly cancel.
-    column_scale : ndarray (n,)
-        The equilibration's column scales: x / column_scale are the unknowns
-        in the units in which the equations are balanced (the train's own scale).
     """
 
     matrix: np.ndarray
@@ -122,7 +119,6 @@ class Pseudoinverse:
     rank: int
     null_space: np.ndarray
     near_singular: tuple[tuple[float, np.ndarray, np.ndarray], ...] = ()
-    column_scale: np.ndarray | None = None
 
     def free_columns(self, tolerance: float = 1e-9) -> list[int]:
         """Columns of x that the equations leave free (non-zero in the null space)."""
@@ -193,7 +189,7 @@ def pseudoinverse(matrix: np.ndarray, scaling: tuple[np.ndarray, np.ndarray] | N
         if relative[k] <= NEAR_SINGULAR:
             direction = c * vt[k]
             near.append((float(relative[k]), direction / np.linalg.norm(direction), u[:, k] * r))
-    return Pseudoinverse(matrix, inverse, rank, null, tuple(near), c)
+    return Pseudoinverse(matrix, inverse, rank, null, tuple(near))
 
 
 def rank(matrix: np.ndarray) -> int:
