@@ -161,9 +161,10 @@ class NonFiniteResultError(NumericalError):
     Attributes
     ----------
     where : str
-        The shaft or element whose value overflows.
+        The shaft or element whose value overflows (empty where ``quantity`` says it all,
+        e.g. a path into a result such as ``"shafts.sun.power"``).
     """
 
-    def __init__(self, message: str, quantity: str, where: str):
+    def __init__(self, message: str, quantity: str = "", where: str = ""):
         self.where = where
         super().__init__(message, quantity)
