@@ -166,8 +166,10 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     eta = lay.efficiencies[(slice(None),) + (None,) * len(points)]
     factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
     loss = rolling * (1.0 - factor) + 0.0
-    x[lay.port_columns] = _flush(x[lay.port_columns])
-    torques, powers, rolling, coupling, loss = (_flush(a) for a in (torques, powers, rolling, coupling, loss))
+    every = np.concatenate([a.ravel() for a in (x, torques, powers, rolling, coupling, loss)])
+    if np.any((np.abs(every) < _TINY) & (every != 0)):  # rare: flush what is negligible next to its kind
+        x[lay.port_columns] = _flush(x[lay.port_columns])
+        torques, powers, rolling, coupling, loss = (_flush(a) for a in (torques, powers, rolling, coupling, loss))
     observed = np.sign(rolling).astype(int)
     direction = observed if pattern is None else np.where(observed == 0, 0, used)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction)
