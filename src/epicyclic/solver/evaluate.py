@@ -115,11 +115,12 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
 
     # every element's torques exactly in its own ratios: T_b = −k_b·T_a, T_c = −k_c·T_a, link T_2 = −T_1
     if len(mats.levers):
-        k_b = np.take_along_axis(lay.lever_factors[:, :, 0], used.reshape(len(mats.levers), -1) + 1, axis=1)
-        k_c = np.take_along_axis(lay.lever_factors[:, :, 1], used.reshape(len(mats.levers), -1) + 1, axis=1)
+        f = lay.lever_factors[(...,) + (None,) * len(points)]  # (levers, w + 1, 2, 1…)
+        k_b = np.where(used > 0, f[:, 2, 0], np.where(used < 0, f[:, 0, 0], f[:, 1, 0]))
+        k_c = np.where(used > 0, f[:, 2, 1], np.where(used < 0, f[:, 0, 1], f[:, 1, 1]))
         t_a = x[lay.lever_a_columns]
-        x[lay.lever_b_columns] = -k_b.reshape(t_a.shape) * t_a + 0.0
-        x[lay.lever_c_columns] = -k_c.reshape(t_a.shape) * t_a + 0.0
+        x[lay.lever_b_columns] = -k_b * t_a + 0.0
+        x[lay.lever_c_columns] = -k_c * t_a + 0.0
     x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
 
     # idle elements: torques that are round-off of the torques of the elements they share a shaft with
@@ -166,8 +167,8 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     eta = lay.efficiencies[(slice(None),) + (None,) * len(points)]
     factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
     loss = rolling * (1.0 - factor) + 0.0
-    every = np.concatenate([a.ravel() for a in (x, torques, powers, rolling, coupling, loss)])
-    if np.any((np.abs(every) < _TINY) & (every != 0)):  # rare: flush what is negligible next to its kind
+    if any(((np.abs(a) < _TINY) & (a != 0)).any() for a in (x, torques, powers, rolling, coupling, loss)):
+        # rare: flush what is negligible next to its kind
         x[lay.port_columns] = _flush(x[lay.port_columns])
         torques, powers, rolling, coupling, loss = (_flush(a) for a in (torques, powers, rolling, coupling, loss))
     observed = np.sign(rolling).astype(int)
@@ -190,9 +191,7 @@ def _flush(values: np.ndarray) -> np.ndarray:
 def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
     """Raise :class:`~epicyclic.errors.NonFiniteResultError` naming the first quantity that over- or underflows."""
     arrays = (ev.speeds, ev.x[mats.layout.port_columns], ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)
-    every = np.concatenate([a.ravel() for a in arrays])
-    size = np.abs(every)
-    if np.all(np.isfinite(every)) and not np.any((size < _TINY) & (size > 0)):
+    if all(np.isfinite(a).all() and not ((np.abs(a) < _TINY) & (a != 0)).any() for a in arrays):
         return
     shafts = [f"shaft {s!r}" for s in mats.train.shafts]
     ports = [f"{element!r} at shaft {shaft!r}" for element, shaft, _ in mats.port_shaft_columns]
