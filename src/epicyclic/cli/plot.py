@@ -1,9 +1,13 @@
 """``epicyclic plot FILE`` and ``epicyclic animate FILE``: pictures of a solved train.
 
-``plot --kind speed|torque|power|lever|flow`` writes one figure (.svg, .png
-or .pdf by the suffix of ``--out``); ``animate`` writes the animation of a
-planetary set as a self-contained HTML/SVG page (plays offline) or a GIF.
-Exit codes: 0 success, 2 bad input (one paragraph, no traceback), 1 bug.
+``plot --kind speed|torque|power|lever|flow|chart`` writes one figure (.svg,
+.png or .pdf by the suffix of ``--out``); ``animate`` writes the animation of
+a planetary set as a self-contained HTML/SVG page (plays offline) or a GIF.
+Files plot as they are (:func:`epicyclic.plotting.figure_subject`): a
+transmission without operating point at unit input speed and torque in the
+gear of ``--gear`` (default: its first gear), said on the figure; figures use
+the file's ``[units]``.  Exit codes: 0 success, 2 bad input (one paragraph,
+no traceback), 1 bug.
 """
 
 from __future__ import annotations
@@ -27,22 +31,15 @@ class PlotKind(str, Enum):
     power = "power"
     lever = "lever"
     flow = "flow"
+    chart = "chart"
 
 
-def _load(file: Path, gear: str | None):
-    """(train file, operating train) with ``--gear`` applied."""
-    from dataclasses import replace
-
-    from ..errors import ModelError
+def _subject(file: Path, gear: str | None):
+    """The solved state a figure of ``file`` shows (``--gear`` applied, unit input if no operating point)."""
     from ..io import load_train_file
+    from ..plotting import figure_subject
 
-    train_file = load_train_file(file)
-    if gear is not None:
-        if train_file.transmission is None:
-            raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
-        train_file.transmission.train_in_gear(train_file.train, gear)  # validates the gear name
-        train_file = replace(train_file, gear=gear)
-    return train_file
+    return figure_subject(load_train_file(file), gear)
 
 
 def _agg() -> None:
@@ -60,18 +57,16 @@ def plot(
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
     dpi: Annotated[int, typer.Option(help="Resolution of .png output.")] = 150,
 ) -> None:
-    """Draw FILE: speed plan, torque bars, power rectangles, lever diagram or power flow."""
-    from ..plotting import FIGURE_SUFFIXES, lever_diagram, save_figure, save_plot
+    """Draw FILE: speed plan, torque bars, power rectangles, lever diagram, power flow or speed chart."""
+    from ..plotting import FIGURE_SUFFIXES, save_plot
     from ..plotting._common import check_suffix
 
     out = Path(out) if out is not None else Path(f"{file.stem}-{kind.value}.png")
     check_suffix(out, FIGURE_SUFFIXES, "plot --out")
     _agg()
-    train_file = _load(file, gear)
-    if kind is PlotKind.lever and train_file.operating_point is None:
-        written = save_figure(lever_diagram(train=train_file.operating_train).plot(), out, dpi=dpi)
-    else:
-        written = save_plot(train_file.solve(), kind.value, out, dpi=dpi)
+    subject = _subject(file, gear)
+    written = save_plot(subject.solution, kind.value, out, dpi=dpi, context=subject.context,
+                        transmission=subject.transmission)
     typer.echo(f"wrote {written.resolve()}")
 
 
@@ -86,6 +81,7 @@ def animate(
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
     frames: Annotated[int, typer.Option(help="Frames of one GIF loop.")] = 48,
     fps: Annotated[int, typer.Option(help="Frames per second.")] = 16,
+    size: Annotated[int, typer.Option(help="Width of the SVG or GIF in pixels (120 to 2000).")] = 480,
 ) -> None:
     """Animate a planetary set of FILE at its solved speeds (HTML/SVG plays offline; or GIF)."""
     from ..plotting import planetary_animation
@@ -95,6 +91,7 @@ def animate(
     out = Path(out) if out is not None else Path(f"{file.stem}-animation.html")
     check_suffix(out, ANIMATION_SUFFIXES, "animate --out")
     _agg()
-    solution = _load(file, gear).solve()
-    anim = planetary_animation(solution, element, willis=willis, frames=frames, fps=fps)
+    subject = _subject(file, gear)
+    anim = planetary_animation(subject.solution, element, willis=willis, frames=frames, fps=fps, size=size,
+                               context=subject.context)
     typer.echo(f"wrote {anim.save(out).resolve()}")
