@@ -14,7 +14,7 @@ import math
 from typing import Any
 
 from ._common import pyplot
-from ._labels import keep_inside, separate
+from ._labels import fit_titles, keep_inside, separate
 
 __all__ = ["plot_power_flow", "BOX", "COLOURS", "MIN_WIDTH"]
 
@@ -87,9 +87,12 @@ def plot_power_flow(flow: Any) -> Any:
     fig.tight_layout(rect=(0, 0.1, 1, 0.9))
     ppu = ax.transData.transform((1, 0))[0] - ax.transData.transform((0, 0))[0]
     ppu *= 72.0 / fig.dpi  # points per data unit
+    # a small graph is drawn enlarged to the least figure size: its bands are not (one factor for all)
+    narrow = min(1.0, INCH * 72.0 / ppu)
     ctx = flow.context
     scale = max(e.power for e in flow.edges) if flow.edges else 1.0
     texts: list[Any] = []
+    boxes: list[Any] = []
     for edge in flow.edges:
         a, b = nodes[edge.source], nodes[edge.target]
         if edge.kind == "loss":
@@ -100,7 +103,7 @@ def plot_power_flow(flow: Any) -> Any:
             points[0] = _clip(points[0], points[1], BOX.get(a.kind, (0.5, 0.5)))
             points[-1] = _clip(points[-1], points[-2], BOX.get(b.kind, (0.5, 0.5)))
         colour = _colour(edge)
-        _band(ax, points, max(edge.width, MIN_WIDTH), colour, ppu)
+        _band(ax, points, max(narrow * edge.width, MIN_WIDTH), colour, ppu)
         if edge.kind != "loss":
             x, y = _label_spot(points)
             texts.append(ax.text(x, y, ctx.text(edge.power, "power", scale), fontsize=7.5, ha="center",
@@ -112,13 +115,15 @@ def plot_power_flow(flow: Any) -> Any:
                                  bbox={"boxstyle": "round,pad=0.2", "fc": FILL["loss"], "ec": "#8C8C8C"}))
             continue
         w, h = BOX[node.kind]
-        ax.add_patch(FancyBboxPatch((node.x - w / 2, node.y - h / 2), w, h, boxstyle="round,pad=0,rounding_size=0.1",
-                                    facecolor=FILL[node.kind], edgecolor="black", lw=0.9, zorder=5))
+        boxes.append(ax.add_patch(FancyBboxPatch((node.x - w / 2, node.y - h / 2), w, h,
+                                                 boxstyle="round,pad=0,rounding_size=0.1",
+                                                 facecolor=FILL[node.kind], edgecolor="black", lw=0.9, zorder=5)))
         ax.text(node.x, node.y, node.label, ha="center", va="center", fontsize=7.5, zorder=7,
                 weight="bold" if node.kind in ("source", "sink") else "normal")
     _legend(ax, flow)
     fig.suptitle(_title(flow), fontsize=10.5)
-    separate(fig, texts)
+    fit_titles(fig)
+    separate(fig, texts, fixed=boxes)
     keep_inside(fig, texts)
     return fig
 

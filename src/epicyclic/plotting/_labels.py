@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-__all__ = ["overlapping_pairs", "separate", "keep_inside", "boxes"]
+__all__ = ["overlapping_pairs", "separate", "keep_inside", "boxes", "fit_titles", "finish"]
 
 #: Clearance (pixels at the figure's dpi) kept between two label boxes.
 PAD = 1.5
@@ -53,12 +53,28 @@ def _shift(text: Any, dx_px: float, dy_px: float) -> None:
     text.set_position(tuple(transform.inverted().transform((x + dx_px, y + dy_px))))
 
 
-def separate(fig: Any, texts: Iterable[Any], *, max_rounds: int = 60) -> int:
-    """Push overlapping labels apart vertically (both move, by half the overlap each); returns rounds used."""
+def separate(fig: Any, texts: Iterable[Any], *, fixed: Iterable[Any] = (), max_rounds: int = 60) -> int:
+    """Push overlapping labels apart vertically (both move, by half the overlap each); returns rounds used.
+
+    ``fixed`` artists (node boxes, say) are obstacles: a label overlapping one
+    is moved clear of it, the obstacle stays.
+    """
     texts = list(texts)
+    renderer = _renderer(fig)
+    obstacles = [a.get_window_extent(renderer) for a in fixed]
     for rounds in range(max_rounds):
         found = boxes(fig, texts)
         moved = False
+        for text, box in found:
+            for ob in obstacles:
+                dx = min(box.x1, ob.x1) - max(box.x0, ob.x0)
+                dy = min(box.y1, ob.y1) - max(box.y0, ob.y0)
+                if dx > 0 and dy > -PAD:
+                    up = (box.y0 + box.y1) >= (ob.y0 + ob.y1)
+                    _shift(text, 0.0, (ob.y1 - box.y0 + PAD) if up else -(box.y1 - ob.y0 + PAD))
+                    moved = True
+        if moved:
+            continue
         for i, (a, ba) in enumerate(found):
             for b, bb in found[i + 1:]:
                 dx = min(ba.x1, bb.x1) - max(ba.x0, bb.x0)
@@ -83,3 +99,46 @@ def keep_inside(fig: Any, texts: Iterable[Any], margin: float = 2.0) -> None:
         dy = max(frame.y0 + margin - box.y0, 0.0) - max(box.y1 - (frame.y1 - margin), 0.0)
         if dx or dy:
             _shift(text, dx, dy)
+
+
+def _wrap(text: Any, width_px: float, renderer: Any) -> None:
+    """Re-wrap a text (keeping its own line breaks) until it is at most ``width_px`` wide."""
+    import textwrap
+
+    for _ in range(6):
+        box = text.get_window_extent(renderer)
+        if box.width <= width_px or box.width <= 0:
+            return
+        lines = text.get_text().split("\n")
+        longest = max(len(line) for line in lines)
+        chars = max(12, int(longest * width_px / box.width * 0.95))
+        text.set_text("\n".join(part for line in lines for part in (textwrap.wrap(line, chars) or [""])))
+
+
+def fit_titles(fig: Any) -> None:
+    """Wrap the figure title, the axes titles and axis labels that are wider than the room they have."""
+    renderer = _renderer(fig)
+    frame = fig.bbox
+    if fig._suptitle is not None:
+        _wrap(fig._suptitle, 0.96 * frame.width, renderer)
+    for ax in fig.axes:
+        if not ax.axison:
+            continue
+        box = ax.get_window_extent(renderer)
+        _wrap(ax.title, box.width * 1.1, renderer)
+        _wrap(ax.xaxis.label, box.width, renderer)
+        _wrap(ax.yaxis.label, box.height, renderer)
+
+
+def finish(fig: Any, texts: Iterable[Any] = (), *, fixed: Iterable[Any] = (), rect: Any = None) -> Any:
+    """Lay a figure out: wrap long titles, tight layout, labels apart and inside the canvas."""
+    texts = list(texts)
+    fit_titles(fig)
+    if rect is None:
+        fig.tight_layout()
+    else:
+        fig.tight_layout(rect=rect)
+    fit_titles(fig)
+    separate(fig, texts, fixed=fixed)
+    keep_inside(fig, texts)
+    return fig

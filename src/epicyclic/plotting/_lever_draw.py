@@ -23,7 +23,7 @@ from typing import Any
 
 from ..model.elements import HOUSING
 from ._common import SHAFT_COLOURS, pyplot
-from ._labels import keep_inside, separate
+from ._labels import finish
 from .values import clean, fmt, scale_of
 
 __all__ = ["plot_lever_diagram"]
@@ -66,9 +66,7 @@ def plot_lever_diagram(diagram: Any) -> Any:
         for ax, lever in zip(axes[1:], speed_levers):
             _draw_speeds(ax, diagram, lever, colours, texts)
     fig.suptitle(diagram.context.heading(diagram.train, "lever diagram (Benford–Leising 1981)"), fontsize=11)
-    fig.tight_layout()
-    separate(fig, texts)
-    keep_inside(fig, texts)
+    finish(fig, texts)
     return fig
 
 

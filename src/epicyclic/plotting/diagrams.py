@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from ._common import RPM_TO_RAD_S, figure_svg, hatch_legend, hatched_rect, lever_elements, pyplot
-from ._labels import keep_inside, separate
+from ._labels import finish, fit_titles, keep_inside, separate
 from .context import FigureContext
 from .values import ZERO_RELATIVE, Scales, clean, fmt
 
@@ -145,9 +145,7 @@ class PowerDiagram:
         if self.resting:
             heading += f"\nno power in {', '.join(self.resting)} (idle or locked in this state): not drawn"
         fig.suptitle(heading, fontsize=11)
-        fig.tight_layout()
-        separate(fig, texts)
-        keep_inside(fig, texts)
+        finish(fig, texts)
         return fig
 
 
@@ -349,6 +347,7 @@ class TorqueDiagram:
         legend_ax.plot([], [], color="grey", ls="--", lw=1.5, label="without friction (outline)")
         hatch_legend(legend_ax, list(roles), loc="center", ncol=1 + len(roles), fontsize=9,
                      title="hatched bars: with friction", title_fontsize=9)
+        fit_titles(fig)
         separate(fig, texts)
         keep_inside(fig, texts)
         return fig

@@ -43,7 +43,7 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["FlowNode", "FlowEdge", "PowerFlow", "power_flow", "MAX_WIDTH"]
 
 #: Width (data units; a layer is 2.6 wide) of the band with the largest power.
-MAX_WIDTH = 0.2
+MAX_WIDTH = 0.15
 
 
 @dataclass(frozen=True)
@@ -150,7 +150,7 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH,
     Parameters
     ----------
     solution : Solution
-    max_width : float, default 0.2
+    max_width : float, default 0.15
         Band width (data units) of the edge with the largest power.
     context : FigureContext, optional
         Title, units and notes of the figure.
@@ -172,30 +172,32 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH,
     context = context or FigureContext(title=solution.train.name)
     scale = Scales.of(solution).power
     raw: list[tuple[str, str, float, str]] = []
-    carriers = []
+    element_of = {}  # node id → element state; an element named like a shaft gets its kind in its id
     for state in solution.elements.values():
         ports = [(port, clean(p, scale)) for port, p in state.port_powers.items()]
         if not any(p for _, p in ports):
             continue
-        carriers.append(state.name)
+        node = state.name if state.name not in solution.shafts else f"{state.name} ({state.kind})"
+        element_of[node] = state
         for port, power in ports:
             shaft = state.ports[port]
             if power and shaft != HOUSING:
-                raw.append((shaft, state.name, power, "port") if power > 0 else (state.name, shaft, -power, "port"))
+                raw.append((shaft, node, power, "port") if power > 0 else (node, shaft, -power, "port"))
     for shaft in solution.shafts.values():
         power = clean(shaft.power, scale)
         if power > 0:
             raw.append((f"drive: {shaft.name}", shaft.name, power, "drive"))
         elif power < 0:
             raw.append((shaft.name, f"load: {shaft.name}", -power, "load"))
-    largest = max((p for *_, p, _ in raw), default=1.0)
+    losses_w = [clean(state.loss, scale) for state in element_of.values()]
+    largest = max([p for *_, p, _ in raw] + losses_w, default=1.0) or 1.0
     per_watt = max_width / largest
     loops = _loops([(a, b) for a, b, *_ in raw])
     names = list(dict.fromkeys(n for a, b, *_ in raw for n in (a, b)))
     kinds = {n: ("source" if n.startswith("drive: ") else "sink" if n.startswith("load: ")
-                 else "element" if n in solution.elements else "shaft") for n in names}
+                 else "element" if n in element_of else "shaft") for n in names}
     heights = {n: BOX[kinds[n]][1] + (0.55 if kinds[n] == "element" and not is_zero(
-        solution.elements[n].loss, scale) else 0.0) for n in names}
+        element_of[n].loss, scale) else 0.0) for n in names}
     layout = layered_layout(names, [(a, b) for a, b, *_ in raw], first=[n for n in names if kinds[n] == "source"],
                             last=[n for n in names if kinds[n] == "sink"], heights=heights, dx=2.6, gap=0.45)
     edges = tuple(FlowEdge(a, b, p, kind, k in loops, p * per_watt, tuple(layout.routes[k]))
@@ -204,8 +206,8 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH,
     for n in names:
         x, y = layout.x[n], layout.y[n]
         if kinds[n] == "element":
-            state = solution.elements[n]
-            label = f"{n}\n{state.kind}"
+            state = element_of[n]
+            label = f"{state.name}\n{state.kind}"
             if state.kind == "planetary set":
                 label += f"\nP_w {context.text(state.rolling_power, 'power', scale)}"
             if not is_zero(state.loss, scale):  # the box sits at the top of its slot, the loss below it
@@ -220,10 +222,9 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH,
                     f"{context.text(abs(solution.power(shaft)), 'power', scale)}"
         nodes.append(FlowNode(n, kinds[n], x, y, label))
     edges = _attach(edges, {node.name: node for node in nodes})
-    for state in solution.elements.values():
-        if state.name in carriers and not is_zero(state.loss, scale):
-            edges += (FlowEdge(state.name, f"loss: {state.name}", state.loss, "loss", False,
-                               state.loss * per_watt),)
+    for node, state in element_of.items():
+        if not is_zero(state.loss, scale):
+            edges += (FlowEdge(node, f"loss: {node}", state.loss, "loss", False, state.loss * per_watt),)
     rolling = {e.name: clean(e.rolling_power, scale) for e in solution.elements.values() if e.kind == "planetary set"}
     losses = {e.name: clean(e.loss, scale) for e in solution.elements.values()
               if e.kind in ("planetary set", "gear stage")}

@@ -23,7 +23,7 @@ from typing import Any
 
 from ..model.elements import HOUSING
 from ._common import SHAFT_COLOURS, figure_svg, pyplot
-from ._labels import keep_inside, separate
+from ._labels import finish
 from .context import FigureContext
 from .values import clean, fmt, scale_of
 
@@ -88,9 +88,7 @@ class SpeedChart:
         right.set_ylabel("slip speed per input speed Δn / n_in")
         state = f"; gear {self.gear} highlighted ({shift_state_words(self.engaged[self.gear])})" if self.gear else ""
         fig.suptitle(f"{self.title}: speed chart across gears\n(Willis kinematics at n_in = 1){state}", fontsize=11)
-        fig.tight_layout()
-        separate(fig, texts)
-        keep_inside(fig, texts)
+        finish(fig, texts)
         return fig
 
     def _panel(self, ax: Any, table: Mapping[str, Mapping[str, float]], what: str, texts: list[Any],

@@ -34,10 +34,11 @@ from typing import TYPE_CHECKING, Any
 
 from ..model.planetary import PlanetarySet, Teeth
 from ._common import RPM_TO_RAD_S, SHAFT_COLOURS, PlottingError, figure_svg, planetary_set, pyplot
+from ._labels import finish
 from .context import FigureContext
 from .ranges import RangeDiagram, range_diagram
 from .schematic import DrawnSet, drawn_set
-from .values import clean, fmt, scale_of
+from .values import Scales, clean, fmt, scale_of
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
@@ -95,6 +96,7 @@ class SetLayout:
     from_teeth: bool
     schematic: bool = False
     drawn: DrawnSet | None = None
+    stationary_ratio: float = float("nan")
 
 
 def _pitch(a: float, z: float, z_partner: float, internal: bool) -> float:
@@ -130,7 +132,8 @@ def set_layout(pset: PlanetarySet, module: float = 1.0) -> SetLayout:
         raise PlottingError(f"speed plan: module must be a positive number of mm, got {module!r}.")
     drawn = drawn_set(pset)
     layout = _layout_from_teeth(pset.name, drawn.teeth, float(module))
-    layout = replace(layout, from_teeth=not drawn.schematic, schematic=drawn.schematic, drawn=drawn)
+    layout = replace(layout, from_teeth=not drawn.schematic, schematic=drawn.schematic, drawn=drawn,
+                     stationary_ratio=pset.stationary_ratio)
     if drawn.swapped:  # the set's "sun" port is the larger, internal gear of the drawing
         central = {"sun": layout.central["ring"], "ring": layout.central["sun"]}
         bodies = tuple(replace(b, contacts=MappingProxyType({drawn.roles.get(k, k): r for k, r in b.contacts.items()}))
@@ -209,6 +212,7 @@ class SpeedPlan:
     velocity_unit: str = field(default="m/s")
     module: float = 1.0
     context: FigureContext = field(default_factory=FigureContext)
+    speed_scale: float = 0.0
 
     def _v(self, omega: float, r: float) -> float:
         return omega * r / 1000.0 if self.layout.radius_unit == "mm" else omega * r
@@ -279,9 +283,8 @@ class SpeedPlan:
 
     @property
     def i0(self) -> float:
-        """i0 of the layout: ω_sun/ω_ring with the carrier held."""
-        w = self.omegas
-        return (w["sun"] - w["carrier"]) / (w["ring"] - w["carrier"]) if w["ring"] != w["carrier"] else float("nan")
+        """The set's stationary ratio, which the layout's radii reproduce."""
+        return self.layout.stationary_ratio
 
     def plot(self, ax: Any = None) -> Any:
         """Draw the diagram (radius up, peripheral speed across) on ``ax``; return ax."""
@@ -291,7 +294,7 @@ class SpeedPlan:
         ctx = self.context
         colours = dict(zip(("sun", "ring", "carrier"), SHAFT_COLOURS))
         names = {"sun": "sun", "ring": "ring" if self.layout.central["ring"][1] else "2nd central", "carrier": "carrier"}
-        top = scale_of((*self.omegas.values(), *self.planet_omegas))
+        top = max(self.speed_scale * RPM_TO_RAD_S, scale_of((*self.omegas.values(), *self.planet_omegas)))
 
         def speed(w: float) -> str:  # in the figure's unit, round-off (a held member) shown as 0
             return f"{fmt(ctx.convert(clean(w, top) / RPM_TO_RAD_S, 'speed'), 5)} {ctx.unit('speed')}"
@@ -365,7 +368,7 @@ def speed_plan(solution: Solution, element: str | None = None, *, module: float 
         assert layout.drawn is not None
         planet = tuple(n * RPM_TO_RAD_S for n in layout.drawn.planet_speeds(state.speeds))
     return SpeedPlan(layout, MappingProxyType(omegas), planet, MappingProxyType(dict(state.ports)), "m/s",
-                     float(module), context or FigureContext())
+                     float(module), context or FigureContext(), Scales.of(solution).speed)
 
 
 def plot_speed_plan(solution: Solution, element: str | None = None, *, module: float = 1.0,
@@ -381,5 +384,4 @@ def plot_speed_plan(solution: Solution, element: str | None = None, *, module: f
         speed_plan(solution, pset.name, module=module, context=context).plot(row[0])
         range_diagram(solution, pset.name, context=context).plot(row[1])
     fig.suptitle(context.heading(solution.train, "speeds"), fontsize=12)
-    fig.tight_layout()
-    return fig
+    return finish(fig, [t for ax in fig.axes for t in ax.texts])
