@@ -139,8 +139,11 @@ def save_plot(solution: Solution, kind: str, path: str | Path, *, dpi: int = 150
     return save_figure(figure(solution, kind, **options), path, dpi=dpi)
 
 
-def report_figures(solution: Solution) -> list[tuple[str, str]]:
+def report_figures(solution: Solution, *, units: Any = None, title: str | None = None) -> list[tuple[str, str]]:
     """Every picture of a solution as (title, inline SVG text) for the HTML report.
+
+    ``units`` (:class:`~epicyclic.units.Units`, the file's) and ``title`` frame
+    the figures as the report's tables are.
 
     The SVG texts start with ``<svg`` (no XML prolog) and contain no scripts
     or external references.  Pictures that do not apply (a speed plan without
@@ -164,13 +167,16 @@ def report_figures(solution: Solution) -> list[tuple[str, str]]:
         "lever": "Lever diagram",
         "flow": "Power flow",
     }
+    from ..units import Units
+
+    context = FigureContext(title=title or solution.train.name, units=units or Units())
     out: list[tuple[str, str]] = []
     has_sets = bool(solution.train.planetary_sets)
     for kind in KINDS:
         if kind == "speed" and not has_sets:
             continue
-        out.append((titles[kind], figure_svg(figure(solution, kind))))
+        out.append((titles[kind], figure_svg(figure(solution, kind, context=context))))
     if has_sets:
-        anim = planetary_animation(solution)
+        anim = planetary_animation(solution, context=context)
         out.append((f"Animation of set {anim.set_name}", anim.svg()))
     return out
