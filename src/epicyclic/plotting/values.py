@@ -7,9 +7,10 @@ branch carrying it is left out.  Every label of the plotting package is
 written by :func:`label` (or :func:`fmt` after :func:`clean`), so that no
 figure shows ``1e-13`` noise or ``-0``.
 
-The tolerance is the solver's own (``epicyclic.solver.solve.ZERO_POWER``:
-rolling powers below it count as zero), so a figure calls zero exactly what
-the solver does.
+The rule is the solver's own, :mod:`epicyclic.results.zero` (tolerance
+``ZERO_TOLERANCE`` relative to the scale of the terms); this module only
+chooses the scale a figure compares against (its quantity's largest value
+in the train) and formats the result.
 
 Examples
 --------
@@ -27,30 +28,30 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from ..solver.solve import ZERO_POWER
+from ..results import zero
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
 
 __all__ = ["ZERO_RELATIVE", "Scales", "clean", "fmt", "is_zero", "label", "scale_of"]
 
-#: Magnitudes up to this fraction of their quantity's scale are numerically zero.
-ZERO_RELATIVE = ZERO_POWER
+#: Magnitudes up to this fraction of their quantity's scale are numerically zero (the solver's rule).
+ZERO_RELATIVE = zero.ZERO_TOLERANCE
 
 
 def scale_of(values: Iterable[float]) -> float:
     """The scale of a set of values: the largest finite magnitude (0.0 if none)."""
-    return max((abs(v) for v in values if math.isfinite(v)), default=0.0)
+    return zero.scale_of(*(v for v in values if math.isfinite(v)))
 
 
 def is_zero(value: float, scale: float) -> bool:
-    """Whether ``value`` is round-off relative to ``scale`` (see the module text)."""
-    return abs(value) <= ZERO_RELATIVE * abs(scale)
+    """Whether ``value`` is round-off relative to ``scale`` (:func:`epicyclic.results.zero.is_zero`)."""
+    return zero.is_zero(value, scale)
 
 
 def clean(value: float, scale: float) -> float:
-    """``value``, or exactly 0.0 where it is numerically zero against ``scale``."""
-    return 0.0 if is_zero(value, scale) else float(value)
+    """``value``, or exactly 0.0 where it is numerically zero against ``scale`` (never −0.0)."""
+    return zero.clean(value, scale)
 
 
 def fmt(value: float, digits: int = 4) -> str:
