@@ -88,6 +88,17 @@ def check_figure(fig) -> None:
             dx = min(ba.x1, bb.x1) - max(ba.x0, bb.x0)
             dy = min(ba.y1, bb.y1) - max(ba.y0, bb.y0)
             assert dx <= SLACK or dy <= SLACK, f"labels overlap: {a.get_text()!r} and {b.get_text()!r}"
+    # ... nor a legend, and no axes (title, labels, legend) reaches into the figure title
+    for legend in [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None]:
+        lb = legend.get_window_extent(renderer)
+        for t, box in boxes:
+            dx = min(box.x1, lb.x1) - max(box.x0, lb.x0)
+            dy = min(box.y1, lb.y1) - max(box.y0, lb.y0)
+            assert dx <= SLACK or dy <= SLACK, f"label {t.get_text()!r} on a legend"
+    if fig._suptitle is not None:
+        bottom = fig._suptitle.get_window_extent(renderer).y0
+        for ax in fig.axes:
+            assert ax.get_tightbbox(renderer).y1 <= bottom + SLACK, f"{ax.get_title()!r} reaches into the figure title"
     # 2. everything inside the canvas
     for t in _all_texts(fig):
         box = t.get_window_extent(renderer)

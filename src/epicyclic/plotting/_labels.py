@@ -13,7 +13,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-__all__ = ["overlapping_pairs", "separate", "keep_inside", "boxes", "fit_titles", "finish"]
+__all__ = ["overlapping_pairs", "separate", "keep_inside", "boxes", "fit_titles", "finish", "clear_suptitle",
+           "legends"]
 
 #: Clearance (pixels at the figure's dpi) kept between two label boxes.
 PAD = 1.5
@@ -130,8 +131,26 @@ def fit_titles(fig: Any) -> None:
         _wrap(ax.yaxis.label, box.height, renderer)
 
 
+def clear_suptitle(fig: Any, gap: float = 4.0) -> None:
+    """Lower the subplots where their titles, labels or legends reach into the figure title."""
+    if fig._suptitle is None or not fig._suptitle.get_text():
+        return
+    renderer = _renderer(fig)
+    bottom = fig._suptitle.get_window_extent(renderer).y0
+    top = max((ax.get_tightbbox(renderer).y1 for ax in fig.axes if ax.get_visible()), default=0.0)
+    if top > bottom - gap:
+        shift = (top - bottom + gap) / fig.bbox.height
+        fig.subplots_adjust(top=fig.subplotpars.top - shift)
+
+
+def legends(fig: Any) -> list[Any]:
+    """Every legend of the figure (obstacles for labels)."""
+    found = [ax.get_legend() for ax in fig.axes] + list(fig.legends)
+    return [lg for lg in found if lg is not None]
+
+
 def finish(fig: Any, texts: Iterable[Any] = (), *, fixed: Iterable[Any] = (), rect: Any = None) -> Any:
-    """Lay a figure out: wrap long titles, tight layout, labels apart and inside the canvas."""
+    """Lay a figure out: wrap long titles, tight layout, clear the title, labels apart and inside the canvas."""
     texts = list(texts)
     fit_titles(fig)
     if rect is None:
@@ -139,6 +158,7 @@ def finish(fig: Any, texts: Iterable[Any] = (), *, fixed: Iterable[Any] = (), re
     else:
         fig.tight_layout(rect=rect)
     fit_titles(fig)
-    separate(fig, texts, fixed=fixed)
+    clear_suptitle(fig)
+    separate(fig, texts, fixed=[*fixed, *legends(fig)])
     keep_inside(fig, texts)
     return fig

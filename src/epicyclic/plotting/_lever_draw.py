@@ -42,11 +42,7 @@ def _colours(diagram: Any) -> dict[str, str]:
 
 
 def _role(diagram: Any, shaft: str) -> str:
-    if shaft == diagram.input:
-        return " (input)"
-    if shaft == diagram.output:
-        return " (output)"
-    return ""
+    return diagram.role(shaft)
 
 
 def plot_lever_diagram(diagram: Any) -> Any:

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from ._common import RPM_TO_RAD_S, figure_svg, hatch_legend, hatched_rect, lever_elements, pyplot
-from ._labels import finish, fit_titles, keep_inside, separate
+from ._labels import clear_suptitle, finish, fit_titles, keep_inside, legends, separate
 from .context import FigureContext
 from .values import ZERO_RELATIVE, Scales, clean, fmt
 
@@ -179,8 +179,12 @@ def _draw_powers(ax: Any, data: ElementPowers, what: str, limits: tuple[float, f
         value = rect.area if rect.role == "loss" else rect.power
         text = f"{rect.label}\n{ctx.text(value, 'power', scale)}"
         above = rect.role == "loss"
-        texts.append(ax.text(sx * (rect.x0 + rect.width / 2), sy * (rect.y0 + (rect.height if above else rect.height / 2)),
-                             text, ha="center", va="bottom" if above else "center", fontsize=8,
+        x0, x1 = sorted((rect.x0, rect.x0 + rect.width))
+        where = ((x0 + x1) / 2 - limits[0]) / ((limits[1] - limits[0]) or 1.0)
+        # near an edge of the panel the label grows inwards from the rectangle's end
+        x, ha = (x1, "right") if where > 0.66 else (x0, "left") if where < 0.34 else ((x0 + x1) / 2, "center")
+        texts.append(ax.text(sx * x, sy * (rect.y0 + (rect.height if above else rect.height / 2)),
+                             text, ha=ha, va="bottom" if above else "center", fontsize=8,
                              bbox={"boxstyle": "round,pad=0.2", "fc": "white", "alpha": 0.85, "lw": 0}))
     ax.set_xlim(sx * limits[0], sx * limits[1])
     ax.set_ylim(sy * limits[2], sy * limits[3])
@@ -348,7 +352,8 @@ class TorqueDiagram:
         hatch_legend(legend_ax, list(roles), loc="center", ncol=1 + len(roles), fontsize=9,
                      title="hatched bars: with friction", title_fontsize=9)
         fit_titles(fig)
-        separate(fig, texts)
+        clear_suptitle(fig)
+        separate(fig, texts, fixed=legends(fig))
         keep_inside(fig, texts)
         return fig
 
@@ -386,7 +391,7 @@ def torque_diagram(solution: Solution, *, context: FigureContext | None = None) 
 
     for shaft in solution.shafts.values():
         value = clean(shaft.torque, torque)
-        if shaft.role == "internal" or (value == 0.0 and shaft.role != "housing"):
+        if shaft.role == "internal" or value == 0.0:
             continue
         ideal_torque = ideal_of(ideal.torque(shaft.name) if ideal is not None else None)
         bars.append(TorqueBar("external", shaft.name, ideal_torque, value, _role(shaft.power, scale)))

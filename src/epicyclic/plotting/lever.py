@@ -149,7 +149,10 @@ class LeverDiagram:
         The compound levers of the free state (see :func:`free_levers`), with
         the solved speeds when there is a solution.
     input, output : str or None
-        The input (drive) and output (load) shafts, marked on the drawing.
+        The input and output of a transmission, or the one drive and the one
+        load of a solution, marked on the drawing.
+    drives, loads : tuple of str
+        Every drive and load of the solution (marked where there are several).
     gear_lines : mapping gear → (mapping shaft → speed per input speed)
         Speeds of every gear of a transmission over the ``permanent`` lever.
     gear : str or None
@@ -170,6 +173,20 @@ class LeverDiagram:
     gear: str | None = None
     context: FigureContext = field(default_factory=FigureContext)
     train: Any = field(default=None, repr=False, compare=False)
+    drives: tuple[str, ...] = ()
+    loads: tuple[str, ...] = ()
+
+    def role(self, shaft: str) -> str:
+        """" (input)", " (output)", " (drive)", " (load)" or "": how the drawing names a shaft's part."""
+        if shaft == self.input:
+            return " (input)"
+        if shaft == self.output:
+            return " (output)"
+        if shaft in self.drives:
+            return " (drive)"
+        if shaft in self.loads:
+            return " (load)"
+        return ""
 
     def to_dict(self) -> dict[str, Any]:
         def lever(c: CompoundLever | None) -> dict[str, Any] | None:
@@ -428,5 +445,5 @@ def lever_diagram(solution: Solution | None = None, *, train: GearTrain | None =
         lines = gear_speeds(transmission)
     return LeverDiagram(context.title or train.name, levers, tuple(links), shift, compound, permanent, free,
                         inp, out, MappingProxyType(lines), gear if gear is not None else context.gear, context,
-                        train)
+                        train, tuple(drives), tuple(loads))
 
