@@ -1,8 +1,8 @@
 """Regenerate the gallery: every file in examples/ × every kind of picture (``make gallery``).
 
 Writes ``docs/gallery/<example>/<kind>.png`` (speed, torque, power, lever,
-flow and, for a transmission, chart), the animation of each example's first
-planetary set as SVG and GIF, and ``docs/gallery.md`` that shows them all.
+flow and, for a transmission, chart), the animation of each example's busiest
+planetary set (largest rolling power) as SVG and GIF, and ``docs/gallery.md`` that shows them all.
 With ``--html PATH`` it also writes an HTML page of the same gallery (for a
 look in a browser; not part of the docs).
 
@@ -61,7 +61,9 @@ def render(path: Path) -> dict:
                         transmission=subject.transmission)
         _small(out)
         pictures.append((kind, out.relative_to(DOC.parent).as_posix()))
-    pset = subject.solution.train.planetary_sets[0]
+    # the set that works hardest in this state (largest rolling power), so that something turns
+    sets = subject.solution.train.planetary_sets
+    pset = max(sets, key=lambda s: abs(subject.solution.elements[s.name].rolling_power))
     anim = planetary_animation(subject.solution, pset.name, context=subject.context, size=SVG_SIZE)
     svg = anim.save(folder / "animation.svg")
     small = planetary_animation(subject.solution, pset.name, context=subject.context, size=GIF_SIZE,
@@ -80,9 +82,9 @@ def markdown(entries: list[dict]) -> str:
              "`epicyclic animate` draw it. Regenerate with `make gallery` (this page included).",
              "A transmission without an operating point is drawn in its first gear at unit input speed and",
              "torque; other gears: `epicyclic plot FILE --gear G`. Figures use each file's `[units]`.", ""]
-    lines += [f"- [{e['title']}](#{e['stem'].replace('_', '-')})" for e in entries]
+    lines += [f"- [{e['title']}](#{e['stem']})" for e in entries]
     for e in entries:
-        lines += ["", f"## {e['stem']}", "", f"**{e['title']}** — [`{e['file'][3:]}`]({e['file']})"]
+        lines += ["", f"## {e['stem']}", "", f"**{e['title']}** — `{e['file'][3:]}`"]
         if e["description"]:
             lines += ["", e["description"]]
         notes = "; ".join(n for n in e["notes"] if n)
@@ -91,7 +93,8 @@ def markdown(entries: list[dict]) -> str:
         for kind, picture in e["pictures"]:
             lines += ["", f"### {NAMES[kind]}", "", f"![{e['stem']}: {NAMES[kind]}]({picture})"]
         lines += ["", f"### animation of set {e['set']}", "",
-                  f"![{e['stem']}: animation]({e['gif']}) — [animated SVG]({e['svg']}) (plays in a browser)"]
+                  f"![{e['stem']}: animation of set {e['set']}]({e['svg']})", "",
+                  f"The animated SVG plays in a browser; [the same as GIF]({e['gif']})."]
     return "\n".join(lines) + "\n"
 
 
