@@ -11,8 +11,9 @@ power-flow graph:
    dummy node in each layer between, so that it is routed around the nodes.
 3. **Order** within the layers: barycentre sweeps down and up, then every
    layer of up to :data:`EXHAUSTIVE` nodes is permuted exhaustively against
-   its neighbours while that lowers the number of crossings; what remains is
-   the least crossing count this search found.
+   its neighbours while that lowers the number of crossings; this is done
+   from several starting orders (as given, reversed, fixed shuffles) and the
+   order with the fewest crossings is kept.
 4. **Coordinates**: layers at equal distances in x; in y every node sits near
    the mean of its neighbours, never closer to the next node than the two
    nodes' heights require.
@@ -51,6 +52,8 @@ class Layout:
         Crossings between the edge segments of adjacent layers.
     layers : tuple of tuple
         Node order per layer (dummies included, as ``("dummy", edge, k)``).
+    links : tuple of (node, node)
+        The segments between adjacent layers that the crossings are counted on.
     """
 
     x: Mapping[Hashable, float]
@@ -59,6 +62,7 @@ class Layout:
     reversed: frozenset[int]
     crossings: int
     layers: tuple[tuple[Hashable, ...], ...]
+    links: tuple[tuple[Hashable, Hashable], ...] = ()
 
 
 def _break_cycles(nodes: Sequence[Hashable], edges: Sequence[tuple[Hashable, Hashable]],
@@ -163,6 +167,33 @@ def layered_layout(nodes: Sequence[Hashable], edges: Sequence[tuple[Hashable, Ha
     for n in [*nodes, *(d for c in chains for d in c[1:-1])]:
         order[layer[n]].append(n)
 
+    best, order = min((_ordered(start, links) for start in _starts(order)), key=lambda found: found[0])
+    y = _coordinates(order, links, heights, gap)
+    x = {n: dx * layer[n] for n in layer}
+    routes = []
+    for k, chain in enumerate(chains):
+        points = [(x[n], y[n]) for n in chain]
+        routes.append(points[::-1] if k in back else points)
+    real = set(nodes)
+    return Layout({n: x[n] for n in real}, {n: y[n] for n in real}, tuple(routes), frozenset(back), best,
+                  tuple(tuple(layer_nodes) for layer_nodes in order), tuple(links))
+
+
+def _starts(order: list[list[Hashable]], shuffles: int = 6) -> list[list[list[Hashable]]]:
+    """Initial orders for the crossing reduction: as given, reversed, and a few fixed shuffles."""
+    import random
+
+    starts = [[list(layer) for layer in order], [layer[::-1] for layer in order]]
+    for seed in range(shuffles):
+        rng = random.Random(seed)
+        starts.append([rng.sample(layer, len(layer)) for layer in order])
+    return starts
+
+
+def _ordered(order: list[list[Hashable]], links: list[tuple[Hashable, Hashable]]) -> tuple[int, list[list[Hashable]]]:
+    """Barycentre sweeps, then exhaustive per-layer permutations while they lower the crossing count."""
+    count = len(order)
+
     def crossings() -> int:
         return sum(count_crossings(order[j], order[j + 1], links) for j in range(count - 1))
 
@@ -198,15 +229,7 @@ def layered_layout(nodes: Sequence[Hashable], edges: Sequence[tuple[Hashable, Ha
                 if value < best:
                     best, keep, improved = value, list(perm), True
             order[j] = keep
-    y = _coordinates(order, links, heights, gap)
-    x = {n: dx * layer[n] for n in layer}
-    routes = []
-    for k, chain in enumerate(chains):
-        points = [(x[n], y[n]) for n in chain]
-        routes.append(points[::-1] if k in back else points)
-    real = set(nodes)
-    return Layout({n: x[n] for n in real}, {n: y[n] for n in real}, tuple(routes), frozenset(back), best,
-                  tuple(tuple(layer_nodes) for layer_nodes in order))
+    return best, order
 
 
 def _coordinates(order: list[list[Hashable]], links: list[tuple[Hashable, Hashable]],
