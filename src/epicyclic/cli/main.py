@@ -38,6 +38,10 @@ from . import plot as _plot  # noqa: E402
 app.command("plot")(_plot.plot)
 app.command("animate")(_plot.animate)
 
+from . import serve as _serve  # noqa: E402
+
+app.command("serve")(_serve.serve)
+
 
 def main() -> None:
     """Console-script entry point."""
