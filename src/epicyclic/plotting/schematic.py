@@ -8,11 +8,12 @@ whose tooth counts reproduce i0 exactly where small whole numbers can:
   ``z_ring/z_sun = |i0|`` (Queitsch eq. 4); below 1 the port called "sun" is
   the internal gear;
 * a plus set with i0 ≥ 1.8 (or ≤ 1/1.8): a double-planet set,
-  ``z_ring/z_sun = i0``;
+  ``z_ring/z_sun = i0``, where small tooth counts give i0 exactly;
 * otherwise a stepped planet (Brandenberger's a/b·c/d): an internal ring for
   a minus set, ``i0 = −(z_d z_b)/(z_a z_c)``, two external central gears for a
   plus set, ``i0 = (z_d z_b)/(z_a z_c)``; the planet gears are coaxial:
-  ``z_a + z_b = z_d ∓ z_c`` with one module.
+  ``z_a + z_b = z_d ∓ z_c`` with one module.  For |i0| < 1 the set is drawn
+  with its "sun" port as the second central gear (ratio 1/|i0|).
 
 Among the candidates with 10 to 180 teeth the smallest drawable one is
 taken (planets clear of each other and of the central gears with the set's
@@ -92,11 +93,18 @@ def _multiples(k: Fraction, smallest: int) -> Iterator[tuple[int, int]]:
 
 
 def _simple(k: Fraction, planets: int) -> Teeth | None:
-    for zs, zr in _multiples(k, 14):
+    """Smallest simple set with z_ring/z_sun = k, else the one of 14…40 sun teeth nearest to k."""
+    def drawable(zs: int, zr: int) -> Teeth | None:
         zp = (zr - zs) // 2  # an odd difference: a profile-shifted planet, as in the Prius 30/23/78
-        if zp >= 8 and (zs + zp) * math.sin(math.pi / planets) > zp + 2.5:
+        if zr <= _MAX and zp >= 8 and (zs + zp) * math.sin(math.pi / planets) > zp + 2.5:
             return Teeth("simple", zs, zr, (zp,))
-    return None
+        return None
+
+    for zs, zr in _multiples(k, 14):
+        if (teeth := drawable(zs, zr)) is not None:
+            return teeth
+    near = sorted(range(14, 41), key=lambda zs: abs(round(float(k) * zs) / zs - float(k)))
+    return next((t for zs in near if (t := drawable(zs, round(float(k) * zs))) is not None), None)
 
 
 def _double(k: Fraction, planets: int) -> Teeth | None:
@@ -111,9 +119,8 @@ def _double(k: Fraction, planets: int) -> Teeth | None:
     return None
 
 
-def _stepped(i0: float, k: Fraction, planets: int) -> tuple[Teeth, bool] | None:
-    """Smallest stepped set with (z_d z_b)/(z_a z_c) = |i0| (exact if possible, else nearest)."""
-    internal = i0 < 0
+def _stepped(internal: bool, target: float, k: Fraction, planets: int) -> tuple[Teeth, bool] | None:
+    """Smallest stepped set with (z_d z_b)/(z_a z_c) = target ≥ 1 (= k exactly if possible, else nearest)."""
     z = np.arange(_MIN, 101)
     za, zb, zc = np.meshgrid(z, z, z, indexing="ij")
     zd = za + zb + zc if internal else za + zb - zc
@@ -122,14 +129,14 @@ def _stepped(i0: float, k: Fraction, planets: int) -> tuple[Teeth, bool] | None:
         ok &= zd - zc >= za + 6  # the ring clears the sun-side step
     else:
         ok &= zd != za
-    ok &= (zd * zb > za * zc) == (abs(i0) > 1)  # the faster central gear stays the same one
+    ok &= zd * zb >= za * zc  # target ≥ 1: the drawn sun is the faster central gear with the carrier held
     a = (za + zb) / 2
     ok &= 2 * a * np.sin(np.pi / planets) > np.maximum(zb, zc) + 2.5  # neighbouring planets clear
     exact = ok & (zd * zb * k.denominator == k.numerator * za * zc)
     pick = exact if exact.any() else ok
     if not pick.any():
         return None
-    error = np.abs(zd * zb / (za * zc) - abs(i0)) if not exact.any() else 0.0
+    error = np.abs(zd * zb / (za * zc) - target) if not exact.any() else 0.0
     size = za + zb + zc + zd
     score = np.where(pick, size + 1e6 * error, np.inf)
     idx = np.unravel_index(int(np.argmin(score)), score.shape)
@@ -158,20 +165,22 @@ def schematic_teeth(i0: float, planets: int = 3) -> tuple[Teeth, Mapping[str, st
     swapped = magnitude < 1
     k = _ratio(1 / magnitude if swapped else magnitude)
     roles = MappingProxyType({"sun": "ring", "ring": "sun"} if swapped else {"sun": "sun", "ring": "ring"})
-    plain = MappingProxyType({"sun": "sun", "ring": "ring"})
+    target = 1 / magnitude if swapped else magnitude  # ≥ 1: the drawn ratio
     teeth = None
     if i0 < 0 and k >= Fraction(3, 2):
         teeth = _simple(k, planets)
     elif i0 > 0 and k >= Fraction(9, 5):
         teeth = _double(k, planets)
-    if teeth is not None and abs(float(Fraction(teeth.ring, teeth.sun)) - float(k)) <= 1e-9 * float(k):
-        exact = abs(float(k) - (1 / magnitude if swapped else magnitude)) <= 1e-9 * float(k)
-        return teeth, roles, exact
-    found = _stepped(i0, _ratio(magnitude), planets)
+    if teeth is not None:
+        exact = abs(teeth.ring / teeth.sun - target) <= 1e-9 * target
+        # a simple set's drawing is made exact by its ring radius; a double planet must be exact itself
+        if exact or teeth.kind == "simple":
+            return teeth, roles, exact
+    found = _stepped(i0 < 0, target, k, planets)
     if found is None:  # pragma: no cover - the grid always holds a drawable stepped set
         raise ValueError(f"no drawable set for i0 = {i0!r}")
     teeth, exact = found
-    return teeth, plain, exact and abs(teeth.stationary_ratio - i0) <= 1e-9 * magnitude
+    return teeth, roles, exact and abs(abs(teeth.stationary_ratio) - target) <= 1e-9 * target
 
 
 def drawn_set(pset: PlanetarySet) -> DrawnSet:
