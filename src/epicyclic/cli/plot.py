@@ -51,10 +51,12 @@ def _agg() -> None:
 @guarded
 def plot(
     file: Annotated[Path, typer.Argument(help="Train description (.toml), see docs/file-format.md.")],
-    kind: Annotated[PlotKind, typer.Option("--kind", "-k", help="Which picture.")] = PlotKind.speed,
+    kind: Annotated[PlotKind, typer.Option("--kind", "-k", help="Which picture (chart: speeds across the "
+                                                               "gears of a transmission).")] = PlotKind.speed,
     out: Annotated[Optional[Path], typer.Option(
         "--out", "-o", help="Output file: .svg, .png or .pdf (default: FILE-KIND.png here).")] = None,
-    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
+    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule "
+                                                "(default: the operating point's, else the first gear).")] = None,
     dpi: Annotated[int, typer.Option(help="Resolution of .png output.")] = 150,
 ) -> None:
     """Draw FILE: speed plan, torque bars, power rectangles, lever diagram, power flow or speed chart."""
