@@ -88,9 +88,9 @@ def test_animate_html_and_gif(tmp_path):
     (["plot", BRANDENBERGER, "--out", "x.txt"], "suffix '.txt'; expected one of .svg, .png, .pdf"),
     (["animate", BRANDENBERGER, "--out", "x.mp4"], "suffix '.mp4'; expected one of .svg, .html, .gif"),
     (["animate", BRANDENBERGER, "--set", "nope"], "no planetary set named 'nope'"),
-    (["plot", str(EXAMPLES / "zf_8hp70_8speed.toml"), "--gear", "9"], "no gear '9'; gears are '1', '2'"),
+    (["plot", str(EXAMPLES / "zf_8hp70_8speed.toml"), "--gear", "9"], "no gear '9' in the \\[transmission\\] schedule; gears are '1', '2'"),
     (["plot", str(EXAMPLES / "brandenberger_1952.toml"), "-k", "chart"], "speed chart shows every gear"),
-    (["animate", BRANDENBERGER, "--size", "50"], "size must be between 120 and 2000 pixels, got 50"),
+    (["animate", BRANDENBERGER, "--size", "50"], "--size"),
     (["plot", "missing.toml"], "no such file"),
     (["plot", BRANDENBERGER, "--gear", "2"], "needs a \\[transmission\\] table"),
 ])

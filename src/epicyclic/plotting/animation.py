@@ -36,6 +36,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
+from ..limits import SIZE_RANGE
 from ._common import PlottingError, check_suffix, planetary_set
 from ._gears import WILLIS_PHASES, GearShape, gear_outline, gear_shapes
 from .context import FigureContext
@@ -52,8 +53,8 @@ __all__ = ["GearShape", "PlanetaryAnimation", "planetary_animation", "gear_outli
 ANIMATION_SUFFIXES = (".svg", ".html", ".gif")
 #: Width of the SVG and the GIF in pixels unless ``size`` says otherwise.
 DEFAULT_SIZE = 480
-#: Smallest and largest ``size`` in pixels.
-SIZE_LIMITS = (120, 2000)
+#: Smallest and largest ``size`` in pixels (``epicyclic.limits.SIZE_RANGE``).
+SIZE_LIMITS = SIZE_RANGE
 
 
 @dataclass(frozen=True)

@@ -75,23 +75,23 @@ def figure_subject(train_file: Any, gear: str | None = None) -> Subject:
     from ..solver import solve
     from ..units import to_core
 
-    source = getattr(train_file, "source", "") or "the file"
     units = train_file.units
     context = FigureContext(title=train_file.title or train_file.train.name, units=units)
     transmission = _transmission(train_file)
     if gear is not None:
         if transmission is None:
-            raise ModelError(f"{source}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
+            raise ModelError(f"--gear {gear!r:.40} needs a [transmission] table with a schedule in the file.")
         transmission.gear_train(gear)  # a clear error for an unknown gear
     if train_file.operating_point is not None:
+        from dataclasses import replace
+
         gear = gear if gear is not None else train_file.gear
-        train = transmission.gear_train(gear) if gear is not None else train_file.train
-        solution = solve(train, train_file.operating_point)
+        solution = replace(train_file, gear=gear).solve()  # the file's own errors name its keys
         return Subject(solution, _with_gear(context, gear), transmission, gear)
     if transmission is None:
         raise ModelError(
-            f"{source}: the file has no [operating_point] table and no [transmission] table, so there is "
-            "nothing to solve; add an [operating_point] with speeds, torques or powers, drives and loads."
+            "the file has no [operating_point] table and no [transmission] table, so there is nothing to "
+            "solve; add an [operating_point] with speeds, torques or powers, drives and loads."
         )
     gear = gear if gear is not None else transmission.gears[0]
     speed, torque = to_core(1.0, "speed", default_unit=units.speed), to_core(1.0, "torque", default_unit=units.torque)
