@@ -167,10 +167,10 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     eta = lay.efficiencies[(slice(None),) + (None,) * len(points)]
     factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
     loss = rolling * (1.0 - factor) + 0.0
-    if any(((np.abs(a) < _TINY) & (a != 0)).any() for a in (x, torques, powers, rolling, coupling, loss)):
-        # rare: flush what is negligible next to its kind
-        x[lay.port_columns] = _flush(x[lay.port_columns])
-        torques, powers, rolling, coupling, loss = (_flush(a) for a in (torques, powers, rolling, coupling, loss))
+    if any(((np.abs(a) < _TINY) & (a != 0)).any() for a in (powers, rolling, coupling, loss)):
+        # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
+        # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
+        powers, rolling, coupling, loss = (_flush(a) for a in (powers, rolling, coupling, loss))
     observed = np.sign(rolling).astype(int)
     direction = observed if pattern is None else np.where(observed == 0, 0, used)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction)

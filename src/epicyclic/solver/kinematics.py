@@ -97,6 +97,7 @@ class SpeedSolver:
         what stands still by the ratios (sets sharing their shafts and a held member).
         """
         g = np.asarray(values, dtype=float)
+        g = np.where(np.abs(g) < np.finfo(float).tiny, 0.0, g)  # a given speed below 2.2e-308 1/min is 0
         shape = (-1,) + (1,) * (g.ndim - 1)
         n = self.operator @ g
         for r, shaft in enumerate(self.given):
@@ -104,12 +105,11 @@ class SpeedSolver:
         size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
         terms = np.abs(self.system.inverse) @ (np.abs(self.system.matrix) @ size)
         zero = size <= ZERO_TOLERANCE * terms
-        zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given …
+        zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given
         n = np.where(zero & np.isfinite(n), 0.0, n)
         follow = self._representatives  # shafts turning together: bit for bit the same speed
         n = np.where((follow >= 0).reshape(shape), n[np.maximum(follow, 0)], 0.0) + 0.0
-        # … unless it is subnormal: below 2.2e-308 1/min a speed is 0 for every purpose (flush to zero)
-        return np.where(np.abs(n) < np.finfo(float).tiny, 0.0, n) + 0.0
+        return n + 0.0
 
     def check(self, values: Sequence[float] | np.ndarray, speeds: np.ndarray) -> None:
         """Raise ContradictionError if the given speeds violate the constraints."""
@@ -209,16 +209,21 @@ def _near_singular(mats: TrainMatrices, given: Sequence[str], system: Pseudoinve
 
 
 def check_speeds(mats: TrainMatrices, speeds: np.ndarray) -> None:
-    """Raise NonFiniteResultError if a speed overflows (``speeds``: moving shafts, points trailing)."""
-    bad = ~np.isfinite(speeds)
+    """Raise NonFiniteResultError if a speed over- or underflows (``speeds``: moving shafts, points trailing)."""
+    size = np.abs(speeds)
+    bad = ~np.isfinite(speeds) | ((size < np.finfo(float).tiny) & (size > 0))
     if not bad.any():
         return
     where = np.argwhere(bad)[0]
     shaft = mats.train.moving_shafts[where[0]]
     point = f" at operating point {int(where[1])}" if speeds.ndim > 1 and speeds.shape[1] > 1 else ""
+    large = not np.isfinite(speeds[tuple(where)])
     raise NonFiniteResultError(
-        f"the speed of shaft {shaft!r}{point} is not a finite number: it overflows the floating-point range "
-        "(about 1.8e308 1/min): the given speeds are too large for the ratios of this train; give smaller speeds.",
+        f"the speed of shaft {shaft!r}{point} "
+        + ("is not a finite number: it overflows the floating-point range (about 1.8e308 1/min): the given "
+           "speeds are too large for the ratios of this train; give smaller speeds." if large else
+           "underflows the floating-point range (below 2.2e-308 1/min it loses its digits): the given speeds "
+           "are too small for the ratios of this train; give larger speeds."),
         "speed", shaft,
     )
 
