@@ -5,7 +5,7 @@ VENV   ?= .venv
 PY      = $(VENV)/bin/python
 STAMP   = $(VENV)/.installed
 
-.PHONY: demo test bench docs clean chromium
+.PHONY: demo test bench docs gallery clean chromium
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -23,6 +23,11 @@ test: $(STAMP) chromium
 # The documentation site (mkdocs.yml) into site/; warnings are errors (strict).
 docs: $(STAMP)
 	NO_MKDOCS_2_WARNING=1 DISABLE_MKDOCS_2_WARNING=true $(VENV)/bin/mkdocs build --strict
+
+# Every example × every kind of picture into docs/gallery/ and docs/gallery.md; the figures of docs/plotting.md.
+gallery: $(STAMP)
+	$(PY) docs/gallery/make_gallery.py
+	$(PY) docs/figures/make_figures.py
 
 # The browser tests (tests/web/test_browser.py) drive Debian's chromium through chromium-driver:
 # install both when missing (CI runs on a fresh Debian machine as root); nothing to do when present.

@@ -32,7 +32,9 @@ def test_json_schema_keys_are_stable(brandenberger):
     assert report["schema"] == SCHEMA and report["source"] == "x.toml"
     sol = report["solution"]
     assert {"shafts", "elements", "input_power", "output_power", "loss", "efficiency", "self_locking",
-            "circulating_power", "degrees_of_freedom", "warnings", "ratio", "units"} <= set(sol)
+            "circulation", "degrees_of_freedom", "warnings", "ratio", "units"} <= set(sol)
+    assert set(sol["circulation"]) == {"power", "ratio", "loops", "largest_element_power", "largest_element_ratio",
+                                       "indeterminate"}
     assert set(sol["shafts"]["I"]) == {"speed", "torque", "power", "role"}
     planetary = sol["elements"]["planetary"]
     # Brandenberger 1952: with friction M1' = 66.7, M2' = −40.3, M3' = −26.4 cm kg (paper's signs, all
@@ -77,12 +79,12 @@ def test_html_uses_plotting_figures_when_available(monkeypatch, brandenberger):
 
     f, s = brandenberger
     fake = types.ModuleType("epicyclic.plotting")
-    fake.report_figures = lambda solution: [("Speed plan", "<svg xmlns='http://www.w3.org/2000/svg'></svg>")]
+    fake.report_figures = lambda solution, **frame: [("Speed plan", "<svg xmlns='http://www.w3.org/2000/svg'></svg>")]
     monkeypatch.setitem(sys.modules, "epicyclic.plotting", fake)
     page = html_report(s, f.units)
     assert "<figcaption>Speed plan</figcaption><svg" in page
 
-    def broken(solution):
+    def broken(solution, **frame):
         raise RuntimeError("no ink")
 
     fake.report_figures = broken
