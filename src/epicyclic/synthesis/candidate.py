@@ -91,9 +91,7 @@ class Candidate:
     def named_schedule(self) -> dict[str, tuple[str, ...]]:
         return {g: tuple(sorted(self.element_name(e) for e in combo)) for g, combo in zip(self.gears, self.schedule)}
 
-    @property
-    def key(self) -> tuple:
-        """Canonical form of the whole architecture (sets permuted within kinds); equal keys are isomorphic."""
+    def _canonical(self, with_teeth: bool) -> tuple:
         from .mechanisms import set_permutations
 
         shafts = element_shafts(self.mechanism.shafts)
@@ -106,10 +104,82 @@ class Candidate:
             if self.mechanism.free_input:
                 number.setdefault(self.mechanism.member_shafts, len(number))
             elems = tuple(sorted(tuple(sorted(number[s] for s in shafts[e])) for e in self.elements))
-            teeth = tuple((self.teeth[perm[j]].z_sun, self.teeth[perm[j]].z_ring) for j in range(len(perm)))
+            teeth = tuple((self.teeth[perm[j]].z_sun, self.teeth[perm[j]].z_ring) for j in range(len(perm))) \
+                if with_teeth else ()
             k = (tuple(number[s] for s in seq), number[self.input], number[self.output], elems, teeth)
             best = k if best is None or k < best else best
         return best
+
+    @property
+    def key(self) -> tuple:
+        """Canonical form of architecture and tooth counts (sets permuted within kinds); equal keys are isomorphic."""
+        return self._canonical(True)
+
+    @property
+    def architecture_key(self) -> tuple:
+        """Canonical form of the architecture alone (ties, input, output, shift elements)."""
+        return self._canonical(False)
+
+    @classmethod
+    def from_transmission(cls, transmission, stationary_efficiency: float = 0.98) -> Candidate:
+        """The candidate that describes an existing :class:`~epicyclic.transmission.Transmission`.
+
+        Lets a published transmission (e.g. from :mod:`epicyclic.transmission.library`)
+        be compared with synthesised ones (:attr:`architecture_key`).  Sets
+        without tooth counts get the ratio as a fraction over 100 teeth.
+        """
+        from fractions import Fraction
+
+        from ..model import Brake, Clutch
+        from ..model.elements import HOUSING
+        from .spec import SynthesisError
+
+        train = transmission.train
+        sets = train.planetary_sets
+        if len(sets) != len(train.elements) - len(train.shift_elements):
+            raise SynthesisError("from_transmission: only planetary sets, clutches and brakes can be described.")
+        number: dict[str, int] = {}
+        members = []
+        if any(HOUSING in (p.sun, p.ring, p.carrier) for p in sets):
+            raise SynthesisError("from_transmission: a set member tied to the housing is outside the synthesis "
+                                 "space (members are joined to each other; the housing only through brakes).")
+        for p in sets:
+            for shaft in (p.sun, p.ring, p.carrier):
+                members.append(number.setdefault(shaft, len(number)))
+        free = transmission.input not in number
+        if free:
+            number[transmission.input] = len(number)
+        if transmission.output not in number:
+            raise SynthesisError("from_transmission: the output must be a member of a planetary set.")
+        kinds = tuple("simple" if p.stationary_ratio < 0 else "plus" for p in sets)
+        mech = Mechanism(kinds, tuple(members), free)
+        index = {s: e for e, s in enumerate(element_shafts(mech.shafts))}
+        elements, by_name = [], {}
+        for e in train.shift_elements:
+            if isinstance(e, Brake):
+                key: tuple[int, ...] = (number[e.shaft],)
+            elif isinstance(e, Clutch):
+                key = tuple(sorted((number[e.first], number[e.second])))
+            else:  # pragma: no cover - GearTrain has no other shift elements
+                continue
+            elements.append(index[key])
+            by_name[e.name] = index[key]
+        teeth = []
+        for p in sets:
+            if p.teeth is not None and p.teeth.kind == "simple":
+                teeth.append(SetTeeth("simple", p.teeth.sun, p.teeth.ring, p.teeth.planet[0], p.planets))
+            else:
+                f = Fraction(abs(p.stationary_ratio)).limit_denominator(100)
+                teeth.append(SetTeeth("simple" if p.stationary_ratio < 0 else "plus", f.denominator, f.numerator,
+                                      None, p.planets))
+        ratios = transmission.ratios
+        forward = [g for g in transmission.gears if ratios[g] > 0]
+        reverse = [g for g in transmission.gears if ratios[g] < 0]
+        order = sorted(forward, key=lambda g: -ratios[g]) + sorted(reverse, key=lambda g: ratios[g])
+        schedule = tuple(tuple(sorted(by_name[n] for n in transmission.schedule[g])) for g in order)
+        values = tuple(ratios[g] for g in order)
+        return cls(mech, number[transmission.input], number[transmission.output], tuple(sorted(elements)), schedule,
+                   tuple(teeth), values, values, len(forward), stationary_efficiency)
 
     def describe(self) -> str:
         """Architecture in words: ties, input, output, brakes and clutches."""
@@ -124,14 +194,14 @@ class Candidate:
                 + "; ".join(sorted(parts)))
 
     # ------------------------------------------------------------------ model
-    def train(self):
+    def train(self, name: str = "synthesised transmission"):
         """The :class:`~epicyclic.GearTrain` (all shift elements open)."""
         from ..model import Brake, Clutch, GearTrain, PlanetarySet
 
         elements: list = []
         for k, t in enumerate(self.teeth):
             s, r, c = (self.shaft_name(x) for x in self.mechanism.set_shafts(k))
-            if t.kind == "simple":
+            if t.z_planet is not None:
                 elements.append(PlanetarySet.simple(f"P{k + 1}", sun=s, ring=r, carrier=c, z_sun=t.z_sun,
                                                     z_planet=t.z_planet, z_ring=t.z_ring, planets=t.planets,
                                                     stationary_efficiency=self.stationary_efficiency))
@@ -145,13 +215,13 @@ class Candidate:
                 elements.append(Brake(self.element_name(e), self.shaft_name(s[0])))
             else:
                 elements.append(Clutch(self.element_name(e), self.shaft_name(s[0]), self.shaft_name(s[1])))
-        return GearTrain(elements, name="synthesised transmission")
+        return GearTrain(elements, name=name)
 
     def transmission(self, name: str = "synthesised transmission"):
         """The :class:`~epicyclic.transmission.Transmission` with this schedule."""
         from ..transmission import Transmission
 
-        return Transmission(self.train(), self.named_schedule, "in", "out", name=name)
+        return Transmission(self.train(name), self.named_schedule, "in", "out", name=name)
 
     def toml(self, title: str = "synthesised transmission") -> str:
         """A train file (TOML) with a ``[transmission]`` table; ``epicyclic gears`` reads it."""
@@ -162,11 +232,12 @@ class Candidate:
         for k, t in enumerate(self.teeth):
             s, r, c = (self.shaft_name(x) for x in self.mechanism.set_shafts(k))
             lines += ["", "[[planetary]]", f'name = "P{k + 1}"', f'sun = "{s}"', f'ring = "{r}"', f'carrier = "{c}"']
-            if t.kind == "simple":
+            if t.z_planet is not None:
                 lines.append(f"teeth = {{ sun = {t.z_sun}, planet = {t.z_planet}, ring = {t.z_ring} }}")
                 lines.append(f"planets = {t.planets}")
             else:
-                lines.append(f'stationary_ratio = "{t.z_ring}/{t.z_sun}"')
+                sign = "-" if t.kind == "simple" else ""
+                lines.append(f'stationary_ratio = "{sign}{t.z_ring}/{t.z_sun}"')
             lines.append(f"stationary_efficiency = {self.stationary_efficiency}")
         shafts = element_shafts(self.mechanism.shafts)
         for e in sorted(self.elements, key=self.element_name):
@@ -177,6 +248,9 @@ class Candidate:
             else:
                 lines += ["", "[[brake]]", f'name = "{self.element_name(e)}"', f'shaft = "{self.shaft_name(s[0])}"',
                           "engaged = false"]
+        lines += ["", "# first gear at 1000 1/min and 100 N·m on the input (epicyclic analyze solves it)",
+                  "[operating_point]", f'gear = "{self.gears[0]}"', "speeds = { in = 1000.0 }",
+                  "torques = { in = 100.0 }", 'drives = ["in"]', 'loads = ["out"]']
         lines += ["", "[transmission]", 'input = "in"', 'output = "out"', "", "[transmission.schedule]"]
         for gear, engaged in self.named_schedule.items():
             lines.append(f'"{gear}" = [' + ", ".join(f'"{n}"' for n in engaged) + "]")

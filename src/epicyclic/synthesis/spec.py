@@ -194,6 +194,9 @@ class SynthesisSpec:
             if isinstance(values, (str, bytes)) or not isinstance(values, Sequence) or not values:
                 raise SynthesisError(f"{where}: targets must be a non-empty list of ratios, got {values!r}.")
             nums = [_number(v, "targets", where) for v in values]
+            if any(v == 0 for v in nums):
+                raise SynthesisError(f"{where}: a target ratio of 0 is no gear; forward ratios must be > 0 and "
+                                     "reverse ratios < 0.")
             forward, reverse = [v for v in nums if v > 0], [v for v in nums if v < 0]
         else:
             forward = [_number(v, "targets.forward", where) for v in tmap.get("forward", [])]

@@ -1,0 +1,91 @@
+"""``epicyclic synthesize SPEC.toml``: transmissions that give target ratios (runs on Dask).
+
+Reads a synthesis specification (targets, sets, shift elements, bounds; see
+``docs/synthesis.md``), searches on a local Dask cluster or, with
+``--scheduler ADDRESS``, on an existing one, shows progress per task on
+stderr and prints the ranked candidates.  ``--out-dir`` writes a train file
+per candidate (``epicyclic gears`` and ``analyze`` read them), ``--csv`` a
+table, ``--plot`` the lever diagram of the best candidate.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
+
+__all__ = ["synthesize"]
+
+
+def _progress(quiet: bool):
+    if quiet:
+        return None
+    state = {"last": -1}
+
+    def report(done: int, total: int) -> None:
+        percent = 100 * done // max(total, 1)
+        if sys.stderr.isatty():
+            typer.echo(f"\rsynthesize: {done}/{total} tasks ({percent} %)", err=True, nl=done == total)
+        elif percent // 10 != state["last"] // 10 or done == total:
+            typer.echo(f"synthesize: {done}/{total} tasks ({percent} %)", err=True)
+        state["last"] = percent
+
+    return report
+
+
+@guarded
+def synthesize(
+    spec: Annotated[Path, typer.Argument(help="Synthesis specification (.toml): [targets], [sets], [elements], "
+                                              "[bounds], [search].")],
+    format: FormatOption = OutputFormat.table,
+    out: OutOption = None,
+    scheduler: Annotated[Optional[str], typer.Option("--scheduler", help="Address of a running Dask scheduler "
+                                                      "(tcp://host:8786); default: a local cluster.")] = None,
+    workers: Annotated[Optional[int], typer.Option("--workers", min=1, help="Workers of the local cluster "
+                                                    "(default: CPU count).")] = None,
+    top: Annotated[Optional[int], typer.Option("--top", min=1, help="Candidates to show and write "
+                                                "(default: the spec's search.top).")] = None,
+    out_dir: Annotated[Optional[Path], typer.Option("--out-dir", help="Write candidate_NN.toml per shown "
+                                                     "candidate into this folder.")] = None,
+    csv: Annotated[Optional[Path], typer.Option("--csv", help="Also write the table as CSV.")] = None,
+    plot: Annotated[Optional[Path], typer.Option("--plot", help="Lever diagram of the best candidate "
+                                                  "(.png, .svg or .pdf).")] = None,
+    threads: Annotated[bool, typer.Option("--threads", help="Local cluster of threads in this process "
+                                           "instead of worker processes.")] = False,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress on stderr.")] = False,
+) -> None:
+    """Search planetary transmissions (ties, shift elements, schedule, teeth) that give the target ratios."""
+    from dataclasses import replace
+
+    from ..synthesis import SynthesisSpec, synthesize_spec
+
+    parsed = SynthesisSpec.from_file(spec)
+    if top:
+        parsed = replace(parsed, top=top)
+    result = synthesize_spec(parsed, scheduler=scheduler, workers=workers, processes=not threads,
+                             progress=_progress(quiet))
+    if out_dir is not None:
+        paths = result.write_toml(out_dir)
+        typer.echo(f"wrote {len(paths)} candidate file(s) to {out_dir.resolve()}", err=True)
+    if csv is not None:
+        emit(result.to_csv(), csv)
+    if plot is not None and result.best is not None:
+        from ..plotting import save_figure
+
+        save_figure(result.plot(), plot)
+        typer.echo(f"wrote {plot.resolve()}", err=True)
+    if format is OutputFormat.json:
+        text = result.to_json()
+    elif format is OutputFormat.markdown:
+        text = result.markdown()
+    elif format is OutputFormat.html:
+        text = ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>epicyclic synthesize</title></head><body>"
+                + result._repr_html_() + "</body></html>")
+    else:
+        text = result.table() if len(result) else (result.table() + "\nno transmission meets the targets: widen "
+                                                    "targets.tolerance or bounds.stationary_ratio, or add elements.")
+    emit(text, out)
