@@ -129,13 +129,29 @@ def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: n
     kappa = _det(lmat @ basis_row) * np.linalg.det(np.concatenate([basis_row, basis_null], axis=2))
     funcs = rows @ basis_null  # (P, elements, d)
     d = basis_null.shape[2]
-    picked = funcs[:, combos, :]  # (P, T, k, d)
-    cof = np.empty(picked.shape[:2] + (d,))
+    cof = _cofactors(funcs, combos)  # (P, T, d)
+    return kappa[:, None, None] * (cof @ np.swapaxes(basis_null, 1, 2))
+
+
+def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:
+    """Signed maximal minors c_i = (−1)^(i+k) det(F without column i) of each k×(k+1) matrix F."""
     k = combos.shape[1]
+    d = funcs.shape[2]
+    if k == 3 and d == 4:  # the common case (three engaged elements): 2×2 minors of the first two rows
+        a, b, c = (funcs[:, combos[:, j], :] for j in range(3))  # (P, T, 4) each
+        m = {(i, j): a[..., i] * b[..., j] - a[..., j] * b[..., i] for i, j in itertools.combinations(range(4), 2)}
+        out = np.empty(a.shape)
+        for i in range(4):
+            p, q, r = [j for j in range(4) if j != i]
+            det = m[(p, q)] * c[..., r] - m[(p, r)] * c[..., q] + m[(q, r)] * c[..., p]
+            out[..., i] = det if (i + k) % 2 == 0 else -det
+        return out
+    picked = funcs[:, combos, :]  # (P, T, k, d)
+    out = np.empty(picked.shape[:2] + (d,))
     for i in range(d):
         cols = [j for j in range(d) if j != i]
-        cof[..., i] = (-1) ** (i + k) * _det(picked[..., cols])
-    return kappa[:, None, None] * np.einsum("ptd,pnd->ptn", cof, basis_null)
+        out[..., i] = (-1) ** (i + k) * _det(picked[..., cols])
+    return out
 
 
 def corner_points(low: np.ndarray, high: np.ndarray) -> np.ndarray:

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .kinematics import combination_determinants, element_rows, element_shafts, ratio_ranges
-from .mechanisms import Mechanism
+from .mechanisms import PORTS, Mechanism
 
 __all__ = ["Placement", "Layout", "layout", "screen"]
 
@@ -92,6 +92,19 @@ class Layout:
     brake_shafts: np.ndarray
     touched: np.ndarray
 
+    @functools.cached_property
+    def blocks(self) -> list[tuple[int, int, int]]:
+        """(braked-shaft bit mask, first, stop) of the runs of element sets with the same brakes."""
+        edges = np.flatnonzero(np.diff(self.brake_shafts)) + 1
+        starts = np.concatenate([[0], edges])
+        stops = np.concatenate([edges, [len(self.brake_shafts)]])
+        return [(int(self.brake_shafts[a]), int(a), int(b)) for a, b in zip(starts, stops)]
+
+    @functools.cached_property
+    def columns(self) -> np.ndarray:
+        """``set_combos`` transposed and contiguous (C, A): fast per-combination gathers."""
+        return np.ascontiguousarray(self.set_combos.T)
+
 
 @functools.lru_cache(maxsize=16)
 def layout(shafts: int, brakes: int, clutches: int, engaged: int) -> Layout:
@@ -129,6 +142,12 @@ def _grid(low: np.ndarray, high: np.ndarray, level: int) -> tuple[np.ndarray, np
 
     Box number: digit k (base 2^level, least significant first) is the cell along set k.
     """
+    return _cached_grid(tuple(float(v) for v in low), tuple(float(v) for v in high), level)
+
+
+@functools.lru_cache(maxsize=32)
+def _cached_grid(low_t: tuple[float, ...], high_t: tuple[float, ...], level: int) -> tuple[np.ndarray, np.ndarray]:
+    low, high = np.array(low_t), np.array(high_t)
     sets = low.size
     cells = 2 ** level
     axis = np.linspace(0.0, 1.0, cells + 1)
@@ -141,14 +160,18 @@ def _grid(low: np.ndarray, high: np.ndarray, level: int) -> tuple[np.ndarray, np
     return points, corners
 
 
-def _children(box: int, level: int, sets: int) -> list[int]:
-    """Numbers of the 2^S sub-boxes (at ``level + 1``) of ``box`` (at ``level``)."""
+def _children(boxes: np.ndarray, level: int, sets: int) -> np.ndarray:
+    """Numbers of the 2^S sub-boxes (at ``level + 1``) of each box (at ``level``), shape (len, 2^S).
+
+    >>> _children(np.array([0]), 0, 2).tolist()
+    [[0, 2, 1, 3]]
+    """
     cells = 2 ** level
-    digits = [(box // cells ** k) % cells for k in range(sets)]
-    out = []
-    for half in itertools.product((0, 1), repeat=sets):
-        out.append(sum((2 * digits[k] + half[k]) * (2 * cells) ** k for k in range(sets)))
-    return out
+    boxes = np.asarray(boxes, dtype=np.int64)
+    digits = (boxes[:, None] // cells ** np.arange(sets)) % cells  # (n, S)
+    halves = np.array(list(itertools.product((0, 1), repeat=sets)))  # (2^S, S)
+    weights = (2 * cells) ** np.arange(sets)
+    return ((2 * digits[:, None, :] + halves[None, :, :]) * weights).sum(axis=2)
 
 
 def _masks(valid: np.ndarray, lo: np.ndarray, hi: np.ndarray, targets: np.ndarray, tolerance: float) -> np.ndarray:
@@ -180,8 +203,21 @@ def _passes(masks: np.ndarray, full: int, gears: int) -> np.ndarray:
     return (union == full) & (useful >= gears)
 
 
+def _passes_rows(masks: np.ndarray, full: int, gears: int) -> np.ndarray:
+    """:func:`_passes` for masks laid out (C, A): one contiguous row per combination."""
+    union = np.zeros(masks.shape[1], dtype=masks.dtype)
+    useful = np.zeros(masks.shape[1], dtype=np.int16)
+    for row in masks:
+        m = row & full
+        union |= m
+        useful += m != 0
+    return (union == full) & (useful >= gears)
+
+
 def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray, forward: np.ndarray,
-           reverse: np.ndarray, tolerance: float, levels: int = 2) -> tuple[list[Placement], int]:
+           reverse: np.ndarray, tolerance: float, levels: int = 2,
+           input_members: tuple[str, ...] = PORTS, output_members: tuple[str, ...] = PORTS
+           ) -> tuple[list[Placement], int]:
     """Every (input, output, element set) of the mechanism that survives screening.
 
     Parameters
@@ -197,6 +233,9 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         Relative tolerance on each target.
     levels : int, default 2
         Bisection levels after the whole box (each halves every i0 range).
+    input_members, output_members : tuple of str
+        Members ("sun", "ring", "carrier") the input / output shaft must hold
+        one of (a separate input shaft is always allowed).
 
     Returns
     -------
@@ -220,24 +259,41 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         pairs = list(itertools.combinations(range(mech.member_shafts), 2))
     survivors: list[tuple[int, int, int]] = []  # (input, output, element set)
     examined = 0
+    if gears > 62:
+        raise ValueError("screening handles at most 62 target ratios")
     xs, ys = np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
     valid, lo, hi = ratio_ranges(det[..., xs], det[..., ys])  # (T, pairs)
     fwd_mask = _masks(valid, lo, hi, targets, tolerance)
     rev_mask = _masks(valid, 1.0 / hi, 1.0 / lo, targets, tolerance)  # y -> x: 1/ratio
+    reach_fwd = np.bitwise_or.reduce(fwd_mask, axis=0)  # targets any combination can reach, per pair
+    reach_rev = np.bitwise_or.reduce(rev_mask, axis=0)
+
+    def role_ok(shaft: int, kinds: tuple[str, ...]) -> bool:
+        return any(port in kinds for _, port in mech.shaft_members(shaft))
+
+    fwd_rows = np.ascontiguousarray(fwd_mask.T)  # (pairs, T)
+    rev_rows = np.ascontiguousarray(rev_mask.T)
     for p, (x, y) in enumerate(pairs):
+        if reach_fwd[p] != full and (mech.free_input or reach_rev[p] != full):
+            continue  # some target is out of reach of every combination, in both directions
         io = (1 << x) | (1 << y)
         need = sum(1 << s for s in single if s not in (x, y)) | ((1 << x) if mech.free_input else 0)
-        cand = np.flatnonzero(((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need))
-        if cand.size == 0:
+        blocks = [(start, stop) for bits, start, stop in lay.blocks if not bits & io]
+        if not blocks:
             continue
-        combos = lay.set_combos[cand]
-        examined += cand.size * (1 if mech.free_input else 2)
-        directions = [(x, y, fwd_mask)] if mech.free_input else [(x, y, fwd_mask), (y, x, rev_mask)]
-        for a, b, mask in directions:
-            for j in cand[_passes(mask[combos, p], full, gears)]:
-                survivors.append((a, b, int(j)))
+        directions = [d for d in ([(x, y, fwd_rows, reach_fwd)] if mech.free_input else
+                                  [(x, y, fwd_rows, reach_fwd), (y, x, rev_rows, reach_rev)])
+                      if (mech.free_input or role_ok(d[0], input_members)) and role_ok(d[1], output_members)]
+        for start, stop in blocks:
+            covered = (lay.touched[start:stop] & need) == need
+            examined += int(covered.sum()) * len(directions)
+            for a, b, rows, reach in directions:
+                if reach[p] != full:
+                    continue
+                ok = _passes_rows(rows[p][lay.columns[:, start:stop]], full, gears) & covered
+                survivors += [(a, b, start + int(j)) for j in np.flatnonzero(ok)]
     # bisection: every survivor keeps the boxes (at the current level) in which it may reach the targets
-    boxes = {s: [0] for s in survivors}
+    boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors}
     for level in range(1, levels + 1):
         if not boxes:
             break
@@ -245,23 +301,26 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         points, corners = _grid(low, high, level)
         groups: dict[tuple[int, int], list[tuple[int, np.ndarray]]] = {}
         for (a, b, j), parents in boxes.items():
-            children = np.array([c for p in parents for c in _children(p, level - 1, sets)])
-            groups.setdefault((a, b), []).append((j, children))
+            groups.setdefault((a, b), []).append((j, _children(parents, level - 1, sets).ravel()))
         at = np.unique(corners[np.unique(np.concatenate([c for m in groups.values() for _, c in m]))])
         det = combination_determinants(mech, points[at], lay.combos[used], element_rows(mech.shafts))
         nxt = {}
         for (a, b), members in groups.items():
-            needed = np.unique(np.concatenate([c for _, c in members]))
-            cols = np.unique(np.concatenate([np.searchsorted(used, lay.set_combos[j]) for j, _ in members]))
+            sets_j = np.array([j for j, _ in members])
+            counts = np.array([c.size for _, c in members])
+            flat = np.concatenate([c for _, c in members])
+            needed = np.unique(flat)
+            member_cols = np.searchsorted(used, lay.set_combos[sets_j])  # (M, C) columns of det
+            cols = np.unique(member_cols)
             idx = np.searchsorted(at, corners[needed].T)  # (2^S, boxes) rows of det
             valid, lo, hi = ratio_ranges(det[:, cols, a][idx], det[:, cols, b][idx])  # (boxes, cols)
             mask = _masks(valid, lo, hi, targets, tolerance)
-            for j, children in members:
-                rows = np.searchsorted(needed, children)
-                where = np.searchsorted(cols, np.searchsorted(used, lay.set_combos[j]))
-                ok = _passes(mask[rows][:, where], full, gears)
-                if ok.any():
-                    nxt[(a, b, j)] = [int(c) for c in children[ok]]
+            owner = np.repeat(np.arange(len(members)), counts)
+            ok = _passes(mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]],
+                         full, gears)
+            for m, (j, keep) in enumerate(zip(sets_j, np.split(ok, np.cumsum(counts)[:-1]))):
+                if keep.any():
+                    nxt[(a, b, int(j))] = members[m][1][keep]
         boxes = nxt
     return [Placement(a, b, tuple(int(e) for e in lay.element_sets[j]), tuple(bx))
             for (a, b, j), bx in boxes.items()], examined

@@ -99,7 +99,8 @@ def search_task(task: Task) -> TaskResult:
     teeth_cache: dict[tuple[str, float], list] = {}
     for mech in task.mechanisms:
         lay = layout(mech.shafts, spec.brakes, spec.clutches, task.engaged)
-        placements, n = screen(mech, lay, low, high, forward, reverse, spec.tolerance, levels=spec.levels)
+        placements, n = screen(mech, lay, low, high, forward, reverse, spec.tolerance, levels=spec.levels,
+                               input_members=spec.input_members, output_members=spec.output_members)
         examined += n
         screened += len(placements)
         if not placements:
@@ -185,7 +186,8 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
     constraints : mapping, optional
         Bounds and search options: ``stationary_ratio`` (|i0| range), ``sun``,
         ``planet`` (tooth ranges), ``planets``, ``max_members_per_shaft``,
-        ``free_input``, ``levels``, ``stationary_efficiency``, ``top``.
+        ``free_input``, ``input_members``, ``output_members``, ``levels``,
+        ``stationary_efficiency``, ``top``.
     client : dask.distributed.Client, optional
         Run on this client.
     scheduler : str, optional

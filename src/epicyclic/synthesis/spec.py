@@ -24,6 +24,8 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     [search]
     max_members_per_shaft = 2   # ties join pairs of members (default: no limit)
     free_input = true           # also a separate input shaft reached by clutches only
+    input_members = ["sun", "ring", "carrier"]    # the input shaft holds one of these (default: any)
+    output_members = ["sun", "ring", "carrier"]
     levels = 3                  # bisection levels of the screening
     stationary_efficiency = 0.98
     top = 20
@@ -119,6 +121,8 @@ class SynthesisSpec:
     planets : tuple of int
     max_members_per_shaft : int or None
     free_input : bool
+    input_members, output_members : tuple of str
+        The input (output) shaft holds at least one of these members.
     levels : int
     stationary_efficiency : float
     top : int
@@ -139,6 +143,8 @@ class SynthesisSpec:
     planets: tuple[int, ...] = (3, 4, 5)
     max_members_per_shaft: int | None = None
     free_input: bool = True
+    input_members: tuple[str, ...] = ("sun", "ring", "carrier")
+    output_members: tuple[str, ...] = ("sun", "ring", "carrier")
     levels: int = 3
     stationary_efficiency: float = 0.98
     top: int = 20
@@ -168,7 +174,7 @@ class SynthesisSpec:
             ``{"brakes": b, "clutches": c, "engaged": k}`` (``engaged`` optional).
         constraints : mapping, optional
             Keys ``tolerance``, ``stationary_ratio``, ``sun``, ``planet``, ``planets``,
-            ``max_members_per_shaft``, ``free_input``, ``levels``,
+            ``max_members_per_shaft``, ``free_input``, ``input_members``, ``output_members``, ``levels``,
             ``stationary_efficiency``, ``top``, ``title``.
         """
         kw: dict[str, Any] = {}
@@ -247,7 +253,8 @@ class SynthesisSpec:
     @classmethod
     def _with_constraints(cls, kw: dict[str, Any], cons: dict[str, Any], where: str) -> SynthesisSpec:
         allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "max_members_per_shaft",
-                   "free_input", "levels", "stationary_efficiency", "top", "title"}
+                   "free_input", "input_members", "output_members", "levels", "stationary_efficiency", "top",
+                   "title"}
         unknown = set(cons) - allowed
         if unknown:
             raise SynthesisError(f"{where}: unknown constraint(s) {', '.join(sorted(map(repr, unknown)))}; "
@@ -278,6 +285,15 @@ class SynthesisSpec:
             if not isinstance(cons["free_input"], bool):
                 raise SynthesisError(f"{where}: search.free_input must be true or false, got {cons['free_input']!r}.")
             kw["free_input"] = cons["free_input"]
+        for key in ("input_members", "output_members"):
+            if key in cons:
+                value = cons[key]
+                value = [value] if isinstance(value, str) else value
+                if not isinstance(value, Sequence) or not value or any(v not in ("sun", "ring", "carrier")
+                                                                        for v in value):
+                    raise SynthesisError(f"{where}: search.{key} must be a non-empty list of 'sun', 'ring', "
+                                         f"'carrier', got {cons[key]!r}.")
+                kw[key] = tuple(value)
         if "levels" in cons:
             kw["levels"] = _count(cons["levels"], "search.levels", where, 0)
             if kw["levels"] > 5:
