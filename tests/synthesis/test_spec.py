@@ -67,7 +67,7 @@ def test_spread_spec():
     ([2.0, 1.0], 2, None, {"sun": [2, 40]}, "whole number >= 3"),
     ([2.0, 1.0], 2, None, {"stationary_efficiency": 1.5}, r"\(0, 1\]"),
     ([2.0, 1.0], 2, None, {"free_input": "yes"}, "true or false"),
-    ([2.0, 1.0], 2, None, {"levels": 9}, "at most 5"),
+    ([2.0, 1.0], 2, None, {"levels": 9}, "at most 4"),
     ([2.0, 1.0], 2, None, {"colour": "red"}, "unknown constraint"),
 ])
 def test_bad_specs_raise_clear_errors(targets, sets, elements, constraints, match):

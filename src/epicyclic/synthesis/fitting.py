@@ -145,16 +145,16 @@ def fit_ratios(mechanism: Mechanism, input: int, output: int, combos: np.ndarray
     def ratios_at(x: np.ndarray) -> np.ndarray:
         return gear_ratios(mechanism, x[None, :], combos, input, output)[0]
 
-    # rank the starts by their assignment cost, keep the three best
+    # rank the starts by their assignment cost, keep the two best
     at_starts = gear_ratios(mechanism, starts, combos, input, output)
     costs = [assign(r, forward, reverse)[0] for r in at_starts]
     best: RatioFit | None = None
-    for s in np.argsort(costs)[:3]:
+    for s in np.argsort(costs)[:2]:
         if not np.isfinite(costs[s]):
             continue
         x = starts[s].copy()
         picks = assign(at_starts[s], forward, reverse)[1]
-        for _ in range(4):
+        for _ in range(3):
             chosen = np.array(picks)
 
             def residual(z: np.ndarray) -> np.ndarray:
@@ -164,7 +164,7 @@ def fit_ratios(mechanism: Mechanism, input: int, output: int, combos: np.ndarray
                 return np.where(np.isfinite(res), res, 1e3)
 
             sol = least_squares(residual, x, bounds=(low, high), method="trf", xtol=1e-12, ftol=1e-12,
-                                max_nfev=200)
+                                max_nfev=80)
             x = sol.x
             cost, new = assign(ratios_at(x), forward, reverse)
             if not np.isfinite(cost) or new == picks:

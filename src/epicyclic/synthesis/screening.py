@@ -232,7 +232,8 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     tolerance : float
         Relative tolerance on each target.
     levels : int, default 2
-        Bisection levels after the whole box (each halves every i0 range).
+        Bisection levels after the whole box (each halves every i0 range);
+        at most 16 // S are used (2^16 boxes).
     input_members, output_members : tuple of str
         Members ("sun", "ring", "carrier") the input / output shaft must hold
         one of (a separate input shaft is always allowed).
@@ -247,6 +248,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     mech = mechanism
     low, high = np.asarray(low, float), np.asarray(high, float)
     sets = mech.sets
+    levels = min(levels, 16 // sets)  # at most 2^16 boxes
     targets = np.concatenate([forward, reverse]).astype(float)
     gears = targets.size
     full = (1 << gears) - 1
@@ -257,6 +259,15 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         pairs = [(mech.member_shafts, y) for y in range(mech.member_shafts)]
     else:
         pairs = list(itertools.combinations(range(mech.member_shafts), 2))
+
+    def role_ok(shaft: int, kinds: tuple[str, ...]) -> bool:
+        return any(port in kinds for _, port in mech.shaft_members(shaft))
+
+    pairs = [(x, y) for x, y in pairs
+             if role_ok(y, output_members) and (mech.free_input or role_ok(x, input_members))
+             or not mech.free_input and role_ok(x, output_members) and role_ok(y, input_members)]
+    if not pairs:
+        return [], 0
     survivors: list[tuple[int, int, int]] = []  # (input, output, element set)
     examined = 0
     if gears > 62:
@@ -267,9 +278,6 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     rev_mask = _masks(valid, 1.0 / hi, 1.0 / lo, targets, tolerance)  # y -> x: 1/ratio
     reach_fwd = np.bitwise_or.reduce(fwd_mask, axis=0)  # targets any combination can reach, per pair
     reach_rev = np.bitwise_or.reduce(rev_mask, axis=0)
-
-    def role_ok(shaft: int, kinds: tuple[str, ...]) -> bool:
-        return any(port in kinds for _, port in mech.shaft_members(shaft))
 
     fwd_rows = np.ascontiguousarray(fwd_mask.T)  # (pairs, T)
     rev_rows = np.ascontiguousarray(rev_mask.T)

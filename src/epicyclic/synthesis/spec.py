@@ -26,7 +26,7 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     free_input = true           # also a separate input shaft reached by clutches only
     input_members = ["sun", "ring", "carrier"]    # the input shaft holds one of these (default: any)
     output_members = ["sun", "ring", "carrier"]
-    levels = 3                  # bisection levels of the screening
+    levels = 4                  # bisection levels of the screening (at most 16 // sets are used)
     stationary_efficiency = 0.98
     top = 20
 
@@ -145,7 +145,7 @@ class SynthesisSpec:
     free_input: bool = True
     input_members: tuple[str, ...] = ("sun", "ring", "carrier")
     output_members: tuple[str, ...] = ("sun", "ring", "carrier")
-    levels: int = 3
+    levels: int = 4
     stationary_efficiency: float = 0.98
     top: int = 20
     title: str = "synthesis"
@@ -296,8 +296,8 @@ class SynthesisSpec:
                 kw[key] = tuple(value)
         if "levels" in cons:
             kw["levels"] = _count(cons["levels"], "search.levels", where, 0)
-            if kw["levels"] > 5:
-                raise SynthesisError(f"{where}: search.levels must be at most 5, got {kw['levels']}.")
+            if kw["levels"] > 4:
+                raise SynthesisError(f"{where}: search.levels must be at most 4, got {kw['levels']}.")
         if "stationary_efficiency" in cons:
             eta = _number(cons["stationary_efficiency"], "search.stationary_efficiency", where)
             if not 0 < eta <= 1:
