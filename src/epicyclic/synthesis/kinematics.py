@@ -13,7 +13,9 @@ matrix ``[L; E; e_in]`` is regular, and then (Cramer's rule)
 ``[L; E]`` (the generalized cross product).  It is computed in the mechanism's
 null space: with ``V`` an orthonormal basis of the null space of ``L`` and
 ``R`` of its row space, ``D_x = κ · c(E V) · v_x`` with κ = det(L R)·det[R V]
-and c the cofactor vector of the k×(k+1) matrix ``E V``.  So one mechanism
+and c the cofactor vector of the k×(k+1) matrix ``E V``.  Values within
+round-off of zero (relative to the largest ``D_x`` of the combination, the
+project's one rule :mod:`epicyclic.results.zero`) are exactly zero.  So one mechanism
 gives the determinants of every combination, for every choice of input and
 output, from a handful of small products (:func:`combination_determinants`).
 
@@ -38,6 +40,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from ..results.zero import clean_array
 from .mechanisms import Mechanism
 
 __all__ = ["element_count", "element_shafts", "element_rows", "willis_matrices", "combination_determinants",
@@ -130,7 +133,9 @@ def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: n
     funcs = rows @ basis_null  # (P, elements, d)
     d = basis_null.shape[2]
     cof = _cofactors(funcs, combos)  # (P, T, d)
-    return kappa[:, None, None] * (cof @ np.swapaxes(basis_null, 1, 2))
+    det = kappa[:, None, None] * (cof @ np.swapaxes(basis_null, 1, 2))
+    # round-off of an exact zero (an output that stands still) is zero, relative to the largest minor
+    return clean_array(det, np.abs(det).max(axis=2, keepdims=True))
 
 
 def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:
@@ -189,8 +194,7 @@ def gear_ratios(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray, in
     """
     det = combination_determinants(mechanism, ratios, combos, rows)
     d_in, d_out = det[..., input], det[..., output]
-    scale = np.abs(det).max(axis=2) + 1e-300
-    ok = (np.abs(d_in) > 1e-9 * scale) & (np.abs(d_out) > 1e-9 * scale)
+    ok = (d_in != 0) & (d_out != 0)  # zeros are exact after clean_array
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(ok, d_in / d_out, np.nan)
 
