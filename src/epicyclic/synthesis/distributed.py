@@ -50,9 +50,17 @@ def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: A
         if scheduler:
             client = own_client = Client(scheduler, timeout="20s")
         else:
+            import dask
+
             n = workers or os.cpu_count() or 1
-            own_cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=processes,
-                                       dashboard_address=None, silence_logs=logging.ERROR)
+            # Dask's default MALLOC_TRIM_THRESHOLD_ for worker processes switches off glibc's adaptive
+            # mmap threshold: every temporary numpy array is then a fresh mmap (page faults, system time
+            # three times the work).  The search allocates many such arrays, so keep glibc's default.
+            environ = {k: v for k, v in dask.config.get("distributed.nanny.pre-spawn-environ", {}).items()
+                       if k != "MALLOC_TRIM_THRESHOLD_"}
+            with dask.config.set({"distributed.nanny.pre-spawn-environ": environ}):
+                own_cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=processes,
+                                           dashboard_address=None, silence_logs=logging.ERROR)
             client = own_client = Client(own_cluster)
     try:
         used = len(client.scheduler_info().get("workers", {})) or 1
