@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import logging
 import os
+import warnings
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -58,7 +59,9 @@ def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: A
             # three times the work).  The search allocates many such arrays, so keep glibc's default.
             environ = {k: v for k, v in dask.config.get("distributed.nanny.pre-spawn-environ", {}).items()
                        if k != "MALLOC_TRIM_THRESHOLD_"}
-            with dask.config.set({"distributed.nanny.pre-spawn-environ": environ}):
+            with dask.config.set({"distributed.nanny.pre-spawn-environ": environ}), warnings.catch_warnings():
+                # the scheduler's small HTTP server moves to a free port when 8787 is taken: not worth a warning
+                warnings.filterwarnings("ignore", message="Port .* is already in use", category=UserWarning)
                 own_cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=processes,
                                            dashboard_address=None, silence_logs=logging.ERROR)
             client = own_client = Client(own_cluster)
