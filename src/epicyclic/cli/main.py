@@ -42,6 +42,10 @@ from . import synthesize as _synthesize  # noqa: E402
 
 app.command("synthesize")(_synthesize.synthesize)
 
+from . import serve as _serve  # noqa: E402
+
+app.command("serve")(_serve.serve)
+
 
 def main() -> None:
     """Console-script entry point."""
