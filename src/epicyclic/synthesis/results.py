@@ -141,16 +141,24 @@ class SynthesisResult:
             paths.append(path)
         return paths
 
-    def plot(self, rank: int = 1, gear: str | None = None) -> Any:
-        """Lever diagram (Benford–Leising) of candidate ``rank`` in ``gear`` (default: first gear)."""
-        from ..plotting import lever_diagram
+    def plot(self, rank: int = 1, gear: str | None = None, kind: str = "lever") -> Any:
+        """Figure of candidate ``rank``: its lever diagram (Benford–Leising) in ``gear`` (default:
+        first gear), or with ``kind="chart"`` the plotting package's speed chart across all gears."""
+        from .. import plotting
         from .spec import SynthesisError
 
         if not 1 <= rank <= len(self.candidates):
             raise SynthesisError(f"plot: rank must lie in 1…{len(self.candidates)}, got {rank!r}.")
+        if kind not in ("lever", "chart"):
+            raise SynthesisError(f"plot: kind must be 'lever' or 'chart', got {kind!r}.")
         cand = self.candidates[rank - 1]
         gear = gear or cand.gears[0]
         t = cand.transmission(f"{self.spec.title}, candidate {rank}")
         if gear not in t.gears:
             raise SynthesisError(f"plot: no gear {gear!r}; gears are {', '.join(t.gears)}.")
-        return lever_diagram(t.analyze(gear).drive).plot()
+        if kind == "chart":
+            chart = getattr(plotting, "speed_chart", None)
+            if chart is None:
+                raise SynthesisError("plot: this version of epicyclic.plotting has no speed chart; use kind='lever'.")
+            return chart(t, gear=gear).plot()
+        return plotting.lever_diagram(t.analyze(gear).drive).plot()
