@@ -55,3 +55,18 @@ def test_8hp_candidate_file_reproduces_its_ratios(zf8, tmp_path):
     for cand, path in zip(result.candidates, paths):
         t = Transmission.from_file(path)
         assert list(t.ratios.values()) == pytest.approx(list(cand.ratios), rel=1e-12)
+
+
+def test_ravigneaux_aod_is_found_with_a_plus_set():
+    """Ford AOD: 2.40, 1.47, 1.00, 0.67, R −2.00 (ATRA TSB 89-30; compass-at.com), one simple and one
+    double-planet set, 2 brakes, 3 clutches, 2 engaged: the Ravigneaux arrangement (sets sharing ring
+    and carrier, separate input with three clutches) is among the candidates of the full space."""
+    published = entry("ravigneaux_aod").published_ratios
+    result = synthesize(list(published.values()), sets={"simple": 1, "plus": 1},
+                        elements={"brakes": 2, "clutches": 3, "engaged": 2}, constraints={"tolerance": 0.01},
+                        workers=1, processes=False)
+    key = Candidate.from_transmission(build("ravigneaux_aod")).architecture_key
+    found = [c for c in result.candidates if c.architecture_key == key]
+    assert found
+    assert all(abs(r / t - 1) <= 0.01 for r, t in zip(found[0].ratios, found[0].targets))
+    assert found[0].teeth[1].kind == "plus" and found[0].teeth[1].stationary_ratio > 0

@@ -106,7 +106,8 @@ class Candidate:
             elems = tuple(sorted(tuple(sorted(number[s] for s in shafts[e])) for e in self.elements))
             teeth = tuple((self.teeth[perm[j]].z_sun, self.teeth[perm[j]].z_ring) for j in range(len(perm))) \
                 if with_teeth else ()
-            k = (tuple(number[s] for s in seq), number[self.input], number[self.output], elems, teeth)
+            k = (self.mechanism.kinds, tuple(number[s] for s in seq), number[self.input], number[self.output], elems,
+                 teeth)
             best = k if best is None or k < best else best
         return best
 
@@ -135,7 +136,8 @@ class Candidate:
         from .spec import SynthesisError
 
         train = transmission.train
-        sets = train.planetary_sets
+        # simple sets first, then plus sets: the order of SynthesisSpec.kinds
+        sets = sorted(train.planetary_sets, key=lambda p: p.stationary_ratio > 0)
         if len(sets) != len(train.elements) - len(train.shift_elements):
             raise SynthesisError("from_transmission: only planetary sets, clutches and brakes can be described.")
         number: dict[str, int] = {}
