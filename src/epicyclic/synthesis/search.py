@@ -217,8 +217,10 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
 
     Examples
     --------
-    >>> res = synthesize([2.46, 1.46, 1.0, -2.18], sets=2, elements={"brakes": 2, "clutches": 2},
-    ...                  constraints={"tolerance": 0.01}, processes=False, workers=1)   # doctest: +SKIP
+    >>> res = synthesize([2.46, 1.46, 1.0, -2.18], sets=2, elements={"brakes": 2, "clutches": 2, "engaged": 2},
+    ...                  constraints={"tolerance": 0.01}, processes=False, workers=1)
+    >>> len(res) > 0, res.best.metrics["double_shifts"], round(res.best.ratios[2], 6)
+    (True, 0, 1.0)
     """
     spec = SynthesisSpec.create(targets, sets, elements, constraints)
     return synthesize_spec(spec, client=client, scheduler=scheduler, workers=workers, processes=processes,
