@@ -56,3 +56,11 @@ def test_candidate_efficiencies_are_physical():
         for gear, ratio in zip(c.gears, c.ratios):
             if abs(ratio - 1) < 1e-12:
                 assert c.metrics["efficiency"][gear] == pytest.approx(1.0, abs=1e-12)
+
+
+def test_unreachable_scheduler_is_a_clear_error():
+    from epicyclic.synthesis import SynthesisError
+    from epicyclic.synthesis.distributed import run_tasks
+
+    with pytest.raises(SynthesisError, match="cannot reach the Dask scheduler at 'tcp://127.0.0.1:9'"):
+        run_tasks(len, [[1]], scheduler="tcp://127.0.0.1:9", timeout="1s")

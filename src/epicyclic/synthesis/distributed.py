@@ -25,7 +25,7 @@ __all__ = ["run_tasks"]
 
 def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: Any = None,
               scheduler: str | None = None, workers: int | None = None, processes: bool = True,
-              progress: Callable[[int, int], None] | None = None) -> tuple[list[Any], int]:
+              progress: Callable[[int, int], None] | None = None, timeout: str = "10s") -> tuple[list[Any], int]:
     """Run ``function(task)`` for every task on Dask; return (results in task order, workers used).
 
     Parameters
@@ -43,13 +43,28 @@ def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: A
     processes : bool, default True
         Local workers as processes (False: threads of this process).
     progress : callable (done, total), optional
+    timeout : str, default "10s"
+        How long to try to reach ``scheduler``.
+
+    Raises
+    ------
+    SynthesisError
+        The scheduler cannot be reached.
     """
     from distributed import Client, LocalCluster, as_completed
 
     own_cluster = own_client = None
     if client is None:
         if scheduler:
-            client = own_client = Client(scheduler, timeout="20s")
+            try:
+                client = own_client = Client(scheduler, timeout=timeout)
+            except (OSError, ValueError) as exc:
+                from .spec import SynthesisError
+
+                raise SynthesisError(
+                    f"synthesize: cannot reach the Dask scheduler at {scheduler!r} ({exc}); start one "
+                    "(`dask scheduler`, then `dask worker ADDRESS` on each machine) or leave out --scheduler "
+                    "to run on a local cluster.") from None
         else:
             import dask
 
