@@ -12,14 +12,12 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..io import load_train_file
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load, solved
 
 __all__ = ["analyze"]
-
 
 
 @guarded
@@ -32,17 +30,8 @@ def analyze(
     lang: Annotated[str, typer.Option(help="Language of the worked solution in HTML reports: en or de.")] = "en",
 ) -> None:
     """Solve FILE: speeds, torques, powers, losses, efficiency, self-locking, circulating power."""
-    train_file = load_train_file(file)
-    if gear is not None:
-        from dataclasses import replace
-
-        from .. import ModelError
-
-        if train_file.transmission is None:
-            raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
-        train_file.transmission.train_in_gear(train_file.train, gear)  # validates the gear name
-        train_file = replace(train_file, gear=gear)
-    solution = train_file.solve()
+    train_file = load(file, gear)
+    solution = solved(train_file, file)
     units, title, source = train_file.units, train_file.title, str(file)
     if format is OutputFormat.json:
         text = json_report(solution, units, title=title, source=source)

@@ -59,7 +59,7 @@ from typing import Any
 from ..results.solution import Solution
 from ..units import Units
 
-__all__ = ["SCHEMA", "report_dict", "json_report"]
+__all__ = ["SCHEMA", "report_dict", "report_data", "json_report"]
 
 #: Identifier of the layout; bumped on any incompatible change.
 SCHEMA = "epicyclic-report/1"
@@ -126,6 +126,12 @@ def report_dict(
     dict
         See the module docstring for the layout.
     """
+    return _finite(report_data(solution, units, title=title, source=source))
+
+
+def report_data(solution: Solution, units: Units | None = None, *, title: str | None = None,
+                source: str | None = None) -> dict[str, Any]:
+    """:func:`report_dict` before non-finite numbers become null (to check them: ``check_finite``)."""
     from .. import __version__
 
     units = units or Units()
@@ -135,7 +141,7 @@ def report_dict(
     if solution.ideal is not None:
         ideal = _convert_solution(solution.ideal.to_dict(), units)
         ideal["ratio"] = solution.ideal.ratio
-    return _finite({
+    return {
         "schema": SCHEMA,
         "generator": f"epicyclic {__version__}",
         "title": title or solution.train.name,
@@ -143,7 +149,7 @@ def report_dict(
         "units": units.to_dict(),
         "solution": body,
         "ideal": ideal,
-    })
+    }
 
 
 def json_report(solution: Solution, units: Units | None = None, *, title: str | None = None,
