@@ -56,7 +56,9 @@ def test_spread_spec():
     ({"spread": 4.0, "gears": 3}, 2, None, None, "targets.first"),
     ({"spread": 0.5, "gears": 3, "first": 2.0}, 2, None, None, "spread must be > 1"),
     ([2.0, 1.0], 0, None, None, "sets must be a whole number >= 1"),
-    ([2.0, 1.0], {"simple": 7}, None, None, "1 to 6 planetary sets"),
+    ([2.0, 1.0], {"simple": 5}, None, None, "1 to 4 planetary sets"),
+    ([2.0, 1.0], 2, {"brakes": 4, "clutches": 5}, None, "at most 8 shift elements"),
+    ([float(k) for k in range(20, 3, -1)], 2, {"brakes": 4, "clutches": 4}, None, "at most 16 target ratios"),
     ([2.0, 1.0], {"ring": 1}, None, None, "unknown sets key"),
     ([2.0, 1.0], 2, {"brakes": 1, "clutches": 0}, None, "cannot give 2 gears|fewer than"),
     ([3.0, 2.0, 1.0, -2.0], 2, {"brakes": 2, "clutches": 2, "engaged": 4}, None, "fewer than the 4 gears"),
@@ -88,7 +90,7 @@ def test_from_file_and_its_errors(tmp_path):
         "unknown.toml": "[targets]\nforward=[2.0]\n[gears]\nx=1\n",
         "notargets.toml": "[sets]\nsimple = 2\n",
     }
-    messages = {"missing.toml": "cannot read", "bad.toml": "not valid TOML", "table.toml": "must be a table",
+    messages = {"missing.toml": "no such file", "bad.toml": "not valid TOML", "table.toml": "must be a table",
                 "unknown.toml": "unknown table", "notargets.toml": r"missing \[targets\]"}
     for name, text in cases.items():
         path = tmp_path / name

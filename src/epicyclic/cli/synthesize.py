@@ -61,8 +61,23 @@ def synthesize(
     """Search planetary transmissions (ties, shift elements, schedule, teeth) that give the target ratios."""
     from dataclasses import replace
 
+    from ..io.output import refuse_input
     from ..synthesis import SynthesisSpec, synthesize_spec
 
+    # every output is checked before the search, which may take long
+    for option, path in (("--out", out), ("--csv", csv), ("--plot", plot)):
+        if path is not None:
+            refuse_input(path, [spec], option)
+    if plot is not None:
+        from ..plotting import FIGURE_SUFFIXES
+        from ..plotting._common import check_suffix
+
+        check_suffix(plot, FIGURE_SUFFIXES, "synthesize --plot")
+    if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
+        from ..io.output import OutputError
+
+        raise OutputError(f"--out-dir: {out_dir} exists and is not a folder; give a folder for the candidate files.",
+                          str(out_dir))
     parsed = SynthesisSpec.from_file(spec)
     if top:
         parsed = replace(parsed, top=top)
@@ -74,9 +89,11 @@ def synthesize(
     if csv is not None:
         emit(result.to_csv(), csv)
     if plot is not None and result.best is not None:
+        from ..io.output import atomic_path
         from ..plotting import save_figure
 
-        save_figure(result.plot(), plot)
+        with atomic_path(plot) as temporary:
+            save_figure(result.plot(), temporary)
         typer.echo(f"wrote {plot.resolve()}", err=True)
     if format is OutputFormat.json:
         text = result.to_json()

@@ -132,14 +132,11 @@ class SynthesisResult:
 
     def write_toml(self, directory: str | Path, count: int | None = None) -> list[Path]:
         """Write ``candidate_01.toml`` … for the top candidates (``analyze``/``gears`` read them)."""
+        from ..io.output import write_atomic
+
         directory = Path(directory)
-        directory.mkdir(parents=True, exist_ok=True)
-        paths = []
-        for k, c in enumerate(self.top[:count], 1):
-            path = directory / f"candidate_{k:02d}.toml"
-            path.write_text(c.toml(f"{self.spec.title}, candidate {k}"), encoding="utf-8")
-            paths.append(path)
-        return paths
+        return [write_atomic(directory / f"candidate_{k:02d}.toml", c.toml(f"{self.spec.title}, candidate {k}"))
+                for k, c in enumerate(self.top[:count], 1)]
 
     def plot(self, rank: int = 1, gear: str | None = None, kind: str = "lever") -> Any:
         """Figure of candidate ``rank``: its lever diagram (Benford–Leising) in ``gear`` (default:

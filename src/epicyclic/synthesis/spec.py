@@ -42,7 +42,6 @@ steps, φ_k = φ1 · φ2^(z−k)).
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from math import comb
@@ -50,6 +49,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ModelError
+from ..limits import MAX_SYNTHESIS_ELEMENTS, MAX_SYNTHESIS_GEARS, MAX_SYNTHESIS_SETS
 
 __all__ = ["SynthesisError", "SynthesisSpec", "progressive_ratios"]
 
@@ -224,8 +224,9 @@ class SynthesisSpec:
             kw["plus"] = _count(sets.get("plus", 0), "sets.plus", where)
         else:
             kw["simple"], kw["plus"] = _count(sets, "sets", where, 1), 0
-        if not 1 <= kw["simple"] + kw["plus"] <= 6:
-            raise SynthesisError(f"{where}: give 1 to 6 planetary sets in all, got {kw['simple'] + kw['plus']}.")
+        if not 1 <= kw["simple"] + kw["plus"] <= MAX_SYNTHESIS_SETS:
+            raise SynthesisError(f"{where}: give 1 to {MAX_SYNTHESIS_SETS} planetary sets in all (sets.simple + "
+                                 f"sets.plus), got {kw['simple'] + kw['plus']} (see docs/limits.md).")
         elements = dict(elements or {"brakes": 2, "clutches": 2})
         unknown = set(elements) - {"brakes", "clutches", "engaged"}
         if unknown:
@@ -234,6 +235,12 @@ class SynthesisSpec:
         kw["clutches"] = _count(elements.get("clutches", 0), "elements.clutches", where)
         total = kw["brakes"] + kw["clutches"]
         gears = len(kw["forward"]) + len(kw["reverse"])
+        if total > MAX_SYNTHESIS_ELEMENTS:
+            raise SynthesisError(f"{where}: at most {MAX_SYNTHESIS_ELEMENTS} shift elements (elements.brakes + "
+                                 f"elements.clutches), got {total} (see docs/limits.md).")
+        if gears > MAX_SYNTHESIS_GEARS:
+            raise SynthesisError(f"{where}: at most {MAX_SYNTHESIS_GEARS} target ratios, got {gears} "
+                                 "(see docs/limits.md).")
         if "engaged" in elements:
             engaged = elements["engaged"]
             engaged = (engaged,) if not isinstance(engaged, Sequence) else tuple(engaged)
@@ -312,13 +319,13 @@ class SynthesisSpec:
     @classmethod
     def from_file(cls, path: str | Path) -> SynthesisSpec:
         """Read a TOML specification (see the module docstring for the keys)."""
+        from ..io.source import InputFileError, parse_toml, read_source
+
         path = Path(path)
         try:
-            data = tomllib.loads(path.read_text(encoding="utf-8"))
-        except OSError as exc:
-            raise SynthesisError(f"{path}: cannot read the file ({exc.strerror or exc}).") from None
-        except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-            raise SynthesisError(f"{path}: not valid TOML ({exc}).") from None
+            data = parse_toml(read_source(path), str(path))
+        except InputFileError as exc:
+            raise SynthesisError(str(exc)) from None
         unknown = set(data) - {"title", "targets", "sets", "elements", "bounds", "search"}
         if unknown:
             raise SynthesisError(f"{path}: unknown table(s)/key(s) {', '.join(sorted(map(repr, unknown)))}; "
