@@ -5,7 +5,7 @@ Reads a synthesis specification (targets, sets, shift elements, bounds; see
 ``--scheduler ADDRESS``, on an existing one, shows progress per task on
 stderr and prints the ranked candidates.  ``--out-dir`` writes a train file
 per candidate (``epicyclic gears`` and ``analyze`` read them), ``--csv`` a
-table, ``--plot`` the lever diagram of the best candidate.
+table, ``--plot`` the speed chart across gears (or lever diagram) of the best candidate.
 """
 
 from __future__ import annotations
@@ -52,8 +52,10 @@ def synthesize(
     out_dir: Annotated[Optional[Path], typer.Option("--out-dir", help="Write candidate_NN.toml per shown "
                                                      "candidate into this folder.")] = None,
     csv: Annotated[Optional[Path], typer.Option("--csv", help="Also write the table as CSV.")] = None,
-    plot: Annotated[Optional[Path], typer.Option("--plot", help="Lever diagram of the best candidate "
-                                                  "(.png, .svg or .pdf).")] = None,
+    plot: Annotated[Optional[Path], typer.Option("--plot", help="Speed chart across the gears of the best "
+                                                  "candidate (.png, .svg or .pdf).")] = None,
+    plot_kind: Annotated[str, typer.Option("--plot-kind", help="chart (speed chart across gears) or lever "
+                                            "(lever diagram in the first gear).")] = "chart",
     threads: Annotated[bool, typer.Option("--threads", help="Local cluster of threads in this process "
                                            "instead of worker processes.")] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress on stderr.")] = False,
@@ -73,6 +75,10 @@ def synthesize(
         from ..plotting._common import check_suffix
 
         check_suffix(plot, FIGURE_SUFFIXES, "synthesize --plot")
+    if plot_kind not in ("chart", "lever"):
+        from ..synthesis import SynthesisError
+
+        raise SynthesisError(f"--plot-kind must be 'chart' or 'lever', got {plot_kind!r:.40}.")
     if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
         from ..io.output import OutputError
 
@@ -93,7 +99,7 @@ def synthesize(
         from ..plotting import save_figure
 
         with atomic_path(plot) as temporary:
-            save_figure(result.plot(), temporary)
+            save_figure(result.plot(kind=plot_kind), temporary)
         typer.echo(f"wrote {plot.resolve()}", err=True)
     if format is OutputFormat.json:
         text = result.to_json()

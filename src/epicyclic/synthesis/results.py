@@ -138,9 +138,10 @@ class SynthesisResult:
         return [write_atomic(directory / f"candidate_{k:02d}.toml", c.toml(f"{self.spec.title}, candidate {k}"))
                 for k, c in enumerate(self.top[:count], 1)]
 
-    def plot(self, rank: int = 1, gear: str | None = None, kind: str = "lever") -> Any:
-        """Figure of candidate ``rank``: its lever diagram (Benford–Leising) in ``gear`` (default:
-        first gear), or with ``kind="chart"`` the plotting package's speed chart across all gears."""
+    def plot(self, rank: int = 1, gear: str | None = None, kind: str = "chart") -> Any:
+        """Figure of candidate ``rank`` (default: the best): the speed chart across all gears
+        (``kind="chart"``, ``gear`` highlighted) or its lever diagram (Benford–Leising) in ``gear``
+        (``kind="lever"``; default gear: the first)."""
         from .. import plotting
         from .spec import SynthesisError
 
@@ -154,8 +155,5 @@ class SynthesisResult:
         if gear not in t.gears:
             raise SynthesisError(f"plot: no gear {gear!r}; gears are {', '.join(t.gears)}.")
         if kind == "chart":
-            chart = getattr(plotting, "speed_chart", None)
-            if chart is None:
-                raise SynthesisError("plot: this version of epicyclic.plotting has no speed chart; use kind='lever'.")
-            return chart(t, gear=gear).plot()
+            return plotting.speed_chart(t, gear=gear).plot()
         return plotting.lever_diagram(t.analyze(gear).drive).plot()
