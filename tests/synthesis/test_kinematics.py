@@ -24,7 +24,7 @@ from epicyclic.transmission.library import build
 def test_gear_ratios_match_the_solver(key):
     t = build(key)
     c = Candidate.from_transmission(t)
-    i0 = np.array([[p.stationary_ratio for p in t.train.planetary_sets]])
+    i0 = np.array([[p.stationary_ratio for p in sorted(t.train.planetary_sets, key=lambda p: p.stationary_ratio > 0)]])
     ratios = gear_ratios(c.mechanism, i0, np.array(c.schedule), c.input, c.output)[0]
     assert ratios == pytest.approx(list(c.ratios), rel=1e-9)
 
