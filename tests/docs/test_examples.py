@@ -3,8 +3,8 @@
 ``python`` blocks run in page order in one namespace per page (a tutorial builds on its earlier
 blocks); ``pycon`` blocks (``>>>`` sessions) run as doctests in the same namespace, so the output
 they show is checked; ``sh`` / ``bash`` / ``console`` blocks (``$`` prompts stripped) run line by
-line and every line must succeed (``epicyclic serve``, which runs until stopped, is parsed with
-its options, not started): a plain ``epicyclic …`` command runs in-process through typer's
+line and every line must succeed (``epicyclic serve``, which runs until stopped, and ``epicyclic synthesize``,
+which starts a Dask cluster, are parsed with their options, not started): a plain ``epicyclic …`` command runs in-process through typer's
 test runner (the same app as the installed command, without a new interpreter per line — the
 installed command itself is tested in tests/test_package.py), anything else (other programs, pipes,
 redirections, ``||``) in bash with the installed ``epicyclic`` on the PATH; ``toml`` blocks must parse.  Each page
@@ -81,8 +81,9 @@ def _epicyclic_args(line: str) -> list[str] | None:
     return tokens[1:]
 
 
-#: Commands that run until stopped (a server): their command lines are parsed, not run.
-LONG_RUNNING = {"serve"}
+#: Commands that run until stopped (a server) or start a computing cluster (which may be remote):
+#: their command lines are parsed with every option, not run (tests/synthesis runs synthesize).
+LONG_RUNNING = {"serve", "synthesize"}
 
 
 def _parse_only(args: list[str], where: str, line: str) -> None:
