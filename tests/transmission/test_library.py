@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from epicyclic import OperatingPoint, solve
+from epicyclic import GearTrain, OperatingPoint, PlanetarySet, solve
 from epicyclic.errors import ModelError
 from epicyclic.io import load_train_file
 from epicyclic.solver.assembly import matrices
@@ -25,12 +25,13 @@ FILES = {
     "ravigneaux_aod": "ravigneaux_ford_aod_4speed.toml",
     "lepelletier_6hp26": "lepelletier_zf_6hp26_6speed.toml",
     "zf_8hp70": "zf_8hp70_8speed.toml",
+    "gm_8l90": "gm_8l90_8speed.toml",
     "prius_psd": "toyota_prius_power_split.toml",
 }
 
 CASES = [
     (key, gear, published, LIBRARY[key].printed_digits)
-    for key in ("simpson_c4", "ravigneaux_aod", "lepelletier_6hp26", "zf_8hp70")
+    for key in ("simpson_c4", "ravigneaux_aod", "lepelletier_6hp26", "zf_8hp70", "zf_8hp45", "gm_8l90", "gm_8l45")
     for gear, published in LIBRARY[key].published_ratios.items()
 ]
 
@@ -38,7 +39,9 @@ CASES = [
 # Ford C4: Wikipedia 'Ford C4' (2.46, 1.46, 1.00) and ford-torino.de (R 2.18);
 # Ford AOD: ATRA TSB 89-30 (2.4, 1.47, 1, 0.67) and compass-at.com (R -2.0);
 # ZF 6HP 26: Wikipedia 'ZF 6HP transmission' (4.171 … 0.691, R -3.403);
-# ZF 8HP 70: Wikipedia 'ZF 8HP transmission', in-depth table (4.6957 … 0.6667, R -3.2968).
+# ZF 8HP 70: Wikipedia 'ZF 8HP transmission', in-depth table (4.6957 … 0.6667, R -3.2968);
+# ZF 8HP 45 (1st gen.): same article, teeth 48/96 48/96 60/96 28/104, ratios 4.714 … 0.667, R -3.295;
+# GM 8L 90 / 8L 45: Wikipedia 'GM 8L transmission', in-depth table (4.5600 … R -3.8176; 4.6154 … R -3.9278).
 @pytest.mark.parametrize("key, gear, published, digits", CASES,
                          ids=[f"{k}-{g}" for k, g, _, _ in CASES])
 def test_published_ratio_per_gear(key, gear, published, digits):
@@ -103,3 +106,21 @@ def test_prius_power_split_speeds():
 def test_unknown_entry():
     with pytest.raises(ModelError, match="no entry 'zf_9hp'"):
         entry("zf_9hp")
+
+
+def test_gm_8l_needs_gearsets_1_and_3_swapped():
+    """Wikipedia: the GM 8L keeps the 8HP's gearset logic 'with gearsets 1 and 3 swapped'.  GM's
+    S1/R1 41/79 in the 8HP's first place instead of its third gives 2.0575 in 3rd (published
+    2.0751): the assignment of gm_8l90 is the only one of the two that reproduces the table."""
+    from dataclasses import replace
+
+    e = entry("gm_8l90")
+    p1, p2, p3, p4 = e.sets
+    unswapped = replace(e, sets=(replace(p1, z_sun=p3.z_sun, z_ring=p3.z_ring), p2,
+                                 replace(p3, z_sun=p1.z_sun, z_ring=p1.z_ring), p4))
+    train = GearTrain([s for s in build_train("gm_8l90").elements if not isinstance(s, PlanetarySet)]
+                      + [PlanetarySet(s.name, s.sun, s.ring, s.carrier, float(s.stationary_ratio))
+                         for s in unswapped.sets])
+    ratio = Transmission(train, e.schedule, e.input, e.output).ratio("3")
+    assert ratio == pytest.approx(2.0575, abs=5e-5)
+    assert build("gm_8l90").ratio("3") == pytest.approx(2.0751, abs=5e-5)

@@ -17,6 +17,8 @@ Entries
     ZF 6HP 26 six-speed (Lepelletier: simple set + Ravigneaux set).
 ``zf_8hp70``
     ZF 8HP 70 eight-speed (four simple sets, two brakes, three clutches).
+``zf_8hp45``, ``gm_8l90``, ``gm_8l45``
+    The same gearset concept with the tooth counts of the ZF 8HP 45 and the GM 8L 90 and 8L 45.
 ``prius_psd``
     Toyota Prius (3rd gen.) power-split device with motor reduction set,
     counter and final gears: a two-degree-of-freedom train, no schedule.
@@ -95,6 +97,35 @@ def _entry(**kw) -> LibraryEntry:
     kw["schedule"] = MappingProxyType(dict(kw.get("schedule", {})))
     kw["published_ratios"] = MappingProxyType(dict(kw.get("published_ratios", {})))
     return LibraryEntry(**kw)
+
+
+#: Connections and shift schedule of the ZF 8HP concept (shared by the 8HP and GM 8L entries).
+_ZF_8SPEED_CONNECTIONS = (
+    "Connections and shift schedule (1 ABC, 2 ABE, 3 BCE, 4 BDE, 5 BCD, 6 CDE, 7 ACD, 8 ADE, "
+    "R ABD): Jeep 8HP75 service information, 'Functional Description - Planetary Gear Components' "
+    "(turbine -> clutch C -> sun 4; ring 2 -> clutch E -> sun 4; sun 4 + ring 3; clutch D joins "
+    "gear train 3 to the output) and US patent 8,016,708 B2 (ZF, 2011), claim 1 (A: shaft 3 to "
+    "housing, B: shaft 4 to housing, C: shafts 1-5)."
+)
+
+
+def _zf_8speed_concept(*, teeth: tuple[tuple[int, int], ...], **kw) -> LibraryEntry:
+    """An entry of the ZF 8HP gearset concept (four simple sets, brakes A B, clutches C D E) with
+    ``teeth`` = ((z_sun, z_ring) of P1, P2, P3, P4) in the 8HP's order."""
+    (s1, r1), (s2, r2), (s3, r3), (s4, r4) = teeth
+    return _entry(
+        sets=(
+            SetSpec("P1", sun="s12", ring="r1", carrier="c1r4", z_sun=s1, z_ring=r1),
+            SetSpec("P2", sun="s12", ring="r2s3", carrier="in", z_sun=s2, z_ring=r2),
+            SetSpec("P3", sun="r2s3", ring="r3s4", carrier="c3", z_sun=s3, z_ring=r3),
+            SetSpec("P4", sun="r3s4", ring="c1r4", carrier="out", z_sun=s4, z_ring=r4),
+        ),
+        clutches=(("C", "in", "r3s4"), ("D", "c3", "out"), ("E", "r2s3", "r3s4")),
+        brakes=(("A", "s12"), ("B", "r1")),
+        schedule={"1": ("A", "B", "C"), "2": ("A", "B", "E"), "3": ("B", "C", "E"), "4": ("B", "D", "E"),
+                  "5": ("B", "C", "D"), "6": ("C", "D", "E"), "7": ("A", "C", "D"), "8": ("A", "D", "E"),
+                  "R": ("A", "B", "D")},
+        input="in", output="out", **kw)
 
 
 _ENTRIES = [
@@ -185,21 +216,10 @@ _ENTRIES = [
             "seven printed ratios they reproduce (test_library.py).",
         ),
     ),
-    _entry(
+    _zf_8speed_concept(
         key="zf_8hp70",
         title="ZF 8HP 70 eight-speed automatic (pilot series 2008)",
-        sets=(
-            SetSpec("P1", sun="s12", ring="r1", carrier="c1r4", z_sun=48, z_ring=96),
-            SetSpec("P2", sun="s12", ring="r2s3", carrier="in", z_sun=48, z_ring=96),
-            SetSpec("P3", sun="r2s3", ring="r3s4", carrier="c3", z_sun=69, z_ring=111),
-            SetSpec("P4", sun="r3s4", ring="c1r4", carrier="out", z_sun=23, z_ring=85),
-        ),
-        clutches=(("C", "in", "r3s4"), ("D", "c3", "out"), ("E", "r2s3", "r3s4")),
-        brakes=(("A", "s12"), ("B", "r1")),
-        schedule={"1": ("A", "B", "C"), "2": ("A", "B", "E"), "3": ("B", "C", "E"), "4": ("B", "D", "E"),
-                  "5": ("B", "C", "D"), "6": ("C", "D", "E"), "7": ("A", "C", "D"), "8": ("A", "D", "E"),
-                  "R": ("A", "B", "D")},
-        input="in", output="out",
+        teeth=((48, 96), (48, 96), (69, 111), (23, 85)),
         published_ratios={"1": 4.6957, "2": 3.1304, "3": 2.1039, "4": 1.6667, "5": 1.2845, "6": 1.0000,
                           "7": 0.8392, "8": 0.6667, "R": -3.2968},
         printed_digits=4,
@@ -208,11 +228,58 @@ _ENTRIES = [
             "per-gear efficiencies at eta0 = 0.98 / 0.97 per set: 'ZF 8HP transmission', 'In-Depth "
             "Analysis With Assessment' table, row 8HP 70 (2008 pilot series) (Wikipedia; copy at "
             "wikiwand.com/en/articles/ZF_8HP_transmission).",
-            "Connections and shift schedule (1 ABC, 2 ABE, 3 BCE, 4 BDE, 5 BCD, 6 CDE, 7 ACD, 8 ADE, "
-            "R ABD): Jeep 8HP75 service information, 'Functional Description - Planetary Gear Components' "
-            "(turbine -> clutch C -> sun 4; ring 2 -> clutch E -> sun 4; sun 4 + ring 3; clutch D joins "
-            "gear train 3 to the output) and US patent 8,016,708 B2 (ZF, 2011), claim 1 (A: shaft 3 to "
-            "housing, B: shaft 4 to housing, C: shafts 1-5).",
+            _ZF_8SPEED_CONNECTIONS,
+        ),
+    ),
+    _zf_8speed_concept(
+        key="zf_8hp45",
+        title="ZF 8HP 45 eight-speed automatic (1st generation 2010)",
+        teeth=((48, 96), (48, 96), (60, 96), (28, 104)),
+        published_ratios={"1": 4.714, "2": 3.143, "3": 2.106, "4": 1.667, "5": 1.285, "6": 1.000,
+                          "7": 0.839, "8": 0.667, "R": -3.295},
+        printed_digits=3,
+        sources=(
+            "Tooth counts S1 48 R1 96, S2 48 R2 96, S3 60 R3 96, S4 28 R4 104: 'ZF 8HP transmission', "
+            "'In-Depth Analysis With Assessment' table, row 8HP 30/I, 8HP 45 (2010: 1st generation) "
+            "(Wikipedia; copy at wikiwand.com/en/articles/ZF_8HP_transmission).",
+            "Ratios (3 decimals) R -3.295, 4.714, 3.143, 2.106, 1.667, 1.285, 1.000, 0.839, 0.667: the "
+            "'Gear Ratios' table of the same article, row 8HP 30/I, 8HP 45 (copy at wikizero.org/wiki/en/ZF_8HP).",
+            _ZF_8SPEED_CONNECTIONS,
+        ),
+    ),
+    _zf_8speed_concept(
+        key="gm_8l90",
+        title="GM Hydra-Matic 8L 90 eight-speed automatic",
+        teeth=((37, 73), (46, 86), (41, 79), (25, 89)),
+        published_ratios={"1": 4.5600, "2": 2.9709, "3": 2.0751, "4": 1.6876, "5": 1.2700, "6": 1.0000,
+                          "7": 0.8455, "8": 0.6515, "R": -3.8176},
+        printed_digits=4,
+        sources=(
+            "Tooth counts S1 41 R1 79, S2 46 R2 86, S3 37 R3 73, S4 25 R4 89, ratios (4 decimals) and "
+            "per-gear efficiencies at eta0 = 0.98 / 0.97 per set: 'GM 8L transmission', 'In-Depth Analysis "
+            "With Assessment' table, row 8L 90 / 8L 80 (Wikipedia; copy at "
+            "wikiwand.com/en/articles/GM_8L_transmission).",
+            "Same gearset concept as the ZF 8HP ('While fully retaining the gearset logic, it differs from "
+            "this only in the patented arrangement of the components with gearsets 1 and 3 swapped': "
+            "'ZF 8HP transmission', Wikipedia); connections and schedule as the 8HP: " + _ZF_8SPEED_CONNECTIONS,
+        ),
+        notes=("Sets are named by their place in the ZF 8HP concept. GM numbers gearsets 1 and 3 the other "
+               "way round, so GM's S1/R1 41/79 is P3 here and its S3/R3 37/73 is P1; only this assignment "
+               "reproduces the nine published ratios (the other gives 2.0575 in 3rd). Shift elements keep "
+               "the 8HP letters.",),
+    ),
+    _zf_8speed_concept(
+        key="gm_8l45",
+        title="GM Hydra-Matic 8L 45 eight-speed automatic",
+        teeth=((41, 79), (41, 79), (41, 79), (26, 94)),
+        published_ratios={"1": 4.6154, "2": 3.0385, "3": 2.0648, "4": 1.6583, "5": 1.2587, "6": 1.0000,
+                          "7": 0.8494, "8": 0.6583, "R": -3.9278},
+        printed_digits=4,
+        sources=(
+            "Tooth counts S1 41 R1 79, S2 41 R2 79, S3 41 R3 79, S4 26 R4 94 and ratios (4 decimals): "
+            "'GM 8L transmission', 'In-Depth Analysis With Assessment' table, row 8L 45 (Wikipedia; copy at "
+            "wikiwand.com/en/articles/GM_8L_transmission).",
+            "Gearset concept, connections and schedule of the ZF 8HP (see gm_8l90): " + _ZF_8SPEED_CONNECTIONS,
         ),
     ),
     _entry(
