@@ -22,7 +22,8 @@ from typer.core import TyperGroup
 from ..errors import EpicyclicError
 
 __all__ = ["EXIT_OK", "EXIT_INTERNAL", "EXIT_BAD_INPUT", "OutputFormat", "FormatOption", "OutOption",
-           "SetOption", "guarded", "emit", "say", "fail", "check_finite", "load", "solved", "OneLineErrors"]
+           "SetOption", "guarded", "emit", "say", "fail", "check_finite", "load", "solved", "report_title",
+           "OneLineErrors"]
 
 EXIT_OK = 0
 EXIT_INTERNAL = 1
@@ -141,11 +142,39 @@ def load(file: Path, gear: str | None = None, overrides: list[str] | None = None
     return replace(train_file, gear=gear)
 
 
+def _report_gear(train_file) -> str | None:
+    """The gear a report of ``train_file`` is in: ``--gear`` or the file's, else the first gear of a
+    transmission without operating point (as :func:`epicyclic.plotting.figure_subject` draws it)."""
+    if train_file.gear is None and train_file.operating_point is None and train_file.transmission is not None:
+        return next(iter(train_file.transmission.schedule))
+    return train_file.gear
+
+
+def report_title(train_file) -> str:
+    """The title of a report on ``train_file``: the file's title, and the gear it is solved in."""
+    title = train_file.title or train_file.train.name
+    gear = _report_gear(train_file)
+    return f"{title}, gear {gear}" if gear else title
+
+
 def solved(train_file, file: Path):
-    """The solution of ``train_file``, its numbers (and the ideal ones) checked to be finite."""
+    """The solution of ``train_file``, its numbers (and the ideal ones) checked to be finite.
+
+    A transmission without an ``[operating_point]`` is solved as ``plot`` draws it
+    (:func:`epicyclic.plotting.figure_subject`): at unit input speed and torque in its gear
+    (``--gear``, else the first), and the report says so among the warnings.
+    """
     from ..io.json_report import report_data
 
-    solution = train_file.solve()
+    if train_file.operating_point is None and train_file.transmission is not None:
+        from dataclasses import replace
+
+        from ..plotting.subject import figure_subject
+
+        subject = figure_subject(train_file, _report_gear(train_file))
+        solution = replace(subject.solution, warnings=(*subject.context.notes, *subject.solution.warnings))
+    else:
+        solution = train_file.solve()
     check_finite(report_data(solution, train_file.units), file)
     return solution
 

@@ -15,7 +15,7 @@ import typer
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
-from ._common import FormatOption, OutOption, OutputFormat, SetOption, emit, guarded, load, solved
+from ._common import FormatOption, OutOption, OutputFormat, SetOption, emit, guarded, load, report_title, solved
 
 __all__ = ["analyze"]
 
@@ -33,7 +33,7 @@ def analyze(
     """Solve FILE: speeds, torques, powers, losses, efficiency, self-locking, circulating power."""
     train_file = load(file, gear, set_)
     solution = solved(train_file, file)
-    units, title, source = train_file.units, train_file.title, str(file)
+    units, title, source = train_file.units, report_title(train_file), str(file)
     if format is OutputFormat.json:
         text = json_report(solution, units, title=title, source=source)
     elif format is OutputFormat.markdown:

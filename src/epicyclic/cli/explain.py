@@ -12,7 +12,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import SetOption, emit, guarded, load, solved
+from ._common import SetOption, emit, guarded, load, report_title, solved
 
 __all__ = ["Language", "ExplainFormat", "explain"]
 
@@ -37,12 +37,14 @@ def explain(
     lang: Annotated[Language, typer.Option("--lang", "-l", help="Language: en or de.")] = Language.en,
     format: Annotated[ExplainFormat, typer.Option("--format", "-f", help="Output format.")] = ExplainFormat.text,
     out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    gear: Annotated[Optional[str], typer.Option(
+        "--gear", "-g", help="Solve in this gear of the \\[transmission] schedule.")] = None,
     set_: SetOption = None,
 ) -> None:
     """Show the worked solution of FILE: Willis, loss rule, torque balance, results, with numbers."""
     from ..explain import explain as worked_solution  # imported here: other commands start faster
 
-    train_file = load(file, None, set_)
+    train_file = load(file, gear, set_)
     solution = solved(train_file, file)
-    result = worked_solution(solution, train_file.units, lang=lang.value, title=train_file.title)
+    result = worked_solution(solution, train_file.units, lang=lang.value, title=report_title(train_file))
     emit(result.markdown() if format is ExplainFormat.markdown else result.text(), out)
