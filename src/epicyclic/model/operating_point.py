@@ -60,8 +60,10 @@ class OperatingPoint:
         Given speeds in 1/min, or with a unit: ``"1500 rpm"``, ``"157 rad/s"``
         or a pint quantity (converted by :func:`epicyclic.units.to_core`).
     torques : mapping shaft → float, str or pint.Quantity
-        Given external torques in N·m (sign: positive with positive speed at a
-        drive), or with a unit: ``"143.24 kp*cm"``, ``"100 lbf*ft"``.
+        Given external torques in N·m, or with a unit: ``"143.24 kp*cm"``,
+        ``"100 lbf*ft"``.  At a drive or a load the magnitude is used and the
+        role sets the sign (power enters at a drive, leaves at a load); at any
+        other shaft the sign counts (positive with positive speed: power enters).
     powers : mapping shaft → float, str or pint.Quantity
         Given external powers in W, or with a unit: ``"3 PS"``, ``"30 kW"``.  A positive value at a load is read as its
         magnitude (power leaving the train); likewise a drive's power is taken
