@@ -16,6 +16,8 @@ stage feeds into the set, and the input enters at the set's other member, so
 Tolerance 1e-12 relative: the solver computes the same products in floating point.
 """
 
+import re
+
 import pytest
 
 from epicyclic import Clutch, GearStage, GearTrain, OperatingPoint, PlanetarySet, solve
@@ -78,7 +80,7 @@ def test_bild_10_has_no_circulating_power_but_its_largest_element_power_is_kept(
     sol = solve(*brandenberger_1952())
     assert sol.circulation.loops == () and sol.circulation.power == 0.0 and sol.circulation.ratio == 0.0
     assert sol.circulation.largest_element_ratio == pytest.approx(sol.efficiency, rel=1e-12)
-    assert "circulating power  none" in sol.table()
+    assert re.search(r"\ncirculating power +none\n", sol.table())
 
 
 @pytest.mark.parametrize(("i0", "k"), [(-2.5, -0.5), (-2.5, 0.5), (-2.5, 0.2), (1.6, 2.0), (-4.0, 3.0)])

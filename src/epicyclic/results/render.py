@@ -96,30 +96,31 @@ def _element_rows(sol: Any) -> list[list[str]]:
 
 
 def _summary(sol: Any) -> list[str]:
-    lines = [f"input power   {sol.input_power:.6g} W", f"output power  {sol.output_power:.6g} W",
-             f"total loss    {sol.loss:.6g} W"]
+    """Summary lines, labels aligned: powers, loss, efficiency, circulation, warnings."""
+    pairs = [("input power", f"{sol.input_power:.6g} W"), ("output power", f"{sol.output_power:.6g} W"),
+             ("total loss", f"{sol.loss:.6g} W")]
     if sol.self_locking is not None:
-        lines.append("efficiency    — (self-locking)")
-        lines.append("SELF-LOCKING: " + sol.self_locking.message)
+        pairs += [("efficiency", "— (self-locking)"), ("self-locking", sol.self_locking.message)]
     else:
-        lines.append(f"efficiency    {_num(sol.efficiency)}")
-    lines += _circulation_lines(sol.circulation)
-    lines += [f"warning: {w}" for w in sol.warnings]
-    return lines
+        pairs.append(("efficiency", _num(sol.efficiency)))
+    pairs += _circulation_pairs(sol.circulation)
+    pairs += [("warning", w) for w in sol.warnings]
+    width = max(len(label) for label, _ in pairs)
+    return [f"{label.ljust(width)}  {value}" for label, value in pairs]
 
 
-def _circulation_lines(circulation: Any) -> list[str]:
+def _circulation_pairs(circulation: Any) -> list[tuple[str, str]]:
     if circulation.indeterminate:
-        return ["circulating power  — (" + circulation.describe() + ")"]
+        return [("circulating power", "— (" + circulation.describe() + ")")]
     if circulation.loops:
-        lines = [f"circulating power  {_num(circulation.power)} W"
-                 + (f" = {_num(circulation.ratio, 4)} × input" if circulation.ratio is not None else "")]
-        lines += [f"  loop {loop.describe()}: {_num(loop.power)} W" for loop in circulation.loops]
+        pairs = [("circulating power", f"{_num(circulation.power)} W"
+                  + (f" = {_num(circulation.ratio, 4)} × input" if circulation.ratio is not None else ""))]
+        pairs += [("circulating loop", f"{loop.describe()}: {_num(loop.power)} W") for loop in circulation.loops]
     else:
-        lines = ["circulating power  none"]
+        pairs = [("circulating power", "none")]
     if circulation.largest_element_ratio is not None:
-        lines.append(f"largest element power  {_num(circulation.largest_element_ratio, 4)} × input")
-    return lines
+        pairs.append(("largest element power", f"{_num(circulation.largest_element_ratio, 4)} × input"))
+    return pairs
 
 
 SHAFT_HEADERS = ["shaft", "speed [1/min]", "torque [N*m]", "power [W]", "role"]
