@@ -65,3 +65,18 @@ def test_a_file_with_neither_operating_point_nor_transmission_is_still_an_error(
     result = run("analyze", str(path))
     assert result.exit_code == 2
     assert "[operating_point]" in result.output
+
+
+@pytest.mark.parametrize("command, fmt", [("gears", "table"), ("gears", "json"), ("gears", "markdown"),
+                                          ("explore", "table"), ("explore", "json"), ("analyze", "table"),
+                                          ("analyze", "json")])
+def test_written_files_are_what_the_command_prints_and_end_with_a_newline(tmp_path, command, fmt):
+    """`gears`/`explore` with --out wrote files without a final newline (analyze's had one)."""
+    out = tmp_path / f"report.{fmt}"
+    printed = run(command, C4, "-f", fmt)
+    written = run(command, C4, "-f", fmt, "-o", str(out))
+    assert printed.exit_code == written.exit_code == 0, printed.output + written.output
+    text = out.read_text(encoding="utf-8")
+    assert text.endswith("\n") and not text.endswith("\n\n")
+    if command != "explore":  # explore prints the time it took
+        assert text == printed.stdout

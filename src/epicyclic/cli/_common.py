@@ -96,13 +96,19 @@ def guarded(command: F) -> F:
 
 
 def emit(text: str, out: Path | None) -> None:
-    """Write ``text`` to ``out`` (atomically, creating folders) or to stdout; control characters removed."""
+    """Write ``text`` to ``out`` (atomically, creating folders) or to stdout; control characters removed.
+
+    Both end with one newline, whether or not ``text`` does (a file written with ``--out`` is a
+    proper text file, and the same bytes as the command prints).
+    """
     from ..io.output import write_atomic
     from ..text import terminal_text
 
     text = terminal_text(text)
+    if not text.endswith("\n"):
+        text += "\n"
     if out is None:
-        typer.echo(text, nl=not text.endswith("\n"))
+        typer.echo(text, nl=False)
         return
     say(f"wrote {write_atomic(out, text).resolve()}")
 
