@@ -68,6 +68,13 @@ def test_gear_that_holds_the_output():
         Transmission(train, {"P": ["Bout"]}, "in", "out")
 
 
+def test_gear_that_holds_the_input():
+    """A brake on the input shaft once gave "leaves 1 degrees of freedom, expected 1" (validation pass)."""
+    train = GearTrain([PlanetarySet("P", "in", "ring", "out", -2.0), Brake("Bin", "in")])
+    with pytest.raises(GearFreedomError, match=r"gear 'X' \(engaged: Bin\) holds the input 'in' still.*'ring', 'out'"):
+        Transmission(train, {"X": ["Bin"]}, "in", "out")
+
+
 def test_train_type_and_unknown_gear():
     with pytest.raises(ShiftScheduleError, match="must be a GearTrain"):
         Transmission("train", {"1": ["B"]}, "in", "out")  # type: ignore[arg-type]

@@ -153,6 +153,13 @@ class Transmission:
                 "freedom): the input cannot turn. Release one of its shift elements.",
                 gear, 0, (),
             )
+        if dof == 1 and free:  # the one degree of freedom is not the input's: the gear holds the input
+            raise GearFreedomError(
+                f"transmission: gear {gear!r} (engaged: {engaged}) holds the input {self.input!r} still, so "
+                f"the input cannot drive and the speed of shaft(s) {', '.join(repr(s) for s in free)} is left "
+                "free. Release the element that holds the input.",
+                gear, dof, free,
+            )
         if dof != 1 or free:
             raise GearFreedomError(
                 f"transmission: gear {gear!r} (engaged: {engaged}) leaves {dof} degrees of freedom, "
