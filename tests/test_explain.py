@@ -62,3 +62,16 @@ def test_shift_elements_lossless_sets_and_self_locking_are_explained():
 def test_unknown_language():
     with pytest.raises(EpicyclicError, match="lang must be one of en, de, got 'fr'"):
         explain(solve(*brandenberger_1952()), lang="fr")
+
+
+def test_german_explanation_has_no_english_roles_or_self_locking_text():
+    """`explain --lang de` printed "(drive)", "(load)" and the solver's English self-locking sentence
+    (validation pass).  The German sentence carries the same numbers: formal efficiency and the
+    threshold η0 < 1/i0 of the plus set (Brandenberger 1952, text to Bild 9)."""
+    locked = load_train_file(EXAMPLES / "plus_set_self_locking.toml").solve()
+    text = explain(locked, lang="de").text()
+    assert "(drive)" not in text and "(load)" not in text and "(Antrieb)" in text and "(Abtrieb)" in text
+    assert "self-locks" not in text
+    assert "SELBSTHEMMUNG: das Getriebe ist in dieser Leistungsflussrichtung selbsthemmend" in text
+    assert f"plus: η0 < {1 / 1.02:.6g}" in text and "(formaler Wirkungsgrad -1.55)" in text
+    assert explain(locked).text().count(locked.self_locking.message) == 1  # English: the solver's message

@@ -94,6 +94,7 @@ _T = {
         "indeterminate": "not defined (the torque split is statically indeterminate)",
         "signs": "signs: a torque M acts on the shaft from outside; power P = M·ω > 0 flows into the train",
         "none": "none",
+        "roles": {}, "warning": "warning",
     },
     "de": {
         "title": "Lösungsweg",
@@ -137,6 +138,13 @@ _T = {
         "indeterminate": "nicht bestimmt (die Momentenaufteilung ist statisch unbestimmt)",
         "signs": "Vorzeichen: ein Moment M wirkt von aussen auf die Welle; P = M·ω > 0 fliesst hinein",
         "none": "keine",
+        "roles": {"drive": "Antrieb", "load": "Abtrieb", "external": "von aussen", "held": "festgehalten",
+                  "internal": "innen"},
+        "warning": "Warnung",
+        "selflock_formal": "formaler Wirkungsgrad {formal}",
+        "selflock_text": "das Getriebe ist in dieser Leistungsflussrichtung selbsthemmend{formal}{where}. Von der "
+                         "anderen Seite antreiben oder den Wirkungsgrad erhöhen.",
+        "selflock_where": "; Selbsthemmung ab {where}",
     },
 }
 
@@ -321,13 +329,13 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
         if sstate.role in ("drive", "load") or (sstate.torque != 0 and sstate.role != "housing"):
             results.append(
                 f"P_{shaft} = {_p(m(sstate.torque))} {u.torque} · {_p(speed[shaft])} {u.speed} → "
-                f"{fmt(p(sstate.power))} {u.power} ({sstate.role})"
+                f"{fmt(p(sstate.power))} {u.power} ({t['roles'].get(sstate.role, sstate.role)})"
             )
     results.append(f"{t['input']} = {fmt(p(solution.input_power))} {u.power}, "
                    f"{t['output']} = {fmt(p(solution.output_power))} {u.power}, "
                    f"{t['total_loss']} = {fmt(p(solution.loss))} {u.power}")
     if solution.self_locking is not None:
-        results.append(f"{t['selflock']}: {solution.self_locking.message}")
+        results.append(f"{t['selflock']}: {_self_locking_text(solution.self_locking, t)}")
     elif solution.efficiency is not None:
         results.append(f"{t['efficiency']} = {fmt(p(solution.output_power))} / {fmt(p(solution.input_power))} "
                        f"= {fmt(solution.efficiency, 4)}")
@@ -338,7 +346,7 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
         loops = "".join(f" ({loop.describe()}: {fmt(p(loop.power))} {u.power})" for loop in circ.loops)
         results.append(f"{t['circulating']} = {fmt(circ.ratio, 4)}{loops}; "
                        f"{t['largest']} = {fmt(circ.largest_element_ratio, 4)}")
-    results.extend(f"warning: {w}" for w in solution.warnings)
+    results.extend(f"{t['warning']}: {w}" for w in solution.warnings)
 
     steps = (
         Step(t["given"], tuple(given)),
@@ -387,6 +395,16 @@ def _lever_lines(element, state, t, n, m, p, u) -> list[str]:
     lines.append(f"    {t['eq8']}: M3' = −(M1' + M2') = −({_p(m1)} + {_p(m2)}) = {fmt(m3)} {u.torque}")
     return lines
 
+
+
+def _self_locking_text(locked, t: dict) -> str:
+    """The solver's self-locking message, or its sentence in the explanation's language."""
+    if "selflock_text" not in t:
+        return locked.message
+    formal = (" (" + t["selflock_formal"].format(formal=fmt(locked.formal_efficiency, 4)) + ")"
+              if locked.formal_efficiency is not None else "")
+    where = ", ".join(f"{name}: η0 < {eta:.6g}" for name, eta in locked.thresholds.items())
+    return t["selflock_text"].format(formal=formal, where=t["selflock_where"].format(where=where) if where else "")
 
 def _zero(value: float, scale: float) -> str:
     """Show a residual that is zero to round-off as 0."""
