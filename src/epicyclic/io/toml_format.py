@@ -46,18 +46,21 @@ from typing import Any
 from ..errors import EpicyclicError, ModelError
 from ..model import Brake, Clutch, GearStage, GearTrain, OperatingPoint, PlanetarySet
 from ..units import Units, to_core
+from . import geometry_format
 from .expressions import evaluate
 
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission"}
+             "operating_point", "transmission", "lubricant"}
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
-                   "mesh_efficiencies", "planets"}
+                   "mesh_efficiencies", "planets", "geometry", "losses"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
                "double": {"kind", "sun", "planet_sun", "planet_ring", "ring"},
-               "stepped": {"kind", "sun", "planet_sun", "planet_ring", "ring", "ring_internal"}}
-_GEAR_KEYS = {"name", "first", "second", "meshes", "ratio", "efficiency"}
+               "stepped": {"kind", "sun", "planet_sun", "planet_ring", "ring", "ring_internal", "module_ratio"},
+               "two_rings": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"},
+               "two_suns": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"}}
+_GEAR_KEYS = {"name", "first", "second", "meshes", "ratio", "efficiency", "geometry", "losses"}
 _CLUTCH_KEYS = {"name", "first", "second", "engaged"}
 _BRAKE_KEYS = {"name", "shaft", "engaged"}
 _UNIT_KEYS = {"speed", "torque", "power"}
@@ -136,6 +139,10 @@ class TrainFile:
     gear : str or None
         The gear of ``[operating_point] gear``: the operating point applies
         to the train in that gear.
+    geometry : mapping element → SetGeometry or StageGeometry
+        The elements' ``geometry`` tables (see ``docs/file-format.md``).
+    losses : mapping element → ElementLosses
+        The elements' ``losses`` tables (mesh friction, planet bearings, drag).
     """
 
     source: str
@@ -146,6 +153,8 @@ class TrainFile:
     transmission: Transmission | None = None
     description: str = ""
     gear: str | None = None
+    geometry: Mapping[str, Any] = field(default_factory=dict)
+    losses: Mapping[str, Any] = field(default_factory=dict)
 
     @property
     def operating_train(self) -> GearTrain:
@@ -334,10 +343,18 @@ class _Reader:
         if "units" in data:
             self.units = self.read_units(self.table(data["units"], "[units]"))
         elements: list = []
-        for k, table in enumerate(self.elements_of(data, "planetary")):
-            elements.append(self.read_planetary(table, k))
-        for k, table in enumerate(self.elements_of(data, "gear")):
-            elements.append(self.read_gear(table, k))
+        lubricant = geometry_format.read_lubricant(self, data)
+        geometry: dict[str, Any] = {}
+        losses: dict[str, Any] = {}
+        for kind, read in (("planetary", self.read_planetary), ("gear", self.read_gear)):
+            for k, table in enumerate(self.elements_of(data, kind)):
+                element, shape, model = geometry_format.read_extras(
+                    self, kind, table, read(table, k), self.element_where(kind, k, table), lubricant)
+                elements.append(element)
+                if shape is not None:
+                    geometry[element.name] = shape
+                if model is not None:
+                    losses[element.name] = model
         for k, table in enumerate(self.elements_of(data, "clutch")):
             elements.append(self.read_shift(table, k, "clutch"))
         for k, table in enumerate(self.elements_of(data, "brake")):
@@ -359,7 +376,8 @@ class _Reader:
         if "operating_point" in data:
             op, gear = self.read_operating_point(
                 self.table(data["operating_point"], "[operating_point]"), train, transmission)
-        return TrainFile(self.source, title, train, op, self.units, transmission, description, gear)
+        return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
+                         MappingProxyType(geometry), MappingProxyType(losses))
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")
@@ -403,21 +421,31 @@ class _Reader:
                                     stationary_efficiency=1.0 if eta is None else eta,
                                     planets=planets, **shafts)
             return self.planetary_from_teeth(self.table(table["teeth"], f"{where}, key 'teeth'"),
-                                             name, shafts, eta, meshes, planets, where)
+                                             name, shafts, eta, meshes, planets, where,
+                                             geometry_format.module_ratio(self, table, where))
         except InputFileError:
             raise
         except EpicyclicError as exc:
             raise self.wrap(where, exc) from None
 
-    def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where) -> PlanetarySet:
+    def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where, ratio=1.0) -> PlanetarySet:
         kind = teeth.get("kind", "simple")
         if kind not in _TEETH_KEYS:
-            raise self.error(where, f"key 'teeth.kind': expected 'simple', 'double' or 'stepped', got {kind!r}.")
+            raise self.error(where, f"key 'teeth.kind': expected 'simple', 'double' or 'stepped' (or "
+                                    f"'two_rings' for a Wolfrom set, 'two_suns'), got {kind!r}.")
         self.check_keys(teeth, _TEETH_KEYS[kind], f"{where}, key 'teeth' (kind {kind!r})")
         z = {key: self.integer(self.require(teeth, key, f"{where}, key 'teeth' (kind {kind!r})"), f"teeth.{key}",
                                where)
-             for key in _TEETH_KEYS[kind] - {"kind", "ring_internal"}}
+             for key in _TEETH_KEYS[kind] - {"kind", "ring_internal", "module_ratio"}}
+        if "module_ratio" in teeth:
+            ratio = self.number(teeth["module_ratio"], "teeth.module_ratio", where)
         common = dict(stationary_efficiency=eta, mesh_efficiencies=meshes, planets=planets, **shafts)
+        if kind in ("two_rings", "two_suns"):
+            both = dict(first=common.pop("sun"), second=common.pop("ring"), z_first=z["first"],
+                        z_planet_first=z["planet_first"], z_planet_second=z["planet_second"], z_second=z["second"],
+                        module_ratio=ratio)
+            build = PlanetarySet.two_rings if kind == "two_rings" else PlanetarySet.two_suns
+            return build(name, **both, **common)
         if kind == "simple":
             return PlanetarySet.simple(name, z_sun=z["sun"], z_planet=z["planet"], z_ring=z["ring"], **common)
         if kind == "double":
@@ -426,7 +454,7 @@ class _Reader:
         internal = self.boolean(teeth, "ring_internal", where, True)
         return PlanetarySet.stepped(name, z_sun=z["sun"], z_planet_sun=z["planet_sun"],
                                     z_planet_ring=z["planet_ring"], z_ring=z["ring"], ring_internal=internal,
-                                    **common)
+                                    module_ratio=ratio, **common)
 
     def read_gear(self, table: Mapping[str, Any], k: int) -> GearStage:
         where = self.element_where("gear", k, table)
