@@ -38,6 +38,12 @@ from . import plot as _plot  # noqa: E402
 app.command("plot")(_plot.plot)
 app.command("animate")(_plot.animate)
 
+from . import geometry as _geometry  # noqa: E402
+
+app.command("fit")(_geometry.fit)
+app.command("forces")(_geometry.forces)
+app.command("search")(_geometry.search)
+
 
 def main() -> None:
     """Console-script entry point."""

@@ -33,7 +33,10 @@ from ._render import html_table, text_table
 from .errors import GeometryError
 from .gear import BasicRack, GearGeometry, MeshGeometry
 
-__all__ = ["SetGeometry", "planet_names"]
+__all__ = ["SetGeometry", "planet_names", "TWO_CENTRAL_NAMES"]
+
+#: Names of the gears of a set with two suns or two rings (``teeth.kind`` two_suns / two_rings in files).
+TWO_CENTRAL_NAMES = {"sun": "first", "planet_sun": "planet_first", "planet_ring": "planet_second", "ring": "second"}
 
 
 def planet_names(teeth: Teeth) -> tuple[str, ...]:
@@ -260,10 +263,16 @@ class SetGeometry:
             "meshes": [m.to_dict() for m in self.meshes],
         }
 
+    def gear_label(self, name: str) -> str:
+        """The gear's name as a user of this arrangement says it: ``first``/``second`` for two suns or rings."""
+        if self.planetary_set.teeth.arrangement in ("two rings", "two suns"):  # type: ignore[union-attr]
+            return TWO_CENTRAL_NAMES.get(name, name)
+        return name
+
     def _rows(self) -> tuple[list[str], list[list[object]]]:
         headers = ["gear", "z", "x", "d", "d_b", "d_a", "d_f"]
         rows = [
-            [n + (" (internal)" if g.internal else ""), g.teeth, g.profile_shift, g.reference_diameter,
+            [self.gear_label(n) + (" (internal)" if g.internal else ""), g.teeth, g.profile_shift, g.reference_diameter,
              g.base_diameter, g.tip_diameter, g.root_diameter]
             for n, g in self.gears.items()
         ]
@@ -281,7 +290,7 @@ class SetGeometry:
     def table(self) -> str:
         """Gears and meshes as a text table (mm, degrees)."""
         title = (
-            f"{self.kind} set {self.planetary_set.name!r}: m_n = {self.rack.module} mm, "
+            f"{self.planetary_set.teeth.arrangement} set {self.planetary_set.name!r}: m_n = {self.rack.module} mm, "
             f"alpha_n = {self.rack.pressure_angle} deg, beta = {self.rack.helix_angle} deg"
         )
         return text_table(*self._rows(), title=title) + "\n\n" + text_table(*self._mesh_rows())

@@ -41,7 +41,7 @@ from typing import Any
 
 from ..errors import EpicyclicError
 from ..geometry import BasicRack, SetGeometry, StageGeometry
-from ..geometry.set_geometry import planet_names
+from ..geometry.set_geometry import TWO_CENTRAL_NAMES, planet_names
 from ..losses import (
     ConstantFriction,
     DragTorque,
@@ -175,10 +175,17 @@ def _set_geometry(reader, table, pset: PlanetarySet, element_table, where: str):
         raise reader.error(where, "a geometry table needs tooth counts: give 'teeth' instead of 'stationary_ratio'.")
     rack = _rack(reader, table, where)
     names = ("sun", *planet_names(pset.teeth), "ring")
-    shifts = _gear_values(reader, table.get("profile_shift", 0.0), names, "profile_shift", where, 0.0)
+    # a set with two suns or two rings names its gears as its teeth table does: first, planet_first, ...
+    said = {n: TWO_CENTRAL_NAMES[n] for n in names} if pset.teeth.arrangement in ("two rings", "two suns") \
+        else {n: n for n in names}
+    back = {v: k for k, v in said.items()}
+    user = tuple(said.values())
+    shifts = _gear_values(reader, table.get("profile_shift", 0.0), user, "profile_shift", where, 0.0)
+    shifts = {back[k]: v for k, v in shifts.items()}
     widths = None
     if "face_width" in table:
-        widths = _gear_values(reader, table["face_width"], names, "face_width", where, None)
+        widths = _gear_values(reader, table["face_width"], user, "face_width", where, None)
+        widths = {back[k]: v for k, v in widths.items()}
         for name, b in widths.items():
             if b <= 0:
                 raise reader.error(where, f"key 'geometry.face_width': expected a positive width in mm for {name}, "

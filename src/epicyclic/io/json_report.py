@@ -3,10 +3,10 @@
 The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
 (core units) with every dimensioned number converted into the chosen
 :class:`~epicyclic.units.Units`, wrapped with metadata.  Layout (schema
-``"epicyclic-report/1"``, documented in ``docs/file-format.md``)::
+``"epicyclic-report/2"``, documented in ``docs/file-format.md``)::
 
     {
-      "schema": "epicyclic-report/1",
+      "schema": "epicyclic-report/2",
       "generator": "epicyclic 0.1.0",
       "title": str, "source": str | null,
       "units": {"speed": str, "torque": str, "power": str},
@@ -18,7 +18,8 @@ The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
         "input_power", "output_power", "loss", "efficiency", "self_locking",
         "circulating_power", "degrees_of_freedom", "warnings", "ratio"
       },
-      "ideal": {... same as "solution", lossless ...} | null
+      "ideal": {... same as "solution", lossless ...} | null,
+      "geometry": {element: {"kind", "geometry", "fitting", "forces"}}   # only with geometry; mm, deg, N, N*m
     }
 
 Efficiencies, ratios, ``circulating_power`` (a multiple of the input power)
@@ -62,7 +63,7 @@ from ..units import Units
 __all__ = ["SCHEMA", "report_dict", "json_report"]
 
 #: Identifier of the layout; bumped on any incompatible change.
-SCHEMA = "epicyclic-report/1"
+SCHEMA = "epicyclic-report/2"
 
 
 def _convert_solution(data: dict[str, Any], units: Units) -> dict[str, Any]:
@@ -110,6 +111,7 @@ def report_dict(
     *,
     title: str | None = None,
     source: str | None = None,
+    geometry: dict[str, Any] | None = None,
 ) -> dict[str, Any]:
     """The report as plain data (JSON-ready), numbers in ``units``.
 
@@ -120,6 +122,10 @@ def report_dict(
         Output units; core units (1/min, N·m, W) by default.
     title, source : str, optional
         Title (default: the train's name) and input file.
+    geometry : dict, optional
+        The ``"geometry"`` section (:func:`~epicyclic.io.geometry_report.geometry_dict`):
+        gears, meshes, fitting and forces of the elements with a geometry table, in
+        mm, degrees, N and N·m; the key is left out without one.
 
     Returns
     -------
@@ -135,7 +141,7 @@ def report_dict(
     if solution.ideal is not None:
         ideal = _convert_solution(solution.ideal.to_dict(), units)
         ideal["ratio"] = solution.ideal.ratio
-    return _finite({
+    report = {
         "schema": SCHEMA,
         "generator": f"epicyclic {__version__}",
         "title": title or solution.train.name,
@@ -143,11 +149,14 @@ def report_dict(
         "units": units.to_dict(),
         "solution": body,
         "ideal": ideal,
-    })
+    }
+    if geometry is not None:  # only for files with geometry tables
+        report["geometry"] = geometry
+    return _finite(report)
 
 
 def json_report(solution: Solution, units: Units | None = None, *, title: str | None = None,
-                source: str | None = None, indent: int = 2) -> str:
+                source: str | None = None, indent: int = 2, geometry: dict[str, Any] | None = None) -> str:
     """The report as JSON text (see :func:`report_dict`)."""
-    return json.dumps(report_dict(solution, units, title=title, source=source), indent=indent,
+    return json.dumps(report_dict(solution, units, title=title, source=source, geometry=geometry), indent=indent,
                       ensure_ascii=False) + "\n"
