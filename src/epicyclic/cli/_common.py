@@ -19,7 +19,7 @@ import typer
 from ..errors import EpicyclicError
 
 __all__ = ["EXIT_OK", "EXIT_INTERNAL", "EXIT_BAD_INPUT", "OutputFormat", "FormatOption", "OutOption",
-           "guarded", "emit", "fail"]
+           "guarded", "emit", "fail", "load_in_gear"]
 
 EXIT_OK = 0
 EXIT_INTERNAL = 1
@@ -80,3 +80,19 @@ def emit(text: str, out: Path | None) -> None:
         out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(text, encoding="utf-8")
     typer.echo(f"wrote {out.resolve()}")
+
+
+def load_in_gear(file: Path, gear: str | None):
+    """The train file at ``file``, its operating point applied in ``gear`` of its schedule when given."""
+    from dataclasses import replace
+
+    from ..errors import ModelError
+    from ..io import load_train_file
+
+    train_file = load_train_file(file)
+    if gear is not None:
+        if train_file.transmission is None:
+            raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
+        train_file.transmission.train_in_gear(train_file.train, gear)  # validates the gear name
+        train_file = replace(train_file, gear=gear)
+    return train_file

@@ -13,12 +13,11 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..io import load_train_file
 from ..io.geometry_report import geometry_dict, geometry_html, geometry_markdown, geometry_results, geometry_text
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load_in_gear
 
 __all__ = ["analyze"]
 
@@ -34,16 +33,7 @@ def analyze(
     lang: Annotated[str, typer.Option(help="Language of the worked solution in HTML reports: en or de.")] = "en",
 ) -> None:
     """Solve FILE: speeds, torques, powers, losses, efficiency, self-locking, circulating power."""
-    train_file = load_train_file(file)
-    if gear is not None:
-        from dataclasses import replace
-
-        from .. import ModelError
-
-        if train_file.transmission is None:
-            raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
-        train_file.transmission.train_in_gear(train_file.train, gear)  # validates the gear name
-        train_file = replace(train_file, gear=gear)
+    train_file = load_in_gear(file, gear)
     solution = train_file.solve()
     units, title, source = train_file.units, train_file.title, str(file)
     shapes = geometry_results(train_file.geometry, solution)

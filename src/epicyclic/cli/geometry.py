@@ -18,24 +18,16 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load_in_gear
 
 __all__ = ["fit", "forces", "search", "parse_range", "parse_tolerance"]
 
 
 def _load(file: Path, gear: str | None):
     """The train file with ``--gear`` applied; an error if it has no geometry table."""
-    from dataclasses import replace
-
     from ..errors import ModelError
-    from ..io import load_train_file
 
-    train_file = load_train_file(file)
-    if gear is not None:
-        if train_file.transmission is None:
-            raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
-        train_file.transmission.train_in_gear(train_file.train, gear)  # validates the gear name
-        train_file = replace(train_file, gear=gear)
+    train_file = load_in_gear(file, gear)
     if not train_file.geometry:
         raise ModelError(
             f"{file}: no element has a geometry table; add one to a [[planetary]] or [[gear]] element, e.g. "

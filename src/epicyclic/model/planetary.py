@@ -314,17 +314,8 @@ class PlanetarySet:
         >>> round(w.stationary_ratio, 6), w.teeth.arrangement
         (1.083333, 'two rings')
         """
-        owner = f"planetary set {name!r}"
-        z1 = _check_teeth(z_first, "z_first", owner)
-        zb = _check_teeth(z_planet_first, "z_planet_first", owner)
-        zc = _check_teeth(z_planet_second, "z_planet_second", owner)
-        z2 = _check_teeth(z_second, "z_second", owner)
-        teeth = Teeth("stepped", z1, z2, (zb, zc), ring_internal=True, sun_internal=True)
-        check_stepped(teeth, owner, module_ratio, ("z_first", "z_planet_first", "z_planet_second", "z_second"))
-        return cls(
-            name, first, second, carrier, teeth.stationary_ratio,
-            _combine(stationary_efficiency, mesh_efficiencies, 2, owner), planets, teeth,
-        )
+        return cls._two_central(name, True, first, second, carrier, (z_first, z_planet_first, z_planet_second,
+                                z_second), module_ratio, stationary_efficiency, mesh_efficiencies, planets)
 
     @classmethod
     def two_suns(
@@ -359,13 +350,18 @@ class PlanetarySet:
         >>> round(s.stationary_ratio, 4)
         0.672
         """
+        return cls._two_central(name, False, first, second, carrier, (z_first, z_planet_first, z_planet_second,
+                                z_second), module_ratio, stationary_efficiency, mesh_efficiencies, planets)
+
+    @classmethod
+    def _two_central(cls, name, internal, first, second, carrier, counts, module_ratio, stationary_efficiency,
+                     mesh_efficiencies, planets) -> PlanetarySet:
+        """A stepped set whose two central gears are both internal (rings) or both external (suns)."""
         owner = f"planetary set {name!r}"
-        z1 = _check_teeth(z_first, "z_first", owner)
-        zb = _check_teeth(z_planet_first, "z_planet_first", owner)
-        zc = _check_teeth(z_planet_second, "z_planet_second", owner)
-        z2 = _check_teeth(z_second, "z_second", owner)
-        teeth = Teeth("stepped", z1, z2, (zb, zc), ring_internal=False, sun_internal=False)
-        check_stepped(teeth, owner, module_ratio, ("z_first", "z_planet_first", "z_planet_second", "z_second"))
+        labels = ("z_first", "z_planet_first", "z_planet_second", "z_second")
+        z1, zb, zc, z2 = (_check_teeth(z, label, owner) for z, label in zip(counts, labels))
+        teeth = Teeth("stepped", z1, z2, (zb, zc), ring_internal=internal, sun_internal=internal)
+        check_stepped(teeth, owner, module_ratio, labels)
         return cls(
             name, first, second, carrier, teeth.stationary_ratio,
             _combine(stationary_efficiency, mesh_efficiencies, 2, owner), planets, teeth,
