@@ -5,7 +5,7 @@ VENV   ?= .venv
 PY      = $(VENV)/bin/python
 STAMP   = $(VENV)/.installed
 
-.PHONY: demo test bench clean
+.PHONY: demo test bench clean chromium
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -17,8 +17,18 @@ demo: $(STAMP)
 	$(VENV)/bin/epicyclic analyze examples/brandenberger_1952.toml
 	$(VENV)/bin/epicyclic analyze examples/brandenberger_1952.toml --format html --out out/brandenberger_1952.html
 
-test: $(STAMP)
+test: $(STAMP) chromium
 	$(PY) -m pytest -q src tests
+
+# The browser tests (tests/web/test_browser.py) drive Debian's chromium through chromium-driver:
+# install both when missing (CI runs on a fresh Debian machine as root); nothing to do when present.
+chromium:
+	@if [ -x /usr/bin/chromium ] && [ -x /usr/bin/chromedriver ]; then :; \
+	elif command -v apt-get >/dev/null 2>&1; then \
+	  SUDO=$$([ "$$(id -u)" = 0 ] || echo sudo); \
+	  echo "installing chromium and chromium-driver for the browser tests (apt-get)"; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq chromium chromium-driver; \
+	else echo "chromium and chromium-driver are missing and there is no apt-get: browser tests will be skipped" >&2; fi
 
 bench: $(STAMP)
 	for b in benchmarks/bench_*.py; do $(PY) $$b || exit 1; done

@@ -48,6 +48,10 @@ from . import efficiency_map as _efficiency_map  # noqa: E402
 
 app.command("map")(_efficiency_map.efficiency_map)
 
+from . import serve as _serve  # noqa: E402
+
+app.command("serve")(_serve.serve)
+
 
 def main() -> None:
     """Console-script entry point."""

@@ -1,0 +1,52 @@
+"""``epicyclic serve``: the page to work in, on this computer (http://127.0.0.1:8000).
+
+Starts the web app of :mod:`epicyclic.web` with uvicorn.  It binds to the
+loopback address by default, so only this computer reaches it; with another
+``--host`` it warns and accepts any host name.
+"""
+
+from __future__ import annotations
+
+import ipaddress
+from typing import Annotated
+
+import typer
+
+from ._common import fail
+
+__all__ = ["serve"]
+
+
+def _is_loopback(host: str) -> bool:
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host.strip("[]")).is_loopback
+    except ValueError:
+        return False
+
+
+def serve(
+    host: Annotated[str, typer.Option(help="Address to bind; the default reaches this computer only.")] = "127.0.0.1",
+    port: Annotated[int, typer.Option(help="TCP port.", min=1, max=65535)] = 8000,
+    workers: Annotated[int, typer.Option(help="Worker processes that solve and draw.", min=1, max=64)] = 2,
+    timeout: Annotated[float, typer.Option(help="Seconds a solve or picture may take.", min=0.1, max=3600)] = 10.0,
+    max_body: Annotated[int, typer.Option(help="Largest request in KiB (a train description).", min=1,
+                                          max=65536)] = 512,
+) -> None:
+    """Open a page to work in: examples, an editor, the operating point, results, pictures, reports."""
+    try:
+        import uvicorn
+
+        from ..web import Limits, create_app
+    except ImportError as exc:  # pragma: no cover - the web dependencies are installed with the package
+        fail(f"error: epicyclic serve needs the web dependencies ({exc.name}); reinstall epicyclic.")
+        return
+    loopback = _is_loopback(host)
+    if not loopback:
+        typer.echo(f"warning: serving on {host}, reachable from other computers; the page has no login.", err=True)
+    limits = Limits(max_body=max_body * 1024, solve_timeout=timeout, workers=workers,
+                    allowed_hosts=Limits.allowed_hosts if loopback else ("*",))
+    shown = f"[{host}]" if ":" in host else host
+    typer.echo(f"epicyclic serve: open http://{shown}:{port}/ (Ctrl+C stops)")
+    uvicorn.run(create_app(limits), host=host, port=port, log_level="warning")

@@ -1,0 +1,279 @@
+"""The web app of ``epicyclic serve`` (Starlette): routes, limits and security headers.
+
+The server process only routes requests, checks their size and form, and hands
+the work to worker processes (:mod:`epicyclic.web.jobs`), which answer with HTML
+rendered from templates (:mod:`epicyclic.web.views`).  Safe by default:
+
+* binds to loopback (``epicyclic serve`` defaults to 127.0.0.1) and accepts
+  only requests addressed to this host (no DNS rebinding);
+* request bodies larger than ``Limits.max_body`` are refused with 413, forms
+  with too many fields or files with 400;
+* every computation has a time limit (504 after it, the worker is replaced);
+* nothing the client sends becomes a path: examples are looked up by key in a
+  table read at start, uploads are read in memory;
+* every user text is escaped by the templates, and the Content-Security-Policy
+  allows scripts from this server only (no inline scripts, no ``eval``).
+
+Examples
+--------
+>>> from starlette.testclient import TestClient
+>>> with TestClient(create_app(Limits(workers=1))) as client:
+...     page = client.get("/")
+...     answer = client.post("/example", data={"example": "brandenberger_1952"})
+>>> page.status_code, answer.status_code, "0.85" in answer.text
+(200, 200, True)
+"""
+
+from __future__ import annotations
+
+import contextlib
+from dataclasses import dataclass
+from typing import Any
+
+from starlette.applications import Starlette
+from starlette.middleware import Middleware
+from starlette.middleware.trustedhost import TrustedHostMiddleware
+from starlette.requests import Request
+from starlette.responses import HTMLResponse, PlainTextResponse, Response
+from starlette.routing import Mount, Route
+from starlette.staticfiles import StaticFiles
+
+from . import views
+from .examples import DEFAULT_EXAMPLE, bundled_examples
+from .jobs import Jobs, failure
+from .state import FormError, PageState, clean_text
+
+__all__ = ["Limits", "create_app", "LOOPBACK_HOSTS"]
+
+#: Host names a loopback server answers to.
+LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1", "[::1]", "testserver")
+
+_CSP = ("default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; "
+        "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
+
+
+@dataclass(frozen=True)
+class Limits:
+    """The server's limits.
+
+    Parameters
+    ----------
+    max_body : int, default 512 KiB
+        Largest request body in bytes (a TOML text or an uploaded file).
+    solve_timeout : float, default 10
+        Seconds of work for a solve, a picture or a geometry form.
+    report_timeout : float, default 60
+        Seconds of work for a download (the HTML report draws every picture).
+    workers : int, default 2
+        Worker processes.
+    max_queue : int, default 1000
+        Requests waiting for a worker at most (more get 503).
+    allowed_hosts : tuple of str
+        Host headers accepted (loopback names by default; ``("*",)`` for any).
+    """
+
+    max_body: int = 512 * 1024
+    solve_timeout: float = 10.0
+    report_timeout: float = 60.0
+    workers: int = 2
+    max_queue: int = 1000
+    allowed_hosts: tuple[str, ...] = LOOPBACK_HOSTS
+
+
+class _TooLarge(Exception):
+    pass
+
+
+class BodyLimit:
+    """ASGI middleware: refuse request bodies over ``limit`` bytes with 413 (declared or streamed)."""
+
+    def __init__(self, app: Any, limit: int):
+        self.app, self.limit = app, limit
+
+    async def __call__(self, scope: dict, receive: Any, send: Any) -> None:
+        if scope["type"] != "http":
+            return await self.app(scope, receive, send)
+        declared = dict(scope.get("headers", [])).get(b"content-length")
+        if declared is not None and (not declared.isdigit() or int(declared) > self.limit):
+            return await self._refuse(scope, receive, send)
+        seen = 0
+        started = False
+
+        async def counting_receive() -> dict:
+            nonlocal seen
+            message = await receive()
+            seen += len(message.get("body", b""))
+            if seen > self.limit:
+                raise _TooLarge
+            return message
+
+        async def tracking_send(message: dict) -> None:
+            nonlocal started
+            started = started or message["type"] == "http.response.start"
+            await send(message)
+
+        try:
+            await self.app(scope, counting_receive, tracking_send)
+        except _TooLarge:
+            if started:
+                raise
+            await self._refuse(scope, receive, send)
+
+    async def _refuse(self, scope: dict, receive: Any, send: Any) -> None:
+        reply = failure(f"the request is larger than {self.limit // 1024} KiB, the limit of this server; a train "
+                        "description is a few KiB (start the server with a larger --max-body if needed).", 413)
+        await HTMLResponse(reply.body, reply.status, headers={"Connection": "close"})(scope, receive, send)
+
+
+class SecurityHeaders:
+    """ASGI middleware: CSP and the usual hardening headers on every response."""
+
+    HEADERS = [(b"content-security-policy", _CSP.encode()), (b"x-content-type-options", b"nosniff"),
+               (b"referrer-policy", b"no-referrer"), (b"x-frame-options", b"DENY"),
+               (b"cross-origin-opener-policy", b"same-origin")]
+
+    def __init__(self, app: Any):
+        self.app = app
+
+    async def __call__(self, scope: dict, receive: Any, send: Any) -> None:
+        async def add_headers(message: dict) -> None:
+            if message["type"] == "http.response.start":
+                message["headers"] = list(message.get("headers", [])) + self.HEADERS
+            await send(message)
+
+        await self.app(scope, receive, add_headers if scope["type"] == "http" else send)
+
+
+def _reply(reply: views.Reply) -> Response:
+    headers = {"Cache-Control": "no-store"}
+    if reply.filename:
+        headers["Content-Disposition"] = f'attachment; filename="{reply.filename}"'
+    return Response(reply.body, reply.status, headers=headers, media_type=reply.media_type)
+
+
+def create_app(limits: Limits | None = None) -> Starlette:
+    """The Starlette application of the page (workers start with the app's lifespan).
+
+    Parameters
+    ----------
+    limits : Limits, optional
+    """
+    limits = limits or Limits()
+    examples = bundled_examples()
+
+    async def form_of(request: Request) -> Any:
+        try:
+            return await request.form(max_files=1, max_fields=3000, max_part_size=limits.max_body)
+        except _TooLarge:
+            raise
+        except Exception as exc:  # starlette's multipart errors: too many fields, malformed body
+            raise FormError(f"the request's form cannot be read ({getattr(exc, 'detail', exc)}).") from None
+
+    async def state_of(request: Request) -> PageState:
+        return PageState.from_form(await form_of(request), max_text=limits.max_body)
+
+    def bad(exc: Exception) -> Response:
+        return _reply(failure(str(exc), 400))
+
+    async def work(function: Any, *args: Any, timeout: float | None = None) -> Response:
+        jobs: Jobs = app.state.jobs
+        return _reply(await jobs.run(function, *args, timeout=timeout or limits.solve_timeout))
+
+    async def page(request: Request) -> Response:
+        from .. import __version__
+
+        chosen = request.query_params.get("example", DEFAULT_EXAMPLE)
+        body = views.render("page.html", examples=[(e.key, e.title) for e in examples.values()],
+                            initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__)
+        return HTMLResponse(body, headers={"Cache-Control": "no-store"})
+
+    async def open_example(request: Request) -> Response:
+        try:
+            form = await form_of(request)
+            key = clean_text(form.get("example"), "example", 200) or DEFAULT_EXAMPLE
+            state = PageState("", units=form.get("units", "file"), lang=form.get("lang", "en"))
+        except FormError as exc:
+            return bad(exc)
+        if key not in examples:
+            return _reply(failure(f"no bundled example {key!r}; choose one from the list.", 404))
+        example = examples[key]
+        return await work(views.open_text, example.text, example.file_name, state.units, state.lang)
+
+    async def upload(request: Request) -> Response:
+        try:
+            form = await form_of(request)
+            file = form.get("file")
+            if file is None or isinstance(file, str):
+                raise FormError("upload: choose a .toml file.")
+            data = await file.read()
+            name = clean_text(file.filename or "upload.toml", "file name", 200)
+            state = PageState("", units=form.get("units", "file"), lang=form.get("lang", "en"))
+        except FormError as exc:
+            return bad(exc)
+        try:
+            text = data.decode("utf-8-sig")
+        except UnicodeDecodeError as exc:
+            return _reply(failure(f"{name}: cannot read the file as UTF-8 text ({exc.reason} at byte {exc.start}); "
+                                  "save it as UTF-8.", 422))
+        return await work(views.open_text, text, name, state.units, state.lang)
+
+    async def with_state(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Response:
+        """Read the page's form and run ``function(state, *args)`` in a worker."""
+        try:
+            state = await state_of(request)
+        except FormError as exc:
+            return bad(exc)
+        return await work(function, state, *args, timeout=timeout)
+
+    async def apply(request: Request) -> Response:
+        origin = request.path_params["origin"]
+        if origin not in ("text", "form"):
+            return _reply(failure(f"no such action {origin!r}.", 404))
+        return await with_state(request, views.apply, origin)
+
+    async def figure(request: Request) -> Response:
+        kind = request.path_params["kind"]
+        try:
+            form = await form_of(request)
+            state = PageState.from_form(form, max_text=limits.max_body)
+            option = clean_text(form.get(f"option_{kind}"), "option", 200)
+        except FormError as exc:
+            return bad(exc)
+        return await work(views.figure, state, kind, option)
+
+    async def tool(request: Request) -> Response:
+        return await with_state(request, views.tool, request.path_params["name"])
+
+    async def download(request: Request) -> Response:
+        return await with_state(request, views.download, request.path_params["kind"], timeout=limits.report_timeout)
+
+    async def health(request: Request) -> Response:
+        return PlainTextResponse("ok")
+
+    @contextlib.asynccontextmanager
+    async def lifespan(app: Starlette):
+        app.state.jobs = Jobs(limits.workers, limits.max_queue)
+        try:
+            yield
+        finally:
+            app.state.jobs.close()
+
+    routes = [
+        Route("/", page),
+        Route("/healthz", health),
+        Route("/example", open_example, methods=["POST"]),
+        Route("/upload", upload, methods=["POST"]),
+        Route("/apply/{origin}", apply, methods=["POST"]),
+        Route("/figure/{kind}", figure, methods=["POST"]),
+        Route("/tool/{name}", tool, methods=["POST"]),
+        Route("/download/{kind}", download, methods=["POST"]),
+        Mount("/static", StaticFiles(packages=[("epicyclic.web", "static")]), name="static"),
+    ]
+    middleware = [
+        Middleware(SecurityHeaders),
+        Middleware(TrustedHostMiddleware, allowed_hosts=list(limits.allowed_hosts)),
+        Middleware(BodyLimit, limit=limits.max_body),
+    ]
+    app = Starlette(routes=routes, middleware=middleware, lifespan=lifespan)
+    app.state.limits = limits
+    return app

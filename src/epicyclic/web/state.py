@@ -1,0 +1,266 @@
+"""What the page sends: the TOML text, the operating-point form and the reader's choices.
+
+The TOML text in the editor is the one source of truth.  The operating-point
+form is a structured editor of its ``[operating_point]`` table: when the form
+changes, :func:`write_operating_point` writes the form into the text (with
+:mod:`tomlkit`, which keeps the rest of the file, comments included) and the
+text is read again with :func:`epicyclic.io.loads_train_file`, so the page
+reports bad values with the same messages as the command line.
+
+Everything here is plain data (frozen dataclasses of strings) so that it can
+be sent to a worker process.
+
+Examples
+--------
+>>> text = '''[[planetary]]
+... name = "P"
+... sun = "s"
+... ring = "r"
+... carrier = "c"
+... stationary_ratio = -2
+... [[brake]]
+... name = "B"
+... shaft = "r"
+... '''
+>>> rows = (ShaftRow("s", "drive", "1500", "torque", "10 N*m"), ShaftRow("c", "load"))
+>>> print(write_operating_point(text, rows, gear=""))  # doctest: +ELLIPSIS
+[[planetary]]
+...
+[operating_point]
+speeds = {s = 1500}
+torques = {s = "10 N*m"}
+drives = ["s"]
+loads = ["c"]
+<BLANKLINE>
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+import unicodedata
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..errors import EpicyclicError
+
+__all__ = ["FormError", "PageState", "ShaftRow", "UNIT_CHOICES", "LANGUAGES", "MOMENTS", "ROLES",
+           "clean_text", "operating_rows", "default_operating_rows", "write_operating_point"]
+
+#: Choices of the units selector: the file's ``[units]`` or SI core units.
+UNIT_CHOICES = ("file", "si")
+#: Languages of ``explain``.
+LANGUAGES = ("en", "de")
+#: Roles a shaft can have in the form ("" = neither drive nor load).
+ROLES = ("", "drive", "load")
+#: What the second value of a row is.
+MOMENTS = ("torque", "power")
+#: At most this many shaft rows, characters per value and characters of a name.
+MAX_ROWS, MAX_VALUE, MAX_NAME = 200, 1000, 200
+
+
+class FormError(EpicyclicError, ValueError):
+    """A form field the page did not send as expected (a hand-made request)."""
+
+
+def clean_text(value: object, field_name: str, limit: int, *, single_line: bool = True) -> str:
+    """A form value as text: at most ``limit`` characters, no control characters in one-line fields.
+
+    Raises
+    ------
+    FormError
+        Too long or not text.
+    """
+    if value is None:
+        return ""
+    if not isinstance(value, str):
+        raise FormError(f"form field {field_name!r}: expected text, got a file or other data.")
+    if len(value) > limit:
+        raise FormError(f"form field {field_name!r}: {len(value)} characters, at most {limit} allowed.")
+    if single_line:
+        value = "".join(ch for ch in value if unicodedata.category(ch)[0] != "C").strip()
+    return value
+
+
+@dataclass(frozen=True)
+class ShaftRow:
+    """One row of the operating-point form: a shaft, its role, its speed and a torque or power.
+
+    Values are the text the user typed: a plain number (in the file's unit)
+    or a number with a unit (``"1500 rpm"``); empty means "not given".
+    """
+
+    shaft: str
+    role: str = ""
+    speed: str = ""
+    moment: str = "torque"
+    value: str = ""
+
+    def __post_init__(self) -> None:
+        if self.role not in ROLES:
+            raise FormError(f"operating point form: role of shaft {self.shaft!r} must be one of "
+                            f"{', '.join(repr(r) for r in ROLES)}, got {self.role!r}.")
+        if self.moment not in MOMENTS:
+            raise FormError(f"operating point form: shaft {self.shaft!r}: expected 'torque' or 'power', "
+                            f"got {self.moment!r}.")
+
+
+@dataclass(frozen=True)
+class PageState:
+    """Everything one request of the page carries.
+
+    Parameters
+    ----------
+    text : str
+        The TOML train description in the editor.
+    source : str
+        Its name for messages (an example's file name, an uploaded file's name
+        or ``"editor"``); never used as a path.
+    rows : tuple of ShaftRow
+        The operating-point form (used when the form was changed).
+    gear : str
+        The gear of a transmission ("" for none).
+    units : {"file", "si"}
+    lang : {"en", "de"}
+    """
+
+    text: str
+    source: str = "editor"
+    rows: tuple[ShaftRow, ...] = ()
+    gear: str = ""
+    units: str = "file"
+    lang: str = "en"
+    extra: Mapping[str, str] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if self.units not in UNIT_CHOICES:
+            raise FormError(f"units must be one of {', '.join(UNIT_CHOICES)}, got {self.units!r}.")
+        if self.lang not in LANGUAGES:
+            raise FormError(f"language must be one of {', '.join(LANGUAGES)}, got {self.lang!r}.")
+
+    @classmethod
+    def from_form(cls, form: Any, *, max_text: int) -> PageState:
+        """Read the page's form (a Starlette ``FormData`` or any mapping with ``getlist``).
+
+        Raises
+        ------
+        FormError
+            A field that is too long, a wrong count of row fields, an unknown choice.
+        """
+        def one(name: str, default: str = "", limit: int = MAX_VALUE) -> str:
+            return clean_text(form.get(name, default), name, limit) or default
+
+        columns = {name: [clean_text(v, name, MAX_VALUE) for v in form.getlist(name)]
+                   for name in ("shaft", "role", "speed", "moment", "value")}
+        count = len(columns["shaft"])
+        if count > MAX_ROWS:
+            raise FormError(f"operating point form: {count} shafts, at most {MAX_ROWS}.")
+        if any(len(v) != count for v in columns.values()):
+            raise FormError("operating point form: every shaft row needs shaft, role, speed, moment and value.")
+        rows = tuple(ShaftRow(*values) for values in zip(*columns.values()))
+        extra = {k: clean_text(v, k, MAX_VALUE) for k, v in form.multi_items()
+                 if k.startswith("tool_")}
+        return cls(
+            text=clean_text(form.get("toml", ""), "toml", max_text, single_line=False),
+            source=one("source", "editor", MAX_NAME),
+            rows=rows,
+            gear=one("gear"),
+            units=one("units", "file"),
+            lang=one("lang", "en"),
+            extra=extra,
+        )
+
+
+# ---------------------------------------------------------------------- reading the form from a file
+def _shown(value: object) -> str:
+    """A TOML value as the form shows it (numbers without a trailing ``.0``)."""
+    if isinstance(value, bool):
+        return str(value).lower()
+    if isinstance(value, float) and value.is_integer() and abs(value) < 1e15:
+        return str(int(value))
+    return str(value)
+
+
+def operating_rows(data: Mapping[str, Any], shafts: Sequence[str]) -> tuple[ShaftRow, ...]:
+    """The form rows of a file's ``[operating_point]`` (``data`` from :mod:`tomllib`), one per shaft."""
+    op = data.get("operating_point", {})
+    op = op if isinstance(op, dict) else {}
+
+    def group(key: str) -> dict[str, Any]:
+        value = op.get(key, {})
+        return value if isinstance(value, dict) else {}
+
+    def names(key: str) -> list[str]:
+        value = op.get(key, [])
+        return [value] if isinstance(value, str) else [v for v in value if isinstance(v, str)] if isinstance(
+            value, list) else []
+
+    speeds, torques, powers = group("speeds"), group("torques"), group("powers")
+    drives, loads = names("drives"), names("loads")
+    rows = []
+    for shaft in shafts:
+        role = "drive" if shaft in drives else "load" if shaft in loads else ""
+        moment, value = ("power", powers[shaft]) if shaft in powers else ("torque", torques.get(shaft, ""))
+        rows.append(ShaftRow(shaft, role, _shown(speeds.get(shaft, "")), moment, _shown(value)))
+    return tuple(rows)
+
+
+def default_operating_rows(shafts: Sequence[str], input: str, output: str) -> tuple[ShaftRow, ...]:
+    """A proposed operating point for a transmission: input driven at 1000 1/min with 100 N·m."""
+    return tuple(
+        ShaftRow(s, "drive", "1000 1/min", "torque", "100 N*m") if s == input
+        else ShaftRow(s, "load") if s == output else ShaftRow(s)
+        for s in shafts
+    )
+
+
+# ---------------------------------------------------------------------- writing the form into the file
+def _value(text: str) -> float | int | str:
+    """A typed value: a plain number stays a number (the file's unit), anything else stays text."""
+    try:
+        number = int(text)
+    except ValueError:
+        try:
+            number = float(text)
+        except ValueError:
+            return text
+        return number if math.isfinite(number) else text
+    return number if abs(number) < 2**63 else text
+
+
+def write_operating_point(text: str, rows: Sequence[ShaftRow], gear: str) -> str:
+    """``text`` with its ``[operating_point]`` table replaced by the form's values.
+
+    The rest of the text, comments and layout included, is kept (:mod:`tomlkit`).
+
+    Raises
+    ------
+    tomllib.TOMLDecodeError
+        ``text`` is not valid TOML (the caller reports it like the loader).
+    """
+    import tomlkit
+
+    tomllib.loads(text)  # the same parser as the loader decides what is valid
+    document = tomlkit.parse(text)
+    table = tomlkit.table()
+    for key, quantity in (("speeds", None), ("torques", "torque"), ("powers", "power")):
+        values = tomlkit.inline_table()
+        for row in rows:
+            given = row.speed if quantity is None else (row.value if row.moment == quantity else "")
+            if given:
+                values[row.shaft] = _value(given)
+        if values:
+            table[key] = values
+    for key, role in (("drives", "drive"), ("loads", "load")):
+        names = [row.shaft for row in rows if row.role == role]
+        if names:
+            table[key] = names
+    if gear:
+        table["gear"] = gear
+    if "operating_point" in document:
+        document["operating_point"] = table
+    else:
+        document.add(tomlkit.nl())
+        document.add("operating_point", table)
+    return tomlkit.dumps(document)
