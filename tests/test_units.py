@@ -107,3 +107,51 @@ def test_round_trip_through_any_unit(quantity_unit, value):
     quantity, unit = quantity_unit
     back = to_core(from_core(value, quantity, unit), quantity, default_unit=unit)
     assert back == pytest.approx(value, rel=1e-12, abs=1e-9)
+
+
+# ---- hostile strings: the grammar answers at once, with a value or a UnitError, never pint's evaluation
+_PIECES = ["9", "**", "^", "10", "e308", "e-400", "1e309", " ", "*", "/", "·", "rpm", "W", "kW", "PS", "m", "s",
+           "(", ")", "nan", "inf", "-", "+", ".", ",", "__import__", "U/min", "2", "²", "³", "kp", "cm", "kg",
+           "'", '"', "\x1b", "0", "1/", "min", "Ys", "lbf", "ft"]
+
+
+@given(st.lists(st.sampled_from(_PIECES), max_size=30).map("".join) | st.text(max_size=250))
+def test_any_string_is_a_finite_value_or_a_unit_error_at_once(text):
+    import time
+
+    for quantity in ("speed", "torque", "power"):
+        start = time.monotonic()
+        try:
+            value = to_core(text, quantity, field="f", default_unit="rpm" if quantity == "speed" else None)
+        except UnitError as exc:
+            assert str(exc).startswith("f:") or str(exc).startswith("units")
+        else:
+            assert math.isfinite(value)
+        assert time.monotonic() - start < 0.5
+
+
+@pytest.mark.parametrize("text", ["9**9**9 rpm", "10**10**10 W", "2**2**2**2**2 W", "9^9^9 rpm", "(9**9)**9 W"])
+def test_towers_of_powers_are_refused_without_evaluation(text):
+    import time
+
+    start = time.monotonic()
+    with pytest.raises(UnitError, match="cannot read"):
+        to_core(text, "power" if text.endswith("W") else "speed", field="speeds.sun")
+    assert time.monotonic() - start < 0.1
+
+
+@pytest.mark.parametrize("unit, match", [("0 rpm", "not a unit"), ("1000 rpm", "not a unit"), ("-rpm", "not a unit"),
+                                         ("1/Ys", "degenerate"), ("rpm**0", "power 0"), ("rpm/rpm", "not a speed")])
+def test_degenerate_units_are_refused(unit, match):
+    with pytest.raises(UnitError, match=match):
+        Units(speed=unit)
+
+
+@pytest.mark.parametrize("text, quantity, expected", [
+    ("2 m²·kg/s³", "power", 2.0), ("2 m^2*kg*s^-3", "power", 2.0), ("3*PS", "power", 3 * 735.49875),
+    ("143.24 cm kg", "torque", 143.24 * 0.0980665), ("3 Nm", "torque", 3.0), ("1500rpm", "speed", 1500.0),
+    ("3/min", "speed", 3.0), ("1 U/min/min*min", "speed", 1.0),
+])
+def test_the_grammar_reads_products_powers_and_spaces(text, quantity, expected):
+    # exact factors: W = kg·m²/s³, PS = 735.49875 W (DIN 1301), kp = 9.80665 N; relative 1e-12
+    assert to_core(text, quantity) == pytest.approx(expected, rel=1e-12)

@@ -58,13 +58,28 @@ class UnknownShaftError(EpicyclicError, ValueError):
         close = [k for k in self.known if k.lower() == name.lower()]
         hint = f" Did you mean {close[0]!r}?" if close else ""
         super().__init__(
-            f"{where}: unknown shaft {name!r}; the train has shafts "
+            (f"{where}: " if where else "") + f"unknown shaft {name!r:.70}; the train has shafts "
             f"{', '.join(repr(k) for k in self.known)}.{hint}"
         )
 
 
 class OperatingPointError(EpicyclicError, ValueError):
-    """The operating point does not fit the train."""
+    """The operating point does not fit the train.
+
+    Attributes
+    ----------
+    group : str
+        The part of the operating point at fault — ``"speeds"``, ``"torques"``,
+        ``"powers"``, ``"drives"``, ``"loads"`` — or ``""``; the file reader
+        turns it into the key (``[operating_point], key 'powers.sun'``).
+    shafts : tuple of str
+        The shafts concerned.
+    """
+
+    def __init__(self, message: str = "", *, group: str = "", shafts: Sequence[str] = ()):
+        self.group = group
+        self.shafts = tuple(shafts)
+        super().__init__(message)
 
 
 class UnderdeterminedError(OperatingPointError):

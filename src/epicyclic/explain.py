@@ -46,6 +46,7 @@ from .errors import EpicyclicError
 from .io.tables import fmt
 from .model import Brake, Clutch, GearStage, PlanetarySet
 from .results.solution import Solution
+from .text import markdown_text
 from .units import Units
 
 __all__ = ["Step", "Explanation", "explain", "LANGUAGES"]
@@ -172,9 +173,9 @@ class Explanation:
 
     def markdown(self) -> str:
         """Markdown: a heading per step, equations as code."""
-        parts = [f"# {self.title}"]
-        for step in self.steps:
-            parts.append(f"## {step.title}\n\n" + "\n".join(f"    {line}" for line in step.lines))
+        parts = [f"# {markdown_text(self.title)}"]
+        for step in self.steps:  # equations as indented code: shown literally, no escaping needed
+            parts.append(f"## {markdown_text(step.title)}\n\n" + "\n".join(f"    {line}" for line in step.lines))
         return "\n\n".join(parts) + "\n"
 
     def html(self) -> str:

@@ -15,7 +15,14 @@ definitions the sources need and without pint's traps:
 * ``kp`` (kilopond) is 9.80665 N; a *torque* written as mass × length
   (``cm*kg``, ``m*kg``) is read in the sources' sense as kp·cm, kp·m;
 * ``hp`` (mechanical horsepower, 745.7 W), ``lbf*ft``, ``kW``, ``N*m`` are
-  pint's own.
+  pint's own; ``Nm`` is N·m (pint's default reads it as "number meter").
+
+Strings are read by the project's own grammar, never by pint's expression
+parser (which evaluates ``"9**9**9 rpm"`` for minutes): a number (exponent
+within ±308), then unit names the registry knows, joined with ``*``, ``/``,
+``·`` or a space and raised to whole powers up to ±4 (``m**2``, ``s^-3``,
+``m²``).  A unit chosen in ``[units]`` has no number and converts to the core
+unit by a factor within 1e-12 … 1e12 (see ``docs/limits.md``).
 
 Examples
 --------
@@ -37,12 +44,14 @@ U/min (71620 = 75·100·60/(2π)).  DIN 1301 for PS = 735.49875 W.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 
 import pint
 
 from .errors import EpicyclicError
+from .limits import MAX_DECIMAL_EXPONENT, MAX_UNIT_CHARS, MAX_UNIT_POWER, UNIT_FACTOR_RANGE
 
 __all__ = [
     "CORE_UNITS",
@@ -74,6 +83,7 @@ _DEFINITIONS = (
     "rpm = revolution / minute",
     "PS = 735.49875 W = metric_horsepower_PS",
     "kp = 9.80665 N = kilopond",
+    "newton_meter = N * m = Nm",
 )
 
 
@@ -106,23 +116,110 @@ def registry() -> pint.UnitRegistry:
     return ureg
 
 
-def _parse(text: str, field: str, quantity: str) -> pint.Quantity:
-    ureg = registry()
-    if len(text) > 200:
-        raise UnitError(f"{field}: {text[:40]!r}… is too long for a {quantity} (at most 200 characters).",
+# ---------------------------------------------------------------- the number-and-unit grammar
+# quantity   := number [unit]
+# unit       := ["1" "/"] factor ((op | whitespace) factor)*      op: * / · ⋅ ×
+# factor     := name [("**" | "^") integer | "²" | "³"]            |integer| <= MAX_UNIT_POWER
+# name       := a unit name the registry knows (prefixes such as k, c, M included)
+# Nothing is evaluated but float() of the number, checked against MAX_DECIMAL_EXPONENT:
+# pint never sees the string, so "9**9**9 rpm" is a syntax error, not minutes of work.
+_NUMBER = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE](?P<exponent>[+-]?\d+))?")
+_TOKEN = re.compile(
+    r"\s*(?:(?P<power>\*\*|\^)|(?P<op>[*/\u00b7\u22c5\u00d7])|(?P<super>[\u00b2\u00b3])"
+    r"|(?P<name>[^\W\d]\w*)|(?P<int>[+-]?\d+)|(?P<other>\S))"
+)
+_SUPERSCRIPT = {"\u00b2": 2, "\u00b3": 3}
+
+
+def _grammar_error(text: str, field: str, quantity: str, reason: str) -> UnitError:
+    return UnitError(
+        f"{field}: cannot read {text!r} as a {quantity} ({reason}). Write a number and a unit, e.g. "
+        f"{_example(quantity)!r} (units: {QUANTITIES[quantity]}); unit names may be joined with * / · "
+        f"and raised to whole powers up to {MAX_UNIT_POWER}.",
+        field, quantity, text,
+    )
+
+
+def _read_number(text: str, field: str, quantity: str) -> tuple[float | None, str]:
+    """(number, rest of the text); None if the text does not start with a number."""
+    match = _NUMBER.match(text)
+    if match is None:
+        return None, text
+    exponent = match.group("exponent")
+    if exponent is not None and (len(exponent.lstrip("+-")) > 4 or abs(int(exponent)) > MAX_DECIMAL_EXPONENT):
+        raise _grammar_error(text, field, quantity, f"the exponent e{exponent} is beyond "
+                                                    f"±{MAX_DECIMAL_EXPONENT}: not a finite, normal double")
+    value = float(match.group())
+    if not math.isfinite(value):
+        raise UnitError(f"{field}: {text!r} is not a finite {quantity} (it overflows a double).",
                         field, quantity, text)
-    try:
-        value = ureg.Quantity(text)
-    except Exception as exc:  # pint's parser raises many kinds; all mean "cannot read"
-        reason = str(exc) if str(exc) and not isinstance(exc, AssertionError) else "malformed number or unit"
-        raise UnitError(
-            f"{field}: cannot read {text!r} as a {quantity} ({reason}). "
-            f"Write a number and a unit, e.g. {_example(quantity)!r} (units: {QUANTITIES[quantity]}).",
-            field, quantity, text,
-        ) from None
-    if not isinstance(value, pint.Quantity):  # a plain number
-        value = ureg.Quantity(float(value), "")
-    return value
+    return value, text[match.end():]
+
+
+def _read_unit(text: str, full: str, field: str, quantity: str) -> pint.Unit:
+    """The unit of ``text`` by the grammar above (``full`` is the whole string, for messages)."""
+    ureg = registry()
+    tokens = [(m.lastgroup, m.group(m.lastgroup)) for m in _TOKEN.finditer(text) if m.lastgroup]
+    unit = ureg.Unit("")
+    k, sign, expect_factor = 0, 1, True
+    if len(tokens) >= 2 and tokens[0] == ("int", "1") and tokens[1] == ("op", "/"):
+        k, sign = 2, -1  # "1/min"
+    elif tokens and tokens[0][0] == "op" and text[:1] in "*/":  # "3*PS", "3/min" (no space after the number)
+        k, sign = 1, (-1 if tokens[0][1] == "/" else 1)
+    while k < len(tokens):
+        kind, value = tokens[k]
+        if kind == "op":
+            if expect_factor:
+                raise _grammar_error(full, field, quantity, f"{value!r} without a unit name before it")
+            sign, expect_factor = (-1 if value == "/" else 1), True
+            k += 1
+            continue
+        if kind != "name":
+            what = {"power": "a power without a unit name", "super": "a power without a unit name",
+                    "int": f"the number {value} inside the unit"}.get(kind, f"the character {value!r}")
+            raise _grammar_error(full, field, quantity, what)
+        power, k = 1, k + 1
+        if k < len(tokens) and tokens[k][0] == "super":
+            power, k = _SUPERSCRIPT[tokens[k][1]], k + 1
+        elif k < len(tokens) and tokens[k][0] == "power":
+            if k + 1 >= len(tokens) or tokens[k + 1][0] != "int":
+                raise _grammar_error(full, field, quantity, f"{tokens[k][1]!r} must be followed by a whole number")
+            power, k = int(tokens[k + 1][1][:8]), k + 2
+            if power == 0 or abs(power) > MAX_UNIT_POWER:
+                raise _grammar_error(full, field, quantity,
+                                     f"the power {tokens[k - 1][1]} of {value!r} is not one of ±1 … ±{MAX_UNIT_POWER}")
+        try:
+            named = ureg.Unit(value)
+        except Exception:  # pint: UndefinedUnitError and friends
+            raise _grammar_error(full, field, quantity, f"unknown unit {value!r}") from None
+        unit = unit * named ** (sign * power)
+        sign, expect_factor = 1, False
+    if expect_factor and tokens:
+        raise _grammar_error(full, field, quantity, "it ends with an operator")
+    return unit
+
+
+def _parse(text: str, field: str, quantity: str, shown: str | None = None) -> pint.Quantity:
+    """A number with an optional unit, read by the grammar above (never by pint's parser).
+
+    ``shown`` is the text named in messages (default ``text``).
+    """
+    shown = text if shown is None else shown
+    if len(text) > MAX_UNIT_CHARS:
+        raise UnitError(f"{field}: {text[:40]!r}… is too long for a {quantity} "
+                        f"(at most {MAX_UNIT_CHARS} characters).", field, quantity, text)
+    value, rest = _read_number(text.strip(), field, quantity)
+    if value is None:
+        special = re.match(r"[+-]?(nan|inf)", text.strip(), re.IGNORECASE)
+        raise _grammar_error(shown, field, quantity, "NaN and infinity are not accepted" if special
+                             else "it does not start with a number")
+    if rest.startswith(("**", "^")):
+        raise _grammar_error(shown, field, quantity, f"{rest[:2].strip('0123456789')!r} after the number: powers "
+                                                     "of numbers are not evaluated; write e.g. 1e9")
+    if rest and not rest[0].isspace() and rest[0] not in "/*" and not rest[0].isalpha():
+        raise _grammar_error(shown, field, quantity, f"unexpected {rest[0]!r} after the number"
+                             + ("; write a decimal point" if rest[0] == "," else ""))
+    return registry().Quantity(value, _read_unit(rest, shown, field, quantity))
 
 
 def _example(quantity: str) -> str:
@@ -185,8 +282,21 @@ def unit_factor(unit: str, quantity: str, field: str = "units") -> float:
             f"{field}: the {quantity} unit must be a non-empty string such as "
             f"{CORE_UNITS[quantity]!r}, got {unit!r}.", field, quantity, unit,
         )
-    parsed = _parse(f"1 {unit}" if not unit.strip()[0].isdigit() else unit, field, quantity)
-    return _to_core_quantity(parsed, quantity, field, unit)
+    text = unit.strip()
+    if text[0].isdigit() and not re.match(r"1\s*/", text) or text[0] in "+-.":
+        raise UnitError(
+            f"{field}: {unit!r} is not a unit: give a unit name without a number, such as "
+            f"{CORE_UNITS[quantity]!r} (units: {QUANTITIES[quantity]}).", field, quantity, unit,
+        )
+    factor = _to_core_quantity(_parse(f"1 {text}", field, quantity, unit), quantity, field, unit)
+    low, high = UNIT_FACTOR_RANGE
+    if not low <= abs(factor) <= high:
+        raise UnitError(
+            f"{field}: {unit!r} is {factor:.3g} {CORE_UNITS[quantity]}, outside the accepted "
+            f"{low:g} … {high:g} {CORE_UNITS[quantity]}: a degenerate unit (see docs/limits.md).",
+            field, quantity, unit,
+        )
+    return factor
 
 
 def to_core(value: object, quantity: str, *, field: str = "value", default_unit: str | None = None) -> float:
@@ -226,12 +336,19 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
     if isinstance(value, bool):
         raise UnitError(f"{field}: expected a {quantity}, got the boolean {value!r}.", field, quantity, value)
     if isinstance(value, (int, float)):
-        number = float(value)
+        try:
+            number = float(value)
+        except OverflowError:  # an integer beyond double precision
+            number = math.inf
         if not math.isfinite(number):
             raise UnitError(f"{field}: expected a finite {quantity}, got {value!r}.", field, quantity, value)
         if default_unit is None:
             return number
-        return number * unit_factor(default_unit, quantity, field)
+        core = number * unit_factor(default_unit, quantity, field)
+        if not math.isfinite(core):
+            raise UnitError(f"{field}: {value!r} {default_unit} is not a finite {quantity} in "
+                            f"{CORE_UNITS[quantity]} (it overflows a double).", field, quantity, value)
+        return core
     if not isinstance(value, str):
         raise UnitError(
             f"{field}: expected a number or a string with unit such as {_example(quantity)!r}, "

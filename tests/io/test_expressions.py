@@ -66,3 +66,27 @@ def test_products_of_fractions_match_exact_arithmetic(pairs):
     for a, b in pairs:
         exact *= Fraction(a, b)
     assert evaluate(text) == pytest.approx(float(exact), rel=1e-12)
+
+
+# ---- any text: a finite number or an ExpressionError, at once, and no warning on stderr
+_EXPRESSION_PIECES = ["9", "**", "*", "/", "+", "-", "(", ")", "1e308", "0", ".", "2", "e", "j", "[", "]", "__",
+                      "import", "lambda", ":", ",", " ", "16", "17", "-16", "1e-320", "~", "//", "%", "<", "if"]
+
+
+@given(st.lists(st.sampled_from(_EXPRESSION_PIECES), max_size=40).map("".join) | st.text(max_size=220))
+def test_any_text_is_a_finite_number_or_an_expression_error(text):
+    import math
+    import time
+    import warnings
+
+    start = time.monotonic()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            value = evaluate(text, "ratio")
+        except ExpressionError as exc:
+            assert str(exc).startswith("ratio:")
+        else:
+            assert math.isfinite(value)
+    assert not caught, caught[0].message  # a SyntaxWarning would be a second line on stderr
+    assert time.monotonic() - start < 0.5

@@ -161,7 +161,7 @@ loads = ["out"]
         (SET.replace("0.98", "1.2"), InputFileError, r"expected an efficiency in \(0, 1\]"),
         (SET.replace("0.98", "'98 %'"), ModelError, "stationary_efficiency"),
         (SET + "[operating_point]\nspeeds = { inn = 3 }", UnknownShaftError, "unknown shaft 'inn'"),
-        (SET + "[operating_point]\npowers = { in = '3 m' }", UnitError, r"powers.in: '3 m' is not a power"),
+        (SET + "[operating_point]\npowers = { in = '3 m' }", UnitError, r"key 'powers.in': '3 m' is not a power"),
         (SET + "[operating_point]\nspeed = { in = 3 }", InputFileError, "unknown key 'speed'.*did you mean 'speeds'"),
         (SET + "[operating_point]\ngear = '1'", InputFileError, r"needs a \[transmission\]"),
         (SET + "[units]\npower = 'm'", UnitError, r"\[units\].*is not a power"),

@@ -9,17 +9,20 @@ from __future__ import annotations
 
 import functools
 import os
+import sys
+import warnings
 from collections.abc import Callable
 from enum import Enum
 from pathlib import Path
 from typing import Annotated, Any, Optional, TypeVar
 
 import typer
+from typer.core import TyperGroup
 
 from ..errors import EpicyclicError
 
 __all__ = ["EXIT_OK", "EXIT_INTERNAL", "EXIT_BAD_INPUT", "OutputFormat", "FormatOption", "OutOption",
-           "guarded", "emit", "fail", "load_in_gear"]
+           "guarded", "emit", "say", "fail", "check_finite", "load", "solved", "OneLineErrors"]
 
 EXIT_OK = 0
 EXIT_INTERNAL = 1
@@ -43,24 +46,40 @@ OutOption = Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to
 
 
 def fail(message: str, code: int = EXIT_BAD_INPUT) -> None:
-    """Print ``message`` as one paragraph (one line; terminals wrap it) on stderr and exit with ``code``."""
-    typer.echo(" ".join(message.split()), err=True)
+    """Print ``message`` as one line on stderr (control characters removed) and exit with ``code``."""
+    from ..text import terminal_text
+
+    typer.echo(" ".join(terminal_text(message).split()), err=True)
     raise typer.Exit(code)
 
 
 def guarded(command: F) -> F:
-    """Run a command, turning bad input into exit 2 and anything else into exit 1."""
+    """Run a command, turning bad input into exit 2 and anything else into exit 1.
+
+    Before the command runs, an ``out`` that is the input ``file`` (or a link
+    to it) is refused; errors raised after the file was read (solver,
+    transmission) are located in ``file`` with the key they are about.
+    """
 
     @functools.wraps(command)
     def wrapper(*args: Any, **kwargs: Any) -> Any:
+        from ..io.located import locate_error
+        from ..io.output import refuse_input
+
+        source = kwargs.get("file")
         try:
-            return command(*args, **kwargs)
+            if kwargs.get("out") is not None:
+                refuse_input(kwargs["out"], [source])
+            with warnings.catch_warnings():  # overflow shows as one clear error, never as numpy warnings
+                warnings.simplefilter("ignore", RuntimeWarning)
+                return command(*args, **kwargs)
         except typer.Exit:
             raise
         except EpicyclicError as exc:
-            fail(f"error: {exc}", EXIT_BAD_INPUT)
-        except OSError as exc:  # writing --out, reading an input file
-            fail(f"error: {exc.strerror or exc} ({exc.filename or ''}).", EXIT_BAD_INPUT)
+            fail(f"error: {locate_error(exc, str(source)) if source is not None else exc}", EXIT_BAD_INPUT)
+        except OSError as exc:  # reading an input file that vanished, a closed stdout, ...
+            where = f" ({exc.filename})" if exc.filename else ""
+            fail(f"error: {exc.strerror or exc}{where}.", EXIT_BAD_INPUT)
         except Exception as exc:
             if os.environ.get("EPICYCLIC_DEBUG"):
                 raise
@@ -71,28 +90,82 @@ def guarded(command: F) -> F:
 
 
 def emit(text: str, out: Path | None) -> None:
-    """Write ``text`` to ``out`` (creating folders) or to stdout."""
+    """Write ``text`` to ``out`` (atomically, creating folders) or to stdout; control characters removed."""
+    from ..io.output import write_atomic
+    from ..text import terminal_text
+
+    text = terminal_text(text)
     if out is None:
         typer.echo(text, nl=not text.endswith("\n"))
         return
-    out = Path(out)
-    if out.parent and not out.parent.exists():
-        out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(text, encoding="utf-8")
-    typer.echo(f"wrote {out.resolve()}")
+    say(f"wrote {write_atomic(out, text).resolve()}")
 
 
-def load_in_gear(file: Path, gear: str | None):
-    """The train file at ``file``, its operating point applied in ``gear`` of its schedule when given."""
+def say(line: str) -> None:
+    """Print a status line (e.g. ``wrote PATH``) without control characters."""
+    from ..text import terminal_text
+
+    typer.echo(terminal_text(line))
+
+
+def check_finite(data: Any, file: Path | str | None, what: str = "") -> None:
+    """Raise NonFiniteResultError (exit 2) at the first infinite or NaN number of a result's ``to_dict()``."""
+    from ..io.located import check_finite as check
+
+    check(data, str(file) if file is not None else "result", what)
+
+
+def load(file: Path, gear: str | None = None):
+    """The train file ``file`` (a :class:`~epicyclic.io.TrainFile`), in ``gear`` of its schedule if given."""
     from dataclasses import replace
 
     from ..errors import ModelError
     from ..io import load_train_file
 
     train_file = load_train_file(file)
-    if gear is not None:
-        if train_file.transmission is None:
-            raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
-        train_file.transmission.train_in_gear(train_file.train, gear)  # validates the gear name
-        train_file = replace(train_file, gear=gear)
-    return train_file
+    if gear is None:
+        return train_file
+    if train_file.transmission is None:
+        raise ModelError(f"--gear {gear!r:.40} needs a [transmission] table with a schedule in the file.")
+    if gear not in train_file.transmission.schedule:
+        raise ModelError(f"--gear: no gear {gear!r:.40} in the [transmission] schedule; gears are "
+                         f"{', '.join(repr(g) for g in train_file.transmission.schedule)}.")
+    return replace(train_file, gear=gear)
+
+
+def solved(train_file, file: Path):
+    """The solution of ``train_file``, its numbers (and the ideal ones) checked to be finite."""
+    from ..io.json_report import report_data
+
+    solution = train_file.solve()
+    check_finite(report_data(solution, train_file.units), file)
+    return solution
+
+
+class OneLineErrors(TyperGroup):
+    """The command group: usage errors (a bad option value, an unknown option, a missing
+    argument) are one line on stderr with exit code 2, like every other bad input."""
+
+    def main(self, args=None, prog_name=None, complete_var=None, standalone_mode=True, **extra):  # type: ignore[override]
+        if not standalone_mode:
+            return super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        try:
+            code = super().main(args, prog_name, complete_var, standalone_mode=False, **extra)
+        except typer.TyperException as exc:  # click's ClickException family
+            if type(exc).__name__ == "NoArgsIsHelpError":
+                typer.echo(exc.format_message())
+            else:
+                ctx = getattr(exc, "ctx", None)
+                command = ctx.command_path if ctx is not None else "epicyclic"
+                try:
+                    typer.echo(" ".join(f"error: {command}: {exc.format_message().rstrip('.')} (see '{command} --help')."
+                                        .split()), err=True)
+                except OSError:
+                    pass
+            sys.exit(getattr(exc, "exit_code", EXIT_BAD_INPUT))
+        except RuntimeError as exc:
+            if type(exc).__name__ != "Abort":
+                raise
+            typer.echo("Aborted.", err=True)
+            sys.exit(EXIT_INTERNAL)
+        sys.exit(code if isinstance(code, int) else EXIT_OK)

@@ -17,10 +17,9 @@ from ..io.geometry_report import geometry_dict, geometry_html, geometry_markdown
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load_in_gear
+from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load, solved
 
 __all__ = ["analyze"]
-
 
 
 @guarded
@@ -33,8 +32,8 @@ def analyze(
     lang: Annotated[str, typer.Option(help="Language of the worked solution in HTML reports: en or de.")] = "en",
 ) -> None:
     """Solve FILE: speeds, torques, powers, losses, efficiency, self-locking, circulating power."""
-    train_file = load_in_gear(file, gear)
-    solution = train_file.solve()
+    train_file = load(file, gear)
+    solution = solved(train_file, file)
     units, title, source = train_file.units, train_file.title, str(file)
     shapes = geometry_results(train_file.geometry, solution)
     if format is OutputFormat.json:

@@ -13,8 +13,7 @@ from typing import Annotated, Optional
 import typer
 
 from ..explain import explain as worked_solution
-from ..io import load_train_file
-from ._common import emit, guarded
+from ._common import emit, guarded, load, solved
 
 __all__ = ["Language", "ExplainFormat", "explain"]
 
@@ -41,7 +40,7 @@ def explain(
     out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
 ) -> None:
     """Show the worked solution of FILE: Willis, loss rule, torque balance, results, with numbers."""
-    train_file = load_train_file(file)
-    solution = train_file.solve()
+    train_file = load(file)
+    solution = solved(train_file, file)
     result = worked_solution(solution, train_file.units, lang=lang.value, title=train_file.title)
     emit(result.markdown() if format is ExplainFormat.markdown else result.text(), out)

@@ -16,11 +16,12 @@ from typing import Annotated
 
 import typer
 
+from ..errors import EpicyclicError
+from ..io.located import located
 from ..transmission import Transmission, explore as _explore
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, check_finite, emit, guarded
 
 __all__ = ["gears", "explore"]
-
 
 
 def _render(result, format: OutputFormat, detail_text: str = "") -> str:
@@ -34,6 +35,16 @@ def _render(result, format: OutputFormat, detail_text: str = "") -> str:
     return result.table() + (("\n\n" + detail_text) if detail_text else "")
 
 
+def _failing_gear(transmission: Transmission) -> str:
+    """The first gear whose analysis fails (called only after analyze_all failed)."""
+    for gear in transmission.gears:
+        try:
+            transmission.analyze(gear)
+        except EpicyclicError:
+            return gear
+    return "?"
+
+
 @guarded
 def gears(
     file: Annotated[Path, typer.Argument(help="Train description (.toml) with a \\[transmission] table.")],
@@ -43,7 +54,11 @@ def gears(
 ) -> None:
     """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread."""
     transmission = Transmission.from_file(file)
-    analysis = transmission.analyze_all()
+    try:
+        analysis = transmission.analyze_all()
+    except EpicyclicError as exc:  # name the gear: the file has no [operating_point] to blame
+        raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission)}'!r}") from None
+    check_finite(analysis.to_dict(), file)
     detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
     emit(_render(analysis, format, detail_text), out)
 
@@ -57,4 +72,6 @@ def explore(
 ) -> None:
     """Every combination of the file's clutches and brakes that drives the output: ratio and kind."""
     transmission = Transmission.from_file(file)
-    emit(_render(_explore(transmission, include_redundant=redundant), format), out)
+    states = _explore(transmission, include_redundant=redundant)
+    check_finite(states.to_dict(), file)
+    emit(_render(states, format), out)

@@ -18,7 +18,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load_in_gear
+from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load, solved
 
 __all__ = ["fit", "forces", "search", "parse_range", "parse_tolerance"]
 
@@ -27,7 +27,7 @@ def _load(file: Path, gear: str | None):
     """The train file with ``--gear`` applied; an error if it has no geometry table."""
     from ..errors import ModelError
 
-    train_file = load_in_gear(file, gear)
+    train_file = load(file, gear)
     if not train_file.geometry:
         raise ModelError(
             f"{file}: no element has a geometry table; add one to a [[planetary]] or [[gear]] element, e.g. "

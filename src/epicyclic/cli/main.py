@@ -9,7 +9,10 @@ from __future__ import annotations
 
 import typer
 
+from ._common import OneLineErrors
+
 app = typer.Typer(
+    cls=OneLineErrors,
     name="epicyclic",
     help="Analyse epicyclic (planetary) gear trains: speeds, torques, losses, efficiency, pictures.",
     no_args_is_help=True,

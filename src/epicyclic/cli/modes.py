@@ -21,11 +21,13 @@ from typing import Annotated, Optional
 import typer
 
 from ..analysis.modes import two_shaft_modes
-from ..errors import ModelError
+from ..errors import EpicyclicError, ModelError
 from ..io.expressions import evaluate
+from ..io.located import located
 from ..io.tables import ReportTable
+from ..limits import RATIO_RANGE, LimitError
 from ..model import PlanetarySet
-from ._common import emit, guarded
+from ._common import check_finite, emit, guarded
 
 __all__ = ["SetKind", "ModesFormat", "modes", "planetary_from_options"]
 
@@ -54,7 +56,11 @@ def planetary_from_options(kind: SetKind, sun: int | None, ring: int | None, pla
     if i0 is not None:
         if teeth_given:
             raise ModelError("modes: give tooth counts (--sun, --ring, ...) or --i0, not both.")
-        return PlanetarySet("set", "sun", "ring", "carrier", evaluate(i0, "--i0"), eta0)
+        ratio = evaluate(i0, "--i0")
+        if ratio != 0 and not RATIO_RANGE[0] <= abs(ratio) <= RATIO_RANGE[1]:
+            raise LimitError(f"--i0: |{ratio:.6g}| is outside the accepted {RATIO_RANGE[0]:g} … "
+                             f"{RATIO_RANGE[1]:g} (see docs/limits.md).", "--i0")
+        return PlanetarySet("set", "sun", "ring", "carrier", ratio, eta0)
     if sun is None or ring is None:
         raise ModelError("modes: give --sun and --ring tooth counts (and --planet-sun/--planet-ring for "
                          "double or stepped planets), or the stationary ratio --i0.")
@@ -77,6 +83,19 @@ def planetary_from_options(kind: SetKind, sun: int | None, ring: int | None, pla
                                 ring_internal=not external_ring, **common)
 
 
+#: The model's field names and the options that give them (longest first: z_planet_sun before z_planet).
+_OPTIONS = (("z_planet_ring", "--planet-ring"), ("z_planet_sun", "--planet-sun"), ("z_planet", "--planet"),
+            ("z_sun", "--sun"), ("z_ring", "--ring"), ("stationary_efficiency", "--eta0"),
+            ("stationary_ratio", "--i0"))
+
+
+def _with_option(exc: EpicyclicError) -> EpicyclicError:
+    """A model error about the set, located at the option that gave the value."""
+    message = str(exc)
+    option = next((opt for name, opt in _OPTIONS if name in message), "")
+    return located(exc, "modes", option, owner="planetary set 'set'") if option else exc
+
+
 @guarded
 def modes(
     sun: Annotated[Optional[int], typer.Option(help="Teeth of the sun (first central gear).")] = None,
@@ -95,8 +114,12 @@ def modes(
     out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
 ) -> None:
     """The seven two-shaft ratios of a set (Queitsch Tafel 1) with efficiencies in both directions."""
-    planetary = planetary_from_options(kind, sun, ring, planet, planet_sun, planet_ring, external_ring, i0, eta0)
+    try:
+        planetary = planetary_from_options(kind, sun, ring, planet, planet_sun, planet_ring, external_ring, i0, eta0)
+    except EpicyclicError as exc:
+        raise _with_option(exc) from None
     table = two_shaft_modes(planetary)
+    check_finite(table.to_dict(), "modes")
     if format is ModesFormat.json:
         text = json.dumps(table.to_dict(), indent=2, ensure_ascii=False) + "\n"
     elif format is ModesFormat.markdown:

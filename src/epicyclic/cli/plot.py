@@ -14,7 +14,9 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import guarded
+from ..io.output import atomic_path, refuse_input
+from ..limits import DPI_RANGE, FPS_RANGE, FRAMES_RANGE, check_range
+from ._common import guarded, load, say, solved
 
 __all__ = ["PlotKind", "plot", "animate"]
 
@@ -31,24 +33,14 @@ class PlotKind(str, Enum):
 
 def _load(file: Path, gear: str | None):
     """(train file, operating train) with ``--gear`` applied."""
-    from dataclasses import replace
-
-    from ..errors import ModelError
-    from ..io import load_train_file
-
-    train_file = load_train_file(file)
-    if gear is not None:
-        if train_file.transmission is None:
-            raise ModelError(f"{file}: --gear {gear!r} needs a [transmission] table with a schedule in the file.")
-        train_file.transmission.train_in_gear(train_file.train, gear)  # validates the gear name
-        train_file = replace(train_file, gear=gear)
-    return train_file
+    return load(file, gear)
 
 
 def _agg() -> None:
     import matplotlib
 
     matplotlib.use("Agg")  # files only: no display needed
+    matplotlib.rcParams["text.parse_math"] = False  # a '$' in a title or name is text, not TeX math
 
 
 @guarded
@@ -58,21 +50,24 @@ def plot(
     out: Annotated[Optional[Path], typer.Option(
         "--out", "-o", help="Output file: .svg, .png or .pdf (default: FILE-KIND.png here).")] = None,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
-    dpi: Annotated[int, typer.Option(help="Resolution of .png output.")] = 150,
+    dpi: Annotated[int, typer.Option(help="Resolution of .png output (20 … 600).")] = 150,
 ) -> None:
     """Draw FILE: speed plan, torque bars, power rectangles, lever diagram or power flow."""
     from ..plotting import FIGURE_SUFFIXES, lever_diagram, save_figure, save_plot
     from ..plotting._common import check_suffix
 
+    check_range(dpi, "--dpi", DPI_RANGE)
     out = Path(out) if out is not None else Path(f"{file.stem}-{kind.value}.png")
     check_suffix(out, FIGURE_SUFFIXES, "plot --out")
+    refuse_input(out, [file])
     _agg()
     train_file = _load(file, gear)
-    if kind is PlotKind.lever and train_file.operating_point is None:
-        written = save_figure(lever_diagram(train=train_file.operating_train).plot(), out, dpi=dpi)
-    else:
-        written = save_plot(train_file.solve(), kind.value, out, dpi=dpi)
-    typer.echo(f"wrote {written.resolve()}")
+    with atomic_path(out) as temporary:
+        if kind is PlotKind.lever and train_file.operating_point is None:
+            save_figure(lever_diagram(train=train_file.operating_train).plot(), temporary, dpi=dpi)
+        else:
+            save_plot(solved(train_file, file), kind.value, temporary, dpi=dpi)
+    say(f"wrote {out.resolve()}")
 
 
 @guarded
@@ -84,17 +79,22 @@ def animate(
     willis: Annotated[bool, typer.Option(
         "--willis", help="Show the three superposed motions of the Willis derivation in turn.")] = False,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
-    frames: Annotated[int, typer.Option(help="Frames of one GIF loop.")] = 48,
-    fps: Annotated[int, typer.Option(help="Frames per second.")] = 16,
+    frames: Annotated[int, typer.Option(help="Frames of one GIF loop (2 … 240).")] = 48,
+    fps: Annotated[int, typer.Option(help="Frames per second (1 … 60).")] = 16,
 ) -> None:
     """Animate a planetary set of FILE at its solved speeds (HTML/SVG plays offline; or GIF)."""
     from ..plotting import planetary_animation
     from ..plotting._common import check_suffix
     from ..plotting.animation import ANIMATION_SUFFIXES
 
+    check_range(frames, "--frames", FRAMES_RANGE)
+    check_range(fps, "--fps", FPS_RANGE)
     out = Path(out) if out is not None else Path(f"{file.stem}-animation.html")
     check_suffix(out, ANIMATION_SUFFIXES, "animate --out")
+    refuse_input(out, [file])
     _agg()
-    solution = _load(file, gear).solve()
+    solution = solved(_load(file, gear), file)
     anim = planetary_animation(solution, element, willis=willis, frames=frames, fps=fps)
-    typer.echo(f"wrote {anim.save(out).resolve()}")
+    with atomic_path(out) as temporary:
+        anim.save(temporary)
+    say(f"wrote {out.resolve()}")

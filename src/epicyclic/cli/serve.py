@@ -26,6 +26,25 @@ def _is_loopback(host: str) -> bool:
         return False
 
 
+def _address_problem(host: str, port: int) -> str:
+    """Why ``host:port`` cannot be served ("" if it can): checked before uvicorn starts, whose own
+    errors are several log lines and exit code 3."""
+    import socket
+
+    try:
+        infos = socket.getaddrinfo(host.strip("[]"), port, type=socket.SOCK_STREAM)
+    except (socket.gaierror, UnicodeError, ValueError) as exc:
+        return f"the address cannot be resolved ({getattr(exc, 'strerror', None) or exc}); give an IP address or a host name."
+    family, kind, proto, _, address = infos[0]
+    try:
+        with socket.socket(family, kind, proto) as probe:
+            probe.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            probe.bind(address)
+    except OSError as exc:
+        return f"cannot listen there ({exc.strerror or exc}); choose another --port or --host."
+    return ""
+
+
 def serve(
     host: Annotated[str, typer.Option(help="Address to bind; the default reaches this computer only.")] = "127.0.0.1",
     port: Annotated[int, typer.Option(help="TCP port.", min=1, max=65535)] = 8000,
@@ -41,6 +60,10 @@ def serve(
         from ..web import Limits, create_app
     except ImportError as exc:  # pragma: no cover - the web dependencies are installed with the package
         fail(f"error: epicyclic serve needs the web dependencies ({exc.name}); reinstall epicyclic.")
+        return
+    problem = _address_problem(host, port)
+    if problem:
+        fail(f"error: serve --host {host!r:.60} --port {port}: {problem}")
         return
     loopback = _is_loopback(host)
     if not loopback:

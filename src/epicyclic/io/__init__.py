@@ -4,12 +4,18 @@ Units are handled at this edge (:mod:`epicyclic.units`); the core sees 1/min, NÂ
 """
 
 from .expressions import ExpressionError, evaluate
-from .toml_format import InputFileError, TrainFile, Transmission, load_train_file, loads_train_file
+from .located import NonFiniteResultError, check_finite, locate_error
+from .source import InputFileError, read_source
+from .toml_format import TrainFile, Transmission, load_train_file, loads_train_file
 
 __all__ = [
     "ExpressionError",
     "InputFileError",
+    "NonFiniteResultError",
     "TrainFile",
+    "check_finite",
+    "locate_error",
+    "read_source",
     "Transmission",
     "evaluate",
     "load_train_file",

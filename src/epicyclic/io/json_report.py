@@ -60,7 +60,7 @@ from typing import Any
 from ..results.solution import Solution
 from ..units import Units
 
-__all__ = ["SCHEMA", "report_dict", "json_report"]
+__all__ = ["SCHEMA", "report_dict", "report_data", "json_report"]
 
 #: Identifier of the layout; bumped on any incompatible change.
 SCHEMA = "epicyclic-report/2"
@@ -132,6 +132,12 @@ def report_dict(
     dict
         See the module docstring for the layout.
     """
+    return _finite(report_data(solution, units, title=title, source=source, geometry=geometry))
+
+
+def report_data(solution: Solution, units: Units | None = None, *, title: str | None = None,
+                source: str | None = None, geometry: dict[str, Any] | None = None) -> dict[str, Any]:
+    """:func:`report_dict` before non-finite numbers become null (to check them: ``check_finite``)."""
     from .. import __version__
 
     units = units or Units()
@@ -152,7 +158,7 @@ def report_dict(
     }
     if geometry is not None:  # only for files with geometry tables
         report["geometry"] = geometry
-    return _finite(report)
+    return report
 
 
 def json_report(solution: Solution, units: Units | None = None, *, title: str | None = None,

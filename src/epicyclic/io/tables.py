@@ -12,6 +12,7 @@ import html
 from dataclasses import dataclass
 
 from ..results.solution import Solution
+from ..text import markdown_text
 from ..units import Units
 
 __all__ = ["ReportTable", "report_tables", "summary_lines", "text_report", "markdown_report", "html_table", "fmt"]
@@ -35,14 +36,11 @@ class ReportTable:
         return "\n".join([self.caption, "", line, rule, *body])
 
     def markdown(self) -> str:
-        """A GitHub-flavoured Markdown table."""
-        def cell(text: str) -> str:
-            return text.replace("|", "\\|")
-
-        head = "| " + " | ".join(cell(h) for h in self.headers) + " |"
+        """A GitHub-flavoured Markdown table (HTML and pipes in cells escaped)."""
+        head = "| " + " | ".join(markdown_text(h) for h in self.headers) + " |"
         align = "|" + "|".join(":---" if k == 0 else "---:" for k in range(len(self.headers))) + "|"
-        body = ["| " + " | ".join(cell(c) for c in r) + " |" for r in self.rows]
-        return "\n".join([f"### {self.caption}", "", head, align, *body])
+        body = ["| " + " | ".join(markdown_text(c) for c in r) + " |" for r in self.rows]
+        return "\n".join([f"### {markdown_text(self.caption)}", "", head, align, *body])
 
     def html(self) -> str:
         """An HTML ``<table>`` with a caption."""
@@ -140,12 +138,11 @@ def text_report(solution: Solution, units: Units | None = None, title: str | Non
 def markdown_report(solution: Solution, units: Units | None = None, title: str | None = None) -> str:
     """A Markdown report (tables render on GitHub and in most editors)."""
     shafts, elements = report_tables(solution, units)
-    bar = "\\|"
     summary = ["| quantity | value |", "|:---|:---|"] + [
-        f"| {k} | {v.replace('|', bar)} |" for k, v in summary_lines(solution, units)
+        f"| {markdown_text(k)} | {markdown_text(v)} |" for k, v in summary_lines(solution, units)
     ]
     return "\n\n".join([
-        f"# {title or solution.train.name}",
+        f"# {markdown_text(title or solution.train.name)}",
         shafts.markdown(),
         elements.markdown(),
         "### Summary\n\n" + "\n".join(summary),

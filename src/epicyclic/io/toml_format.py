@@ -25,7 +25,11 @@ The format is documented key by key in ``docs/file-format.md``; in short::
 
 Every problem is reported as an :class:`InputFileError` (or the model's own
 error, prefixed with the file and element) that names the file, the element,
-the key, what was expected and what was given.  Unknown keys are errors.
+the key, what was expected and what was given.  Unknown keys are errors.  The
+file is read within the limits of :mod:`epicyclic.limits` (size, nesting,
+string lengths, counts; see :mod:`epicyclic.io.source`), and errors the
+solver raises later are located in ``[operating_point]`` by
+:meth:`TrainFile.solve`.
 
 References
 ----------
@@ -36,7 +40,6 @@ Brandenberger 1952, Beispiel
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -44,10 +47,15 @@ from types import MappingProxyType
 from typing import Any
 
 from ..errors import EpicyclicError, ModelError
-from ..model import Brake, Clutch, GearStage, GearTrain, OperatingPoint, PlanetarySet
+from ..limits import MAX_ELEMENTS, MAX_GEARS, MAX_MESHES, MAX_SHAFTS, MAX_TITLE_CHARS, check_count
+from ..model import HOUSING, Brake, Clutch, GearStage, GearTrain, OperatingPoint, PlanetarySet
+from ..model.planetary import check_planets
+from ..text import short, terminal_text
 from ..units import Units, to_core
 from . import geometry_format
-from .expressions import evaluate
+from .located import locate_error, operating_point_where
+from .reader import TableReader, at_key, kind_of
+from .source import InputFileError, parse_toml, read_source
 
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
@@ -66,23 +74,6 @@ _BRAKE_KEYS = {"name", "shaft", "engaged"}
 _UNIT_KEYS = {"speed", "torque", "power"}
 _OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
 _TRANSMISSION_KEYS = {"input", "output", "schedule"}
-
-
-class InputFileError(ModelError):
-    """A train description file that cannot be read or is invalid.
-
-    Attributes
-    ----------
-    source : str
-        The file (or ``"<string>"``).
-    where : str
-        The table and key, e.g. ``"[[planetary]] 'P1', key 'teeth'"``.
-    """
-
-    def __init__(self, message: str, source: str = "", where: str = ""):
-        self.source = source
-        self.where = where
-        super().__init__(message)
 
 
 @dataclass(frozen=True)
@@ -113,7 +104,7 @@ class Transmission:
         """``train`` with exactly the shift elements of ``gear`` engaged."""
         if gear not in self.schedule:
             raise ModelError(
-                f"transmission: no gear {gear!r} in the schedule; gears are "
+                f"transmission: no gear {short(gear)} in the schedule; gears are "
                 f"{', '.join(repr(g) for g in self.schedule) or 'none'}."
             )
         return train.with_engaged(self.schedule[gear])
@@ -175,19 +166,25 @@ class TrainFile:
 
         if self.operating_point is None:
             raise InputFileError(
-                f"{self.source}: the file has no [operating_point] table, so there is nothing to solve; "
-                "add speeds, torques or powers, drives and loads.", self.source, "[operating_point]",
+                f"{self.source}: [operating_point]: the file has no [operating_point] table, so there is nothing "
+                "to solve; add speeds, torques or powers, drives and loads.", self.source, "[operating_point]",
             )
-        return solve(self.operating_train, self.operating_point, lossless=lossless)
+        try:
+            return solve(self.operating_train, self.operating_point, lossless=lossless)
+        except EpicyclicError as exc:
+            raise locate_error(exc, self.source, self.operating_point, "[operating_point]") from None
 
 
 # ---------------------------------------------------------------------- public functions
-def load_train_file(path: str | Path) -> TrainFile:
+def load_train_file(path: str | Path, *, max_bytes: int | None = None) -> TrainFile:
     """Read a train description from a TOML file.
 
     Parameters
     ----------
     path : str or Path
+        A regular file of at most ``max_bytes`` bytes of UTF-8 TOML.
+    max_bytes : int, optional
+        Size limit; default :func:`epicyclic.limits.max_file_bytes` (1 MiB).
 
     Returns
     -------
@@ -196,20 +193,14 @@ def load_train_file(path: str | Path) -> TrainFile:
     Raises
     ------
     InputFileError
-        The file cannot be read, is not valid TOML, or its content is invalid.
+        The file cannot be read (missing, a folder, a FIFO or device, too
+        large, not UTF-8), is not valid TOML, is nested too deeply, or its
+        content is invalid.
     EpicyclicError
         Model errors (tooth counts, efficiencies, shafts), prefixed with the
         file and the element.
     """
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputFileError(f"{path}: no such file; give the path of a .toml train description.",
-                             str(path)) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputFileError(f"{path}: cannot read the file ({exc}).", str(path)) from None
-    return loads_train_file(text, source=str(path))
+    return loads_train_file(read_source(path, max_bytes), source=str(path))
 
 
 def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
@@ -236,139 +227,69 @@ def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
     >>> round(f.solve().speed("out"), 6)
     833.333333
     """
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputFileError(f"{source}: not valid TOML: {exc}. Check quotes, brackets and '=' signs.",
-                             source) from None
-    return _Reader(source).read(data)
+    return _Reader(source).read(parse_toml(text, source))
 
 
 # ---------------------------------------------------------------------- the reader
-class _Reader:
+class _Reader(TableReader):
     def __init__(self, source: str):
-        self.source = source
+        super().__init__(source)
         self.units = Units()
+        self.element_names: dict[str, str] = {}
 
-    # ---- messages
-    def error(self, where: str, message: str) -> InputFileError:
-        return InputFileError(f"{self.source}: {where}: {message}", self.source, where)
-
-    def wrap(self, where: str, exc: EpicyclicError) -> EpicyclicError:
-        """Prefix a model error with file and element, keeping its class where possible."""
-        message = f"{self.source}: {where}: {exc}"
+    def checked(self, where: str, owner: str, build, *args, **kwargs):
+        """``build(*args, **kwargs)`` with model errors located at ``where``."""
         try:
-            wrapped = type(exc)(message)
-        except TypeError:
-            wrapped = InputFileError(message, self.source, where)
-        return wrapped
+            return build(*args, **kwargs)
+        except InputFileError:
+            raise
+        except EpicyclicError as exc:
+            raise self.wrap(where, exc, owner) from None
 
-    def check_keys(self, table: Mapping[str, Any], allowed: set[str], where: str) -> None:
-        unknown = [k for k in table if k not in allowed]
-        if unknown:
-            close = _close(unknown[0], allowed)
-            raise self.error(
-                where,
-                f"unknown key {unknown[0]!r}; expected one of {', '.join(sorted(allowed))}"
-                + (f" (did you mean {close!r}?)" if close else "") + ".",
-            )
-
-    def table(self, value: object, where: str) -> Mapping[str, Any]:
-        if not isinstance(value, dict):
-            raise self.error(where, f"expected a table, got {_kind(value)} {value!r}.")
-        return value
-
-    def require(self, table: Mapping[str, Any], key: str, where: str) -> Any:
-        if key not in table:
-            raise self.error(where, f"missing key {key!r}.")
-        return table[key]
-
-    def string(self, table: Mapping[str, Any], key: str, where: str, default: str | None = None) -> str:
-        if key not in table and default is not None:
-            return default
-        value = self.require(table, key, where)
-        if not isinstance(value, str) or not value.strip():
-            raise self.error(where, f"key {key!r}: expected a non-empty string, got {_kind(value)} {value!r}.")
-        return value
-
-    def boolean(self, table: Mapping[str, Any], key: str, where: str, default: bool) -> bool:
-        value = table.get(key, default)
-        if not isinstance(value, bool):
-            raise self.error(where, f"key {key!r}: expected true or false, got {_kind(value)} {value!r}.")
-        return value
-
-    def integer(self, value: object, key: str, where: str) -> int:
-        if isinstance(value, bool) or not isinstance(value, int):
-            raise self.error(where, f"key {key!r}: expected a whole number, got {_kind(value)} {value!r}.")
-        return value
-
-    def number(self, value: object, key: str, where: str) -> float:
-        """A plain number or an arithmetic expression string."""
-        if isinstance(value, bool):
-            raise self.error(where, f"key {key!r}: expected a number, got the boolean {value!r}.")
-        if isinstance(value, (int, float)):
-            if not math.isfinite(value):
-                raise self.error(where, f"key {key!r}: expected a finite number, got {value!r}.")
-            return float(value)
-        if isinstance(value, str):
-            try:
-                return evaluate(value, f"key {key!r}")
-            except EpicyclicError as exc:
-                raise self.wrap(where, exc) from None
-        raise self.error(where, f"key {key!r}: expected a number or an expression such as "
-                                f"'(24/50)*(42/30)', got {_kind(value)} {value!r}.")
-
-    def efficiency(self, value: object, key: str, where: str) -> float:
-        eta = self.number(value, key, where)
-        if not 0.0 < eta <= 1.0:
-            raise self.error(where, f"key {key!r}: expected an efficiency in (0, 1] (1 = lossless), got "
-                                    f"{value!r}. Give e.g. 0.98, not a percentage or a loss.")
-        return eta
-
-    def elements_of(self, data: Mapping[str, Any], key: str) -> list[Mapping[str, Any]]:
-        value = data.get(key, [])
-        if isinstance(value, dict):
-            raise self.error(f"[{key}]", f"write [[{key}]] (an array of tables, one per element), not [{key}].")
-        if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
-            raise self.error(f"[[{key}]]", f"expected an array of tables, got {_kind(value)}.")
-        return value
+    def shaft(self, table: Mapping[str, Any], key: str, where: str) -> str:
+        """A shaft name; one spelt like the housing but not exactly is refused."""
+        name = self.name(table, key, where)
+        if name != HOUSING and name.casefold() == HOUSING:
+            raise self.error(at_key(where, key), f"{name!r} is not the frame: the housing is spelt {HOUSING!r} "
+                                                 "(lower case). Write 'housing', or another name for a shaft.")
+        return name
 
     # ---- top level
     def read(self, data: Mapping[str, Any]) -> TrainFile:
         self.check_keys(data, _TOP_KEYS, "top level")
         title = self.string(data, "title", "top level", default="gear train")
+        if len(title) > MAX_TITLE_CHARS:
+            raise self.error("top level, key 'title'", f"the title is {len(title):,} characters long; at most "
+                                                       f"{MAX_TITLE_CHARS} are accepted (see docs/limits.md).")
         description = data.get("description", "")
         if not isinstance(description, str):
-            raise self.error("top level", f"key 'description': expected a string, got {_kind(description)}.")
+            raise self.error("top level, key 'description'", f"expected a string, got {kind_of(description)}.")
+        title, description = terminal_text(title), terminal_text(description)  # no escapes in reports or figures
         if "units" in data:
             self.units = self.read_units(self.table(data["units"], "[units]"))
-        elements: list = []
+        tables = {kind: self.array_of_tables(data, kind) for kind in ("planetary", "gear", "clutch", "brake")}
+        count = sum(len(t) for t in tables.values())
+        self.checked("top level", "", check_count, count, "top level", MAX_ELEMENTS, "elements")
+        if not count:
+            raise self.error("top level", "the file describes no element; add at least one [[planetary]], "
+                                          "[[gear]], [[clutch]] or [[brake]] table.")
+        read = {"planetary": self.read_planetary, "gear": self.read_gear,
+                "clutch": self.read_shift, "brake": self.read_shift}
         lubricant = geometry_format.read_lubricant(self, data)
-        geometry: dict[str, Any] = {}
-        losses: dict[str, Any] = {}
-        for kind, read in (("planetary", self.read_planetary), ("gear", self.read_gear)):
-            for k, table in enumerate(self.elements_of(data, kind)):
+        elements, geometry, losses = [], {}, {}
+        for kind, group in tables.items():
+            for k, table in enumerate(group):
                 element, shape, model = geometry_format.read_extras(
-                    self, kind, table, read(table, k), self.element_where(kind, k, table), lubricant)
+                    self, kind, table, read[kind](table, k, kind), self.element_where(kind, k, table), lubricant)
                 elements.append(element)
                 if shape is not None:
                     geometry[element.name] = shape
                 if model is not None:
                     losses[element.name] = model
-        for k, table in enumerate(self.elements_of(data, "clutch")):
-            elements.append(self.read_shift(table, k, "clutch"))
-        for k, table in enumerate(self.elements_of(data, "brake")):
-            elements.append(self.read_shift(table, k, "brake"))
-        if not elements:
-            raise self.error("top level", "the file describes no element; add at least one [[planetary]], "
-                                          "[[gear]], [[clutch]] or [[brake]] table.")
-        shafts = data.get("shafts", [])
-        if not isinstance(shafts, list) or not all(isinstance(s, str) and s.strip() for s in shafts):
-            raise self.error("top level", f"key 'shafts': expected a list of shaft names, got {shafts!r}.")
-        try:
-            train = GearTrain(elements, tuple(shafts), title)
-        except EpicyclicError as exc:
-            raise self.wrap("elements", exc) from None
+        shafts = self.names(data.get("shafts", []), "shafts", "top level")
+        train = self.checked("top level", "gear train", GearTrain, elements, shafts, title)
+        self.checked("top level, key 'shafts'", "", check_count, len(train.shafts), "top level", MAX_SHAFTS,
+                     "shafts")
         transmission = None
         if "transmission" in data:
             transmission = self.read_transmission(self.table(data["transmission"], "[transmission]"), train)
@@ -382,122 +303,125 @@ class _Reader:
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")
         chosen = {k: self.string(table, k, "[units]") for k in table}
-        try:
-            return Units(**chosen)
-        except EpicyclicError as exc:
-            raise self.wrap("[units]", exc) from None
+        for key, unit in chosen.items():
+            self.checked(at_key("[units]", key), f"units.{key}", Units, **{key: unit})
+        return Units(**chosen)
 
     # ---- elements
-    def element_where(self, kind: str, k: int, table: Mapping[str, Any]) -> str:
+    @staticmethod
+    def element_where(kind: str, k: int, table: Mapping[str, Any]) -> str:
+        """Where the k-th ``[[kind]]`` table is, for messages: ``[[kind]] #k 'name'``."""
         name = table.get("name")
-        return f"[[{kind}]] #{k + 1}" + (f" {name!r}" if isinstance(name, str) else "")
+        return f"[[{kind}]] #{k + 1}" + (f" {short(name, 40)}" if isinstance(name, str) else "")
 
-    def read_planetary(self, table: Mapping[str, Any], k: int) -> PlanetarySet:
-        where = self.element_where("planetary", k, table)
-        self.check_keys(table, _PLANETARY_KEYS, where)
-        name = self.string(table, "name", where)
-        shafts = {role: self.string(table, role, where) for role in ("sun", "ring", "carrier")}
-        planets = self.integer(table.get("planets", 3), "planets", where)
+    def element(self, kind: str, k: int, table: Mapping[str, Any], keys: set[str]) -> tuple[str, str]:
+        """(where, name) of the k-th ``[[kind]]`` table, its keys and its name checked."""
+        where = self.element_where(kind, k, table)
+        self.check_keys(table, keys, where)
+        name = self.name(table, "name", where)
+        if name in self.element_names:
+            raise self.error(at_key(where, "name"), f"{name!r} is used twice: it is already the name of {self.element_names[name]}; "
+                                                    "element names must be unique.")
+        self.element_names[name] = where
+        return where, name
+
+    def read_planetary(self, table: Mapping[str, Any], k: int, kind: str = "planetary") -> PlanetarySet:
+        where, name = self.element(kind, k, table, _PLANETARY_KEYS)
+        owner = f"planetary set {name!r}"
+        shafts = {role: self.shaft(table, role, where) for role in ("sun", "ring", "carrier")}
+        planets = self.checked(at_key(where, "planets"), owner, check_planets,
+                               self.integer(table.get("planets", 3), "planets", where), "planets", owner)
         eta = table.get("stationary_efficiency")
         meshes = table.get("mesh_efficiencies")
         if eta is not None and meshes is not None:
             raise self.error(where, "give 'stationary_efficiency' or 'mesh_efficiencies', not both.")
         eta = None if eta is None else self.efficiency(eta, "stationary_efficiency", where)
         if meshes is not None:
-            if not isinstance(meshes, list) or not meshes:
-                raise self.error(where, f"key 'mesh_efficiencies': expected a list of efficiencies such as "
-                                        f"[0.98, 0.98], got {meshes!r}.")
+            if not isinstance(meshes, list) or not 1 <= len(meshes) <= 3:
+                raise self.error(at_key(where, "mesh_efficiencies"), f"expected a list of 2 or 3 efficiencies "
+                                                                     f"such as [0.98, 0.98], got {short(meshes)}.")
             meshes = tuple(self.efficiency(v, f"mesh_efficiencies[{j}]", where) for j, v in enumerate(meshes))
         has_teeth, has_ratio = "teeth" in table, "stationary_ratio" in table
         if has_teeth == has_ratio:
             raise self.error(where, "give either 'teeth' (tooth counts) or 'stationary_ratio' (i0), "
                                     + ("not both." if has_teeth else "got neither."))
-        try:
-            if has_ratio:
-                ratio = self.number(table["stationary_ratio"], "stationary_ratio", where)
-                if meshes is not None:
-                    eta = math.prod(meshes)
-                return PlanetarySet(name, stationary_ratio=ratio,
-                                    stationary_efficiency=1.0 if eta is None else eta,
-                                    planets=planets, **shafts)
-            return self.planetary_from_teeth(self.table(table["teeth"], f"{where}, key 'teeth'"),
-                                             name, shafts, eta, meshes, planets, where,
-                                             geometry_format.module_ratio(self, table, where))
-        except InputFileError:
-            raise
-        except EpicyclicError as exc:
-            raise self.wrap(where, exc) from None
+        if has_ratio:
+            key = at_key(where, "stationary_ratio")
+            ratio = self.ratio(table["stationary_ratio"], "stationary_ratio", where)
+            if meshes is not None:
+                eta = math.prod(meshes)
+            return self.checked(key, owner, PlanetarySet, name, stationary_ratio=ratio,
+                                stationary_efficiency=1.0 if eta is None else eta, planets=planets, **shafts)
+        teeth = self.table(table["teeth"], at_key(where, "teeth"))
+        return self.planetary_from_teeth(teeth, name, shafts, eta, meshes, planets, where,
+                                         geometry_format.module_ratio(self, table, where))
 
-    def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where, ratio=1.0) -> PlanetarySet:
+    def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where, ratio=None) -> PlanetarySet:
         kind = teeth.get("kind", "simple")
         if kind not in _TEETH_KEYS:
-            raise self.error(where, f"key 'teeth.kind': expected 'simple', 'double' or 'stepped' (or "
-                                    f"'two_rings' for a Wolfrom set, 'two_suns'), got {kind!r}.")
-        self.check_keys(teeth, _TEETH_KEYS[kind], f"{where}, key 'teeth' (kind {kind!r})")
-        z = {key: self.integer(self.require(teeth, key, f"{where}, key 'teeth' (kind {kind!r})"), f"teeth.{key}",
-                               where)
-             for key in _TEETH_KEYS[kind] - {"kind", "ring_internal", "module_ratio"}}
+            raise self.error(at_key(where, "teeth.kind"), f"expected 'simple', 'double' or 'stepped' (or "
+                                                          f"'two_rings' for a Wolfrom set, 'two_suns'), got "
+                                                          f"{short(kind)}.")
+        in_teeth = at_key(where, "teeth") + f" (kind {kind!r})"
+        self.check_keys(teeth, _TEETH_KEYS[kind], in_teeth)
+        z = {key: self.integer(self.require(teeth, key, in_teeth), f"teeth.{key}", where)
+             for key in sorted(_TEETH_KEYS[kind] - {"kind", "ring_internal", "module_ratio"})}
         if "module_ratio" in teeth:
             ratio = self.number(teeth["module_ratio"], "teeth.module_ratio", where)
+        owner = f"planetary set {name!r}"
         common = dict(stationary_efficiency=eta, mesh_efficiencies=meshes, planets=planets, **shafts)
-        if kind in ("two_rings", "two_suns"):
-            both = dict(first=common.pop("sun"), second=common.pop("ring"), z_first=z["first"],
-                        z_planet_first=z["planet_first"], z_planet_second=z["planet_second"], z_second=z["second"],
-                        module_ratio=ratio)
-            build = PlanetarySet.two_rings if kind == "two_rings" else PlanetarySet.two_suns
-            return build(name, **both, **common)
+        key = at_key(where, "teeth")
         if kind == "simple":
-            return PlanetarySet.simple(name, z_sun=z["sun"], z_planet=z["planet"], z_ring=z["ring"], **common)
+            return self.checked(key, owner, PlanetarySet.simple, name, z_sun=z["sun"], z_planet=z["planet"],
+                                z_ring=z["ring"], **common)
         if kind == "double":
-            return PlanetarySet.double_planet(name, z_sun=z["sun"], z_planet_sun=z["planet_sun"],
-                                              z_planet_ring=z["planet_ring"], z_ring=z["ring"], **common)
-        internal = self.boolean(teeth, "ring_internal", where, True)
-        return PlanetarySet.stepped(name, z_sun=z["sun"], z_planet_sun=z["planet_sun"],
-                                    z_planet_ring=z["planet_ring"], z_ring=z["ring"], ring_internal=internal,
-                                    module_ratio=ratio, **common)
+            return self.checked(key, owner, PlanetarySet.double_planet, name, z_sun=z["sun"],
+                                z_planet_sun=z["planet_sun"], z_planet_ring=z["planet_ring"], z_ring=z["ring"],
+                                **common)
+        if kind in ("two_rings", "two_suns"):
+            build = PlanetarySet.two_rings if kind == "two_rings" else PlanetarySet.two_suns
+            return self.checked(key, owner, build, name, first=common.pop("sun"), second=common.pop("ring"),
+                                z_first=z["first"], z_planet_first=z["planet_first"],
+                                z_planet_second=z["planet_second"], z_second=z["second"], module_ratio=ratio,
+                                **common)
+        internal = self.boolean(teeth, "ring_internal", at_key(where, "teeth"), True)
+        return self.checked(key, owner, PlanetarySet.stepped, name, z_sun=z["sun"], z_planet_sun=z["planet_sun"],
+                            z_planet_ring=z["planet_ring"], z_ring=z["ring"], ring_internal=internal,
+                            module_ratio=ratio, **common)
 
-    def read_gear(self, table: Mapping[str, Any], k: int) -> GearStage:
-        where = self.element_where("gear", k, table)
-        self.check_keys(table, _GEAR_KEYS, where)
-        name = self.string(table, "name", where)
-        first, second = self.string(table, "first", where), self.string(table, "second", where)
+    def read_gear(self, table: Mapping[str, Any], k: int, kind: str = "gear") -> GearStage:
+        where, name = self.element(kind, k, table, _GEAR_KEYS)
+        owner = f"gear stage {name!r}"
+        first, second = self.shaft(table, "first", where), self.shaft(table, "second", where)
         eta = self.efficiency(table.get("efficiency", 1.0), "efficiency", where)
         has_meshes, has_ratio = "meshes" in table, "ratio" in table
         if has_meshes == has_ratio:
             raise self.error(where, "give either 'meshes' (tooth counts) or 'ratio' (n_first/n_second), "
                                     + ("not both." if has_meshes else "got neither."))
-        try:
-            if has_ratio:
-                return GearStage(name, first, second, self.number(table["ratio"], "ratio", where), eta)
-            meshes = table["meshes"]
-            if not isinstance(meshes, list) or not meshes:
-                raise self.error(where, f"key 'meshes': expected a list such as [[40, 44, \"external\"]], "
-                                        f"got {meshes!r}.")
-            checked = []
-            for j, mesh in enumerate(meshes):
-                if not isinstance(mesh, list) or len(mesh) not in (2, 3):
-                    raise self.error(where, f"key 'meshes[{j}]': expected [z_driving, z_driven] or "
-                                            f"[z_driving, z_driven, \"external\"|\"internal\"], got {mesh!r}.")
-                checked.append(tuple(mesh))
-            return GearStage.from_teeth(name, first, second, checked, eta)
-        except InputFileError:
-            raise
-        except EpicyclicError as exc:
-            raise self.wrap(where, exc) from None
+        if has_ratio:
+            ratio = self.ratio(table["ratio"], "ratio", where)
+            return self.checked(at_key(where, "ratio"), owner, GearStage, name, first, second, ratio, eta)
+        meshes = table["meshes"]
+        key = at_key(where, "meshes")
+        if not isinstance(meshes, list) or not meshes:
+            raise self.error(key, f"expected a list such as [[40, 44, \"external\"]], got {short(meshes)}.")
+        self.checked(key, "", check_count, len(meshes), key, MAX_MESHES, "meshes")
+        checked = []
+        for j, mesh in enumerate(meshes):
+            if not isinstance(mesh, list) or len(mesh) not in (2, 3):
+                raise self.error(at_key(where, f"meshes[{j}]"), f"expected [z_driving, z_driven] or [z_driving, "
+                                                                f"z_driven, \"external\"|\"internal\"], got {short(mesh)}.")
+            checked.append(tuple(mesh))
+        return self.checked(key, owner, GearStage.from_teeth, name, first, second, checked, eta)
 
     def read_shift(self, table: Mapping[str, Any], k: int, kind: str):
-        where = self.element_where(kind, k, table)
-        self.check_keys(table, _CLUTCH_KEYS if kind == "clutch" else _BRAKE_KEYS, where)
-        name = self.string(table, "name", where)
+        where, name = self.element(kind, k, table, _CLUTCH_KEYS if kind == "clutch" else _BRAKE_KEYS)
         engaged = self.boolean(table, "engaged", where, True)
-        try:
-            if kind == "clutch":
-                return Clutch(name, self.string(table, "first", where), self.string(table, "second", where), engaged)
-            return Brake(name, self.string(table, "shaft", where), engaged)
-        except InputFileError:
-            raise
-        except EpicyclicError as exc:
-            raise self.wrap(where, exc) from None
+        if kind == "clutch":
+            first, second = self.shaft(table, "first", where), self.shaft(table, "second", where)
+            return self.checked(where, f"clutch {name!r}", Clutch, name, first, second, engaged)
+        return self.checked(at_key(where, "shaft"), f"brake {name!r}", Brake, name,
+                            self.shaft(table, "shaft", where), engaged)
 
     # ---- operating point and transmission
     def read_operating_point(self, table, train: GearTrain, transmission: Transmission | None):
@@ -505,75 +429,68 @@ class _Reader:
         self.check_keys(table, _OP_KEYS, where)
         values: dict[str, dict[str, float]] = {}
         for group, quantity in (("speeds", "speed"), ("torques", "torque"), ("powers", "power")):
-            given = self.table(table.get(group, {}), f"{where} key {group!r}")
+            given = self.table(table.get(group, {}), at_key(where, group))
             values[group] = {}
             for shaft, value in given.items():
-                self.shaft(train, shaft, f"{where} {group}")
-                try:
-                    values[group][shaft] = to_core(value, quantity, field=f"{group}.{shaft}",
-                                                   default_unit=self.units.of(quantity))
-                except EpicyclicError as exc:
-                    raise self.wrap(where, exc) from None
+                key = at_key(where, f"{group}.{shaft}")
+                self.known_shaft(train, shaft, key)
+                if shaft == HOUSING and (group != "speeds" or value not in (0, 0.0, "0")):
+                    raise self.error(key, "the housing is the frame: its speed is 0 and its torque is the reaction "
+                                          "the solver computes; remove this entry.")
+                values[group][shaft] = self.checked(key, f"{group}.{shaft}", to_core, value, quantity,
+                                                    field=f"{group}.{shaft}", default_unit=self.units.of(quantity))
         roles = {}
         for group in ("drives", "loads"):
-            names = table.get(group, [])
-            if isinstance(names, str):
-                names = [names]
-            if not isinstance(names, list) or not all(isinstance(n, str) for n in names):
-                raise self.error(where, f"key {group!r}: expected a list of shaft names, got {names!r}.")
-            for shaft in names:
-                self.shaft(train, shaft, f"{where} {group}")
-            roles[group] = tuple(names)
+            roles[group] = self.names(table.get(group, []), group, where)
+            for shaft in roles[group]:
+                self.known_shaft(train, shaft, at_key(where, group))
+                if shaft == HOUSING:
+                    raise self.error(at_key(where, group), "the housing cannot drive or be loaded; it only takes "
+                                                           "reactions. Name a moving shaft.")
         gear = None
         if "gear" in table:
             gear = table["gear"]
             if transmission is None:
-                raise self.error(where, "key 'gear' needs a [transmission] table with a schedule.")
+                raise self.error(at_key(where, "gear"), "needs a [transmission] table with a schedule.")
             if not isinstance(gear, str) or gear not in transmission.schedule:
-                raise self.error(where, f"key 'gear': expected one of the schedule's gears "
-                                        f"{', '.join(repr(g) for g in transmission.schedule)}, got {gear!r}.")
+                raise self.error(at_key(where, "gear"), f"expected one of the schedule's gears "
+                                                        f"{', '.join(repr(g) for g in transmission.schedule)}, "
+                                                        f"got {short(gear)}.")
         try:
             op = OperatingPoint(values["speeds"], values["torques"], values["powers"], **roles)
         except EpicyclicError as exc:
-            raise self.wrap(where, exc) from None
+            raise self.wrap(operating_point_where(exc), exc, "operating point") from None
         return op, gear
 
-    def shaft(self, train: GearTrain, name: str, where: str) -> None:
-        train.check_shaft(name, f"{self.source}: {where}")
+    def known_shaft(self, train: GearTrain, name: str, where: str) -> None:
+        self.checked(where, "", train.check_shaft, name, "")
 
     def read_transmission(self, table, train: GearTrain) -> Transmission:
         where = "[transmission]"
         self.check_keys(table, _TRANSMISSION_KEYS, where)
         ends = {}
         for key in ("input", "output"):
-            ends[key] = self.string(table, key, where)
-            self.shaft(train, ends[key], f"{where} {key}")
-        schedule_table = self.table(self.require(table, "schedule", where), f"{where}.schedule")
+            ends[key] = self.name(table, key, where)
+            self.known_shaft(train, ends[key], at_key(where, key))
+            if ends[key] == HOUSING:
+                raise self.error(at_key(where, key), "the housing stands still; name a moving shaft.")
+        if ends["input"] == ends["output"]:
+            raise self.error(at_key(where, "output"), f"input and output must be different shafts, got "
+                                                      f"{ends['input']!r} twice.")
+        schedule_table = self.table(self.require(table, "schedule", where), at_key(where, "schedule"))
+        self.checked(at_key(where, "schedule"), "", check_count, len(schedule_table), "schedule", MAX_GEARS,
+                     "gears")
         shift_names = {e.name for e in train.shift_elements}
         schedule: dict[str, tuple[str, ...]] = {}
         for gear, names in schedule_table.items():
-            if not isinstance(names, list) or not all(isinstance(n, str) for n in names):
-                raise self.error(f"{where}.schedule", f"gear {gear!r}: expected a list of clutch and brake "
-                                                      f"names, got {names!r}.")
+            key = at_key(where, f"schedule.{gear}")
+            self.check_name(gear, key)
+            names = self.names(names, f"schedule.{gear}", where)
             for n in names:
                 if n not in shift_names:
-                    raise self.error(f"{where}.schedule", f"gear {gear!r}: {n!r} is not a clutch or brake of "
-                                                          f"the train; shift elements are "
-                                                          f"{', '.join(sorted(shift_names)) or 'none'}.")
-            schedule[gear] = tuple(names)
+                    raise self.error(key, f"{n!r} is not a clutch or brake of the train; shift elements are "
+                                          f"{', '.join(sorted(shift_names)) or 'none'}.")
+            schedule[gear] = names
         if not schedule:
-            raise self.error(f"{where}.schedule", "expected at least one gear, got none.")
+            raise self.error(at_key(where, "schedule"), "expected at least one gear, got none.")
         return Transmission(ends["input"], ends["output"], schedule)
-
-
-def _kind(value: object) -> str:
-    return {bool: "a boolean", int: "an integer", float: "a number", str: "a string", list: "an array",
-            dict: "a table"}.get(type(value), type(value).__name__)
-
-
-def _close(word: str, options: set[str]) -> str | None:
-    import difflib
-
-    match = difflib.get_close_matches(word, sorted(options), n=1, cutoff=0.6)
-    return match[0] if match else None
-

@@ -12,12 +12,12 @@ carrier held).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 from ..errors import ModelError, ToothCountError, TopologyError
-from .planetary import check_efficiency, check_name
+from ..limits import MAX_MESHES, MIN_TEETH
+from .planetary import check_efficiency, check_name, check_teeth, finite_float
 
 __all__ = ["GearStage", "Clutch", "Brake", "HOUSING", "Mesh"]
 
@@ -78,7 +78,7 @@ class GearStage:
                 "housing already); use a Brake to hold a shaft."
             )
         r = self.ratio
-        if isinstance(r, bool) or not isinstance(r, (int, float)) or not math.isfinite(r) or r == 0:
+        if finite_float(r) is None or r == 0:
             raise ModelError(f"{owner}: ratio must be a finite, non-zero number n_first/n_second, got {r!r}.")
         object.__setattr__(self, "ratio", float(r))
         object.__setattr__(self, "efficiency", check_efficiency(self.efficiency, "efficiency", owner))
@@ -100,6 +100,8 @@ class GearStage:
         owner = f"gear stage {name!r}"
         if not meshes:
             raise ToothCountError(f"{owner}: give at least one mesh (z_driving, z_driven, kind).")
+        if len(meshes) > MAX_MESHES:
+            raise ToothCountError(f"{owner}: {len(meshes)} meshes given; at most {MAX_MESHES} are accepted.")
         speed_ratio = 1.0  # n_second / n_first
         checked = []
         for k, mesh in enumerate(meshes):
@@ -109,12 +111,12 @@ class GearStage:
                 raise ToothCountError(f"{owner}: mesh {k} must be (z_driving, z_driven, kind), got {mesh!r}.")
             z1, z2, kind = mesh
             for label, z in (("z_driving", z1), ("z_driven", z2)):
-                if isinstance(z, bool) or not isinstance(z, int) or z < 3:
-                    raise ToothCountError(
-                        f"{owner}: mesh {k} {label} must be a whole number of at least 3 teeth, got {z!r}."
-                    )
+                if isinstance(z, bool) or not isinstance(z, int) or z < MIN_TEETH:
+                    raise ToothCountError(f"{owner}: mesh {k} {label} must be a whole number of at least {MIN_TEETH} "
+                                          f"teeth, got {z!r:.40}.")
+                check_teeth(z, f"mesh {k} {label}", owner)
             if kind not in ("external", "internal"):
-                raise ModelError(f"{owner}: mesh {k} kind must be 'external' or 'internal', got {kind!r}.")
+                raise ModelError(f"{owner}: mesh {k} kind must be 'external' or 'internal', got {kind!r:.40}.")
             sign = -1.0 if kind == "external" else 1.0
             speed_ratio *= sign * z1 / z2
             checked.append((z1, z2, kind))

@@ -8,12 +8,12 @@ Units other than these are converted at the edges (:mod:`epicyclic.units`).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from ..errors import OperatingPointError
+from .planetary import finite_float
 
 __all__ = ["OperatingPoint"]
 
@@ -22,14 +22,17 @@ def _frozen_values(values: Mapping[str, float] | None, field_name: str) -> Mappi
     checked: dict[str, float] = {}
     for shaft, value in dict(values or {}).items():
         if not isinstance(shaft, str):
-            raise OperatingPointError(f"operating point: {field_name} keys must be shaft names, got {shaft!r}.")
+            raise OperatingPointError(f"operating point: {field_name} keys must be shaft names, got {shaft!r}.",
+                                      group=field_name)
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise OperatingPointError(
-                f"operating point: {field_name}[{shaft!r}] must be a number, got {value!r}."
+                f"operating point: {field_name}[{shaft!r}] must be a number, got {value!r}.",
+                group=field_name, shafts=[shaft],
             )
-        if not math.isfinite(value):
+        if finite_float(value) is None:
             raise OperatingPointError(
-                f"operating point: {field_name}[{shaft!r}] must be finite, got {value!r}."
+                f"operating point: {field_name}[{shaft!r}] must be finite, got {value!r}.",
+                group=field_name, shafts=[shaft],
             )
         checked[shaft] = float(value)
     return MappingProxyType(checked)
@@ -84,12 +87,14 @@ class OperatingPoint:
         both = set(self.drives) & set(self.loads)
         if both:
             raise OperatingPointError(
-                f"operating point: shaft(s) {', '.join(sorted(both))} are named both as drive and as load."
+                f"operating point: shaft(s) {', '.join(sorted(both))} are named both as drive and as load.",
+                group="loads", shafts=sorted(both),
             )
         twice = set(self.torques) & set(self.powers)
         if twice:
             raise OperatingPointError(
-                f"operating point: give a torque or a power at shaft(s) {', '.join(sorted(twice))}, not both."
+                f"operating point: give a torque or a power at shaft(s) {', '.join(sorted(twice))}, not both.",
+                group="powers", shafts=sorted(twice),
             )
 
     @property

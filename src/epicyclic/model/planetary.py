@@ -24,16 +24,56 @@ import math
 from dataclasses import dataclass, field
 
 from ..errors import EfficiencyError, ModelError, ToothCountError
-from .teeth import COAXIAL_TOLERANCE_TEETH, Teeth, check_double, check_stepped
-from .teeth import check_teeth as _check_teeth
+from ..limits import MAX_NAME_CHARS, MAX_PLANETS
+from .teeth import COAXIAL_TOLERANCE_TEETH, Teeth, check_double, check_stepped, check_teeth
 
-__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "COAXIAL_TOLERANCE_TEETH"]
+__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "check_planets", "finite_float",
+           "check_teeth", "COAXIAL_TOLERANCE_TEETH"]
+
 
 def check_name(value: object, field_name: str, owner: str) -> str:
-    """Return ``value`` if it is a non-empty string, else raise ModelError."""
+    """Return ``value`` if it is a usable name, else raise ModelError.
+
+    A name is a non-empty string of at most :data:`~epicyclic.limits.MAX_NAME_CHARS`
+    printable characters without leading or trailing spaces (names appear in
+    tables, terminals and file names).
+
+    >>> check_name("sun", "sun", "set P1")
+    'sun'
+    """
     if not isinstance(value, str) or not value.strip():
-        raise ModelError(f"{owner}: {field_name} must be a non-empty shaft name, got {value!r}.")
+        raise ModelError(f"{owner}: {field_name} must be a non-empty shaft name, got {value!r:.60}.")
+    if len(value) > MAX_NAME_CHARS:
+        raise ModelError(f"{owner}: {field_name} {value[:20]!r}… is {len(value)} characters long; at most "
+                         f"{MAX_NAME_CHARS} are accepted.")
+    if not value.isprintable() or value != value.strip():
+        raise ModelError(f"{owner}: {field_name} {value!r} contains control characters or leading/trailing "
+                         "spaces; use letters, digits and punctuation.")
     return value
+
+
+def check_planets(value: object, field_name: str, owner: str) -> int:
+    """Return ``value`` if it is a whole number of planets in 1 … MAX_PLANETS, else raise ModelError."""
+    if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_PLANETS:
+        raise ModelError(f"{owner}: {field_name} must be a whole number >= 1 and <= {MAX_PLANETS}, got {value!r:.40}.")
+    return value
+
+
+def finite_float(value: object) -> float | None:
+    """``value`` as float if it is a finite real number (not a boolean), else None.
+
+    Integers beyond double precision (``10**400``) are not finite numbers here.
+
+    >>> finite_float(3), finite_float(float("nan")), finite_float(10**400), finite_float(True)
+    (3.0, None, None, None)
+    """
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return None
+    try:
+        number = float(value)
+    except OverflowError:
+        return None
+    return number if math.isfinite(number) else None
 
 
 def check_efficiency(value: object, field_name: str, owner: str) -> float:
@@ -42,10 +82,11 @@ def check_efficiency(value: object, field_name: str, owner: str) -> float:
     >>> check_efficiency(0.97, "stationary_efficiency", "set P1")
     0.97
     """
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise EfficiencyError(f"{owner}: {field_name} must be a number in (0, 1], got {value!r}.")
-    value = float(value)
-    if not (0.0 < value <= 1.0) or math.isnan(value):
+    number = finite_float(value)
+    if number is None and not (isinstance(value, float) and math.isnan(value)):
+        raise EfficiencyError(f"{owner}: {field_name} must be a number in (0, 1], got {value!r:.40}.")
+    value = float("nan") if number is None else number
+    if not (0.0 < value <= 1.0):
         raise EfficiencyError(
             f"{owner}: {field_name} must lie in (0, 1] (1 = lossless), got {value!r}. "
             "Give an efficiency such as 0.98, not a percentage or a loss."
@@ -108,7 +149,7 @@ class PlanetarySet:
                 "To lock the set, join two of its shafts with a Clutch instead."
             )
         ratio = self.stationary_ratio
-        if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) or not math.isfinite(ratio):
+        if finite_float(ratio) is None:
             raise ModelError(f"{owner}: stationary_ratio must be a finite number, got {ratio!r}.")
         if ratio == 0.0 or abs(ratio - 1.0) < 1e-12:
             raise ModelError(
@@ -121,8 +162,7 @@ class PlanetarySet:
             "stationary_efficiency",
             check_efficiency(self.stationary_efficiency, "stationary_efficiency", owner),
         )
-        if isinstance(self.planets, bool) or not isinstance(self.planets, int) or self.planets < 1:
-            raise ModelError(f"{owner}: planets must be a whole number >= 1, got {self.planets!r}.")
+        check_planets(self.planets, "planets", owner)
 
     # ------------------------------------------------------------------ constructors
     @classmethod
@@ -150,14 +190,14 @@ class PlanetarySet:
         tec-science, "Willis-Gleichung", Standübersetzung i_0; Queitsch, eq. 4.
         """
         owner = f"planetary set {name!r}"
-        zs = _check_teeth(z_sun, "z_sun", owner)
-        zr = _check_teeth(z_ring, "z_ring", owner)
+        zs = check_teeth(z_sun, "z_sun", owner)
+        zr = check_teeth(z_ring, "z_ring", owner)
         if zr <= zs:
             raise ToothCountError(
                 f"{owner}: the ring must have more teeth than the sun, got z_ring={zr}, z_sun={zs}. "
                 "Swap them, or use PlanetarySet.stepped for two external central gears."
             )
-        zp = _check_teeth(z_planet, "z_planet", owner)
+        zp = check_teeth(z_planet, "z_planet", owner)
         mismatch = zr - zs - 2 * zp
         if abs(mismatch) > COAXIAL_TOLERANCE_TEETH:
             raise ToothCountError(
@@ -196,10 +236,10 @@ class PlanetarySet:
         (modules) must close a triangle (see :func:`~epicyclic.model.teeth.check_double`).
         """
         owner = f"planetary set {name!r}"
-        zs = _check_teeth(z_sun, "z_sun", owner)
-        z1 = _check_teeth(z_planet_sun, "z_planet_sun", owner)
-        z2 = _check_teeth(z_planet_ring, "z_planet_ring", owner)
-        zr = _check_teeth(z_ring, "z_ring", owner)
+        zs = check_teeth(z_sun, "z_sun", owner)
+        z1 = check_teeth(z_planet_sun, "z_planet_sun", owner)
+        z2 = check_teeth(z_planet_ring, "z_planet_ring", owner)
+        zr = check_teeth(z_ring, "z_ring", owner)
         if zr <= zs:
             raise ToothCountError(
                 f"{owner}: the ring must have more teeth than the sun, got z_ring={zr}, z_sun={zs}."
@@ -261,10 +301,10 @@ class PlanetarySet:
         0.672
         """
         owner = f"planetary set {name!r}"
-        zs = _check_teeth(z_sun, "z_sun", owner)
-        zb = _check_teeth(z_planet_sun, "z_planet_sun", owner)
-        zc = _check_teeth(z_planet_ring, "z_planet_ring", owner)
-        zr = _check_teeth(z_ring, "z_ring", owner)
+        zs = check_teeth(z_sun, "z_sun", owner)
+        zb = check_teeth(z_planet_sun, "z_planet_sun", owner)
+        zc = check_teeth(z_planet_ring, "z_planet_ring", owner)
+        zr = check_teeth(z_ring, "z_ring", owner)
         for flag, value in (("ring_internal", ring_internal), ("sun_internal", sun_internal)):
             if not isinstance(value, bool):
                 raise ToothCountError(f"{owner}: {flag} must be True or False, got {value!r}.")
@@ -359,7 +399,7 @@ class PlanetarySet:
         """A stepped set whose two central gears are both internal (rings) or both external (suns)."""
         owner = f"planetary set {name!r}"
         labels = ("z_first", "z_planet_first", "z_planet_second", "z_second")
-        z1, zb, zc, z2 = (_check_teeth(z, label, owner) for z, label in zip(counts, labels))
+        z1, zb, zc, z2 = (check_teeth(z, label, owner) for z, label in zip(counts, labels))
         teeth = Teeth("stepped", z1, z2, (zb, zc), ring_internal=internal, sun_internal=internal)
         check_stepped(teeth, owner, module_ratio, labels)
         return cls(

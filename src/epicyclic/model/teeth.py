@@ -33,6 +33,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from ..errors import ToothCountError
+from ..limits import MAX_TEETH, MIN_TEETH
 
 __all__ = ["Teeth", "COAXIAL_TOLERANCE_TEETH", "check_teeth", "check_stepped", "check_double"]
 
@@ -41,16 +42,20 @@ __all__ = ["Teeth", "COAXIAL_TOLERANCE_TEETH", "check_teeth", "check_stepped", "
 COAXIAL_TOLERANCE_TEETH = 2
 
 
-def check_teeth(value: object, field_name: str, owner: str, minimum: int = 3) -> int:
-    """Return ``value`` as a whole number of teeth ≥ ``minimum``, else raise ToothCountError."""
+def check_teeth(value: object, field_name: str, owner: str) -> int:
+    """Return ``value`` as int if it is a whole number of teeth in MIN_TEETH … MAX_TEETH, else raise."""
     if isinstance(value, bool) or not isinstance(value, int):
         if isinstance(value, float) and value.is_integer():
             value = int(value)
         else:
-            raise ToothCountError(f"{owner}: {field_name} must be a whole number of teeth, got {value!r}.")
-    if value < minimum:
+            raise ToothCountError(f"{owner}: {field_name} must be a whole number of teeth, got {value!r:.40}.")
+    if value < MIN_TEETH:
         raise ToothCountError(
-            f"{owner}: {field_name} must be at least {minimum} teeth, got {value}."
+            f"{owner}: {field_name} must be at least {MIN_TEETH} teeth, got {value}."
+        )
+    if value > MAX_TEETH:
+        raise ToothCountError(
+            f"{owner}: {field_name} must be at most {MAX_TEETH} teeth, got {value:.4g} (see docs/limits.md)."
         )
     return value
 

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Union
 
 from ..errors import ModelError, UnknownShaftError
+from ..limits import MAX_ELEMENTS, MAX_SHAFTS, MAX_TITLE_CHARS
 from .elements import HOUSING, Brake, Clutch, GearStage
 from .planetary import PlanetarySet, check_name
 
@@ -59,6 +60,11 @@ class GearTrain:
         elements = tuple(self.elements)
         if not elements:
             raise ModelError("gear train: elements must contain at least one element, got none.")
+        if len(elements) > MAX_ELEMENTS:
+            raise ModelError(f"gear train: {len(elements)} elements given; at most {MAX_ELEMENTS} are accepted.")
+        if not isinstance(self.name, str) or len(self.name) > MAX_TITLE_CHARS:
+            raise ModelError(f"gear train: name must be a string of at most {MAX_TITLE_CHARS} characters, "
+                             f"got {self.name!r:.40}.")
         names: set[str] = set()
         for k, element in enumerate(elements):
             if not isinstance(element, (PlanetarySet, GearStage, Clutch, Brake)):
@@ -79,6 +85,8 @@ class GearTrain:
                 if shaft not in ordered and shaft != HOUSING:
                     ordered.append(shaft)
         ordered = [s for s in ordered if s != HOUSING] + [HOUSING]
+        if len(ordered) > MAX_SHAFTS:
+            raise ModelError(f"gear train: {len(ordered)} shafts; at most {MAX_SHAFTS} are accepted.")
         object.__setattr__(self, "elements", elements)
         object.__setattr__(self, "shafts", tuple(ordered))
 

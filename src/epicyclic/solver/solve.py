@@ -48,12 +48,14 @@ def _validate(train: GearTrain, op: OperatingPoint) -> None:
     for group in ("drives", "loads", "connected"):
         if HOUSING in getattr(op, group):
             raise OperatingPointError(
-                f"operating point: the housing cannot be one of the {group}; it only takes reactions."
+                f"operating point: the housing cannot be one of the {group}; it only takes reactions.",
+                group=group, shafts=[HOUSING],
             )
     for group in ("torques", "powers"):
         if HOUSING in getattr(op, group):
             raise OperatingPointError(
-                f"operating point: {group}['housing'] cannot be given; the housing reaction is computed."
+                f"operating point: {group}['housing'] cannot be given; the housing reaction is computed.",
+                group=group, shafts=[HOUSING],
             )
     if op.speeds.get(HOUSING, 0.0) != 0.0:
         raise ContradictionError(
@@ -82,7 +84,8 @@ def given_torques(op: OperatingPoint, speeds: Mapping[str, float]) -> dict[str, 
         if abs(omega) < 1e-12:
             raise OperatingPointError(
                 f"operating point: powers[{shaft!r}] = {power:g} W is given, but shaft {shaft!r} "
-                "stands still (speed 0), so the power fixes no torque; give torques[" + repr(shaft) + "] instead."
+                "stands still (speed 0), so the power fixes no torque; give torques[" + repr(shaft) + "] instead.",
+                group="powers", shafts=[shaft],
             )
         result[shaft] = _with_role(op, shaft, power / omega, omega)
     for shaft, torque in op.torques.items():

@@ -33,6 +33,7 @@ import numpy as np
 from ..model.train import GearTrain
 from ..solver.assembly import matrices
 from ..solver.linear import RELATIVE_TOLERANCE
+from ..text import markdown_text
 from .results import RATIO_TOLERANCE, classify
 from .transmission import ShiftScheduleError, Transmission
 
@@ -139,8 +140,8 @@ class Exploration:
 
     def markdown(self) -> str:
         lines = ["| " + " | ".join(self.HEADER) + " |", "|" + "---|" * len(self.HEADER)]
-        lines += ["| " + " | ".join(r) + " |" for r in self._rows()]
-        return "\n".join(lines + ["", self._footer()])
+        lines += ["| " + " | ".join(markdown_text(c) for c in r) + " |" for r in self._rows()]
+        return "\n".join(lines + ["", markdown_text(self._footer())])
 
     def _repr_html_(self) -> str:
         head = "".join(f"<th>{html.escape(h)}</th>" for h in self.HEADER)

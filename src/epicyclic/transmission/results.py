@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 from ..model.elements import Clutch
 from ..model.planetary import PlanetarySet
 from ..results.solution import Solution
+from ..text import markdown_text
 
 if TYPE_CHECKING:  # pragma: no cover
     from .transmission import Transmission
@@ -304,9 +305,10 @@ class TransmissionAnalysis:
 
     def markdown(self) -> str:
         """GitHub-flavoured Markdown table."""
-        lines = [f"**{self.name}** (input `{self.input}`, output `{self.output}`)", "",
+        esc = markdown_text
+        lines = [f"**{esc(self.name)}** (input {esc(self.input)}, output {esc(self.output)})", "",
                  "| " + " | ".join(self.HEADER) + " |", "|" + "---|" * len(self.HEADER)]
-        lines += ["| " + " | ".join(r) + " |" for r in self._rows()]
+        lines += ["| " + " | ".join(esc(c) for c in r) + " |" for r in self._rows()]
         lines += ["", self._footer()]
         return "\n".join(lines)
 

@@ -1,0 +1,172 @@
+"""The limits on what epicyclic reads, builds and draws, in one place.
+
+Every input channel — a train file, a unit string, an expression, a command
+line option — is checked against these named constants *before* the work
+starts, so that a careless or hostile input is answered at once with a clear
+error (exit code 2 on the command line) instead of minutes of work, a
+``MemoryError`` or a hang.  ``docs/limits.md`` lists every limit and what
+happens past it; keep the two in step.
+
+The values are generous for real gear trains (an eight-speed automatic has 4
+sets and 5 shift elements; real gears have 10–300 teeth) and small enough that
+the largest input allowed is handled in about a second.
+
+Examples
+--------
+>>> from epicyclic import limits
+>>> limits.MAX_FILE_BYTES
+1048576
+>>> limits.check_range(150, "--dpi", limits.DPI_RANGE)
+150
+>>> limits.check_range(0, "--dpi", limits.DPI_RANGE)
+Traceback (most recent call last):
+...
+epicyclic.limits.LimitError: --dpi: 0 is outside the accepted range 20 … 600 (see docs/limits.md).
+"""
+
+from __future__ import annotations
+
+import os
+
+from .errors import EpicyclicError
+
+__all__ = [
+    "LimitError",
+    "MAX_FILE_BYTES",
+    "FILE_BYTES_VARIABLE",
+    "max_file_bytes",
+    "MAX_NESTING",
+    "MAX_TOML_VALUES",
+    "MAX_STRING_CHARS",
+    "MAX_TITLE_CHARS",
+    "MAX_NAME_CHARS",
+    "MAX_ELEMENTS",
+    "MAX_SHAFTS",
+    "MAX_GEARS",
+    "MAX_MESHES",
+    "MIN_TEETH",
+    "MAX_TEETH",
+    "MAX_PLANETS",
+    "RATIO_RANGE",
+    "MAX_EXPRESSION_CHARS",
+    "MAX_EXPRESSION_EXPONENT",
+    "MAX_UNIT_CHARS",
+    "MAX_UNIT_POWER",
+    "MAX_DECIMAL_EXPONENT",
+    "UNIT_FACTOR_RANGE",
+    "DPI_RANGE",
+    "FRAMES_RANGE",
+    "FPS_RANGE",
+    "check_range",
+    "check_count",
+]
+
+# ---------------------------------------------------------------- files
+#: Largest input file read (bytes): 1 MiB, a hundred times the largest example.
+MAX_FILE_BYTES = 1 << 20
+#: Environment variable that raises (or lowers) :data:`MAX_FILE_BYTES` for one run.
+FILE_BYTES_VARIABLE = "EPICYCLIC_MAX_FILE_BYTES"
+#: Deepest nesting of arrays and tables in a TOML file (the format needs 5).
+MAX_NESTING = 16
+#: Most keys and values in a TOML file (keys, strings, arrays, tables, list items); the
+#: largest example holds about 400.
+MAX_TOML_VALUES = 20_000
+#: Longest string value anywhere in a file (characters), e.g. a ``description``.
+MAX_STRING_CHARS = 10_000
+#: Longest ``title`` (characters).
+MAX_TITLE_CHARS = 200
+#: Longest name of a shaft, element or gear (characters).
+MAX_NAME_CHARS = 64
+
+# ---------------------------------------------------------------- trains
+#: Most elements (sets, stages, clutches, brakes) in one train.
+MAX_ELEMENTS = 200
+#: Most shafts in one train (the housing included).
+MAX_SHAFTS = 400
+#: Most gears in a ``[transmission]`` schedule.
+MAX_GEARS = 64
+#: Most meshes in one fixed-axis stage.
+MAX_MESHES = 32
+#: Fewest teeth of a gear (below 3 no involute gear exists).
+MIN_TEETH = 3
+#: Most teeth of a gear (large slewing rings have a few hundred).
+MAX_TEETH = 1000
+#: Accepted |stationary_ratio| and |ratio| in files and ``modes --i0`` (real sets and stages lie
+#: within 1/100 … 100; beyond this range a train is numerically singular).
+RATIO_RANGE = (1e-6, 1e6)
+#: Most planets of one set.
+MAX_PLANETS = 24
+
+# ---------------------------------------------------------------- numbers and units
+#: Longest arithmetic expression such as ``"(24/50)*(42/30)"`` (characters).
+MAX_EXPRESSION_CHARS = 200
+#: Largest |exponent| in ``a ** b`` inside an expression.
+MAX_EXPRESSION_EXPONENT = 16
+#: Longest unit string such as ``"1500 U/min"`` (characters).
+MAX_UNIT_CHARS = 200
+#: Largest |power| of one unit name in a unit expression (``m**2``, ``s^-3``).
+MAX_UNIT_POWER = 4
+#: Largest |decimal exponent| of a number in a unit string (``1e308``); beyond it a double overflows.
+MAX_DECIMAL_EXPONENT = 308
+#: Core units per chosen unit, ``[units]`` only: a unit outside this range is degenerate.
+UNIT_FACTOR_RANGE = (1e-12, 1e12)
+
+# ---------------------------------------------------------------- pictures
+#: ``plot --dpi`` (dots per inch of PNG output).
+DPI_RANGE = (20, 600)
+#: ``animate --frames`` (frames of one loop).
+FRAMES_RANGE = (2, 240)
+#: ``animate --fps`` (frames per second).
+FPS_RANGE = (1, 60)
+
+
+class LimitError(EpicyclicError, ValueError):
+    """An input past one of the limits of this module.
+
+    Attributes
+    ----------
+    field : str
+        What was given (an option such as ``"--dpi"`` or a key).
+    """
+
+    def __init__(self, message: str, field: str = ""):
+        self.field = field
+        super().__init__(message)
+
+
+def max_file_bytes() -> int:
+    """The file size limit of this run: ``$EPICYCLIC_MAX_FILE_BYTES`` if set, else :data:`MAX_FILE_BYTES`.
+
+    Raises
+    ------
+    LimitError
+        The variable is set but is not a positive whole number.
+    """
+    text = os.environ.get(FILE_BYTES_VARIABLE)
+    if text is None or not text.strip():
+        return MAX_FILE_BYTES
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value <= 0:
+        raise LimitError(f"{FILE_BYTES_VARIABLE}={text[:40]!r}: expected a positive whole number of bytes, "
+                         f"e.g. {MAX_FILE_BYTES}.", FILE_BYTES_VARIABLE)
+    return value
+
+
+def check_range(value: int | float, field: str, bounds: tuple[int | float, int | float]) -> int | float:
+    """Return ``value`` if ``bounds[0] <= value <= bounds[1]``, else raise :class:`LimitError`."""
+    low, high = bounds
+    if not low <= value <= high:  # also False for NaN
+        raise LimitError(f"{field}: {value!r} is outside the accepted range {low} … {high} (see docs/limits.md).",
+                         field)
+    return value
+
+
+def check_count(count: int, field: str, maximum: int, what: str) -> int:
+    """Raise :class:`LimitError` if there are more than ``maximum`` ``what`` (e.g. ``"elements"``)."""
+    if count > maximum:
+        raise LimitError(f"{field}: {count} {what} given; at most {maximum} are accepted (see docs/limits.md).",
+                         field)
+    return count

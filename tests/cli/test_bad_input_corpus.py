@@ -1,0 +1,555 @@
+"""The bad-input corpus: every class of careless or hostile input, for every command.
+
+Each row of :data:`CORPUS` is one class of bad input: an id, the command, the
+input file (TOML text, raw bytes, a ``setup(tmp_path) -> path`` for
+file-system cases, or None), the arguments, and a fragment the message must
+contain (the key, the option or the reason).  Every row must give, within 5 s:
+
+* exit code 2 and nothing on stdout;
+* exactly one line on stderr, starting with ``error:``, no traceback;
+* the input file's path in that line (where there is an input file), and
+  the fragment.
+
+Rows run in-process through typer's ``CliRunner``; rows marked ``process=True``
+(FIFOs, devices: a regression would block or exhaust memory) run in a
+subprocess under a timeout.
+
+To add a command (fit, forces, search, map, serve, synthesize, ...), append
+rows for it: one per class of input it reads, with the same base files.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from epicyclic.cli.main import app
+
+TIME_LIMIT_S = 5.0
+
+#: A simple set with the ring braked: the base of most rows (Queitsch, Tafel 1, mode I).
+GOOD = """\
+title = "simple set"
+
+[[planetary]]
+name = "P"
+sun = "in"
+ring = "ring"
+carrier = "out"
+teeth = { sun = 30, planet = 24, ring = 78 }
+stationary_efficiency = 0.98
+
+[[brake]]
+name = "B"
+shaft = "ring"
+
+[operating_point]
+speeds = { in = 3000 }
+torques = { in = 10 }
+drives = ["in"]
+loads = ["out"]
+"""
+
+#: A two-speed transmission (ring braked: 3.6; set locked by the clutch: 1).
+TRANS = GOOD.split("[operating_point]")[0].replace('"simple set"', '"two speeds"') + """\
+[[clutch]]
+name = "C"
+first = "in"
+second = "ring"
+
+[transmission]
+input = "in"
+output = "out"
+
+[transmission.schedule]
+"1" = ["B"]
+"2" = ["C"]
+"""
+
+#: GOOD with a fixed-axis stage from the carrier to a new shaft, without ratio or meshes yet.
+STAGE = GOOD + "[[gear]]\nname = 'G'\nfirst = 'out'\nsecond = 'x'\n"
+
+TEETH = "teeth = { sun = 30, planet = 24, ring = 78 }"
+EFF = "stationary_efficiency = 0.98"
+SPEEDS = "speeds = { in = 3000 }"
+TORQUES = "torques = { in = 10 }"
+
+
+def sub(old: str, new: str, base: str = GOOD) -> str:
+    """``base`` with ``old`` replaced by ``new`` (``old`` must occur)."""
+    assert old in base, old
+    return base.replace(old, new, 1)
+
+
+def nested(depth: int) -> str:
+    return "x = " + "[" * depth + "]" * depth
+
+
+# ------------------------------------------------------------------ file-system set-ups
+def fifo(tmp: Path) -> Path:
+    path = tmp / "pipe.toml"
+    os.mkfifo(path)
+    return path
+
+
+def folder(tmp: Path) -> Path:
+    path = tmp / "folder.toml"
+    path.mkdir()
+    return path
+
+
+def symlink_loop(tmp: Path) -> Path:
+    (tmp / "a.toml").symlink_to(tmp / "b.toml")
+    (tmp / "b.toml").symlink_to(tmp / "a.toml")
+    return tmp / "a.toml"
+
+
+def dangling(tmp: Path) -> Path:
+    (tmp / "gone.toml").symlink_to(tmp / "nowhere.toml")
+    return tmp / "gone.toml"
+
+
+def unreadable(tmp: Path) -> Path:
+    if os.geteuid() == 0:
+        pytest.skip("root reads files without read permission")
+    path = tmp / "secret.toml"
+    path.write_text(GOOD)
+    path.chmod(0)
+    return path
+
+
+def too_large(tmp: Path) -> Path:
+    path = tmp / "large.toml"
+    path.write_text(GOOD + "# padding\n" * 120_000)
+    return path
+
+
+def with_link(kind: str) -> Callable[[Path], Path]:
+    def setup(tmp: Path) -> Path:
+        path = tmp / "train.toml"
+        path.write_text(GOOD)
+        (os.link if kind == "hard" else os.symlink)(path, tmp / "link.toml")
+        return path
+
+    return setup
+
+
+def named(name: str, text: str = GOOD) -> Callable[[Path], Path]:
+    def setup(tmp: Path) -> Path:
+        path = tmp / name
+        path.write_text(text)
+        return path
+
+    return setup
+
+
+@dataclass(frozen=True)
+class Bad:
+    """One class of bad input (see the module docstring)."""
+
+    id: str
+    command: str
+    file: str | bytes | Callable[[Path], Path] | Path | None
+    says: str
+    args: tuple[str, ...] = ("{file}",)
+    env: dict[str, str] = field(default_factory=dict)
+    process: bool = False
+    usage: bool = False  # a command-line usage error, caught before FILE is read: the option is named
+
+
+# ------------------------------------------------------------------ the corpus
+CORPUS: list[Bad] = [
+    # ---- the file itself
+    Bad("missing file", "analyze", None, "no such file", ("{tmp}/missing.toml",)),
+    Bad("folder as input", "analyze", folder, "is a folder"),
+    Bad("FIFO as input", "analyze", fifo, "FIFO", process=True),
+    Bad("FIFO as input (gears)", "gears", fifo, "FIFO", process=True),
+    Bad("/dev/zero as input", "analyze", Path("/dev/zero"), "device", process=True),
+    Bad("/dev/null as input", "explain", Path("/dev/null"), "device", process=True),
+    Bad("file over 1 MiB", "analyze", too_large, "1 MiB"),
+    Bad("file over a lowered limit", "explain", GOOD, "at most 100 bytes", env={"EPICYCLIC_MAX_FILE_BYTES": "100"}),
+    Bad("invalid size limit variable", "analyze", GOOD, "EPICYCLIC_MAX_FILE_BYTES",
+        env={"EPICYCLIC_MAX_FILE_BYTES": "lots"}),
+    Bad("symbolic link loop", "analyze", symlink_loop, "cannot read the file"),
+    Bad("dangling symbolic link", "analyze", dangling, "no such file"),
+    Bad("no read permission", "analyze", unreadable, "cannot read the file"),
+    Bad("not UTF-8 (Latin-1)", "analyze", GOOD.replace('"simple set"', '"Übersetzung"').encode("latin-1"),
+        "not UTF-8"),
+    Bad("binary file with NUL bytes", "analyze", b"\x89PNG\r\n\x1a\n\x00\x00", "NUL bytes"),
+    Bad("empty file", "analyze", "", "describes no element"),
+    Bad("byte-order mark only", "analyze", "\ufeff".encode(), "describes no element"),
+    Bad("bare carriage returns", "analyze", GOOD.replace("\n", "\r"), "not valid TOML"),
+    # ---- --out must never destroy the input
+    Bad("--out is the input (analyze)", "analyze", GOOD, "is the input file", ("{file}", "--out", "{file}")),
+    Bad("--out is the input (explain)", "explain", GOOD, "is the input file", ("{file}", "-o", "{file}")),
+    Bad("--out is the input (gears)", "gears", TRANS, "is the input file", ("{file}", "--out", "{file}")),
+    Bad("--out is the input (explore)", "explore", TRANS, "is the input file", ("{file}", "--out", "{file}")),
+    Bad("--out is the input (plot)", "plot", named("train.svg"), "is the input file", ("{file}", "--out", "{file}")),
+    Bad("--out is the input (animate)", "animate", named("train.html"), "is the input file",
+        ("{file}", "--out", "{file}")),
+    Bad("--out is a symbolic link to the input", "analyze", with_link("soft"), "is the input file",
+        ("{file}", "--out", "{tmp}/link.toml")),
+    Bad("--out is a hard link of the input", "analyze", with_link("hard"), "is the input file",
+        ("{file}", "--out", "{tmp}/link.toml")),
+    Bad("--out is the input by another path", "analyze", GOOD, "is the input file",
+        ("{file}", "--out", "{tmp}/./sub/../bad.toml")),
+    Bad("--out is a folder", "analyze", GOOD, "is a folder", ("{file}", "--out", "{tmp}")),
+    Bad("--out is a device", "analyze", GOOD, "not a regular file", ("{file}", "--out", "/dev/null")),
+    Bad("--out below a file", "analyze", GOOD, "cannot write", ("{file}", "--out", "{file}/sub/report.txt")),
+    # ---- malformed TOML
+    Bad("unterminated string", "analyze", 'title = "oops\n' + GOOD, "not valid TOML"),
+    Bad("missing equals sign", "analyze", "title \"x\"\n" + GOOD, "not valid TOML"),
+    Bad("duplicate key", "analyze", sub('name = "B"', 'name = "B"\nname = "B2"'), "not valid TOML"),
+    Bad("duplicate table", "analyze", GOOD + "[operating_point]\n", "not valid TOML"),
+    Bad("invalid escape", "analyze", sub('title = "simple set"', 'title = "a\\q"'), "not valid TOML"),
+    Bad("arrays nested 40 deep", "analyze", nested(40) + "\n" + GOOD, "nested more than 16"),
+    Bad("arrays nested 10,000 deep", "explain", nested(10_000) + "\n" + GOOD, "nested more than 16"),
+    Bad("inline tables nested 5,000 deep", "analyze", "x = " + "{a = " * 5000 + "1" + "}" * 5000 + "\n" + GOOD,
+        "nested more than 16"),
+    Bad("dotted key of 5,000 parts", "analyze", "a" + ".a" * 5000 + " = 1\n" + GOOD, "dotted key"),
+    Bad("table header of 5,000 parts", "gears", TRANS + "[" + "a." * 5000 + "a]\n", "dotted key"),
+    Bad("50,000 values", "analyze", GOOD + "x = [" + "1," * 50_000 + "]\n", "more than 20,000"),
+    Bad("NaN literal", "analyze", sub("0.98", "nan"), "key 'stationary_efficiency'"),
+    Bad("inf literal ratio", "analyze", sub(TEETH, "stationary_ratio = inf"), "key 'stationary_ratio'"),
+    Bad("-inf literal speed", "analyze", sub(SPEEDS, "speeds = { in = -inf }"), "key 'speeds.in'"),
+    Bad("integer beyond double precision", "analyze", sub(TEETH, "stationary_ratio = " + "9" * 400),
+        "key 'stationary_ratio'"),
+    Bad("title of 20,000 characters", "analyze", sub('"simple set"', '"' + "x" * 20_000 + '"'), "key 'title'"),
+    Bad("title of 300 characters", "analyze", sub('"simple set"', '"' + "x" * 300 + '"'), "key 'title'"),
+    Bad("description of 20,000 characters", "analyze", 'description = "' + "d" * 20_000 + '"\n' + GOOD,
+        "key 'description'"),
+    Bad("key of 20,000 characters", "analyze", "k" * 20_000 + " = 1\n" + GOOD, "20,000 characters"),
+    # ---- top level
+    Bad("unknown top-level key", "analyze", "colour = 'red'\n" + GOOD, "unknown key 'colour'"),
+    Bad("misspelt top-level key", "analyze", GOOD.replace("[operating_point]", "[operating_points]"),
+        "did you mean 'operating_point'"),
+    Bad("title not a string", "analyze", sub('"simple set"', "42"), "key 'title'"),
+    Bad("title empty", "analyze", sub('"simple set"', '"  "'), "key 'title'"),
+    Bad("description not a string", "analyze", "description = [1]\n" + GOOD, "key 'description'"),
+    Bad("[planetary] as a table", "analyze", "[planetary]\nname = 'P'\n", "write [[planetary]]"),
+    Bad("planetary is a number", "analyze", "planetary = 5\n", "[[planetary]]"),
+    Bad("planetary array of numbers", "analyze", "planetary = [1, 2]\n", "[[planetary]]"),
+    Bad("brake is a string", "analyze", "brake = 'B'\n" + sub('[[brake]]\nname = "B"\nshaft = "ring"\n', ""),
+        "[[brake]]"),
+    Bad("no elements", "analyze", "title = 'empty'\n", "describes no element"),
+    Bad("shafts a number", "analyze", "shafts = 3\n" + GOOD, "key 'shafts'"),
+    Bad("shafts with a number", "analyze", "shafts = ['a', 3]\n" + GOOD, "key 'shafts'"),
+    Bad("shaft name with an escape", "analyze", 'shafts = ["a\\u001b[2J"]\n' + GOOD, "key 'shafts'"),
+    Bad("250 elements", "analyze", GOOD + "".join(f"[[brake]]\nname = 'B{k}'\nshaft = 's{k}'\nengaged = false\n"
+                                                   for k in range(250)), "at most 200"),
+    Bad("500 shafts", "analyze", "shafts = [" + ",".join(f"'s{k}'" for k in range(500)) + "]\n" + GOOD,
+        "at most 400"),
+    # ---- [units]
+    Bad("[units] not a table", "analyze", "units = 'rpm'\n" + GOOD, "[units]"),
+    Bad("[units] unknown key", "analyze", GOOD + "[units]\nangle = 'deg'\n", "unknown key 'angle'"),
+    Bad("[units] unit not a string", "analyze", GOOD + "[units]\nspeed = 1\n", "key 'speed'"),
+    Bad("[units] unit empty", "analyze", GOOD + "[units]\npower = ''\n", "key 'power'"),
+    Bad("[units] unknown unit", "analyze", GOOD + "[units]\npower = 'horsepowerz'\n", "unknown unit"),
+    Bad("[units] wrong dimension", "analyze", GOOD + "[units]\nspeed = 'W'\n", "is not a speed"),
+    Bad("[units] zero unit", "analyze", GOOD + "[units]\nspeed = '0 rpm'\n", "key 'speed'"),
+    Bad("[units] tower of powers", "analyze", GOOD + "[units]\npower = '10**10**10 W'\n", "key 'power'"),
+    Bad("[units] power of a number", "explain", GOOD + "[units]\nspeed = '9**9**9 rpm'\n", "key 'speed'"),
+    Bad("[units] degenerate unit", "analyze", GOOD + "[units]\nspeed = '1/Ys'\n", "degenerate"),
+    Bad("[units] power 0", "analyze", GOOD + "[units]\nspeed = 'rpm**0'\n", "key 'speed'"),
+    Bad("[units] power 9", "analyze", GOOD + "[units]\ntorque = 'N**9*m'\n", "key 'torque'"),
+    Bad("[units] 300 characters", "analyze", GOOD + "[units]\npower = '" + "W*" * 150 + "W'\n", "key 'power'"),
+    Bad("[units] parentheses", "analyze", GOOD + "[units]\ntorque = '(N*m)'\n", "key 'torque'"),
+    Bad("[units] Python code", "analyze", GOOD + "[units]\npower = '__import__(\"os\")'\n", "key 'power'"),
+    # ---- [[planetary]]
+    Bad("planetary unknown key", "analyze", sub(EFF, EFF + "\nplanetz = 3"), "did you mean 'planets'"),
+    Bad("planetary missing name", "analyze", sub('name = "P"\n', ""), "missing key 'name'"),
+    Bad("planetary name a number", "analyze", sub('name = "P"', "name = 7"), "key 'name'"),
+    Bad("planetary name empty", "analyze", sub('name = "P"', 'name = ""'), "key 'name'"),
+    Bad("planetary name with ANSI escape", "analyze", sub('name = "P"', 'name = "P\\u001b[2J"'), "key 'name'"),
+    Bad("planetary name of 100 characters", "analyze", sub('name = "P"', f'name = "{"P" * 100}"'), "key 'name'"),
+    Bad("duplicate element names", "analyze", sub('name = "B"', 'name = "P"'), "used twice"),
+    Bad("planetary missing sun", "analyze", sub('sun = "in"\n', ""), "missing key 'sun'"),
+    Bad("sun and ring the same shaft", "analyze", sub('ring = "ring"', 'ring = "in"'), "three different shafts"),
+    Bad("sun is a number", "analyze", sub('sun = "in"', "sun = 1"), "key 'sun'"),
+    Bad("shaft spelt like the housing", "analyze", sub('carrier = "out"', 'carrier = "Housing"'), "key 'carrier'"),
+    Bad("shaft with trailing space", "analyze", sub('carrier = "out"', 'carrier = "out "'), "key 'carrier'"),
+    Bad("teeth and ratio", "analyze", sub(TEETH, TEETH + "\nstationary_ratio = -2.6"), "not both"),
+    Bad("neither teeth nor ratio", "analyze", sub(TEETH, ""), "got neither"),
+    Bad("teeth not a table", "analyze", sub(TEETH, "teeth = [30, 24, 78]"), "key 'teeth'"),
+    Bad("teeth kind unknown", "analyze", sub("{ sun = 30", "{ kind = 'weird', sun = 30"), "key 'teeth.kind'"),
+    Bad("teeth unknown key", "analyze", sub("ring = 78 }", "ring = 78, moon = 3 }"), "unknown key 'moon'"),
+    Bad("teeth missing key", "analyze", sub(", ring = 78 }", " }"), "missing key 'ring'"),
+    Bad("teeth a fraction", "analyze", sub("planet = 24", "planet = 24.5"), "key 'teeth.planet'"),
+    Bad("teeth negative", "analyze", sub("sun = 30", "sun = -30"), "key 'teeth'"),
+    Bad("teeth zero", "analyze", sub("sun = 30", "sun = 0"), "key 'teeth'"),
+    Bad("teeth below 3", "analyze", sub(TEETH, "teeth = { sun = 2, planet = 38, ring = 78 }"), "at least 3"),
+    Bad("teeth 10^12", "analyze", sub(TEETH, "teeth = { sun = 30, planet = 24, ring = 1000000000000 }"),
+        "at most 1000"),
+    Bad("teeth a boolean", "analyze", sub("sun = 30", "sun = true"), "key 'teeth.sun'"),
+    Bad("teeth a string", "analyze", sub("sun = 30", "sun = '30'"), "key 'teeth.sun'"),
+    Bad("ring smaller than the sun", "analyze", sub(TEETH, "teeth = { sun = 78, planet = 24, ring = 30 }"),
+        "more teeth than the sun"),
+    Bad("not coaxial", "analyze", sub("planet = 24", "planet = 20"), "coaxially"),
+    Bad("double planet ring smaller than sun", "analyze",
+        sub(TEETH, "teeth = { kind = 'double', sun = 80, planet_sun = 20, planet_ring = 20, ring = 40 }"),
+        "key 'teeth'"),
+    Bad("stepped internal ring too small", "analyze",
+        sub(TEETH, "teeth = { kind = 'stepped', sun = 30, planet_sun = 20, planet_ring = 40, ring = 40 }"),
+        "key 'teeth'"),
+    Bad("stationary ratio 0", "analyze", sub(TEETH, "stationary_ratio = 0"), "key 'stationary_ratio'"),
+    Bad("stationary ratio 1", "analyze", sub(TEETH, "stationary_ratio = 1"), "key 'stationary_ratio'"),
+    Bad("stationary ratio 1e-320", "analyze", sub(TEETH, "stationary_ratio = 1e-320"), "key 'stationary_ratio'"),
+    Bad("stationary ratio 1e300", "analyze", sub(TEETH, "stationary_ratio = -1e300"), "key 'stationary_ratio'"),
+    Bad("gear ratio 1e9", "analyze", STAGE + "ratio = '10**9'\n", "key 'ratio'"),
+    Bad("stationary ratio 'nan'", "analyze", sub(TEETH, "stationary_ratio = 'nan'"), "key 'stationary_ratio'"),
+    Bad("expression with an attribute", "analyze", sub(TEETH, "stationary_ratio = 'os.system'"),
+        "found an attribute"),
+    Bad("expression calling __import__", "analyze", sub(TEETH, "stationary_ratio = \"__import__('os')\""),
+        "found a function call"),
+    Bad("expression tower of powers", "analyze", sub(TEETH, "stationary_ratio = '9**9**9'"), "exponent"),
+    Bad("expression divides by zero", "analyze", sub(TEETH, "stationary_ratio = '1/0'"), "divides by zero"),
+    Bad("expression overflows", "analyze", sub(TEETH, "stationary_ratio = '1e308*10'"), "finite"),
+    Bad("expression syntax error", "analyze", sub(TEETH, "stationary_ratio = '(1'"), "not a valid"),
+    Bad("expression of 300 characters", "analyze", sub(TEETH, f"stationary_ratio = '{'1+' * 150}1'"),
+        "at most 200"),
+    Bad("expression complex number", "analyze", sub(TEETH, "stationary_ratio = '2j'"), "key 'stationary_ratio'"),
+    Bad("expression a list", "analyze", sub(TEETH, "stationary_ratio = '[1, 2]'"), "key 'stationary_ratio'"),
+    Bad("expression a lambda", "analyze", sub(TEETH, "stationary_ratio = 'lambda: 1'"), "key 'stationary_ratio'"),
+    Bad("expression with a comparison", "analyze", sub(TEETH, "stationary_ratio = '1 < 2'"), "found a comparison"),
+    Bad("ratio a boolean", "analyze", sub(TEETH, "stationary_ratio = true"), "boolean"),
+    Bad("ratio an array", "analyze", sub(TEETH, "stationary_ratio = [2]"), "key 'stationary_ratio'"),
+    Bad("efficiency 0", "analyze", sub("0.98", "0"), "(0, 1]"),
+    Bad("efficiency 1.2", "analyze", sub("0.98", "1.2"), "(0, 1]"),
+    Bad("efficiency negative", "analyze", sub("0.98", "-0.5"), "(0, 1]"),
+    Bad("efficiency a percentage string", "analyze", sub("0.98", "'98 %'"), "key 'stationary_efficiency'"),
+    Bad("mesh efficiencies and stationary efficiency", "analyze", sub(EFF, EFF + "\nmesh_efficiencies = [1, 1]"),
+        "not both"),
+    Bad("mesh efficiencies wrong count", "analyze", sub(EFF, "mesh_efficiencies = [0.9, 0.9, 0.9]"),
+        "mesh_efficiencies must have 2"),
+    Bad("mesh efficiencies not a list", "analyze", sub(EFF, "mesh_efficiencies = 0.9"), "key 'mesh_efficiencies'"),
+    Bad("mesh efficiencies 1,000 values", "analyze", sub(EFF, "mesh_efficiencies = [" + "0.99," * 1000 + "]"),
+        "key 'mesh_efficiencies'"),
+    Bad("mesh efficiency above 1", "analyze", sub(EFF, "mesh_efficiencies = [0.9, 1.1]"), "mesh_efficiencies[1]"),
+    Bad("planets 0", "analyze", sub(EFF, EFF + "\nplanets = 0"), "key 'planets'"),
+    Bad("planets 10^8", "analyze", sub(EFF, EFF + "\nplanets = 100000000"), "key 'planets'"),
+    Bad("planets a fraction", "analyze", sub(EFF, EFF + "\nplanets = 2.5"), "key 'planets'"),
+    # ---- [[gear]]
+    Bad("gear missing second", "analyze", GOOD + "[[gear]]\nname = 'G'\nfirst = 'out'\nratio = 2\n",
+        "missing key 'second'"),
+    Bad("gear first equals second", "analyze", GOOD + "[[gear]]\nname = 'G'\nfirst = 'out'\nsecond = 'out'\nratio = 2\n",
+        "different shafts"),
+    Bad("gear on the housing", "analyze", GOOD + "[[gear]]\nname = 'G'\nfirst = 'out'\nsecond = 'housing'\n"
+                                                 "ratio = 2\n", "use a Brake"),
+    Bad("gear meshes and ratio", "analyze", STAGE + "ratio = 2\nmeshes = [[20, 40]]\n", "not both"),
+    Bad("gear neither meshes nor ratio", "analyze", STAGE, "got neither"),
+    Bad("gear ratio 0", "analyze", STAGE + "ratio = 0\n", "key 'ratio'"),
+    Bad("gear ratio divides by zero", "analyze", STAGE + "ratio = '2/0'\n", "key 'ratio'"),
+    Bad("gear meshes empty", "analyze", STAGE + "meshes = []\n", "key 'meshes'"),
+    Bad("gear meshes a number", "analyze", STAGE + "meshes = 3\n", "key 'meshes'"),
+    Bad("gear mesh of 1 tooth", "analyze", STAGE + "meshes = [[1, 40]]\n", "at least 3 teeth"),
+    Bad("gear mesh kind unknown", "analyze", STAGE + "meshes = [[20, 40, 'spiral']]\n", "'external' or 'internal'"),
+    Bad("gear mesh of 4 items", "analyze", STAGE + "meshes = [[20, 40, 'external', 1]]\n", "meshes[0]"),
+    Bad("gear 40 meshes", "analyze", STAGE + "meshes = [" + "[20, 20]," * 40 + "]\n", "at most 32"),
+    Bad("gear mesh fraction teeth", "analyze", STAGE + "meshes = [[20.5, 40]]\n", "key 'meshes'"),
+    Bad("gear efficiency 2", "analyze", STAGE + "ratio = 2\nefficiency = 2\n", "key 'efficiency'"),
+    # ---- [[clutch]] and [[brake]]
+    Bad("clutch missing second", "analyze", GOOD + "[[clutch]]\nname = 'C'\nfirst = 'in'\n", "missing key 'second'"),
+    Bad("clutch joins one shaft", "analyze", GOOD + "[[clutch]]\nname = 'C'\nfirst = 'in'\nsecond = 'in'\n",
+        "two different shafts"),
+    Bad("clutch to the housing", "analyze", GOOD + "[[clutch]]\nname = 'C'\nfirst = 'in'\nsecond = 'housing'\n",
+        "is a brake"),
+    Bad("brake on the housing", "analyze", sub('shaft = "ring"', 'shaft = "housing"'), "key 'shaft'"),
+    Bad("brake engaged not a boolean", "analyze", sub('shaft = "ring"', 'shaft = "ring"\nengaged = "yes"'),
+        "key 'engaged'"),
+    Bad("brake unknown key", "analyze", sub('shaft = "ring"', 'shaft = "ring"\ntorque = 5'), "unknown key 'torque'"),
+    Bad("brake shaft empty", "analyze", sub('shaft = "ring"', 'shaft = ""'), "key 'shaft'"),
+    # ---- [operating_point]
+    Bad("operating point unknown key", "analyze", sub(SPEEDS, SPEEDS + "\nspeed = 1"), "did you mean 'speeds'"),
+    Bad("operating point not a table", "analyze", "operating_point = 3\n" + GOOD.split("[operating_point]")[0],
+        "[operating_point]"),
+    Bad("speeds not a table", "analyze", sub(SPEEDS, "speeds = 3000"), "key 'speeds'"),
+    Bad("speed at an unknown shaft", "analyze", sub(SPEEDS, "speeds = { inn = 3000 }"), "key 'speeds.inn'"),
+    Bad("speed a boolean", "analyze", sub(SPEEDS, "speeds = { in = true }"), "key 'speeds.in'"),
+    Bad("speed an array", "analyze", sub(SPEEDS, "speeds = { in = [3000] }"), "key 'speeds.in'"),
+    Bad("speed tower of powers", "analyze", sub(SPEEDS, "speeds = { in = '9**9**9 rpm' }"), "key 'speeds.in'"),
+    Bad("speed 10**10**10 W", "explain", sub(SPEEDS, "speeds = { in = '10**10**10 W' }"), "key 'speeds.in'"),
+    Bad("speed 1e999", "analyze", sub(SPEEDS, "speeds = { in = '1e999 rpm' }"), "key 'speeds.in'"),
+    Bad("speed 'nan rpm'", "analyze", sub(SPEEDS, "speeds = { in = 'nan rpm' }"), "key 'speeds.in'"),
+    Bad("speed of the wrong dimension", "analyze", sub(SPEEDS, "speeds = { in = '3 PS' }"), "is not a speed"),
+    Bad("speed with a decimal comma", "analyze", sub(SPEEDS, "speeds = { in = '3000,5 rpm' }"), "decimal point"),
+    Bad("speed beyond double precision", "analyze", sub(SPEEDS, "speeds = { in = 1" + "0" * 400 + " }"),
+        "key 'speeds.in'"),
+    Bad("speed an empty string", "analyze", sub(SPEEDS, "speeds = { in = '' }"), "key 'speeds.in'"),
+    Bad("speed with unknown unit", "analyze", sub(SPEEDS, "speeds = { in = '3000 rpmx' }"), "unknown unit"),
+    Bad("speed overflowing in core units", "analyze",
+        sub(SPEEDS, "speeds = { in = 1e306 }") + "[units]\nspeed = '1/ms'\n", "key 'speeds.in'"),
+    Bad("torque overflowing in core units", "analyze",
+        sub(TORQUES, "torques = { in = 1e306 }") + "[units]\ntorque = 'kN*m'\n", "key 'torques.in'"),
+    Bad("housing speed not 0", "analyze", sub(SPEEDS, "speeds = { in = 3000, housing = 5 }"), "key 'speeds.housing'"),
+    Bad("torque at the housing", "analyze", sub(TORQUES, "torques = { in = 10, housing = 5 }"),
+        "key 'torques.housing'"),
+    Bad("power at the housing", "analyze", sub(TORQUES, "torques = { in = 10 }\npowers = { housing = 5 }"),
+        "key 'powers.housing'"),
+    Bad("housing as drive", "analyze", sub('drives = ["in"]', 'drives = ["housing"]'), "key 'drives'"),
+    Bad("housing as load", "explain", sub('loads = ["out"]', 'loads = ["housing"]'), "key 'loads'"),
+    Bad("drive at an unknown shaft", "analyze", sub('drives = ["in"]', 'drives = ["inn"]'), "key 'drives'"),
+    Bad("drives a number", "analyze", sub('drives = ["in"]', "drives = 1"), "key 'drives'"),
+    Bad("drive and load at one shaft", "analyze", sub('loads = ["out"]', 'loads = ["in"]'), "key 'loads.in'"),
+    Bad("torque and power at one shaft", "analyze", sub(TORQUES, "torques = { in = 10 }\npowers = { in = 5 }"),
+        "key 'powers.in'"),
+    Bad("speeds underdetermined", "analyze", sub('[[brake]]\nname = "B"\nshaft = "ring"\n', ""), "key 'speeds'"),
+    Bad("speeds contradictory", "analyze", sub(SPEEDS, "speeds = { in = 3000, out = 5 }"), "'speeds.out'"),
+    Bad("torques contradictory", "analyze", sub(TORQUES, "torques = { in = 10, out = 5 }"), "'torques.out'"),
+    Bad("torque that nothing balances", "explain", sub('loads = ["out"]', "loads = []"), "key 'torques.in'"),
+    Bad("power at a standstill", "analyze", sub(TORQUES, "torques = { in = 10 }\npowers = { ring = 5 }"),
+        "key 'powers.ring'"),
+    Bad("speed 1e300 overflows the power", "analyze", sub(SPEEDS, "speeds = { in = 1e300 }")
+        .replace(TORQUES, "torques = { in = 1e300 }"), "not a finite number"),
+    Bad("near-singular set (i0 = 1 + 1e-11)", "analyze", sub(TEETH, "stationary_ratio = '1+1e-11'"),
+        "[operating_point]"),
+    Bad("gear without a transmission", "analyze", sub(SPEEDS, SPEEDS + "\ngear = '1'"), "key 'gear'"),
+    Bad("gear not in the schedule", "analyze", TRANS + "[operating_point]\nspeeds = { in = 3 }\ngear = '9'\n",
+        "key 'gear'"),
+    Bad("no operating point", "analyze", GOOD.split("[operating_point]")[0], "[operating_point]"),
+    Bad("no operating point (explain)", "explain", GOOD.split("[operating_point]")[0], "[operating_point]"),
+    # ---- [transmission]
+    Bad("transmission not a table", "gears", "transmission = 1\n" + GOOD, "[transmission]"),
+    Bad("transmission unknown key", "gears", sub('output = "out"', 'output = "out"\ngears = 2', TRANS),
+        "unknown key 'gears'"),
+    Bad("transmission missing schedule", "gears", TRANS.split("[transmission.schedule]")[0],
+        "missing key 'schedule'"),
+    Bad("transmission input unknown", "gears", sub('input = "in"', 'input = "engine"', TRANS), "key 'input'"),
+    Bad("transmission input is the output", "gears", sub('input = "in"', 'input = "out"', TRANS), "key 'output'"),
+    Bad("transmission output is the housing", "gears", sub('output = "out"', 'output = "housing"', TRANS),
+        "key 'output'"),
+    Bad("schedule empty", "gears", TRANS.split("[transmission.schedule]")[0] + "schedule = {}\n", "key 'schedule'"),
+    Bad("schedule entry not a list", "gears", sub('"2" = ["C"]', '"2" = 5', TRANS), "key 'schedule.2'"),
+    Bad("schedule names an unknown element", "gears", sub('"2" = ["C"]', '"2" = ["C9"]', TRANS), "schedule.2"),
+    Bad("schedule names a planetary set", "gears", sub('"2" = ["C"]', '"2" = ["P"]', TRANS), "schedule.2"),
+    Bad("schedule names an element twice", "gears", sub('"2" = ["C"]', '"2" = ["C", "C"]', TRANS), "schedule.2"),
+    Bad("gear leaves two degrees of freedom", "gears", sub('"2" = ["C"]', '"2" = []', TRANS), "schedule.2"),
+    Bad("gear locks the train", "gears", sub('"2" = ["C"]', '"2" = ["B", "C"]', TRANS), "schedule.2"),
+    Bad("gear holds the output", "gears", sub('"2" = ["C"]', '"2" = ["BO"]', sub(
+        "[transmission]", '[[brake]]\nname = "BO"\nshaft = "out"\n\n[transmission]', TRANS)), "schedule.2"),
+    Bad("gear name with an escape", "gears", sub('"2" = ["C"]', '"2\\u001b" = ["C"]', TRANS), "schedule.2"),
+    Bad("100 gears", "gears", TRANS + "".join(f'"g{k}" = ["B"]\n' for k in range(100)), "at most 64"),
+    Bad("gears without a transmission", "gears", GOOD, "[transmission]"),
+    Bad("explore without a transmission", "explore", GOOD, "[transmission]"),
+    Bad("explore a broken file", "explore", sub("sun = 30", "sun = 0", TRANS), "key 'teeth'"),
+    # ---- options
+    Bad("--gear unknown", "analyze", TRANS + "[operating_point]\nspeeds = { in = 3 }\ntorques = { in = 1 }\n"
+                                             "drives = ['in']\nloads = ['out']\n", "--gear", ("{file}", "--gear", "9")),
+    Bad("--gear without a transmission", "analyze", GOOD, "--gear", ("{file}", "--gear", "1")),
+    Bad("--format unknown", "analyze", GOOD, "--format", ("{file}", "--format", "xml"), usage=True),
+    Bad("unknown option", "analyze", GOOD, "--frobnicate", ("{file}", "--frobnicate"), usage=True),
+    Bad("missing FILE argument", "analyze", None, "file", ()),
+    Bad("unknown command", "analyse", None, "analyze", ()),
+    Bad("--lang unknown", "explain", GOOD, "--lang", ("{file}", "--lang", "fr"), usage=True),
+    Bad("plot --dpi 0", "plot", GOOD, "--dpi", ("{file}", "--dpi", "0", "--out", "{tmp}/p.png")),
+    Bad("plot --dpi 100000", "plot", GOOD, "--dpi", ("{file}", "--dpi", "100000", "--out", "{tmp}/p.png")),
+    Bad("plot --dpi not a number", "plot", GOOD, "--dpi", ("{file}", "--dpi", "high"), usage=True),
+    Bad("plot --kind unknown", "plot", GOOD, "--kind", ("{file}", "--kind", "pie"), usage=True),
+    Bad("plot --out of unknown type", "plot", GOOD, ".txt", ("{file}", "--out", "{tmp}/p.txt")),
+    Bad("plot a file without operating point", "plot", GOOD.split("[operating_point]")[0], "[operating_point]",
+        ("{file}", "--kind", "speed", "--out", "{tmp}/p.svg")),
+    Bad("plot --gear unknown", "plot", TRANS, "--gear", ("{file}", "--gear", "9", "--out", "{tmp}/p.svg")),
+    Bad("plot an overflowing solution", "plot", sub(SPEEDS, "speeds = { in = 1e300 }").replace(
+        TORQUES, "torques = { in = 1e300 }"), "not a finite number", ("{file}", "--out", "{tmp}/p.svg")),
+    Bad("animate --frames 1000000", "animate", GOOD, "--frames", ("{file}", "--frames", "1000000")),
+    Bad("animate --frames 0", "animate", GOOD, "--frames", ("{file}", "--frames", "0")),
+    Bad("animate --fps 0", "animate", GOOD, "--fps", ("{file}", "--fps", "0")),
+    Bad("animate --fps 10000", "animate", GOOD, "--fps", ("{file}", "--fps", "10000")),
+    Bad("animate --set unknown", "animate", GOOD, "'Q'", ("{file}", "--set", "Q", "--out", "{tmp}/a.svg")),
+    Bad("animate --out of unknown type", "animate", GOOD, ".mp4", ("{file}", "--out", "{tmp}/a.mp4")),
+    Bad("modes --sun 0", "modes", None, "modes: --sun: z_sun", ("--sun", "0", "--ring", "78")),
+    Bad("modes --ring 10^7", "modes", None, "--ring: z_ring must be at most 1000", ("--sun", "30", "--ring", "10000000")),
+    Bad("modes ring smaller than sun", "modes", None, "more teeth than the sun", ("--sun", "78", "--ring", "30")),
+    Bad("modes --i0 tower of powers", "modes", None, "--i0", ("--i0", "9**9**9")),
+    Bad("modes --i0 1", "modes", None, "must not be 0 or 1", ("--i0", "1")),
+    Bad("modes --i0 1e-12", "modes", None, "--i0", ("--i0", "1e-12")),
+    Bad("modes --i0 code", "modes", None, "--i0", ("--i0", "__import__('os')")),
+    Bad("modes --eta0 nan", "modes", None, "--eta0", ("--i0", "-2", "--eta0", "nan")),
+    Bad("modes --eta0 2", "modes", None, "--eta0", ("--i0", "-2", "--eta0", "2")),
+    Bad("modes teeth and i0", "modes", None, "not both", ("--sun", "30", "--ring", "78", "--i0", "2")),
+    Bad("modes nothing given", "modes", None, "give --sun and --ring", ()),
+    Bad("modes double without planets", "modes", None, "--planet-sun", ("--sun", "30", "--ring", "78", "--kind",
+                                                                        "double")),
+    Bad("modes --out is a folder", "modes", None, "is a folder", ("--i0", "-2", "--out", "{tmp}")),
+    # serve: a row that wrongly passed would start a server, so those that reach the command run in a process
+    Bad("serve --port 0", "serve", None, "--port", ("--port", "0")),
+    Bad("serve --port 70000", "serve", None, "--port", ("--port", "70000")),
+    Bad("serve --workers 0", "serve", None, "--workers", ("--workers", "0")),
+    Bad("serve --timeout nan", "serve", None, "--timeout", ("--timeout", "nan")),
+    Bad("serve --max-body 10^9", "serve", None, "--max-body", ("--max-body", "1000000000")),
+    Bad("serve --host unresolvable", "serve", None, "cannot be resolved", ("--host", "::::"), process=True),
+    Bad("serve --host not on this computer", "serve", None, "cannot listen there", ("--host", "192.0.2.1"),
+        process=True),
+]
+
+IDS = [case.id for case in CORPUS]
+
+
+def _materialise(case: Bad, tmp: Path) -> Path | None:
+    if case.file is None:
+        return None
+    if isinstance(case.file, Path):
+        return case.file
+    if callable(case.file):
+        return case.file(tmp)
+    path = tmp / "bad.toml"
+    if isinstance(case.file, bytes):
+        path.write_bytes(case.file)
+    else:
+        path.write_text(case.file, encoding="utf-8")
+    return path
+
+
+def _run(case: Bad, argv: list[str]) -> tuple[int, str, str]:
+    if not case.process:
+        result = CliRunner().invoke(app, argv, env=case.env or None)
+        return result.exit_code, result.stdout, result.stderr
+    env = {**os.environ, **case.env}
+    process = subprocess.run([sys.executable, "-c", "from epicyclic.cli.main import main; main()", *argv],
+                             capture_output=True, text=True, timeout=TIME_LIMIT_S * 4, env=env)
+    return process.returncode, process.stdout, process.stderr
+
+
+def test_the_corpus_is_large_and_its_classes_distinct():
+    assert len(set(IDS)) == len(IDS)
+    assert len(CORPUS) >= 150
+    commands = {case.command for case in CORPUS}
+    assert {"analyze", "explain", "gears", "explore", "plot", "animate", "modes", "serve"} <= commands
+
+
+@pytest.mark.parametrize("case", CORPUS, ids=IDS)
+def test_bad_input_gives_one_clear_line_and_exit_2(case: Bad, tmp_path: Path):
+    path = _materialise(case, tmp_path)
+    argv = [case.command] + [a.format(file=path, tmp=tmp_path) for a in case.args]
+    start = time.monotonic()
+    code, stdout, stderr = _run(case, argv)
+    elapsed = time.monotonic() - start
+    assert code == 2, (case.id, stdout, stderr)
+    assert stdout == "", (case.id, stdout)
+    lines = stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), (case.id, stderr)
+    assert "Traceback" not in stderr and "\x1b" not in stderr
+    message = lines[0]
+    if path is not None and "{file}" in case.args and not case.usage:
+        assert str(path) in message, (case.id, message)
+    assert case.says in message, (case.id, message)
+    assert elapsed < TIME_LIMIT_S, (case.id, elapsed)
+
+
+def test_serve_on_a_busy_port_exits_2():
+    import socket
+
+    with socket.socket() as busy:
+        busy.bind(("127.0.0.1", 0))
+        busy.listen()
+        port = busy.getsockname()[1]
+        code, stdout, stderr = _run(Bad("busy port", "serve", None, "", process=True), ["serve", "--port", str(port)])
+    assert code == 2 and stderr.startswith("error: serve") and "cannot listen there" in stderr
+    assert len(stderr.splitlines()) == 1
