@@ -89,7 +89,7 @@ def test_analyze_reports_geometry_in_every_format(tmp_path):
     text = runner.invoke(app, ["analyze", path]).output
     assert "fitting of 'P': passes" in text and "forces of 'P'" in text
     report = json.loads(runner.invoke(app, ["analyze", path, "-f", "json"]).output)
-    assert report["schema"] == "epicyclic-report/2"
+    assert report["schema"] == "epicyclic-report/3"
     assert report["geometry"]["P"]["fitting"]["passed"] is True
     assert report["geometry"]["P"]["geometry"]["meshes"][0]["center_distance"] == pytest.approx(56.8, abs=1e-3)
     markdown = runner.invoke(app, ["analyze", path, "-f", "markdown"]).output

@@ -115,7 +115,7 @@ teeth = {teeth}
     ("text", "error", "match"),
     [
         (_file("[planetary.geometry]\nmodule = -1"), InputFileError,
-         r"<string>: \[\[planetary\]\] #1 'P', table 'geometry': key 'geometry.module': expected a positive normal module"),
+         r"<string>: \[\[planetary\]\] #1 'P', table 'geometry', key 'geometry.module': expected a positive normal module"),
         (_file("[planetary.geometry]\nmodul = 2"), InputFileError, r"unknown key 'modul'.*did you mean 'module'"),
         (_file("[planetary.geometry]\npressure_angle = 20"), InputFileError, r"table 'geometry': missing key 'module'"),
         (_file("[planetary.geometry]\nmodule = 2\nprofile_shift = { son = 0.1 }"), InputFileError,
@@ -150,7 +150,7 @@ teeth = {teeth}
          ModelError, r"unknown bearing type 'plain'"),
         (_file("[planetary.losses]\nbearing = { bore = 20 }"), InputFileError, r"takes the bearing loads from the "
                                                                                  r"tooth forces"),
-        (_file("", "[lubricant]\nviscosity = -3"), InputFileError, r"\[lubricant\]: key 'viscosity': expected a "
+        (_file("", "[lubricant]\nviscosity = -3"), InputFileError, r"\[lubricant\], key 'viscosity': expected a "
                                                                     r"positive number \(mPa\*s\)"),
         (_file("", "", "{ kind = \"two_rings\", first = 81, planet_first = 27, planet_second = 20, second = 78 }"),
          ToothCountError, r"\[\[planetary\]\] #1 'P', key 'teeth': the stepped planet cannot be coaxial"),

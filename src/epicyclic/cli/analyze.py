@@ -1,6 +1,6 @@
 """``epicyclic analyze FILE``: solve a train description and report it.
 
-Formats: ``table`` (terminal), ``json`` (schema ``epicyclic-report/2``),
+Formats: ``table`` (terminal), ``json`` (schema ``epicyclic-report/3``),
 ``markdown`` and ``html`` (one self-contained file).  Numbers are in the
 file's ``[units]`` (core units 1/min, N·m, W otherwise).  Elements with a
 ``geometry`` table add their gears, fitting and forces (mm, N).

@@ -16,7 +16,8 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import emit, guarded
+from ..text import short
+from ._common import emit, guarded, load, say
 
 __all__ = ["efficiency_map", "parse_axis", "MAX_POINTS"]
 
@@ -41,23 +42,23 @@ def parse_axis(text: str, name: str, unit: str):
         try:
             count = int(tail)
         except ValueError:
-            raise ModelError(f"{name}: the count after ':' must be a whole number, got {text!r} "
+            raise ModelError(f"{name}: the count after ':' must be a whole number, got {short(text)} "
                              f"(e.g. 500..6000:50 for 50 values).") from None
     parts = raw.split("..")
     try:
         values = [float(p) for p in parts]
     except ValueError:
         raise ModelError(f"{name}: expected a value or a range A..B:N in {unit}, e.g. 500..6000:50, got "
-                         f"{text!r}.") from None
+                         f"{short(text)}.") from None
     if len(values) == 1:
         if count not in (None, 1):
-            raise ModelError(f"{name}: a single value takes no count, got {text!r}.")
+            raise ModelError(f"{name}: a single value takes no count, got {short(text)}.")
         values, count = values * 2, 1
     if len(values) != 2 or not all(np.isfinite(values)) or values[0] <= 0 or values[1] < values[0]:
-        raise ModelError(f"{name}: expected 0 < A <= B in A..B:N ({unit}), got {text!r}.")
+        raise ModelError(f"{name}: expected 0 < A <= B in A..B:N ({unit}), got {short(text)}.")
     count = 20 if count is None else count
     if not 1 <= count <= 10_000 or (count == 1 and values[0] != values[1]):
-        raise ModelError(f"{name}: the number of values N must lie in 2..10000 for a range, got {text!r}.")
+        raise ModelError(f"{name}: the number of values N must lie in 2..10000 for a range, got {short(text)}.")
     return np.linspace(values[0], values[1], count)
 
 
@@ -73,7 +74,7 @@ def efficiency_map(
 ) -> None:
     """Efficiency map of FILE over input speed × torque, with the losses split by source."""
     from ..errors import ModelError
-    from ..io import load_train_file
+    from ..io.output import atomic_path
     from ..losses.efficiency_map import MAP_SUFFIXES, efficiency_map as compute
 
     speeds = parse_axis(speed, "--speed", "1/min")
@@ -83,8 +84,8 @@ def efficiency_map(
                          f"{MAX_POINTS:,}; use fewer values.")
     if out is not None and out.suffix.lower() not in MAP_SUFFIXES:
         raise ModelError(f"--out {str(out)!r}: give a file ending in {', '.join(MAP_SUFFIXES)}.")
-    train_file = load_train_file(file)
-    emap = compute(train_file, speeds, torques, gear=gear, direction="coast" if coast else "drive")
+    train_file = load(file, gear)
+    emap = compute(train_file, speeds, torques, direction="coast" if coast else "drive")
     if out is None:
         emit(emap.table() + "\n", None)
         return
@@ -92,5 +93,6 @@ def efficiency_map(
         import matplotlib
 
         matplotlib.use("Agg")
-    path = emap.save(out)
-    typer.echo(f"wrote {path.resolve()}")
+    with atomic_path(out) as temporary:  # the map appears whole or not at all
+        emap.save(temporary)
+    say(f"wrote {out.resolve()}")

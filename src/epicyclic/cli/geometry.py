@@ -18,7 +18,9 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load, solved
+from ..limits import MAX_PLANETS
+from ..text import short
+from ._common import FormatOption, OutOption, OutputFormat, check_finite, emit, guarded, load, solved
 
 __all__ = ["fit", "forces", "search", "parse_range", "parse_tolerance"]
 
@@ -65,7 +67,7 @@ def fit(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     planets: Annotated[Optional[int], typer.Option(help="Check with this number of planets (default: the file's).",
-                                                   min=1, max=64)] = None,
+                                                   min=1, max=MAX_PLANETS)] = None,
     allow_unequal: Annotated[bool, typer.Option("--allow-unequal", help="Accept unequal planet spacing.")] = False,
     min_clearance: Annotated[float, typer.Option(help="Least tip clearance between planets, mm.", min=0.0)] = 0.0,
     undercut: Annotated[Undercut, typer.Option(help="Undercut limit.")] = Undercut.theoretical,
@@ -81,16 +83,18 @@ def fit(
 
 @guarded
 def forces(
-    file: Annotated[Path, typer.Argument(help="Train description (.toml) with geometry tables and an operating point.")],
+    file: Annotated[Path, typer.Argument(
+        help="Train description (.toml) with geometry tables and an operating point.")],
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
 ) -> None:
     """Tooth, bearing and pin forces (× K_γ) at the file's operating point, for every element with geometry."""
-    from ..io.geometry_report import geometry_results
+    from ..io.geometry_report import geometry_dict, geometry_results
 
     train_file = _load(file, gear)
-    results = geometry_results(train_file.geometry, train_file.solve())
+    results = geometry_results(train_file.geometry, solved(train_file, file))
+    check_finite(geometry_dict(results), file, "forces")
     emit(_render(results, format, f"forces of {train_file.title}", "forces"), out)
 
 
@@ -107,11 +111,11 @@ def parse_range(text: str, name: str, low: int = 3, high: int = 400) -> tuple[in
     try:
         values = [int(p.strip()) for p in parts]
     except ValueError:
-        raise ModelError(f"{name}: expected a whole number or a range such as 12..80, got {text!r}.") from None
+        raise ModelError(f"{name}: expected a whole number or a range such as 12..80, got {short(text)}.") from None
     if len(values) == 1:
         values *= 2
     if len(values) != 2 or values[0] > values[1] or values[0] < low or values[1] > high:
-        raise ModelError(f"{name}: expected a range LOW..HIGH with {low} <= LOW <= HIGH <= {high}, got {text!r}.")
+        raise ModelError(f"{name}: expected a range LOW..HIGH with {low} <= LOW <= HIGH <= {high}, got {short(text)}.")
     return values[0], values[1]
 
 
@@ -128,10 +132,11 @@ def parse_tolerance(text: str) -> float:
     try:
         value = float(raw.rstrip("%").strip())
     except ValueError:
-        raise ModelError(f"--tolerance: expected a relative deviation such as 3% or 0.03, got {text!r}.") from None
+        raise ModelError(f"search: --tolerance: expected a relative deviation such as 3% or 0.03, got "
+                         f"{short(text)}.") from None
     value = value / 100.0 if percent else value
     if not 0.0 <= value < 1.0:
-        raise ModelError(f"--tolerance: expected 0 <= tolerance < 100 %, got {text!r}.")
+        raise ModelError(f"search: --tolerance: expected 0 <= tolerance < 100 %, got {short(text)}.")
     return round(value, 12)
 
 
@@ -173,13 +178,19 @@ def search(
     out: OutOption = None,
 ) -> None:
     """Tooth counts of simple sets for a target ratio: every candidate that fits, ranked (vectorised)."""
+    from ..errors import ModelError
     from ..geometry import search_teeth
+    from ..limits import RATIO_RANGE
 
-    low, high = parse_range(planets, "--planets", 1, 64)
+    if not RATIO_RANGE[0] <= abs(ratio) <= RATIO_RANGE[1]:  # also NaN
+        raise ModelError(f"search: --ratio: expected a ratio n_driver/n_driven with {RATIO_RANGE[0]:g} <= |ratio| "
+                         f"<= {RATIO_RANGE[1]:g}, got {ratio!r}.")
+    low, high = parse_range(planets, "search: --planets", 1, MAX_PLANETS)
     result = search_teeth(
         ratio, held=held.value, driver=driver.value, driven=driven.value, tolerance=parse_tolerance(tolerance),
-        z_sun=parse_range(sun, "--sun"), z_planet=parse_range(planet, "--planet"),
-        z_ring=parse_range(ring, "--ring") if ring else None, planets=tuple(range(low, high + 1)), module=module,
+        z_sun=parse_range(sun, "search: --sun"), z_planet=parse_range(planet, "search: --planet"),
+        z_ring=parse_range(ring, "search: --ring") if ring else None, planets=tuple(range(low, high + 1)),
+        module=module,
         pressure_angle=pressure_angle, min_clearance=min_clearance, undercut=undercut.value,
         interference=interference,
     )

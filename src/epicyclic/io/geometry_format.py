@@ -51,6 +51,8 @@ from ..losses import (
     SchlenkFriction,
 )
 from ..model import GearStage, PlanetarySet
+from ..text import short
+from .reader import at_key
 
 __all__ = ["GEOMETRY_KEYS", "LOSSES_KEYS", "LUBRICANT_KEYS", "module_ratio", "read_lubricant", "read_extras"]
 
@@ -67,7 +69,7 @@ _DRAG_KEYS = {"member", "coefficients", "relative_to"}
 def _positive(reader, value: object, key: str, where: str, unit: str) -> float:
     number = reader.number(value, key, where)
     if not number > 0:
-        raise reader.error(where, f"key {key!r}: expected a positive number ({unit}), got {value!r}.")
+        raise reader.error(at_key(where, key), f"expected a positive number ({unit}), got {short(value)}.")
     return number
 
 
@@ -136,15 +138,17 @@ def _rack(reader, table, where: str, index: int | None = None) -> BasicRack:
         value = table.get(key, default)
         if isinstance(value, list):
             if index is None:
-                raise reader.error(where, f"key 'geometry.{key}': expected a number, got the array {value!r}.")
+                raise reader.error(at_key(where, f"geometry.{key}"),
+                                   f"expected a number, got the array {short(value)}.")
             if index >= len(value):
-                raise reader.error(where, f"key 'geometry.{key}': expected one value per mesh, got {len(value)}.")
+                raise reader.error(at_key(where, f"geometry.{key}"), f"expected one value per mesh, got {len(value)}.")
             value = value[index]
         return reader.number(value, f"geometry.{key}", where)
 
     module = pick("module", reader.require(table, "module", where))
     if module <= 0:
-        raise reader.error(where, f"key 'geometry.module': expected a positive normal module in mm, got {module!r}.")
+        raise reader.error(at_key(where, "geometry.module"),
+                           f"expected a positive normal module in mm, got {short(module)}.")
     return BasicRack(module, pick("pressure_angle", 20.0), pick("helix_angle", 0.0), pick("addendum", 1.0),
                      pick("dedendum", 1.25))
 
@@ -155,14 +159,16 @@ def _gear_values(reader, value, names: tuple[str, ...], key: str, where: str, de
         unknown = [k for k in value if k not in names]
         if unknown:
             close = next(iter(difflib.get_close_matches(unknown[0], names, n=1, cutoff=0.6)), None)
-            raise reader.error(where, f"key 'geometry.{key}': unknown gear {unknown[0]!r}; the gears of this set "
-                                      f"are {', '.join(names)}" + (f" (did you mean {close!r}?)" if close else "")
+            raise reader.error(at_key(where, f"geometry.{key}"),
+                               f"unknown gear {unknown[0]!r}; the gears of this set "
+                               f"are {', '.join(names)}" + (f" (did you mean {close!r}?)" if close else "")
                                       + ".")
         out = {}
         for name in names:
             if name not in value and default is None:
-                raise reader.error(where, f"key 'geometry.{key}': missing gear {name!r}; give one value per gear "
-                                          f"({', '.join(names)}) or one number for all.")
+                raise reader.error(at_key(where, f"geometry.{key}"),
+                                   f"missing gear {name!r}; give one value per gear "
+                                   f"({', '.join(names)}) or one number for all.")
             out[name] = reader.number(value.get(name, default), f"geometry.{key}.{name}", where)
         return out
     number = reader.number(value, f"geometry.{key}", where)
@@ -188,26 +194,30 @@ def _set_geometry(reader, table, pset: PlanetarySet, element_table, where: str):
         widths = {back[k]: v for k, v in widths.items()}
         for name, b in widths.items():
             if b <= 0:
-                raise reader.error(where, f"key 'geometry.face_width': expected a positive width in mm for {name}, "
-                                          f"got {b!r}.")
+                raise reader.error(at_key(where, "geometry.face_width"),
+                                   f"expected a positive width in mm for {name}, "
+                                   f"got {short(b)}.")
     ring_module = None
     if "ring_module" in table:
         if pset.teeth.kind != "stepped":
-            raise reader.error(where, f"key 'geometry.ring_module': only stepped sets have a second module; this "
-                                      f"is a {pset.teeth.kind} set. Remove it.")
+            raise reader.error(at_key(where, "geometry.ring_module"),
+                               f"only stepped sets have a second module; this "
+                               f"is a {pset.teeth.kind} set. Remove it.")
         ring_module = _positive(reader, table["ring_module"], "geometry.ring_module", where, "mm")
     if "planets" in table:
         planets = reader.integer(table["planets"], "geometry.planets", where)
         if "planets" in element_table and planets != pset.planets:
-            raise reader.error(where, f"key 'geometry.planets': {planets} planets, but the element's 'planets' says "
-                                      f"{pset.planets}; give the number once.")
+            raise reader.error(at_key(where, "geometry.planets"),
+                               f"{planets} planets, but the element's 'planets' "
+                               f"says {pset.planets}; give the number once.")
         pset = replace(pset, planets=planets)
     load_sharing = None
     if "load_sharing" in table:
         load_sharing = reader.number(table["load_sharing"], "geometry.load_sharing", where)
         if load_sharing < 1.0:
-            raise reader.error(where, f"key 'geometry.load_sharing': expected K_gamma >= 1 (1 = equal sharing), "
-                                      f"got {table['load_sharing']!r}.")
+            raise reader.error(at_key(where, "geometry.load_sharing"),
+                               f"expected K_gamma >= 1 (1 = equal sharing), "
+                               f"got {short(table['load_sharing'])}.")
     tip = reader.boolean(table, "tip_shortening", where, True)
     planet_shifts = tuple(shifts[n] for n in names[1:-1])
     geometry = SetGeometry(pset, rack, shifts["sun"], shifts["ring"],
@@ -227,8 +237,9 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
     shifts = table.get("profile_shift", [[0.0, 0.0]] * count)
     if not isinstance(shifts, list) or len(shifts) != count or not all(
             isinstance(x, list) and len(x) == 2 for x in shifts):
-        raise reader.error(where, f"key 'geometry.profile_shift': expected one pair [x_driving, x_driven] per mesh "
-                                  f"({count}), e.g. {[[0.0, 0.0]] * count}, got {shifts!r}.")
+        raise reader.error(at_key(where, "geometry.profile_shift"),
+                           f"expected one pair [x_driving, x_driven] per mesh "
+                           f"({count}), e.g. {[[0.0, 0.0]] * count}, got {short(shifts)}.")
     pairs = [tuple(reader.number(v, f"geometry.profile_shift[{k}]", where) for v in pair)
              for k, pair in enumerate(shifts)]
     widths = None
@@ -249,8 +260,9 @@ def _friction(reader, table, lubricant: Lubricant | None, where: str):
     value = table["friction"]
     if isinstance(value, str):
         if value.strip().lower() != "schlenk":
-            raise reader.error(where, f"key 'losses.friction': expected a coefficient such as 0.05 or \"schlenk\" "
-                                      f"(ISO/TR 14179-2), got {value!r}.")
+            raise reader.error(at_key(where, "losses.friction"),
+                               f"expected a coefficient such as 0.05 or \"schlenk\" "
+                               f"(ISO/TR 14179-2), got {short(value)}.")
         if lubricant is None:
             raise reader.error(where, "friction = \"schlenk\" needs the oil: add a top-level [lubricant] table with "
                                       "'viscosity' (mPa*s at the operating temperature).")
@@ -262,8 +274,9 @@ def _friction(reader, table, lubricant: Lubricant | None, where: str):
         raise reader.error(where, "key 'roughness' is for friction = \"schlenk\"; a given coefficient needs none.")
     mu = reader.number(value, "losses.friction", where)
     if not 0.0 <= mu < 1.0:
-        raise reader.error(where, f"key 'losses.friction': expected a coefficient of friction in [0, 1) "
-                                  f"(typically 0.03-0.08), got {value!r}.")
+        raise reader.error(at_key(where, "losses.friction"),
+                           f"expected a coefficient of friction in [0, 1) "
+                           f"(typically 0.03-0.08), got {short(value)}.")
     return ConstantFriction(mu)
 
 
@@ -278,7 +291,8 @@ def _bearing(reader, value, where: str) -> PlanetBearing:
         return PlanetBearing(bore, reader.number(table["friction"], "losses.bearing.friction", where))
     kind = table.get("type", "needle roller")
     if not isinstance(kind, str):
-        raise reader.error(b_where, f"key 'type': expected a bearing type such as \"needle roller\", got {kind!r}.")
+        raise reader.error(at_key(b_where, "type"),
+                           f"expected a bearing type such as \"needle roller\", got {short(kind)}.")
     return PlanetBearing(bore, kind)
 
 
@@ -286,17 +300,19 @@ def _drag(reader, value, where: str) -> tuple[DragTorque, ...]:
     if isinstance(value, dict):
         value = [value]
     if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
-        raise reader.error(where, f"key 'losses.drag': expected a table or array of tables such as "
-                                  f"[{{ member = \"carrier\", coefficients = [0.0, 2e-5] }}], got {value!r}.")
+        raise reader.error(at_key(where, "losses.drag"),
+                           f"expected a table or array of tables such as "
+                           f"[{{ member = \"carrier\", coefficients = [0.0, 2e-5] }}], got {short(value)}.")
     out = []
     for k, term in enumerate(value):
-        d_where = f"{where}, key 'drag[{k}]'"
+        d_where = f"{where}, drag[{k}]"
         reader.check_keys(term, _DRAG_KEYS, d_where)
         member = reader.string(term, "member", d_where)
         coefficients = reader.require(term, "coefficients", d_where)
         if not isinstance(coefficients, list) or not coefficients:
-            raise reader.error(d_where, f"key 'coefficients': expected a list [c0, c1, c2, ...] (N*m, N*m per 1/min, "
-                                        f"...), got {coefficients!r}.")
+            raise reader.error(at_key(d_where, "coefficients"),
+                               f"expected a list [c0, c1, c2, ...] (N*m, N*m per "
+                               f"1/min, ...), got {short(coefficients)}.")
         numbers = [reader.number(c, f"drag[{k}].coefficients[{j}]", d_where) for j, c in enumerate(coefficients)]
         out.append(DragTorque(member, numbers, term.get("relative_to", "housing")))
     return tuple(out)

@@ -3,10 +3,10 @@
 The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
 (core units) with every dimensioned number converted into the chosen
 :class:`~epicyclic.units.Units`, wrapped with metadata.  Layout (schema
-``"epicyclic-report/2"``, documented in ``docs/file-format.md``)::
+``"epicyclic-report/3"``, documented in ``docs/file-format.md``)::
 
     {
-      "schema": "epicyclic-report/2",
+      "schema": "epicyclic-report/3",
       "generator": "epicyclic 0.1.0",
       "title": str, "source": str | null,
       "units": {"speed": str, "torque": str, "power": str},
@@ -63,7 +63,7 @@ from ..units import Units
 __all__ = ["SCHEMA", "report_dict", "report_data", "json_report"]
 
 #: Identifier of the layout; bumped on any incompatible change.
-SCHEMA = "epicyclic-report/2"
+SCHEMA = "epicyclic-report/3"
 
 
 def _convert_solution(data: dict[str, Any], units: Units) -> dict[str, Any]:
