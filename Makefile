@@ -5,7 +5,7 @@ VENV   ?= .venv
 PY      = $(VENV)/bin/python
 STAMP   = $(VENV)/.installed
 
-.PHONY: demo test bench clean chromium
+.PHONY: demo test bench gallery clean chromium
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -19,6 +19,11 @@ demo: $(STAMP)
 
 test: $(STAMP) chromium
 	$(PY) -m pytest -q src tests
+
+# Every example × every kind of picture into docs/gallery/ and docs/gallery.md; the figures of docs/plotting.md.
+gallery: $(STAMP)
+	$(PY) docs/gallery/make_gallery.py
+	$(PY) docs/figures/make_figures.py
 
 # The browser tests (tests/web/test_browser.py) drive Debian's chromium through chromium-driver:
 # install both when missing (CI runs on a fresh Debian machine as root); nothing to do when present.

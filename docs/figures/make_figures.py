@@ -1,7 +1,8 @@
 """Regenerate the pictures of docs/plotting.md: ``.venv/bin/python docs/figures/make_figures.py``.
 
 Brandenberger 1952, Bild 10 example (the Bild 8 situation: system I drives
-relative to the carrier) and a simple set (30/24/78, ring held, sun drives).
+relative to the carrier; in the paper's units U/min, kp·cm, PS) and a simple
+set (30/24/78, ring held, sun drives).  ``make gallery`` runs this too.
 """
 
 from __future__ import annotations
@@ -12,29 +13,26 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-from epicyclic import solve  # noqa: E402
-from epicyclic.demo import brandenberger_1952  # noqa: E402
 from epicyclic.io import load_train_file  # noqa: E402
-from epicyclic.plotting import KINDS, planetary_animation, save_plot  # noqa: E402
+from epicyclic.plotting import KINDS, figure_subject, planetary_animation, save_plot  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 
 
 def main() -> None:
-    cases = {
-        "brandenberger": solve(*brandenberger_1952()),
-        "simple": load_train_file(ROOT / "examples" / "simple_set_ring_held_sun_drives.toml").solve(),
-    }
-    for name, solution in cases.items():
+    cases = {name: figure_subject(load_train_file(ROOT / "examples" / f"{stem}.toml"))
+             for name, stem in (("brandenberger", "brandenberger_1952"), ("simple", "simple_set_ring_held_sun_drives"))}
+    for name, s in cases.items():
         for kind in KINDS:
-            print(save_plot(solution, kind, HERE / f"{name}_{kind}.png", dpi=90))
-    simple = cases["simple"]
-    print(planetary_animation(simple).save(HERE / "simple_animation.svg"))
-    print(planetary_animation(simple, willis=True).save(HERE / "simple_willis.svg"))
-    print(planetary_animation(simple, frames=32, fps=12).gif(HERE / "simple_animation.gif", dpi=50))
-    print(planetary_animation(cases["brandenberger"], frames=32, fps=12).gif(HERE / "brandenberger_animation.gif",
-                                                                            dpi=50))
+            print(save_plot(s.solution, kind, HERE / f"{name}_{kind}.png", dpi=90, context=s.context))
+    simple, brandenberger = cases["simple"], cases["brandenberger"]
+    print(planetary_animation(simple.solution, context=simple.context).save(HERE / "simple_animation.svg"))
+    print(planetary_animation(simple.solution, willis=True, context=simple.context).save(HERE / "simple_willis.svg"))
+    print(planetary_animation(simple.solution, frames=32, fps=12, size=300, context=simple.context)
+          .gif(HERE / "simple_animation.gif", dpi=60))
+    print(planetary_animation(brandenberger.solution, frames=32, fps=12, size=300, context=brandenberger.context)
+          .gif(HERE / "brandenberger_animation.gif", dpi=60))
 
 
 if __name__ == "__main__":

@@ -57,6 +57,7 @@ __all__ = [
     "DPI_RANGE",
     "FRAMES_RANGE",
     "FPS_RANGE",
+    "SIZE_RANGE",
     "check_range",
     "check_count",
 ]
@@ -118,6 +119,8 @@ DPI_RANGE = (20, 600)
 FRAMES_RANGE = (2, 240)
 #: ``animate --fps`` (frames per second).
 FPS_RANGE = (1, 60)
+#: ``animate --size``: width of the SVG or GIF in pixels.
+SIZE_RANGE = (120, 2000)
 
 
 class LimitError(EpicyclicError, ValueError):

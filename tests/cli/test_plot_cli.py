@@ -38,10 +38,38 @@ def test_plot_png_and_pdf(suffix, magic, tmp_path):
 
 
 def test_lever_of_a_transmission_without_operating_point(tmp_path):
+    # A transmission file plots as it is: unit input speed and torque, said on the figure.
     out = tmp_path / "lever.svg"
     result = run("plot", str(EXAMPLES / "simpson_c4_3speed.toml"), "-k", "lever", "--gear", "1", "-o", str(out))
     assert result.exit_code == 0, result.output
-    assert "compound lever" in out.read_text()
+    text = out.read_text()
+    assert "compound lever" in text and "gear 1: forward + low_reverse engaged" in text
+    assert "unit input n_in = 1 1/min, T_in = 1 N·m" in text
+
+
+@pytest.mark.parametrize("kind", ["speed", "torque", "power", "lever", "flow", "chart"])
+def test_every_kind_of_a_transmission_in_a_gear(kind, tmp_path):
+    out = tmp_path / f"{kind}.svg"
+    result = run("plot", str(EXAMPLES / "zf_8hp70_8speed.toml"), "-k", kind, "--gear", "3", "-o", str(out))
+    assert result.exit_code == 0, result.output
+    assert "gear 3" in out.read_text()
+
+
+def test_a_file_with_nothing_to_solve_is_bad_input(tmp_path):
+    train = tmp_path / "t.toml"
+    train.write_text('[[planetary]]\nname = "P"\nsun = "s"\nring = "r"\ncarrier = "c"\nstationary_ratio = -2\n')
+    result = run("plot", str(train), "-o", str(tmp_path / "x.svg"))
+    assert result.exit_code == 2
+    assert "no [operating_point] table and no [transmission] table" in " ".join(result.output.split())
+
+
+def test_animation_size(tmp_path):
+    out = tmp_path / "a.svg"
+    result = run("animate", str(EXAMPLES / "zf_8hp70_8speed.toml"), "--gear", "2", "--set", "P4", "--size", "300",
+                 "-o", str(out))
+    assert result.exit_code == 0, result.output
+    text = out.read_text()
+    assert 'width="300"' in text and "schematic simple set" in text and "gear 2" in text
 
 
 def test_animate_html_and_gif(tmp_path):
@@ -60,7 +88,9 @@ def test_animate_html_and_gif(tmp_path):
     (["plot", BRANDENBERGER, "--out", "x.txt"], "suffix '.txt'; expected one of .svg, .png, .pdf"),
     (["animate", BRANDENBERGER, "--out", "x.mp4"], "suffix '.mp4'; expected one of .svg, .html, .gif"),
     (["animate", BRANDENBERGER, "--set", "nope"], "no planetary set named 'nope'"),
-    (["plot", str(EXAMPLES / "zf_8hp70_8speed.toml"), "-k", "power"], "no \\[operating_point\\] table"),
+    (["plot", str(EXAMPLES / "zf_8hp70_8speed.toml"), "--gear", "9"], "no gear '9' in the \\[transmission\\] schedule; gears are '1', '2'"),
+    (["plot", str(EXAMPLES / "brandenberger_1952.toml"), "-k", "chart"], "speed chart shows every gear"),
+    (["animate", BRANDENBERGER, "--size", "50"], "--size"),
     (["plot", "missing.toml"], "no such file"),
     (["plot", BRANDENBERGER, "--gear", "2"], "needs a \\[transmission\\] table"),
 ])

@@ -77,12 +77,12 @@ def test_html_uses_plotting_figures_when_available(monkeypatch, brandenberger):
 
     f, s = brandenberger
     fake = types.ModuleType("epicyclic.plotting")
-    fake.report_figures = lambda solution: [("Speed plan", "<svg xmlns='http://www.w3.org/2000/svg'></svg>")]
+    fake.report_figures = lambda solution, **frame: [("Speed plan", "<svg xmlns='http://www.w3.org/2000/svg'></svg>")]
     monkeypatch.setitem(sys.modules, "epicyclic.plotting", fake)
     page = html_report(s, f.units)
     assert "<figcaption>Speed plan</figcaption><svg" in page
 
-    def broken(solution):
+    def broken(solution, **frame):
         raise RuntimeError("no ink")
 
     fake.report_figures = broken

@@ -4,7 +4,7 @@ import pytest
 
 from epicyclic import Brake, Clutch, GearTrain, OperatingPoint, PlanetarySet, solve
 from epicyclic.plotting import PlottingError
-from epicyclic.plotting.lever import compound_lever, lever_diagram
+from epicyclic.plotting.lever import compound_lever, free_levers, lever_diagram
 
 
 def _simpson():
@@ -89,20 +89,24 @@ def test_free_compound_train_combines_and_shows_links():
 
 
 def test_three_free_speeds_give_no_compound_lever():
+    # Two sets joined only through an open clutch: two levers, no common one.
     train = GearTrain([
         PlanetarySet("P1", "a", "b", "c", -2.0), PlanetarySet("P2", "d", "e", "f", -3.0), Clutch("K", "c", "d"),
     ])
     assert compound_lever(train) is None
-    fig = lever_diagram(train=train).plot()
-    assert "no single compound lever" in " ".join(t.get_text() for t in fig.axes[1].texts)
+    d = lever_diagram(train=train)
+    assert [c.elements for c in d.free] == [("P1",), ("P2",)] and d.speed_levers == d.free
+    fig = d.plot()
+    assert len(fig.axes) == 1  # no speeds without a solution: the levers only
 
 
 def test_figure_and_data(brandenberger):
     d = lever_diagram(brandenberger)
     fig = d.plot()
     left, right = fig.axes
-    assert "1/min" in right.get_xlabel() and left.get_ylabel() and right.get_legend() is not None
-    assert left.get_legend() is not None
+    assert "1/min" in right.get_xlabel() and left.get_ylabel()
+    labels = " ".join(t.get_text() for t in right.texts)
+    assert "II (input): 1500 1/min" in labels and "I (output)" in labels
     assert d.to_dict()["compound"]["speeds"]["II"] == 1500.0
     assert "compound lever" in repr(d)
 
@@ -133,3 +137,100 @@ def test_gear_ratio_read_from_the_compound_lever(example, gear, published):
     p = lever.positions
     ratio = (p[tr.input] - p["housing"]) / (p[tr.output] - p["housing"])
     assert ratio == pytest.approx(published, abs=0.005)
+
+
+# --- published levers -------------------------------------------------------------------------
+# Benford & Leising 1981 (SAE 810102) build a gearset's lever from its tooth counts: a simple set is a
+# lever sun–carrier–ring with sun–carrier : carrier–ring = z_ring : z_sun; a dual-pinion set has the ring
+# between carrier and sun with carrier–ring : ring–sun = z_sun : (z_ring − z_sun); sets sharing two
+# members combine into one lever.  The heights below are that construction by hand; the code finds
+# them from the null space of the Willis equations.  Tolerance 1e-12 (both exact for these teeth).
+
+def _relative(positions, zero, one):
+    """Heights as fractions of the distance from node ``zero`` to node ``one`` (orientation-free)."""
+    span = positions[one] - positions[zero]
+    return {s: (y - positions[zero]) / span for s, y in positions.items()}
+
+
+def test_simpson_ford_c4_lever_is_benford_leising():
+    # Ford C4: sun 33, ring 72 in both sets (sources in examples/simpson_c4_3speed.toml).  Front set on
+    # its own: sun 0, front carrier (output) at z_r = 72, front ring at z_r + z_s = 105.  Rear set scaled
+    # to share sun and output: rear carrier at 72·72/105, output (its ring) at 72.
+    from epicyclic.io import load_train_file
+
+    train = load_train_file(EXAMPLES / "simpson_c4_3speed.toml").train
+    (lever,) = lever_diagram(train=train).free
+    got = _relative(lever.positions, "sun", "front_ring")
+    expected = {"sun": 0.0, "rear_carrier": 72 * 72 / 105 / 105, "out": 72 / 105, "front_ring": 1.0}
+    assert got == pytest.approx(expected, abs=1e-12)
+    # and the published ratios follow by turning it about the held node: 1st (rear carrier held) 2.46,
+    # 2nd (sun held) 1.46, reverse (input at the sun, rear carrier held) −2.18 (C4 sources in the file)
+    h = got["rear_carrier"]
+    assert (1 - h) / (got["out"] - h) == pytest.approx(2.46, abs=0.005)
+    assert 1 / got["out"] == pytest.approx(1.46, abs=0.005)
+    assert (0 - h) / (got["out"] - h) == pytest.approx(-2.18, abs=0.005)
+
+
+def test_ravigneaux_ford_aod_lever_is_benford_leising():
+    # Ford AOD: forward sun 30 (dual pinion), reverse sun 36 (long pinion only), ring 72 (ATRA TSB 89-30).
+    # Reverse set: reverse sun 0, carrier 72, ring 108.  Dual-pinion set: carrier–ring : ring–forward sun
+    # = 30 : 42, scaled to carrier–ring = 36: forward sun at 108 + 50.4 = 158.4.
+    from epicyclic.io import load_train_file
+
+    train = load_train_file(EXAMPLES / "ravigneaux_ford_aod_4speed.toml").train
+    (lever,) = lever_diagram(train=train).free
+    got = _relative(lever.positions, "reverse_sun", "forward_sun")
+    expected = {"reverse_sun": 0.0, "carrier": 72 / 158.4, "ring": 108 / 158.4, "forward_sun": 1.0}
+    assert got == pytest.approx(expected, abs=1e-12)
+    # ATRA TSB 89-30: 1st = z_ring/z_forward_sun = 2.4 (carrier held, forward sun in, ring out)
+    c = got["carrier"]
+    assert (1 - c) / (got["ring"] - c) == pytest.approx(72 / 30, rel=1e-12)
+
+
+def test_prius_gen2_lever_gives_the_published_speed_relation():
+    # Toyota Prius Gen 2 (NHW20): power-split set sun 30 (MG1), carrier (engine), ring 78 on MG2.
+    # Published: "MG1 = 3.6 x ICE - 2.6 x MG2" (G. Davies, prius.ecrostech.com; quoted at
+    # cap-lore.com/Hardware/Prius.html).  On the lever every speed is n = α + β·Y, so
+    # n_MG1 = a·n_engine + (1 − a)·n_MG2 with a = (Y_MG1 − Y_MG2)/(Y_engine − Y_MG2).
+    psd = PlanetarySet.simple("PSD", sun="mg1", ring="mg2", carrier="engine", z_sun=30, z_planet=23, z_ring=78)
+    (lever,) = free_levers(GearTrain([psd]))
+    y = lever.positions
+    a = (y["mg1"] - y["mg2"]) / (y["engine"] - y["mg2"])
+    assert (a, 1 - a) == pytest.approx((3.6, -2.6), abs=1e-12)
+    # the same relation in a solved state: engine 2000, MG2 3000 → MG1 = 7200 − 7800 = −600 1/min
+    sol = solve(GearTrain([psd]), OperatingPoint(speeds={"engine": 2000.0, "mg2": 3000.0}, torques={"engine": 100.0},
+                                                 drives=["engine"], connected=["mg1", "mg2"]))
+    assert sol.speed("mg1") == pytest.approx(-600.0, abs=1e-9)
+
+
+@pytest.mark.parametrize(("example", "levers"), [
+    # free state: the sets merge where they share two members, and only there
+    ("simpson_c4_3speed", [("front", "rear")]),
+    ("ravigneaux_ford_aod_4speed", [("Pfwd", "Prev")]),
+    ("lepelletier_zf_6hp26_6speed", [("P1",), ("P2", "P3")]),
+    ("zf_8hp70_8speed", [("P1",), ("P2",), ("P3",), ("P4",)]),
+    ("toyota_prius_power_split", [("PSD",), ("MSR", "counter", "final")]),
+    ("brandenberger_1952", [("planetary", "stage")]),
+])
+def test_free_state_levers_from_the_kinematics(example, levers):
+    from epicyclic.io import load_train_file
+
+    train = load_train_file(EXAMPLES / f"{example}.toml").train
+    assert [c.elements for c in free_levers(train)] == levers
+
+
+@pytest.mark.parametrize("gear", ["1", "2", "3", "4", "5", "6", "7", "8", "R"])
+def test_8hp_reduced_lever_in_every_gear(gear):
+    # ZF 8HP 70: the free state has four levers, but every gear (three shift elements engaged) has one
+    # reduced lever holding every shaft; the ratio read from it is the published one (4 decimals).
+    from epicyclic.transmission.library import build, entry
+
+    t = build("zf_8hp70")
+    lever = compound_lever(t.gear_train(gear))
+    if gear == "6":  # direct drive, no brake: the whole train turns as one block, the lever shrinks to a point
+        assert lever is None and list(t.speeds(gear).values()) == pytest.approx([1.0] * (len(t.train.shafts) - 1) + [0.0])
+        return
+    assert lever is not None and set(lever.positions) == set(t.train.shafts)
+    p = lever.positions
+    ratio = (p["in"] - p["housing"]) / (p["out"] - p["housing"])
+    assert ratio == pytest.approx(entry("zf_8hp70").published_ratios[gear], abs=5e-5)

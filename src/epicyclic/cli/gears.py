@@ -52,15 +52,33 @@ def gears(
     out: OutOption = None,
     detail: Annotated[bool, typer.Option("--detail", help="Also list every shift element and set per gear.")] = False,
 ) -> None:
-    """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread."""
+    """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread.
+
+    With ``-f html``: one self-contained page styled like ``analyze -f html``, with every gear's detail,
+    its lever diagram and the speed chart across gears.
+    """
     transmission = Transmission.from_file(file)
     try:
         analysis = transmission.analyze_all()
     except EpicyclicError as exc:  # name the gear: the file has no [operating_point] to blame
         raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission)}'!r}") from None
     check_finite(analysis.to_dict(), file)
+    if format is OutputFormat.html:
+        emit(_gears_html(file, transmission, analysis), out)
+        return
     detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
     emit(_render(analysis, format, detail_text), out)
+
+
+def _gears_html(file: Path, transmission, analysis) -> str:
+    import matplotlib
+
+    from ..io import load_train_file
+    from ..io.gears_report import gears_html
+
+    matplotlib.use("Agg")  # files only: no display needed
+    spec = load_train_file(file)
+    return gears_html(transmission, analysis, spec.units, title=spec.title or None, source=str(file))
 
 
 @guarded

@@ -44,7 +44,8 @@ figcaption{font-weight:600;margin-bottom:.3rem}svg{max-width:100%;height:auto}
 """
 
 
-def report_figures(solution: Solution) -> tuple[list[tuple[str, str]], str | None]:
+def report_figures(solution: Solution, units: Units | None = None, title: str | None = None
+                   ) -> tuple[list[tuple[str, str]], str | None]:
     """Diagrams from :mod:`epicyclic.plotting` if available.
 
     Returns
@@ -58,7 +59,7 @@ def report_figures(solution: Solution) -> tuple[list[tuple[str, str]], str | Non
     except ImportError:
         return [], "diagrams need epicyclic.plotting.report_figures, which is not available"
     try:
-        return list(make_figures(solution)), None
+        return list(make_figures(solution, units=units, title=title)), None
     except Exception as exc:  # a diagram must not cost the user the whole report
         return [], f"diagrams could not be drawn ({type(exc).__name__}: {exc})"
 
@@ -141,7 +142,7 @@ def html_report(
         parts.append(sections)
 
     if figures:
-        found, note = report_figures(solution)
+        found, note = report_figures(solution, units, name)
         if found:
             parts.append("<h2>Diagrams</h2>")
             for caption, svg in found:

@@ -21,18 +21,29 @@ from typing import TYPE_CHECKING, Any
 
 from ._common import FIGURE_SUFFIXES, PlottingError, figure_svg, save_figure
 from .animation import PlanetaryAnimation, planetary_animation
+from .context import FigureContext
 from .diagrams import PowerDiagram, TorqueDiagram, power_diagram, torque_diagram
 from .flow import PowerFlow, power_flow
-from .lever import CompoundLever, LeverDiagram, compound_lever, lever_diagram
-from .speed_plan import RangeDiagram, SpeedPlan, plot_speed_plan, range_diagram, set_layout, speed_plan
+from .lever import CompoundLever, LeverDiagram, compound_lever, free_levers, lever_diagram
+from .ranges import RangeDiagram, range_diagram
+from .speed_chart import SpeedChart, speed_chart
+from .speed_plan import SpeedPlan, plot_speed_plan, set_layout, speed_plan
+from .subject import Subject, figure_subject
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
 
 __all__ = [
     "KINDS",
+    "ALL_KINDS",
     "FIGURE_SUFFIXES",
     "CompoundLever",
+    "FigureContext",
+    "SpeedChart",
+    "Subject",
+    "figure_subject",
+    "free_levers",
+    "speed_chart",
     "LeverDiagram",
     "PlanetaryAnimation",
     "PlottingError",
@@ -58,17 +69,34 @@ __all__ = [
     "torque_diagram",
 ]
 
-#: The kinds of picture :func:`figure` draws.
+#: The kinds of picture :func:`figure` draws of any solved train.
 KINDS = ("speed", "torque", "power", "lever", "flow")
+#: With the speed chart across gears, which needs a transmission.
+ALL_KINDS = (*KINDS, "chart")
 
 
-def figure(solution: Solution, kind: str) -> Any:
-    """A matplotlib figure of one kind: speed, torque, power, lever or flow.
+def figure(solution: Solution, kind: str, *, context: FigureContext | None = None, transmission: Any = None,
+           gear: str | None = None) -> Any:
+    """A matplotlib figure of one kind: speed, torque, power, lever, flow or chart.
+
+    Parameters
+    ----------
+    solution : Solution
+    kind : str
+        One of :data:`ALL_KINDS`.
+    context : FigureContext, optional
+        Title, units, gear and notes (default: the train's name, 1/min, N·m, W).
+    transmission : epicyclic.transmission.Transmission, optional
+        Marks input and output on the lever, draws every gear's speed line
+        where the free state is one lever; needed for ``"chart"``.
+    gear : str, optional
+        The gear shown (named in the title, highlighted).
 
     Raises
     ------
     PlottingError
-        Unknown kind, or a speed plan of a train without planetary set.
+        Unknown kind, a speed plan of a train without planetary set, a chart
+        without transmission.
 
     Examples
     --------
@@ -79,29 +107,43 @@ def figure(solution: Solution, kind: str) -> Any:
     >>> len(fig.axes)
     4
     """
+    from dataclasses import replace
+
+    context = context or FigureContext(title=solution.train.name)
+    if gear is not None and context.gear is None:
+        context = replace(context, gear=gear)
+    gear = context.gear
     if kind == "speed":
-        return plot_speed_plan(solution)
+        return plot_speed_plan(solution, context=context)
     if kind == "torque":
-        return torque_diagram(solution).plot()
+        return torque_diagram(solution, context=context).plot()
     if kind == "power":
-        return power_diagram(solution).plot()
+        return power_diagram(solution, context=context).plot()
     if kind == "lever":
-        return lever_diagram(solution).plot()
+        return lever_diagram(solution, transmission=transmission, gear=gear, context=context).plot()
     if kind == "flow":
-        return power_flow(solution).plot()
-    raise PlottingError(f"plot: kind must be one of {', '.join(KINDS)}, got {kind!r}.")
+        return power_flow(solution, context=context).plot()
+    if kind == "chart":
+        if transmission is None:
+            raise PlottingError(f"plot: the speed chart shows every gear of a transmission; train "
+                                f"{solution.train.name!r} has none (add a [transmission] table with a schedule).")
+        return speed_chart(transmission, gear=gear, context=context).plot()
+    raise PlottingError(f"plot: kind must be one of {', '.join(ALL_KINDS)}, got {kind!r}.")
 
 
-def save_plot(solution: Solution, kind: str, path: str | Path, *, dpi: int = 150) -> Path:
-    """Draw ``kind`` and write it to ``path`` (.svg, .png or .pdf)."""
+def save_plot(solution: Solution, kind: str, path: str | Path, *, dpi: int = 150, **options: Any) -> Path:
+    """Draw ``kind`` (options as for :func:`figure`) and write it to ``path`` (.svg, .png or .pdf)."""
     from ._common import check_suffix
 
     check_suffix(path, FIGURE_SUFFIXES, "plot")
-    return save_figure(figure(solution, kind), path, dpi=dpi)
+    return save_figure(figure(solution, kind, **options), path, dpi=dpi)
 
 
-def report_figures(solution: Solution) -> list[tuple[str, str]]:
+def report_figures(solution: Solution, *, units: Any = None, title: str | None = None) -> list[tuple[str, str]]:
     """Every picture of a solution as (title, inline SVG text) for the HTML report.
+
+    ``units`` (:class:`~epicyclic.units.Units`, the file's) and ``title`` frame
+    the figures as the report's tables are.
 
     The SVG texts start with ``<svg`` (no XML prolog) and contain no scripts
     or external references.  Pictures that do not apply (a speed plan without
@@ -125,13 +167,16 @@ def report_figures(solution: Solution) -> list[tuple[str, str]]:
         "lever": "Lever diagram",
         "flow": "Power flow",
     }
+    from ..units import Units
+
+    context = FigureContext(title=title or solution.train.name, units=units or Units())
     out: list[tuple[str, str]] = []
     has_sets = bool(solution.train.planetary_sets)
     for kind in KINDS:
         if kind == "speed" and not has_sets:
             continue
-        out.append((titles[kind], figure_svg(figure(solution, kind))))
+        out.append((titles[kind], figure_svg(figure(solution, kind, context=context))))
     if has_sets:
-        anim = planetary_animation(solution)
+        anim = planetary_animation(solution, context=context)
         out.append((f"Animation of set {anim.set_name}", anim.svg()))
     return out

@@ -113,7 +113,8 @@ def hatch_legend(ax: Any, roles: list[str], **kwargs: Any) -> Any:
 
 
 #: Colour cycle for shafts / members (colour-blind friendly, Okabe–Ito).
-SHAFT_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442")
+#: The Okabe–Ito yellow is replaced by a dark gold that stays visible as a thin line on white.
+SHAFT_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#8C6D1F")
 
 
 class PlottingError(EpicyclicError, ValueError):
@@ -186,10 +187,16 @@ def check_suffix(path: str | Path, allowed: tuple[str, ...], what: str) -> Path:
 
 
 def save_figure(fig: Any, path: str | Path, *, dpi: int = 150) -> Path:
-    """Write ``fig`` to ``path`` (.svg, .png or .pdf by suffix) and close it."""
+    """Write ``fig`` to ``path`` (.svg, .png or .pdf by suffix) and close it.
+
+    In SVG, text stays text (searchable, small), as in :func:`figure_svg`.
+    """
+    import matplotlib
+
     path = check_suffix(path, FIGURE_SUFFIXES, "save figure")
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=dpi, bbox_inches="tight")
+    with matplotlib.rc_context({"svg.fonttype": "none", "svg.hashsalt": "epicyclic"}):
+        fig.savefig(path, dpi=dpi, bbox_inches="tight")
     pyplot().close(fig)
     return path
 
@@ -228,11 +235,3 @@ def planetary_set(solution: Solution, name: str | None) -> PlanetarySet:
         f"train {solution.train.name!r}: no planetary set named {name!r}; planetary sets are "
         f"{', '.join(repr(s.name) for s in sets)}."
     )
-
-
-def fmt(value: float, digits: int = 4) -> str:
-    """A compact number for labels (``-0`` shown as ``0``)."""
-    if 10 ** (digits - 1) <= abs(value) < 1e12:
-        return f"{value:.0f}"
-    text = f"{value:.{digits}g}"
-    return "0" if re.fullmatch(r"-0(\.0*)?", text) else text

@@ -1,29 +1,38 @@
-"""Drawing of :class:`~epicyclic.plotting.animation.PlanetaryAnimation`: SMIL SVG and GIF.
+"""Drawing of a planetary animation: SMIL SVG and GIF.
 
 The SVG rotates each member with ``animateTransform`` (type ``rotate``): sun
 and ring about the centre, the carrier group (arms and planets) about the
 centre, each planet inside it about its own axis at its speed *relative to
 the carrier*, so the absolute planet speed is the sum (the Willis
 superposition).  No scripts, no external references.
+
+Everything is sized from the drawing: the set's outer radius ``R`` sets the
+stroke widths (a few thousandths of ``R``), the font size and the caption,
+which is wrapped to the drawing's width and lies inside the canvas.  The
+drawing takes the animation object duck-typed: this module does not import
+:mod:`.animation` (that one imports this lazily).
 """
 
 from __future__ import annotations
 
 import html
 import math
+import textwrap
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from ._common import SHAFT_COLOURS, fmt, pyplot
-from .animation import WILLIS_PHASES, GearShape, gear_outline
+from ._common import SHAFT_COLOURS, pyplot
+from ._gears import WILLIS_PHASES, GearShape, extent, gear_outline
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .animation import PlanetaryAnimation
-
-__all__ = ["animation_svg", "write_gif"]
+__all__ = ["animation_svg", "write_gif", "STROKE"]
 
 COLOURS = {"sun": SHAFT_COLOURS[0], "ring": SHAFT_COLOURS[1], "carrier": SHAFT_COLOURS[2],
            "planet": SHAFT_COLOURS[3], "planet2": SHAFT_COLOURS[4]}
+#: Stroke widths as fractions of the set's outer radius R.
+STROKE = {"outline": 0.004, "mark": 0.006, "dash": 0.008, "arm": 0.05}
+#: Font size of the caption as a fraction of R; characters are about 0.56 font sizes wide.
+FONT = 0.058
+CHAR = 0.56
 
 
 def _path(points: list[tuple[float, float]]) -> str:
@@ -32,21 +41,12 @@ def _path(points: list[tuple[float, float]]) -> str:
 
 def _ring_path(shape: GearShape) -> str:
     outline = gear_outline(shape.teeth, shape.radius, internal=True)
-    m = 2 * shape.radius / shape.teeth if shape.teeth else shape.radius * 0.05
-    outer = shape.radius + 3.5 * m
+    outer = shape.radius + 3.5 * shape.module
     circle = [(outer * math.cos(2 * math.pi * k / 96), outer * math.sin(2 * math.pi * k / 96)) for k in range(96)]
     return _path(circle) + " " + _path(outline)
 
 
-def _extent(anim: PlanetaryAnimation) -> float:
-    r = 0.0
-    for s in anim.shapes:
-        m = 2 * s.radius / s.teeth if s.teeth else 0.05 * s.radius
-        r = max(r, s.axis + s.radius + (3.5 * m if s.member == "ring" and s.internal else 1.5 * m))
-    return r * 1.05
-
-
-def _rotation(anim: PlanetaryAnimation, member: str, relative_to: str | None = None) -> str:
+def _rotation(anim: Any, member: str, relative_to: str | None = None) -> str:
     """animateTransform of a member (optionally relative to the carrier)."""
     if anim.willis:
         marks = [anim.angles(k * anim.phase_frames) for k in range(4)]
@@ -64,62 +64,82 @@ def _rotation(anim: PlanetaryAnimation, member: str, relative_to: str | None = N
             f'dur="{period:.9g}s" repeatCount="indefinite"/>')
 
 
-def _gear(shape: GearShape, colour: str) -> str:
+def _gear(shape: GearShape, colour: str, R: float) -> str:
+    sw = STROKE["outline"] * R
     if shape.member == "ring" and shape.internal:
-        body = f'<path d="{_ring_path(shape)}" fill="{colour}" fill-opacity="0.35" fill-rule="evenodd" stroke="black" stroke-width="0.3"/>'
-    elif shape.step or (shape.member == "ring" and not shape.internal):
-        body = (f'<path d="{_path(gear_outline(shape.teeth, shape.radius))}" fill="none" stroke="{colour}" '
-                f'stroke-width="1.0" stroke-dasharray="2 1"/>')
+        body = (f'<path d="{_ring_path(shape)}" fill="{colour}" fill-opacity="0.35" fill-rule="evenodd" '
+                f'stroke="black" stroke-width="{sw:.4g}"/>')
+    elif shape.step:  # second gear of a stepped planet: drawn over the first, outlined and half transparent
+        body = (f'<path d="{_path(gear_outline(shape.teeth, shape.radius))}" fill="{COLOURS["planet2"]}" '
+                f'fill-opacity="0.35" stroke="{colour}" stroke-width="{STROKE["dash"] * R:.4g}" '
+                f'stroke-dasharray="{0.03 * R:.4g} {0.015 * R:.4g}"/>')
+    elif shape.member == "ring":  # an external second central gear
+        body = (f'<path d="{_path(gear_outline(shape.teeth, shape.radius))}" fill="{colour}" fill-opacity="0.3" '
+                f'stroke="{colour}" stroke-width="{STROKE["dash"] * R:.4g}" '
+                f'stroke-dasharray="{0.03 * R:.4g} {0.015 * R:.4g}"/>')
     else:
         body = (f'<path d="{_path(gear_outline(shape.teeth, shape.radius))}" fill="{colour}" fill-opacity="0.55" '
-                f'stroke="black" stroke-width="0.3"/>')
+                f'stroke="black" stroke-width="{sw:.4g}"/>')
     mark = 0.8 * shape.radius
-    return body + f'<line x1="0" y1="0" x2="{mark:.3f}" y2="0" stroke="black" stroke-width="0.5"/>'
+    return body + (f'<line x1="0" y1="0" x2="{mark:.3f}" y2="0" stroke="black" '
+                   f'stroke-width="{STROKE["mark"] * R:.4g}"/>')
 
 
-def animation_svg(anim: PlanetaryAnimation) -> str:
+def caption_lines(anim: Any, width_chars: int) -> list[str]:
+    """The heading and caption, wrapped to ``width_chars`` characters per line."""
+    out: list[str] = []
+    for line in [*anim.heading.split("\n"), *anim.caption()]:
+        out += textwrap.wrap(line, width_chars) or [""]
+    return out
+
+
+def animation_svg(anim: Any) -> str:
     """The animated SVG text (see module docs)."""
-    R = _extent(anim)
-    caption_h = 0.55 * R
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{-R:.3f} {-R:.3f} {2 * R:.3f} {2 * R + caption_h:.3f}" '
-           f'width="520" role="img" aria-label="animation of planetary set {html.escape(anim.set_name)}">',
-           f"<title>{html.escape(anim.set_name)}: planetary set at the solved speeds</title>",
+    R = extent(anim.shapes)
+    size = FONT * R
+    width = 2 * R
+    lines = caption_lines(anim, max(20, int((width - 2 * size) / (CHAR * size))))
+    caption_h = (1.35 * len(lines) + (2.0 if anim.willis else 0.6)) * size
+    height = 2 * R + caption_h
+    px = anim.size
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{-R:.3f} {-R:.3f} {width:.3f} {height:.3f}" '
+           f'width="{px}" height="{px * height / width:.0f}" role="img" '
+           f'aria-label="animation of planetary set {html.escape(anim.set_name)}">',
+           f"<title>{html.escape(anim.heading or anim.set_name)}</title>",
            '<g transform="scale(1,-1)">']
     for shape in anim.shapes[:2]:  # the central gears, in drawing order
         member = shape.member
-        out.append(f'<g transform="rotate({shape.phase:.4f})"><g>{_gear(shape, COLOURS[member])}'
+        out.append(f'<g transform="rotate({shape.phase:.4f})"><g>{_gear(shape, COLOURS[member], R)}'
                    f'{_rotation(anim, member)}</g></g>')
     out.append("<g>")  # carrier
     axes = sorted({(s.axis, s.offset) for s in anim.shapes if s.member.startswith("planet")})
     for axis, offset in axes:
         x, y = axis * math.cos(math.radians(offset)), axis * math.sin(math.radians(offset))
-        out.append(f'<line x1="0" y1="0" x2="{x:.3f}" y2="{y:.3f}" stroke="{COLOURS["carrier"]}" stroke-width="{0.06 * R:.3f}" '
-                   'stroke-linecap="round" stroke-opacity="0.6"/>')
+        out.append(f'<line x1="0" y1="0" x2="{x:.3f}" y2="{y:.3f}" stroke="{COLOURS["carrier"]}" '
+                   f'stroke-width="{STROKE["arm"] * R:.4g}" stroke-linecap="round" stroke-opacity="0.6"/>')
     out.append(f'<circle r="{0.05 * R:.3f}" fill="{COLOURS["carrier"]}"/>')
     for shape in anim.shapes:
         if not shape.member.startswith("planet"):
             continue
+        colour = COLOURS[shape.member]
         out.append(f'<g transform="rotate({shape.offset:.4f}) translate({shape.axis:.4f},0)">'
                    f'<g transform="rotate({shape.phase - shape.offset:.4f})"><g>'
-                   f'{_gear(shape, COLOURS[shape.member])}{_rotation(anim, shape.member, "carrier")}</g></g>'
+                   f'{_gear(shape, colour, R)}{_rotation(anim, shape.member, "carrier")}</g></g>'
                    f'<circle r="{0.02 * R:.3f}" fill="black"/></g>')
     out.append(_rotation(anim, "carrier"))
     out.append("</g></g>")
-    # caption (not mirrored)
-    size = 0.055 * R
-    y = R + 1.2 * size
-    lines = [f"{anim.set_name}: " + ", ".join(f"{m} ({anim.shafts.get(m, m)}) {fmt(n, 5)} 1/min"
-                                              for m, n in anim.speeds.items() if m in ("sun", "ring", "carrier")),
-             ", ".join(f"{m} {fmt(n, 5)} 1/min" for m, n in anim.speeds.items() if m.startswith("planet"))
-             + f"; {anim.planets} planets; shown slowed down {fmt(anim.slowdown, 3)}×"]
+    y = R + 1.3 * size
+    heading = len(anim.heading.split("\n")[0]) if anim.heading else 0
     for k, text in enumerate(lines):
-        out.append(f'<text x="{-R + size:.3f}" y="{y + 1.3 * k * size:.3f}" font-size="{size:.3f}" '
-                   f'font-family="sans-serif">{html.escape(text)}</text>')
+        weight = ' font-weight="bold"' if k == 0 and heading else ""
+        out.append(f'<text x="{-R + size:.3f}" y="{y + 1.35 * k * size:.3f}" font-size="{size:.3f}" '
+                   f'font-family="sans-serif"{weight}>{html.escape(text)}</text>')
     if anim.willis:
         dur = 3 * anim.phase_frames / anim.fps
+        y_w = y + 1.35 * len(lines) * size + 0.2 * size
         for k, text in enumerate(WILLIS_PHASES):
             values = ";".join("1" if j == k else "0" for j in range(3))
-            out.append(f'<text x="{-R + size:.3f}" y="{y + 2.8 * size:.3f}" font-size="{1.2 * size:.3f}" '
+            out.append(f'<text x="{-R + size:.3f}" y="{y_w:.3f}" font-size="{1.1 * size:.3f}" '
                        f'font-family="sans-serif" font-weight="bold" opacity="{1 if k == 0 else 0}">'
                        f'Willis {html.escape(text)}<animate attributeName="opacity" values="{values}" '
                        f'keyTimes="0;{1 / 3:.6f};{2 / 3:.6f}" calcMode="discrete" dur="{dur:.6g}s" '
@@ -128,42 +148,46 @@ def animation_svg(anim: PlanetaryAnimation) -> str:
     return "\n".join(out)
 
 
-def write_gif(anim: PlanetaryAnimation, path: Path, dpi: int) -> Path:
-    """Render the frames with matplotlib and write them with PillowWriter."""
+def write_gif(anim: Any, path: Path, dpi: int) -> Path:
+    """Render the frames with matplotlib and write them with PillowWriter, ``anim.size`` pixels wide."""
     from matplotlib.animation import FuncAnimation, PillowWriter
     from matplotlib.patches import Polygon
     from matplotlib.transforms import Affine2D
 
     plt = pyplot()
-    R = _extent(anim)
-    fig, ax = plt.subplots(figsize=(5, 5.6))
+    R = extent(anim.shapes)
+    inches = anim.size / dpi
+    font = max(5.0, 0.025 * anim.size * 72 / dpi)  # points: 2.5 % of the width
+    lines = caption_lines(anim, max(20, int(anim.size / (CHAR * font * dpi / 72))))
+    caption = (len(lines) + 1.2) * 1.3 * font / 72  # inches
+    fig = plt.figure(figsize=(inches, inches + caption), dpi=dpi)
+    ax = fig.add_axes((0.0, caption / (inches + caption), 1.0, inches / (inches + caption)))
     ax.set_xlim(-R, R)
     ax.set_ylim(-R, R)
     ax.set_aspect("equal")
     ax.set_axis_off()
+    lw = max(0.5, STROKE["outline"] * anim.size * 72 / dpi)  # points, from the drawing's size
     patches: list[tuple[GearShape, Any]] = []
     for shape in anim.shapes:
-        colour = COLOURS[shape.member]
-        outline = gear_outline(shape.teeth, shape.radius, internal=shape.member == "ring" and shape.internal)
+        colour = COLOURS["planet2"] if shape.step else COLOURS[shape.member]
+        internal = shape.member == "ring" and shape.internal
+        outline = gear_outline(shape.teeth, shape.radius, internal=internal)
         dashed = shape.step or (shape.member == "ring" and not shape.internal)
-        fill = shape.member == "ring" and shape.internal
-        patch = Polygon(outline, closed=True, facecolor="none" if dashed or fill else colour,
-                        edgecolor=colour if dashed or fill else "black", lw=2.0 if fill or dashed else 0.8,
-                        ls="--" if dashed else "-", alpha=0.8)
+        patch = Polygon(outline, closed=True, facecolor=colour, alpha=0.35 if internal or dashed else 0.6,
+                        edgecolor="black", lw=lw, ls="--" if dashed else "-")
         ax.add_patch(patch)
-        mark = ax.plot([0, 0.8 * shape.radius], [0, 0], color="black", lw=1)[0]
+        mark = ax.plot([0, 0.8 * shape.radius], [0, 0], color="black", lw=1.5 * lw)[0]
         patches.append((shape, (patch, mark)))
-    arms = [ax.plot([], [], color=COLOURS["carrier"], lw=6, alpha=0.6, solid_capstyle="round")[0]
-            for _ in {(s.axis, s.offset) for s in anim.shapes if s.member.startswith("planet")}]
-    title = ax.set_title("", fontsize=9)
-    speeds = ", ".join(f"{m} {fmt(n, 5)}" for m, n in anim.speeds.items())
-    fig.text(0.5, 0.04, f"{speeds} 1/min\nslowed down {fmt(anim.slowdown, 3)}×, {anim.planets} planets",
-             ha="center", fontsize=8)
+    axes = sorted({(s.axis, s.offset) for s in anim.shapes if s.member.startswith("planet")})
+    arms = [ax.plot([], [], color=COLOURS["carrier"], lw=STROKE["arm"] * anim.size * 72 / dpi / 2, alpha=0.6,
+                    solid_capstyle="round")[0] for _ in axes]
+    fig.text(0.03, caption / (inches + caption) - 0.3 * font / 72 / (inches + caption), "\n".join(lines),
+             ha="left", va="top", fontsize=font, linespacing=1.3)
+    phase = fig.text(0.03, 0.995, "", ha="left", va="top", fontsize=1.1 * font, weight="bold")
 
     def update(frame: int) -> list[Any]:
         angles = anim.angles(frame)
         carrier = angles["carrier"]
-        axes = sorted({(s.axis, s.offset) for s in anim.shapes if s.member.startswith("planet")})
         for arm, (axis, offset) in zip(arms, axes):
             a = math.radians(offset + carrier)
             arm.set_data([0, axis * math.cos(a)], [0, axis * math.sin(a)])
@@ -177,10 +201,7 @@ def write_gif(anim: PlanetaryAnimation, path: Path, dpi: int) -> Path:
             patch.set_transform(t)
             mark.set_transform(t)
         if anim.willis:
-            phase = min(int(frame // anim.phase_frames), 2)
-            title.set_text(f"{anim.set_name} — Willis {WILLIS_PHASES[phase]}")
-        else:
-            title.set_text(f"{anim.set_name}: planetary set at the solved speeds")
+            phase.set_text(f"Willis {WILLIS_PHASES[min(int(frame // anim.phase_frames), 2)]}")
         return []
 
     frames = 3 * anim.phase_frames + 1 if anim.willis else anim.frames

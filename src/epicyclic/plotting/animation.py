@@ -30,76 +30,45 @@ tec-science, "Willis-Gleichung", "Superposition der Bewegungen" (φ_P = φ_T + (
 from __future__ import annotations
 
 import html
-import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
-from ._common import PlottingError, check_suffix, fmt, planetary_set
+from ..limits import SIZE_RANGE
+from ._common import PlottingError, check_suffix, planetary_set
+from ._gears import WILLIS_PHASES, GearShape, gear_outline, gear_shapes
+from .context import FigureContext
 from .speed_plan import SetLayout, set_layout
+from .values import Scales, clean, fmt
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
 
-__all__ = ["GearShape", "PlanetaryAnimation", "planetary_animation", "gear_outline", "ANIMATION_SUFFIXES"]
+__all__ = ["GearShape", "PlanetaryAnimation", "planetary_animation", "gear_outline", "ANIMATION_SUFFIXES",
+           "WILLIS_PHASES", "DEFAULT_SIZE"]
 
 #: Files :meth:`PlanetaryAnimation.save` writes.
 ANIMATION_SUFFIXES = (".svg", ".html", ".gif")
-#: Names of the three Willis phases.
-WILLIS_PHASES = ("1: carrier turns, planets locked to it", "2: planets turn about their own axes",
-                 "3: carrier held, sun turns")
-
-
-def gear_outline(z: int | None, radius: float, internal: bool = False, points_per_tooth: int = 4) -> list[tuple[float, float]]:
-    """Outline of a gear centred at the origin: z trapezoidal teeth on the pitch circle.
-
-    Addendum m, dedendum 1.25 m with m = 2·radius/z; an internal gear's teeth
-    point inwards.  Without a tooth count a plain circle (72 points).
-    """
-    if not z:
-        return [(radius * math.cos(2 * math.pi * k / 72), radius * math.sin(2 * math.pi * k / 72)) for k in range(72)]
-    m = 2 * radius / z
-    tip, root = (radius - m, radius + 1.25 * m) if internal else (radius + m, radius - 1.25 * m)
-    pitch = 2 * math.pi / z
-    pts = []
-    for k in range(z):
-        c = k * pitch
-        for angle, r in ((c - 0.5 * pitch, root), (c - 0.3 * pitch, root), (c - 0.13 * pitch, tip),
-                         (c + 0.13 * pitch, tip), (c + 0.3 * pitch, root)):
-            pts.append((r * math.cos(angle), r * math.sin(angle)))
-    return pts
-
-
-@dataclass(frozen=True)
-class GearShape:
-    """A gear to draw: its member, tooth count, pitch radius, centre and start angle.
-
-    ``axis`` is the distance of its centre from the central axis (0 for sun
-    and ring), ``offset`` the angle (deg) of its centre about the carrier,
-    ``phase`` its start rotation (deg) chosen so that the teeth interlock.
-    """
-
-    member: str
-    teeth: int | None
-    radius: float
-    internal: bool
-    axis: float = 0.0
-    offset: float = 0.0
-    phase: float = 0.0
-    step: bool = False
+#: Width of the SVG and the GIF in pixels unless ``size`` says otherwise.
+DEFAULT_SIZE = 480
+#: Smallest and largest ``size`` in pixels (``epicyclic.limits.SIZE_RANGE``).
+SIZE_LIMITS = SIZE_RANGE
 
 
 @dataclass(frozen=True)
 class PlanetaryAnimation:
     """Angles per frame of every member of a set, and their drawings.
 
+    Members are the *drawn* gears: ``sun`` (the smaller central gear of the
+    drawing), ``ring``, ``carrier``, ``planet`` (and ``planet2`` for a double
+    planet); ``shafts`` names the port and shaft each one belongs to.
+
     Attributes
     ----------
     speeds : mapping member → 1/min
-        ``sun``, ``ring``, ``carrier``, ``planet`` (and ``planet2`` for a
-        double-planet set): the solved speeds.
+        The solved speeds (round-off shown as 0 by the zero rule).
     slowdown : float
         Real speed / shown speed (common to all members).
     fps : int
@@ -108,10 +77,15 @@ class PlanetaryAnimation:
     willis : bool
         Show the three superposed motions one after another.
     factors : mapping planet → k
-        (n_planet − n_carrier)/(n_sun − n_carrier).
+        (n_planet − n_carrier)/(n_sun − n_carrier) of the drawn gears.
     i0 : float
+        (n_sun − n_carrier)/(n_ring − n_carrier) of the drawn gears.
     shapes : tuple of GearShape
     planets : int
+    schematic : str
+        Empty for a set drawn with its own teeth, else what was chosen.
+    size : int
+        Width of the SVG and GIF in pixels.
     """
 
     set_name: str
@@ -126,6 +100,10 @@ class PlanetaryAnimation:
     shapes: tuple[GearShape, ...]
     planets: int
     layout: SetLayout
+    schematic: str = ""
+    size: int = DEFAULT_SIZE
+    context: FigureContext = field(default_factory=FigureContext)
+    heading: str = ""
 
     # ------------------------------------------------------------- kinematics
     def degrees_per_second(self, member: str) -> float:
@@ -162,11 +140,27 @@ class PlanetaryAnimation:
         a, b = self.angles(frame), self.angles(frame + 1)
         return {m: b[m] - a[m] for m in a}
 
+    # ------------------------------------------------------------- words
+    def caption(self) -> list[str]:
+        """The lines under the drawing: speeds in the figure's unit, planets, slowdown, assumptions."""
+        ctx = self.context
+        unit = ctx.unit("speed")
+        central = [f"{m} ({self.shafts[m]}): {fmt(ctx.convert(n, 'speed'), 5)} {unit}"
+                   for m, n in self.speeds.items() if m in ("sun", "ring", "carrier")]
+        planets = [f"{m.replace('planet2', 'planet 2')}: {fmt(ctx.convert(n, 'speed'), 5)} {unit}"
+                   for m, n in self.speeds.items() if m.startswith("planet")]
+        moving = any(self.speeds.values())
+        motion = f"shown slowed down {fmt(self.slowdown, 3)}×" if moving else "the set stands still in this state"
+        lines = [", ".join(central), ", ".join(planets) + f"; {self.planets} planets; {motion}"]
+        if self.schematic:
+            lines.append(self.schematic)
+        return lines
+
     # ------------------------------------------------------------- output
     def to_dict(self) -> dict[str, Any]:
         return {"set": self.set_name, "speeds_1_per_min": dict(self.speeds), "slowdown": self.slowdown,
                 "fps": self.fps, "frames": self.frames, "willis": self.willis, "planets": self.planets,
-                "factors": dict(self.factors), "i0": self.i0}
+                "factors": dict(self.factors), "i0": self.i0, "schematic": self.schematic, "size": self.size}
 
     def _repr_html_(self) -> str:
         return self.svg()
@@ -174,7 +168,7 @@ class PlanetaryAnimation:
     def __repr__(self) -> str:
         speeds = ", ".join(f"{m} {fmt(n, 5)}" for m, n in self.speeds.items())
         return (f"<PlanetaryAnimation {self.set_name!r}: {speeds} 1/min, slowed down {fmt(self.slowdown, 3)}×"
-                f"{', Willis phases' if self.willis else ''}>")
+                f"{', Willis phases' if self.willis else ''}{', schematic' if self.schematic else ''}>")
 
     def svg(self) -> str:
         """A self-contained animated SVG (SMIL); plays offline in a browser."""
@@ -189,8 +183,8 @@ class PlanetaryAnimation:
                 f"<body style=\"font-family:sans-serif\"><h1 style=\"font-size:1.2em\">{title}</h1>\n"
                 f"{self.svg()}\n</body></html>\n")
 
-    def gif(self, path: str | Path, *, dpi: int = 60) -> Path:
-        """Write the animation as GIF (matplotlib PillowWriter)."""
+    def gif(self, path: str | Path, *, dpi: int = 80) -> Path:
+        """Write the animation as GIF (matplotlib PillowWriter), ``size`` pixels wide."""
         from ._svg import write_gif
 
         return write_gif(self, Path(path), dpi)
@@ -205,54 +199,6 @@ class PlanetaryAnimation:
         return path
 
 
-def _phase(direction: float, rotation: float, z: int) -> float:
-    """Tooth phase (0 = tooth centre, 0.5 = gap) of a gear at a direction, angles in rad."""
-    return ((direction - rotation) * z / (2 * math.pi)) % 1.0
-
-
-def _shapes(layout: SetLayout, teeth: Any, planets: int) -> tuple[GearShape, ...]:
-    """Gears to draw, with start angles that make the teeth interlock (simple and stepped sets)."""
-    zs = teeth.sun if teeth is not None else None
-    zr = teeth.ring if teeth is not None else None
-    zp = teeth.planet if teeth is not None else (None, None)
-    rs, sun_internal = layout.central["sun"]
-    rr, ring_internal = layout.central["ring"]
-    shapes = [GearShape("sun", zs, rs, sun_internal), GearShape("ring", zr, rr, ring_internal)]
-    bodies = layout.bodies
-    for j in range(planets):
-        theta = 360.0 * j / planets
-        if len(bodies) == 2:  # double planet: planet 2 beside planet 1, centre distance (z1 + z2)·m/2
-            b1, b2 = bodies
-            r1, r2 = b1.axis - rs, rr - b2.axis
-            cos_d = (b1.axis ** 2 + b2.axis ** 2 - (r1 + r2) ** 2) / (2 * b1.axis * b2.axis)
-            delta = math.degrees(math.acos(max(-1.0, min(1.0, cos_d))))
-            shapes.append(GearShape("planet", zp[0], r1, False, b1.axis, theta))
-            shapes.append(GearShape("planet2", zp[1], r2, False, b2.axis, theta + delta))
-            continue
-        body = bodies[0]
-        r_sun_side = abs(body.axis - body.contacts["sun"])
-        r_ring_side = abs(body.contacts["ring"] - body.axis)
-        z1 = zp[0] if teeth is not None else None
-        z2 = (zp[1] if len(zp) > 1 else zp[0]) if teeth is not None else None
-        phase = 0.0
-        if z1 and zs and not sun_internal:
-            th = math.radians(theta)
-            f_s = _phase(th, 0.0, zs)
-            phase = math.degrees((th + math.pi) - (2 * math.pi / z1) * (0.5 - f_s))
-        shapes.append(GearShape("planet", z1, r_sun_side, False, body.axis, theta, phase))
-        if abs(r_ring_side - r_sun_side) > 1e-9:
-            shapes.append(GearShape("planet", z2, r_ring_side, False, body.axis, theta, phase, step=True))
-    # the ring's start angle interlocks with the first planet (internal ring of a simple set)
-    first = shapes[2]
-    if teeth is not None and teeth.kind == "simple" and ring_internal and first.teeth and zr:
-        th = math.radians(first.offset)
-        f_p = _phase(th, math.radians(first.phase), first.teeth)
-        shapes[1] = GearShape("ring", zr, rr, True, 0.0, 0.0, math.degrees(th - (2 * math.pi / zr) * (f_p - 0.5)))
-    if ring_internal:  # drawing order: an internal ring behind everything, an external 2nd gear over the sun
-        shapes[0], shapes[1] = shapes[1], shapes[0]
-    return tuple(shapes)
-
-
 def planetary_animation(
     solution: Solution,
     element: str | None = None,
@@ -261,8 +207,13 @@ def planetary_animation(
     fps: int = 16,
     frames: int = 48,
     max_rev_per_s: float = 0.25,
+    size: int = DEFAULT_SIZE,
+    context: FigureContext | None = None,
 ) -> PlanetaryAnimation:
     """Build the animation of a planetary set at its solved speeds.
+
+    A set given by i0 alone is drawn as the schematic set of
+    :func:`~epicyclic.plotting.schematic.drawn_set`, and the caption says so.
 
     Parameters
     ----------
@@ -276,11 +227,15 @@ def planetary_animation(
         Frames of one GIF loop (three phases of frames/3 in Willis mode).
     max_rev_per_s : float, default 0.25
         Shown speed of the fastest member (sets the common slowdown).
+    size : int, default 480
+        Width of the SVG and GIF in pixels (120 … 2000).
+    context : FigureContext, optional
+        Title, gear, units of the caption.
 
     Raises
     ------
     PlottingError
-        No planetary set of that name; fps, frames or max_rev_per_s not positive.
+        No planetary set of that name; fps, frames, size or max_rev_per_s out of range.
 
     Examples
     --------
@@ -290,9 +245,12 @@ def planetary_animation(
     >>> round(anim.step()["carrier"] * anim.fps * anim.slowdown / 6)  # 1/min
     5280
     """
-    for name, value in (("fps", fps), ("frames", frames)):
+    for name, value in (("fps", fps), ("frames", frames), ("size", size)):
         if isinstance(value, bool) or not isinstance(value, int) or value < 1:
             raise PlottingError(f"animation: {name} must be a whole number ≥ 1, got {value!r}.")
+    if not SIZE_LIMITS[0] <= size <= SIZE_LIMITS[1]:
+        raise PlottingError(f"animation: size must be between {SIZE_LIMITS[0]} and {SIZE_LIMITS[1]} pixels, "
+                            f"got {size}.")
     if isinstance(max_rev_per_s, bool) or not isinstance(max_rev_per_s, (int, float)) or not max_rev_per_s > 0:
         raise PlottingError(f"animation: max_rev_per_s must be a positive number, got {max_rev_per_s!r}.")
     if willis and frames < 3:
@@ -300,23 +258,32 @@ def planetary_animation(
     pset = planetary_set(solution, element)
     state = solution.elements[pset.name]
     layout = set_layout(pset)
-    n = state.speeds
-    if state.planet_speeds:
-        factors = dict(zip(("planet", "planet2"), pset.teeth.planet_factors))  # type: ignore[union-attr]
-    else:
-        body = layout.bodies[0]
-        rs = body.contacts["sun"]
-        factors = {"planet": rs / (rs - body.axis)}
-    speeds = {"sun": n["sun"], "ring": n["ring"], "carrier": n["carrier"]}
-    for planet, k in factors.items():
-        speeds[planet] = n["carrier"] + k * (n["sun"] - n["carrier"])
+    drawn = layout.drawn
+    assert drawn is not None
+    scale = Scales.of(solution).speed
+    n = {port: clean(v, scale) for port, v in state.speeds.items()}
+    roles = {"sun": drawn.roles["sun"], "ring": drawn.roles["ring"], "carrier": "carrier"}
+    speeds = {member: n[port] for member, port in roles.items()}
+    planet_speeds = state.planet_speeds if state.planet_speeds else drawn.planet_speeds(n)
+    members = ("planet", "planet2")[: len(drawn.teeth.planet_factors)]
+    factors = dict(zip(members, drawn.teeth.planet_factors))
+    for member, value in zip(members, planet_speeds):
+        speeds[member] = clean(value, scale)
     top = max(abs(v) for v in speeds.values())
-    speeds = {m: (0.0 if abs(v) <= 1e-9 * top else v) for m, v in speeds.items()}  # round-off shown as rest
     fastest = top / 60.0  # rev/s
     slowdown = fastest / max_rev_per_s if fastest > 0 else 1.0
-    shapes = _shapes(layout, pset.teeth, pset.planets)
-    return PlanetaryAnimation(pset.name, MappingProxyType(dict(state.ports)), MappingProxyType(speeds), slowdown,
-                              fps, frames, willis, MappingProxyType(factors), pset.stationary_ratio, shapes,
-                              pset.planets, layout)
-
-
+    i0 = pset.stationary_ratio if not drawn.swapped else 1.0 / pset.stationary_ratio
+    shapes = gear_shapes(layout, drawn.teeth, pset.planets)
+    shafts = {member: f"{port}: {state.ports[port]}" if port != member else state.ports[port]
+              for member, port in roles.items()}
+    note = ""
+    if drawn.schematic:
+        t = drawn.teeth
+        teeth = "/".join(str(z) for z in (t.sun, *t.planet, t.ring))
+        note = (f"schematic {t.kind} set {teeth}: the file gives i0 = {fmt(pset.stationary_ratio, 5)} only"
+                + ("" if drawn.exact else " (nearest drawable teeth)"))
+    context = context or FigureContext(title=solution.train.name)
+    heading = context.heading(solution.train, f"set {pset.name}")
+    return PlanetaryAnimation(pset.name, MappingProxyType(shafts), MappingProxyType(speeds), slowdown,
+                              fps, frames, willis, MappingProxyType(factors), i0, shapes, pset.planets, layout,
+                              note, size, context, heading)

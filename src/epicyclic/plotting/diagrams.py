@@ -27,10 +27,13 @@ Brandenberger 1952, eqs. 2, 3', 7 and Bild 5, 8, 9 with Tabellen 1–3.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from ._common import RPM_TO_RAD_S, figure_svg, fmt, hatch_legend, hatched_rect, lever_elements, pyplot
+from ._common import RPM_TO_RAD_S, figure_svg, hatch_legend, hatched_rect, lever_elements, pyplot
+from ._labels import clear_suptitle, finish, fit_titles, keep_inside, legends, separate
+from .context import FigureContext
+from .values import ZERO_RELATIVE, Scales, clean, fmt
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
@@ -38,8 +41,8 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["PowerRect", "ElementPowers", "PowerDiagram", "power_diagram", "TorqueBar", "TorqueDiagram",
            "torque_diagram"]
 
-#: Powers below this fraction of the largest one count as zero (no hatching).
-_ZERO = 1e-9
+#: Powers below this fraction of the largest one count as zero (no hatching): the zero rule.
+_ZERO = ZERO_RELATIVE
 
 
 @dataclass(frozen=True)
@@ -99,6 +102,9 @@ class PowerDiagram:
     title: str
     actual: tuple[ElementPowers, ...]
     ideal: tuple[ElementPowers, ...]
+    context: FigureContext = field(default_factory=FigureContext)
+    resting: tuple[str, ...] = ()
+    train: Any = field(default=None, repr=False, compare=False)
 
     def to_dict(self) -> dict[str, Any]:
         def one(e: ElementPowers) -> dict[str, Any]:
@@ -117,18 +123,29 @@ class PowerDiagram:
         return f"<PowerDiagram {self.title!r}: loss rectangles {losses}>"
 
     def plot(self) -> Any:
-        """Figure: one row per element, left without friction, right with friction."""
+        """Figure: one row per element carrying power, left without friction, right with friction."""
         plt = pyplot()
-        rows = len(self.actual)
+        shown = [k for k, e in enumerate(self.actual) if e.element not in self.resting]
+        rows = max(len(shown), 1)
         cols = 2 if self.ideal else 1
         fig, axes = plt.subplots(rows, cols, figsize=(7.6 * cols, 4.4 * rows), squeeze=False)
-        for k, element in enumerate(self.actual):
+        ctx = self.context
+        texts: list[Any] = []
+        for row, k in enumerate(shown):
+            element = self.actual[k]
             panels = ([(self.ideal[k], "without friction")] if self.ideal else []) + [(element, "with friction")]
             limits = _limits([p for p, _ in panels])
-            for ax, (data, what) in zip(axes[k], panels):
-                _draw_powers(ax, data, what, limits)
-        fig.suptitle(f"{self.title}: powers as areas (speed × torque), Brandenberger Bild 8/9", fontsize=12)
-        fig.tight_layout()
+            for ax, (data, what) in zip(axes[row], panels):
+                texts += _draw_powers(ax, data, what, limits, ctx)
+        if not shown:
+            for ax in axes[0]:
+                ax.set_axis_off()
+        heading = ctx.heading(self.train, "powers as areas (speed × torque), Brandenberger Bild 8/9") \
+            if self.train is not None else self.title
+        if self.resting:
+            heading += f"\nno power in {', '.join(self.resting)} (idle or locked in this state): not drawn"
+        fig.suptitle(heading, fontsize=11)
+        finish(fig, texts)
         return fig
 
 
@@ -143,43 +160,48 @@ def _limits(panels: list[ElementPowers]) -> tuple[float, float, float, float]:
     return min(xs) - 0.08 * dx, max(xs) + 0.08 * dx, min(ys) - 0.05 * dy, max(ys) + 0.2 * dy
 
 
-def _draw_powers(ax: Any, data: ElementPowers, what: str, limits: tuple[float, float, float, float]) -> None:
+def _draw_powers(ax: Any, data: ElementPowers, what: str, limits: tuple[float, float, float, float],
+                 ctx: FigureContext) -> list[Any]:
+    """One panel: rectangles in the figure's units (x speed, y torque), labels in its power unit."""
     seen: list[str] = []
-    spacing = ((limits[1] - limits[0]) / 90, (limits[3] - limits[2]) / 45)
+    texts = []
+    sx, sy = ctx.convert(1.0, "speed"), ctx.convert(1.0, "torque")
+    spacing = ((limits[1] - limits[0]) * sx / 90, (limits[3] - limits[2]) * sy / 45)
+    scale = max((abs(r.power) for r in data.rects), default=0.0)
     for rect in (*data.rects, *((data.loss_rect,) if data.loss_rect else ())):
         if rect.role not in seen:
             seen.append(rect.role)
         heavy = rect.role == "loss"
-        hatched_rect(ax, rect.x0, rect.y0, rect.width, rect.height, rect.role, spacing=spacing,
+        hatched_rect(ax, sx * rect.x0, sy * rect.y0, sx * rect.width, sy * rect.height, rect.role, spacing=spacing,
                      lw=2.5 if heavy else 1.0, zorder=3 if heavy else 2)
         if abs(rect.width) <= _ZERO * max(1.0, *(abs(r.width) for r in data.rects)):
             continue  # a shaft at rest (the housing, a held member) carries no power: nothing to show
-        value = rect.area if rect.role == "loss" else _clean(rect.power, data)
-        text = f"{rect.label}\n{fmt(value)} W"
+        value = rect.area if rect.role == "loss" else rect.power
+        text = f"{rect.label}\n{ctx.text(value, 'power', scale)}"
         above = rect.role == "loss"
-        ax.text(rect.x0 + rect.width / 2, rect.y0 + (rect.height if above else rect.height / 2), text, ha="center",
-                va="bottom" if above else "center", fontsize=8,
-                bbox={"boxstyle": "round,pad=0.2", "fc": "white", "alpha": 0.85, "lw": 0})
-    ax.set_xlim(limits[0], limits[1])
-    ax.set_ylim(limits[2], limits[3])
+        x0, x1 = sorted((rect.x0, rect.x0 + rect.width))
+        where = ((x0 + x1) / 2 - limits[0]) / ((limits[1] - limits[0]) or 1.0)
+        # near an edge of the panel the label grows inwards from the rectangle's end
+        x, ha = (x1, "right") if where > 0.66 else (x0, "left") if where < 0.34 else ((x0 + x1) / 2, "center")
+        texts.append(ax.text(sx * x, sy * (rect.y0 + (rect.height if above else rect.height / 2)),
+                             text, ha=ha, va="bottom" if above else "center", fontsize=8,
+                             bbox={"boxstyle": "round,pad=0.2", "fc": "white", "alpha": 0.85, "lw": 0}))
+    ax.set_xlim(sx * limits[0], sx * limits[1])
+    ax.set_ylim(sy * limits[2], sy * limits[3])
     ax.axvline(0, color="black", lw=0.8)
-    ax.set_xlabel("speed n in 1/min (rectangle width)")
-    ax.set_ylabel("|torque| M in N·m (rectangle height)")
-    ax.set_title(f"{data.element} ({data.kind}), {what}: loss {fmt(_clean(data.loss, data))} W", fontsize=10)
+    ax.set_xlabel(f"speed n in {ctx.unit('speed')} (rectangle width)")
+    ax.set_ylabel(f"|torque| M in {ctx.unit('torque')} (rectangle height)")
+    ax.set_title(f"{data.element} ({data.kind}), {what}: loss {ctx.text(data.loss, 'power', scale)}", fontsize=10)
     ax.grid(True, alpha=0.3)
     hatch_legend(ax, seen, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="power at the ports",
                  title_fontsize=8)
+    return texts
 
 
-def _clean(value: float, data: ElementPowers) -> float:
-    """Round-off (|value| ≤ 1e-9 × the largest port power) shown as 0."""
-    scale = max((abs(r.power) for r in data.rects), default=0.0)
-    return 0.0 if abs(value) <= _ZERO * max(scale, 1e-300) else value
-
-
-def _element_powers(solution: Solution, element: Any, ports: tuple[str, str, str], i0: float) -> ElementPowers:
+def _element_powers(solution: Solution, element: Any, ports: tuple[str, str, str], i0: float,
+                    scale: float) -> ElementPowers:
+    """Rectangles of one element; roles by the zero rule against the train's power ``scale`` (W)."""
     state = solution.elements[element.name]
-    scale = max((abs(p) for p in state.port_powers.values()), default=0.0)
     rects = []
     y = 0.0
     for port in ports:
@@ -203,12 +225,17 @@ def _element_powers(solution: Solution, element: Any, ports: tuple[str, str, str
     return ElementPowers(element.name, state.kind, tuple(rects), loss_rect, state.loss, w)
 
 
-def power_diagram(solution: Solution) -> PowerDiagram:
+def power_diagram(solution: Solution, *, context: FigureContext | None = None) -> PowerDiagram:
     """Power rectangles of every planetary set and gear stage, with and without friction.
+
+    Elements that carry no power by the zero rule (idle or locked in this
+    shift state) are listed in ``resting`` and not drawn.
 
     Parameters
     ----------
     solution : Solution
+    context : FigureContext, optional
+        Title, gear, units and notes of the figure.
 
     Returns
     -------
@@ -228,11 +255,15 @@ def power_diagram(solution: Solution) -> PowerDiagram:
     True
     """
     levers = lever_elements(solution.train)
-    actual = tuple(_element_powers(solution, e, ports, i0) for e, ports, _, i0 in levers)
+    scale = Scales.of(solution).power
+    actual = tuple(_element_powers(solution, e, ports, i0, scale) for e, ports, _, i0 in levers)
     ideal: tuple[ElementPowers, ...] = ()
     if solution.ideal is not None:
-        ideal = tuple(_element_powers(solution.ideal, e, ports, i0) for e, ports, _, i0 in levers)
-    return PowerDiagram(solution.train.name, actual, ideal)
+        ideal = tuple(_element_powers(solution.ideal, e, ports, i0, scale) for e, ports, _, i0 in levers)
+    resting = tuple(e.element for e in actual
+                    if all(clean(r.power, scale) == 0 for r in e.rects) and clean(e.loss, scale) == 0)
+    context = context or FigureContext(title=solution.train.name)
+    return PowerDiagram(context.title or solution.train.name, actual, ideal, context, resting, solution.train)
 
 
 @dataclass(frozen=True)
@@ -257,6 +288,9 @@ class TorqueDiagram:
 
     title: str
     bars: tuple[TorqueBar, ...]
+    context: FigureContext = field(default_factory=FigureContext)
+    resting: tuple[str, ...] = ()
+    train: Any = field(default=None, repr=False, compare=False)
 
     @property
     def groups(self) -> tuple[str, ...]:
@@ -281,35 +315,46 @@ class TorqueDiagram:
     def plot(self) -> Any:
         """Figure: one panel per group, bars without friction (outline) and with friction (hatched)."""
         plt = pyplot()
+        ctx = self.context
+        k = ctx.convert(1.0, "torque")
         groups = self.groups
-        fig, axes = plt.subplots(1, len(groups), figsize=(4.6 * len(groups), 4.6), squeeze=False)
+        fig, axes = plt.subplots(1, len(groups), figsize=(4.6 * len(groups), 4.8), squeeze=False)
         roles: dict[str, None] = {}
+        texts: list[Any] = []
         for ax, name in zip(axes[0], groups):
             bars = self.group(name)
             xs = range(len(bars))
             if any(b.ideal is not None for b in bars):
-                ax.bar([x - 0.2 for x in xs], [b.ideal or 0.0 for b in bars], width=0.38, facecolor="white",
+                ax.bar([x - 0.2 for x in xs], [k * (b.ideal or 0.0) for b in bars], width=0.38, facecolor="white",
                        edgecolor="grey", ls="--", lw=1.5, label="without friction")
-            values = [0.0, *(b.actual for b in bars), *(b.ideal or 0.0 for b in bars)]
+            values = [0.0, *(k * b.actual for b in bars), *(k * (b.ideal or 0.0) for b in bars)]
             spacing = (0.38 / 5, (max(values) - min(values)) / 40)
             for x, bar in zip(xs, bars):
                 roles.setdefault(bar.role, None)
-                hatched_rect(ax, x + 0.01, 0.0, 0.38, bar.actual, bar.role, spacing=spacing)
-                ax.annotate(fmt(bar.actual), (x + 0.2, bar.actual), ha="center", fontsize=8,
-                            xytext=(0, 3 if bar.actual >= 0 else -11), textcoords="offset points")
+                hatched_rect(ax, x + 0.01, 0.0, 0.38, k * bar.actual, bar.role, spacing=spacing)
+                texts.append(ax.annotate(fmt(k * bar.actual), (x + 0.2, k * bar.actual), ha="center", fontsize=8,
+                                         xytext=(0, 3 if bar.actual >= 0 else -11), textcoords="offset points"))
             ax.axhline(0, color="black", lw=0.8)
             ax.set_xticks(list(xs), [b.label for b in bars], fontsize=9)
-            ax.set_ylabel("torque M in N·m")
+            ax.set_ylabel(f"torque M in {ctx.unit('torque')}")
             ax.set_title("external torques on shafts" if name == "external" else f"torques on {name}", fontsize=10)
             ax.grid(True, axis="y", alpha=0.3)
             ax.margins(y=0.15)
-        fig.suptitle(f"{self.title}: torques with and without friction (housing: reaction)", fontsize=12)
+        heading = ctx.heading(self.train, "torques with and without friction (housing: reaction)") \
+            if self.train is not None else self.title
+        if self.resting:
+            heading += f"\nno torque on {', '.join(self.resting)} (idle in this state): not drawn"
+        fig.suptitle(heading, fontsize=11)
         fig.tight_layout(rect=(0, 0.1, 1, 1))
         legend_ax = fig.add_axes((0.0, 0.0, 1.0, 0.08))
         legend_ax.set_axis_off()
         legend_ax.plot([], [], color="grey", ls="--", lw=1.5, label="without friction (outline)")
         hatch_legend(legend_ax, list(roles), loc="center", ncol=1 + len(roles), fontsize=9,
                      title="hatched bars: with friction", title_fontsize=9)
+        fit_titles(fig)
+        clear_suptitle(fig)
+        separate(fig, texts, fixed=legends(fig))
+        keep_inside(fig, texts)
         return fig
 
 
@@ -317,8 +362,12 @@ def _role(power: float, scale: float) -> str:
     return "drive" if power > _ZERO * scale else "load" if power < -_ZERO * scale else "none"
 
 
-def torque_diagram(solution: Solution) -> TorqueDiagram:
+def torque_diagram(solution: Solution, *, context: FigureContext | None = None) -> TorqueDiagram:
     """Torque bars, with and without friction, of the external shafts and element ports.
+
+    Values are cleaned by the zero rule against the train's torque scale;
+    elements without any torque (idle in this shift state) are listed in
+    ``resting`` and get no panel.
 
     References
     ----------
@@ -333,18 +382,31 @@ def torque_diagram(solution: Solution) -> TorqueDiagram:
     [66.6, 40.3, 26.3]
     """
     ideal = solution.ideal
-    scale = max(solution.input_power, solution.output_power, 1e-300)
+    scales = Scales.of(solution)
+    scale, torque = scales.power, scales.torque
     bars = []
+
+    def ideal_of(value: float | None) -> float | None:
+        return None if value is None else clean(value, torque)
+
     for shaft in solution.shafts.values():
-        if shaft.role == "internal" or (shaft.torque == 0.0 and shaft.role != "housing"):
+        value = clean(shaft.torque, torque)
+        if shaft.role == "internal" or value == 0.0:
             continue
-        ideal_torque = ideal.torque(shaft.name) if ideal is not None else None
-        bars.append(TorqueBar("external", shaft.name, ideal_torque, shaft.torque, _role(shaft.power, scale)))
+        ideal_torque = ideal_of(ideal.torque(shaft.name) if ideal is not None else None)
+        bars.append(TorqueBar("external", shaft.name, ideal_torque, value, _role(shaft.power, scale)))
+    resting = []
     for element, ports, _, _ in lever_elements(solution.train):
         state = solution.elements[element.name]
         powers = state.port_powers
+        group = []
         for port in ports:
-            ideal_torque = ideal.elements[element.name].torques[port] if ideal is not None else None
-            bars.append(TorqueBar(element.name, f"{port}\n({state.ports[port]})", ideal_torque, state.torques[port],
-                                  _role(powers[port], scale)))
-    return TorqueDiagram(solution.train.name, tuple(bars))
+            ideal_torque = ideal_of(ideal.elements[element.name].torques[port] if ideal is not None else None)
+            group.append(TorqueBar(element.name, f"{port}\n({state.ports[port]})", ideal_torque,
+                                   clean(state.torques[port], torque), _role(powers[port], scale)))
+        if all(b.actual == 0.0 and not b.ideal for b in group):
+            resting.append(element.name)
+        else:
+            bars += group
+    context = context or FigureContext(title=solution.train.name)
+    return TorqueDiagram(context.title or solution.train.name, tuple(bars), context, tuple(resting), solution.train)

@@ -1,41 +1,49 @@
-"""Power-flow diagram: the train as a graph, arrow widths proportional to power.
+"""Power-flow diagram: drives → shafts, sets and stages → loads, losses below; widths ∝ power.
 
-Nodes are the shafts (circles) and the elements (boxes); every port of an
-element is an edge between its shaft and the element, pointing the way power
-flows (``P = T·n·π/30`` into the element when positive).  Drives enter from a
-source above their shaft, loads leave to a sink; each element's loss leaves
-downwards to its own loss node.  Edge widths are proportional to the power
-they carry (one scale for the whole figure).  Edges carrying more than the
-input power are *circulating* power (Brandenberger, text to Bild 11 and 12:
-"zirkulieren im Vorgelege Leistungen") and are drawn in red.  Each planetary
-set is labelled with its rolling power ``P_w = T_sun·(n_sun − n_carrier)·π/30``,
-the part that passes the teeth relative to the carrier and alone causes loss.
+Nodes are the drives (power put in), the shafts, the elements that carry
+power (planetary sets, gear stages, engaged clutches) and the loads (power
+taken out).  Every port of an element is an edge between its shaft and the
+element, pointing the way power flows (``P = T·n·π/30`` into the element when
+positive).  Each element's loss leaves downwards to a label below it.  Band
+widths are proportional to the power they carry (one scale for the figure).
+
+The graph is drawn in layers (:mod:`._layered`): drives on the left, loads on
+the right, every element between the shafts that feed it and the shafts it
+feeds; the layout avoids crossings where it can.  A branch that carries no
+power by the zero rule (:mod:`.values`) is left out.  Where power flows
+around a closed loop (Brandenberger, text to Bild 11 and 12: "zirkulieren im
+Vorgelege Leistungen") the loop's edges are drawn red, the edge that closes
+it running back against the layers.  Each planetary set is labelled with its
+rolling power ``P_w = T_sun·(n_sun − n_carrier)·π/30``, the part that passes
+the teeth relative to the carrier and alone causes loss.
 
 References
 ----------
-Brandenberger 1952, Bild 10–12 and text (rolling and coupling
-power, circulating power).
+Brandenberger 1952, Bild 10–12 and text (rolling and coupling power,
+circulating power); Sugiyama, Tagawa & Toda 1981 (layered drawing).
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 from ..model.elements import HOUSING
-from ._common import figure_svg, fmt, pyplot
+from ._common import figure_svg
+from ._flow_draw import BOX, plot_power_flow
+from ._layered import layered_layout
+from .context import FigureContext
+from .values import Scales, clean, fmt, is_zero
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
 
-__all__ = ["FlowNode", "FlowEdge", "PowerFlow", "power_flow"]
+__all__ = ["FlowNode", "FlowEdge", "PowerFlow", "power_flow", "MAX_WIDTH"]
 
-#: Edge powers below this fraction of the input power are not drawn.
-_ZERO = 1e-9
-#: Line width (points) of the edge with the largest power.
-MAX_WIDTH = 14.0
+#: Width (data units; a layer is 2.6 wide) of the band with the largest power.
+MAX_WIDTH = 0.15
 
 
 @dataclass(frozen=True)
@@ -51,7 +59,10 @@ class FlowNode:
 
 @dataclass(frozen=True)
 class FlowEdge:
-    """Power ``power`` (W, ≥ 0) flowing from ``source`` to ``target``; ``width`` in points."""
+    """Power ``power`` (W, > 0) flowing from ``source`` to ``target``; ``width`` in data units.
+
+    ``circulating``: the edge lies on a closed loop of power flow.
+    """
 
     source: str
     target: str
@@ -59,22 +70,26 @@ class FlowEdge:
     kind: str  # port, drive, load, loss
     circulating: bool
     width: float
+    route: tuple[tuple[float, float], ...] = ()
 
 
 @dataclass(frozen=True)
 class PowerFlow:
-    """The power-flow graph of a solved train.
+    """The power-flow graph of a solved train, laid out in layers.
 
     Attributes
     ----------
     nodes, edges : tuple
     width_per_watt : float
-        Points of line width per W (the same for every edge).
+        Band width (data units) per W, the same for every edge.
     input_power : float
     circulating_power : float
-        Largest port power as a multiple of the input power.
+        The solver's figure (``Solution.circulating_power``: the largest port
+        power as a multiple of the input power).
     rolling : mapping element → W
     losses : mapping element → W
+    crossings : int
+        Edge crossings of the layout.
     """
 
     title: str
@@ -86,78 +101,59 @@ class PowerFlow:
     rolling: Mapping[str, float]
     losses: Mapping[str, float]
     self_locking: bool = False
+    crossings: int = 0
+    context: FigureContext = field(default_factory=FigureContext)
+    notes: tuple[str, ...] = ()
+    train: Any = field(default=None, repr=False, compare=False)
 
     def node(self, name: str) -> FlowNode:
         return next(n for n in self.nodes if n.name == name)
 
     def to_dict(self) -> dict[str, Any]:
-        return {"title": self.title, "units": {"power": "W", "width": "pt"},
-                "nodes": [n.__dict__ for n in self.nodes], "edges": [e.__dict__ for e in self.edges],
+        return {"title": self.title, "units": {"power": "W", "width": "data units"},
+                "nodes": [n.__dict__ for n in self.nodes],
+                "edges": [{k: v for k, v in e.__dict__.items() if k != "route"} for e in self.edges],
                 "input_power": self.input_power, "circulating_power": self.circulating_power,
-                "rolling": dict(self.rolling), "losses": dict(self.losses)}
+                "rolling": dict(self.rolling), "losses": dict(self.losses), "crossings": self.crossings}
 
     def _repr_html_(self) -> str:
         return figure_svg(self.plot())
 
     def __repr__(self) -> str:
         return (f"<PowerFlow {self.title!r}: {len(self.edges)} edges, input {fmt(self.input_power)} W, "
-                f"largest internal power {fmt(self.circulating_power, 3)} × input>")
+                f"largest internal power {fmt(self.circulating_power, 3)} × input, {self.crossings} crossings>")
 
-    def plot(self, ax: Any = None) -> Any:
-        """Draw the graph; returns the figure."""
-        from matplotlib.patches import FancyArrowPatch
-
-        plt = pyplot()
-        if ax is None:
-            xs = [n.x for n in self.nodes]
-            fig, ax = plt.subplots(figsize=(max(8.0, 1.6 * (max(xs) - min(xs) + 2) + 3.0), 7.0))
-        else:
-            fig = ax.figure
-        for edge in self.edges:
-            a, b = self.node(edge.source), self.node(edge.target)
-            colour = {"drive": "#D55E00", "load": "#0072B2", "loss": "#999999"}.get(edge.kind, "#009E73")
-            if edge.circulating:
-                colour = "#CC0000"
-            ax.add_patch(FancyArrowPatch((a.x, a.y), (b.x, b.y), arrowstyle="-|>", mutation_scale=12 + edge.width,
-                                         lw=edge.width, color=colour, alpha=0.75, shrinkA=22, shrinkB=22,
-                                         connectionstyle="arc3,rad=0.08", zorder=2))
-            # label near the shaft end, so that crossing edges keep their labels apart
-            t = 0.3 if a.kind == "shaft" else 0.7 if b.kind == "shaft" else 0.5
-            ax.text(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), f"{fmt(edge.power)} W", fontsize=8, ha="center", va="center",
-                    zorder=6, bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": colour, "lw": 0.8})
-        for node in self.nodes:
-            style = {"shaft": ("circle,pad=0.4", "#ffffff"), "element": ("round,pad=0.5", "#fff3c4"),
-                     "loss": ("round,pad=0.3", "#eeeeee")}.get(node.kind, ("round,pad=0.3", "#ffffff"))
-            ax.text(node.x, node.y, node.label, ha="center", va="center", fontsize=9, zorder=7,
-                    bbox={"boxstyle": style[0], "fc": style[1], "ec": "black"})
-        for kind, colour, label in (("drive", "#D55E00", "power in (drive)"), ("load", "#0072B2", "power out (load)"),
-                                    ("port", "#009E73", "power through a port"), ("loss", "#999999", "loss"),
-                                    ("circ", "#CC0000", "circulating (> input power)")):
-            ax.plot([], [], color=colour, lw=4, label=label)
-        ax.plot([], [], color="black", lw=MAX_WIDTH * 0.25, label=f"width: {fmt(1 / self.width_per_watt, 3)} W per pt")
-        xs, ys = [n.x for n in self.nodes], [n.y for n in self.nodes]
-        ax.set_xlim(min(xs) - 0.9, max(xs) + 0.9)
-        ax.set_ylim(min(ys) - 0.6, max(ys) + 0.6)
-        ax.set_axis_off()
-        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.0, 1.0), title="arrow width ∝ power (W)",
-                  title_fontsize=8)
-        circ = (f"largest internal power {fmt(self.circulating_power, 3)} × input"
-                + (" — power circulates" if self.circulating_power > 1 + 1e-9 else ""))
-        if self.self_locking:
-            circ += " — SELF-LOCKING (formal solution shown)"
-        ax.set_title(f"{self.title}: power flow, input {fmt(self.input_power)} W; {circ}", fontsize=11)
-        fig.tight_layout()
-        return fig
+    def plot(self) -> Any:
+        """Draw the layered graph; returns the figure."""
+        return plot_power_flow(self)
 
 
-def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH) -> PowerFlow:
-    """The power-flow graph of a solved train.
+def _loops(edges: list[tuple[str, str]]) -> set[int]:
+    """Indices of edges inside a strongly connected part (on a closed loop of power flow)."""
+    nodes = {n for e in edges for n in e}
+    reach = {n: {b for a, b in edges if a == n} for n in nodes}
+    changed = True
+    while changed:  # transitive closure (a few dozen nodes)
+        changed = False
+        for n in nodes:
+            more = set().union(*(reach[m] for m in reach[n])) - reach[n]
+            if more:
+                reach[n] |= more
+                changed = True
+    return {k for k, (a, b) in enumerate(edges) if a in reach[b]}
+
+
+def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH,
+               context: FigureContext | None = None) -> PowerFlow:
+    """The power-flow graph of a solved train, laid out in layers.
 
     Parameters
     ----------
     solution : Solution
-    max_width : float, default 14
-        Line width in points of the edge with the largest power.
+    max_width : float, default 0.15
+        Band width (data units) of the edge with the largest power.
+    context : FigureContext, optional
+        Title, units and notes of the figure.
 
     References
     ----------
@@ -169,68 +165,82 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH) -> PowerFlow
     >>> from epicyclic import solve
     >>> flow = power_flow(solve(*brandenberger_1952()))
     >>> [(e.source, e.target, round(e.power)) for e in flow.edges if e.kind == "drive"]
-    [('in: II', 'II', 2206)]
+    [('drive: II', 'II', 2206)]
+    >>> flow.crossings
+    0
     """
-    scale = max(solution.input_power, solution.output_power, 1e-300)
+    context = context or FigureContext(title=solution.train.name)
+    scale = Scales.of(solution).power
     raw: list[tuple[str, str, float, str]] = []
-    elements = [e for e in solution.elements.values() if any(abs(p) > _ZERO * scale for p in e.port_powers.values())
-                or e.loss > _ZERO * scale]
-    for state in elements:
-        for port, power in state.port_powers.items():
+    element_of = {}  # node id → element state; an element named like a shaft gets its kind in its id
+    for state in solution.elements.values():
+        ports = [(port, clean(p, scale)) for port, p in state.port_powers.items()]
+        if not any(p for _, p in ports):
+            continue
+        node = state.name if state.name not in solution.shafts else f"{state.name} ({state.kind})"
+        element_of[node] = state
+        for port, power in ports:
             shaft = state.ports[port]
-            if abs(power) <= _ZERO * scale:
-                continue
-            raw.append((shaft, state.name, power, "port") if power > 0 else (state.name, shaft, -power, "port"))
-        if state.loss > _ZERO * scale:
-            raw.append((state.name, f"loss: {state.name}", state.loss, "loss"))
+            if power and shaft != HOUSING:
+                raw.append((shaft, node, power, "port") if power > 0 else (node, shaft, -power, "port"))
     for shaft in solution.shafts.values():
-        if shaft.power > _ZERO * scale:
-            raw.append((f"in: {shaft.name}", shaft.name, shaft.power, "drive"))
-        elif shaft.power < -_ZERO * scale:
-            raw.append((shaft.name, f"out: {shaft.name}", -shaft.power, "load"))
-    largest = max((p for *_, p, _ in raw), default=1.0)
+        power = clean(shaft.power, scale)
+        if power > 0:
+            raw.append((f"drive: {shaft.name}", shaft.name, power, "drive"))
+        elif power < 0:
+            raw.append((shaft.name, f"load: {shaft.name}", -power, "load"))
+    losses_w = [clean(state.loss, scale) for state in element_of.values()]
+    largest = max([p for *_, p, _ in raw] + losses_w, default=1.0) or 1.0
     per_watt = max_width / largest
-    limit = solution.input_power * (1 + 1e-9)
-    edges = tuple(FlowEdge(a, b, p, kind, kind == "port" and solution.input_power > 0 and p > limit, p * per_watt)
-                  for a, b, p, kind in raw)
-    nodes = _layout(solution, [e.name for e in elements], edges)
-    rolling = {e.name: e.rolling_power for e in solution.elements.values() if e.kind == "planetary set"}
-    losses = {e.name: e.loss for e in solution.elements.values() if e.kind in ("planetary set", "gear stage")}
-    return PowerFlow(solution.train.name, nodes, edges, per_watt, solution.input_power, solution.circulating_power,
-                     MappingProxyType(rolling), MappingProxyType(losses), solution.self_locking is not None)
-
-
-def _layout(solution: Solution, elements: list[str], edges: tuple[FlowEdge, ...]) -> tuple[FlowNode, ...]:
-    """Elements in a row (y = 0), shafts above (y = 1.6), sources/sinks on top, losses below."""
-    ex = {name: 2.0 * k for k, name in enumerate(elements)}
-    shafts = [s for s in solution.shafts if s != HOUSING and any(s in (e.source, e.target) for e in edges)]
-    wanted = {}
-    for shaft in shafts:
-        linked = [ex[e.target] if e.source == shaft and e.target in ex else ex[e.source]
-                  for e in edges if shaft in (e.source, e.target) and (e.source in ex or e.target in ex)]
-        wanted[shaft] = sum(linked) / len(linked) if linked else 0.0
-    order = sorted(shafts, key=lambda s: (wanted[s], shafts.index(s)))
-    span = max(ex.values(), default=0.0)
-    step = max(span / max(len(order) - 1, 1), 1.6) if len(order) > 1 else 0.0
-    start = (span - step * (len(order) - 1)) / 2
-    sx = {s: start + step * k for k, s in enumerate(order)}
+    loops = _loops([(a, b) for a, b, *_ in raw])
+    names = list(dict.fromkeys(n for a, b, *_ in raw for n in (a, b)))
+    kinds = {n: ("source" if n.startswith("drive: ") else "sink" if n.startswith("load: ")
+                 else "element" if n in element_of else "shaft") for n in names}
+    heights = {n: BOX[kinds[n]][1] + (0.55 if kinds[n] == "element" and not is_zero(
+        element_of[n].loss, scale) else 0.0) for n in names}
+    layout = layered_layout(names, [(a, b) for a, b, *_ in raw], first=[n for n in names if kinds[n] == "source"],
+                            last=[n for n in names if kinds[n] == "sink"], heights=heights, dx=2.6, gap=0.45)
+    edges = tuple(FlowEdge(a, b, p, kind, k in loops, p * per_watt, tuple(layout.routes[k]))
+                  for k, (a, b, p, kind) in enumerate(raw))
     nodes: list[FlowNode] = []
-    for name in elements:
-        state = solution.elements[name]
-        label = f"{name}\n({state.kind})"
-        if state.kind == "planetary set":
-            label += f"\nP_w = {fmt(state.rolling_power)} W"
-        nodes.append(FlowNode(name, "element", ex[name], 0.0, label))
-        if state.loss > 0:
-            nodes.append(FlowNode(f"loss: {name}", "loss", ex[name], -1.4, f"loss\n{fmt(state.loss)} W"))
-    for shaft in order:
-        n = solution.speed(shaft)
-        nodes.append(FlowNode(shaft, "shaft", sx[shaft], 1.6, f"{shaft}\n{fmt(n, 5)}\n1/min"))
-    for edge in edges:
-        if edge.kind == "drive":
-            nodes.append(FlowNode(edge.source, "source", sx[edge.target] - 0.35, 3.0, f"drive\n{edge.target}"))
-        elif edge.kind == "load":
-            nodes.append(FlowNode(edge.target, "sink", sx[edge.source] + 0.35, 3.0, f"load\n{edge.source}"))
-    return tuple(nodes)
+    for n in names:
+        x, y = layout.x[n], layout.y[n]
+        if kinds[n] == "element":
+            state = element_of[n]
+            label = f"{state.name}\n{state.kind}"
+            if state.kind == "planetary set":
+                label += f"\nP_w {context.text(state.rolling_power, 'power', scale)}"
+            if not is_zero(state.loss, scale):  # the box sits at the top of its slot, the loss below it
+                y += 0.275
+                loss = f"loss {context.text(state.loss, 'power', scale)}"
+                nodes.append(FlowNode(f"loss: {n}", "loss", x, y - BOX['element'][1] / 2 - 0.42, loss))
+        elif kinds[n] == "shaft":
+            label = f"{n}\n{context.text(solution.speed(n), 'speed', Scales.of(solution).speed, 5)}"
+        else:
+            shaft = n.split(": ", 1)[1]
+            label = f"{'drive' if kinds[n] == 'source' else 'load'} {shaft}\n" \
+                    f"{context.text(abs(solution.power(shaft)), 'power', scale)}"
+        nodes.append(FlowNode(n, kinds[n], x, y, label))
+    edges = _attach(edges, {node.name: node for node in nodes})
+    for node, state in element_of.items():
+        if not is_zero(state.loss, scale):
+            edges += (FlowEdge(node, f"loss: {node}", state.loss, "loss", False, state.loss * per_watt),)
+    rolling = {e.name: clean(e.rolling_power, scale) for e in solution.elements.values() if e.kind == "planetary set"}
+    losses = {e.name: clean(e.loss, scale) for e in solution.elements.values()
+              if e.kind in ("planetary set", "gear stage")}
+    notes = tuple(w for w in solution.warnings if "indeterminate" in w)
+    return PowerFlow(context.title or solution.train.name, tuple(nodes), edges, per_watt, solution.input_power,
+                     solution.circulating_power, MappingProxyType(rolling), MappingProxyType(losses),
+                     solution.self_locking is not None, layout.crossings, context, notes, solution.train)
 
 
+def _attach(edges: tuple[FlowEdge, ...], nodes: dict[str, FlowNode]) -> tuple[FlowEdge, ...]:
+    """Routes that start and end at the (possibly moved) node centres."""
+    out = []
+    for e in edges:
+        route = list(e.route)
+        if route:
+            route[0] = (nodes[e.source].x, nodes[e.source].y)
+            route[-1] = (nodes[e.target].x, nodes[e.target].y)
+        out.append(FlowEdge(e.source, e.target, e.power, e.kind, e.circulating, e.width, tuple(route)))
+    return tuple(out)

@@ -1,4 +1,4 @@
-"""Lever diagrams (Benford–Leising) of simple and compound trains.
+"""Lever diagrams (Benford–Leising) of simple and compound trains, found from the kinematics.
 
 Every element with gears is a vertical lever with three nodes.  For a set
 with ports (sun a, ring b, carrier c) and stationary ratio i0, the speeds of
@@ -11,13 +11,23 @@ node (0) to the ring node (1): between them for a minus set (sun–carrier :
 carrier–ring = z_ring : z_sun), outside for a plus set.  A fixed-axis stage is
 a lever whose third node is the housing (ratio n_first/n_second).
 
-The levers of a train combine into one *compound lever* when the train (in
-the shift state, with the housing treated as a shaft that may turn) has two
+Levers combine into one *compound lever* wherever the equations of the
+elements joined (with the housing treated as a shaft that may turn) leave two
 degrees of freedom, a rigid rotation and one more: then every shaft has one
 height ``Y`` and every kinematically possible set of speeds is
-``n = α + β·Y``, a straight line across the lever.  The heights come from the
-null space of the Willis equations ``n_a − i0·n_b − (1 − i0)·n_c = 0`` (plus
-``n_x = n_y`` for every engaged clutch or brake).
+``n = α + β·Y``, a straight line across the lever.  The heights are the null
+space of the Willis equations ``n_a − i0·n_b − (1 − i0)·n_c = 0``; nothing is
+looked up from a list of known gearsets.
+
+* :func:`free_levers` merges the sets and stages of the free state (every
+  clutch and brake open) into as few compound levers as the kinematics allows:
+  a Simpson or Ravigneaux set is one four-node lever, the ZF 8HP stays four
+  levers joined by shafts, the Prius is its power-split lever and an output
+  lever (reduction set and stages, pivoting on the housing).
+* :func:`compound_lever` is the lever of one shift state: with the engaged
+  clutches and brakes (``n_x = n_y``) a gear of any transmission has two
+  degrees of freedom with the housing free, so every gear has its *reduced
+  lever* with every shaft, the input and the housing on it.
 
 References
 ----------
@@ -29,20 +39,23 @@ Queitsch eq. 12 (s = i0).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from itertools import combinations
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..model.elements import HOUSING, Brake, Clutch
-from ._common import SHAFT_COLOURS, figure_svg, fmt, lever_elements, pyplot
+from ._common import PlottingError, figure_svg, lever_elements
+from .context import FigureContext
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..model.train import GearTrain
     from ..results.solution import Solution
 
-__all__ = ["LeverNode", "Lever", "CompoundLever", "LeverDiagram", "lever_diagram", "compound_lever"]
+__all__ = ["LeverNode", "Lever", "CompoundLever", "LeverDiagram", "lever_diagram", "compound_lever",
+           "free_levers", "gear_speeds"]
 
 
 @dataclass(frozen=True)
@@ -73,17 +86,20 @@ class Lever:
 
 @dataclass(frozen=True)
 class CompoundLever:
-    """All shafts of a two-degree-of-freedom train on one lever.
+    """Shafts on one lever: heights in [0, 1] from the kinematics, optionally their speeds.
 
     Attributes
     ----------
     positions : mapping shaft → height in [0, 1]
     speeds : mapping shaft → 1/min, or None
-        The solved speeds (a straight line over the heights).
+        Speeds of one state (a straight line over the heights).
+    elements : tuple of str
+        The sets and stages that form the lever.
     """
 
     positions: Mapping[str, float]
     speeds: Mapping[str, float] | None = None
+    elements: tuple[str, ...] = ()
 
     def speed_line(self) -> tuple[float, float]:
         """(α, β) of the least-squares line n = α + β·Y through the speeds (1/min)."""
@@ -104,18 +120,44 @@ class CompoundLever:
                 out.append((y, [shaft]))
         return out
 
+    def with_speeds(self, speeds: Mapping[str, float]) -> CompoundLever:
+        """The same lever carrying ``speeds`` (1/min) of its shafts."""
+        return CompoundLever(self.positions, MappingProxyType({s: float(speeds[s]) for s in self.positions}),
+                             self.elements)
+
 
 @dataclass(frozen=True)
 class LeverDiagram:
-    """Levers of a train, the links between them and, if it exists, the compound lever.
+    """Levers of a train in one shift state, with its speeds.
 
     Attributes
     ----------
+    title : str
     levers : tuple of Lever
+        Every set and stage as its own three-node lever.
     links : tuple of (shaft, lever index, lever index)
-        Shafts shared by two levers (permanent connections).
+        Shafts shared by two element levers (permanent connections).
     shift_elements : tuple of (name, kind, shafts, engaged)
     compound : CompoundLever or None
+        The reduced lever of the shift state (all shafts, the joined ones at
+        one height), with the solved speeds; None where the state has more
+        than one free speed besides a rigid rotation.
+    permanent : CompoundLever or None
+        The single compound lever of the free state, when the sets and stages
+        form one.
+    free : tuple of CompoundLever
+        The compound levers of the free state (see :func:`free_levers`), with
+        the solved speeds when there is a solution.
+    input, output : str or None
+        The input and output of a transmission, or the one drive and the one
+        load of a solution, marked on the drawing.
+    drives, loads : tuple of str
+        Every drive and load of the solution (marked where there are several).
+    gear_lines : mapping gear → (mapping shaft → speed per input speed)
+        Speeds of every gear of a transmission over the ``permanent`` lever.
+    gear : str or None
+        The gear shown (its line is drawn bold).
+    context : FigureContext
     """
 
     title: str
@@ -124,127 +166,70 @@ class LeverDiagram:
     shift_elements: tuple[tuple[str, str, tuple[str, str], bool], ...]
     compound: CompoundLever | None
     permanent: CompoundLever | None = None
+    free: tuple[CompoundLever, ...] = ()
+    input: str | None = None
+    output: str | None = None
+    gear_lines: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
+    gear: str | None = None
+    context: FigureContext = field(default_factory=FigureContext)
+    train: Any = field(default=None, repr=False, compare=False)
+    drives: tuple[str, ...] = ()
+    loads: tuple[str, ...] = ()
+
+    def role(self, shaft: str) -> str:
+        """" (input)", " (output)", " (drive)", " (load)" or "": how the drawing names a shaft's part."""
+        if shaft == self.input:
+            return " (input)"
+        if shaft == self.output:
+            return " (output)"
+        if shaft in self.drives:
+            return " (drive)"
+        if shaft in self.loads:
+            return " (load)"
+        return ""
 
     def to_dict(self) -> dict[str, Any]:
+        def lever(c: CompoundLever | None) -> dict[str, Any] | None:
+            if c is None:
+                return None
+            return {"elements": list(c.elements), "positions": dict(c.positions),
+                    "speeds": None if c.speeds is None else dict(c.speeds)}
+
         return {
             "title": self.title,
             "levers": [{"element": lv.element, "ratio": lv.ratio,
                         "nodes": [n.__dict__ for n in lv.nodes]} for lv in self.levers],
             "links": [list(link) for link in self.links],
-            "compound": None if self.compound is None else {
-                "positions": dict(self.compound.positions),
-                "speeds": None if self.compound.speeds is None else dict(self.compound.speeds)},
-            "units": {"speed": "1/min"},
+            "compound": lever(self.compound),
+            "free_levers": [lever(c) for c in self.free],
+            "input": self.input, "output": self.output,
+            "gear_lines": {g: dict(v) for g, v in self.gear_lines.items()},
+            "units": {"speed": "1/min", "gear_lines": "speed per input speed"},
         }
 
     def _repr_html_(self) -> str:
         return figure_svg(self.plot())
 
     def __repr__(self) -> str:
-        state = "compound lever" if self.compound is not None else "no compound lever"
+        state = "compound lever" if self.compound is not None else f"{len(self.free)} free levers"
         return f"<LeverDiagram {self.title!r}: {len(self.levers)} levers, {len(self.links)} links, {state}>"
 
+    @property
+    def speed_levers(self) -> tuple[CompoundLever, ...]:
+        """The levers whose speeds are drawn: the state's reduced lever, else each free lever."""
+        if self.compound is not None:
+            return (self.compound,)
+        return self.free
+
     def plot(self) -> Any:
-        """Figure: left the levers with their links, right the speeds on the compound lever."""
-        plt = pyplot()
-        fig, (left, right) = plt.subplots(1, 2, figsize=(13, 5.5), gridspec_kw={"width_ratios": [1, 1.25]})
-        self._plot_levers(left)
-        self._plot_speeds(right)
-        fig.suptitle(f"{self.title}: lever diagram (Benford–Leising)", fontsize=12)
-        fig.tight_layout()
-        return fig
+        """Figure: left the levers of the free state with clutches, brakes, input and output;
+        right the speeds of the shift state (or of every gear) across the lever."""
+        from ._lever_draw import plot_lever_diagram
 
-    def _heights(self, lever: Lever) -> dict[str, float]:
-        """Node heights for the left panel: the permanent compound lever if the sets and
-        stages alone form one, else each lever on its own scale."""
-        if self.permanent is not None and all(n.shaft in self.permanent.positions for n in lever.nodes):
-            return {n.port: self.permanent.positions[n.shaft] for n in lever.nodes}
-        return {n.port: n.position for n in lever.nodes}
-
-    def _plot_levers(self, ax: Any) -> None:
-        colours = _shaft_colours(self)
-        spots: dict[tuple[str, int], tuple[float, float]] = {}
-        for k, lever in enumerate(self.levers):
-            h = self._heights(lever)
-            ax.plot([k, k], [min(h.values()), max(h.values())], color="black", lw=4, solid_capstyle="round")
-            for node in lever.nodes:
-                y = h[node.port]
-                spots[(node.shaft, k)] = (k, y)
-                ax.plot([k], [y], "o", ms=10, color=colours[node.shaft], mec="black", zorder=5)
-                left = k == 0 and len(self.levers) > 1
-                ax.annotate(f"{node.port} ({node.shaft})", (k, y), xytext=(-9 if left else 9, 4),
-                            textcoords="offset points", fontsize=8, ha="right" if left else "left")
-            ax.annotate(f"{lever.element}\n{'i0' if lever.kind == 'planetary set' else 'ratio'} = {fmt(lever.ratio)}",
-                        (k, -0.08), ha="center", va="top", fontsize=9, annotation_clip=False)
-        for shaft, i, j in self.links:
-            (x0, y0), (x1, y1) = spots[(shaft, i)], spots[(shaft, j)]
-            ax.plot([x0, x1], [y0, y1], color=colours[shaft], lw=2, ls="--", zorder=1)
-        drawn_label = False
-        for name, kind, shafts, engaged in self.shift_elements:
-            ends = [spots[(s, k)] for s in shafts for k in range(len(self.levers)) if (s, k) in spots]
-            if len(ends) >= 2 and engaged:
-                (x0, y0), (x1, y1) = ends[0], ends[-1]
-                ax.plot([x0, x1], [y0, y1], color="red", lw=2.5, zorder=2,
-                        label=None if drawn_label else "engaged clutch/brake")
-                drawn_label = True
-                ax.annotate(name, ((x0 + x1) / 2, (y0 + y1) / 2), color="red", fontsize=8)
-            elif kind == "brake" and engaged and ends:
-                x, y = ends[0]
-                ax.plot([x - 0.25, x], [y, y], color="red", lw=2.5, label=None if drawn_label else "engaged brake")
-                ax.annotate(f"{name} (held)", (x - 0.25, y), color="red", fontsize=8, ha="right")
-                drawn_label = True
-        ax.plot([], [], color="grey", ls="--", label="same shaft (link)")
-        ax.set_xlim(-0.9, len(self.levers) - 0.1)
-        ax.set_xticks([])
-        ax.set_ylabel("node height on the lever (0…1, from the ratios)")
-        ax.set_title("levers and links", fontsize=10)
-        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2)
-        ax.grid(True, axis="y", alpha=0.3)
-
-    def _plot_speeds(self, ax: Any) -> None:
-        colours = _shaft_colours(self)
-        if self.compound is None or self.compound.speeds is None:
-            ax.text(0.5, 0.5, "no single compound lever:\nthe train has more than one free speed",
-                    ha="center", va="center", transform=ax.transAxes)
-            ax.set_axis_off()
-            return
-        c = self.compound
-        ys = [y for y, _ in c.groups()]
-        ax.plot([0, 0], [min(ys), max(ys)], color="black", lw=5, solid_capstyle="round", label="compound lever")
-        alpha, beta = c.speed_line()
-        ax.plot([alpha + beta * (min(ys) - 0.05), alpha + beta * (max(ys) + 0.05)], [min(ys) - 0.05, max(ys) + 0.05],
-                color="grey", lw=1.5, ls="-", label="speeds: one straight line")
-        top = max(abs(v) for v in c.speeds.values()) or 1.0
-        for y, shafts in c.groups():
-            n = c.speeds[shafts[0]]
-            n = 0.0 if abs(n) <= 1e-9 * top else n
-            colour = colours[shafts[0]]
-            ax.annotate("", (n, y), (0, y), arrowprops={"arrowstyle": "->", "color": colour, "lw": 2})
-            ax.plot([n], [y], "o", color=colour, mec="black", ms=9, zorder=5)
-            ax.annotate(f"{' = '.join(shafts)}: {fmt(n, 5)} 1/min", (n, y), xytext=(8, 4), textcoords="offset points",
-                        fontsize=9)
-        ax.axvline(0, color="black", lw=0.6)
-        ax.set_xlabel("speed n in 1/min")
-        ax.set_ylabel("node height on the compound lever")
-        ax.set_title("speeds of the shift state across the lever", fontsize=10)
-        ax.margins(x=0.25)
-        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2)
-        ax.grid(True, alpha=0.3)
+        return plot_lever_diagram(self)
 
 
-def _shaft_colours(diagram: LeverDiagram) -> dict[str, str]:
-    shafts: list[str] = []
-    for lever in diagram.levers:
-        for node in lever.nodes:
-            if node.shaft not in shafts:
-                shafts.append(node.shaft)
-    if diagram.compound is not None:
-        shafts += [s for s in diagram.compound.positions if s not in shafts]
-    colours = {s: SHAFT_COLOURS[k % len(SHAFT_COLOURS)] for k, s in enumerate(s for s in shafts if s != HOUSING)}
-    colours[HOUSING] = "#777777"
-    return colours
-
-
+# ---------------------------------------------------------------------- kinematics
 def _lever(element: Any, ports: tuple[str, str, str], shafts: tuple[str, str, str], ratio: float) -> Lever:
     t = ratio / (ratio - 1.0)  # carrier node, sun at 0, ring at 1
     raw = (0.0, 1.0, t)
@@ -254,44 +239,21 @@ def _lever(element: Any, ports: tuple[str, str, str], shafts: tuple[str, str, st
     return Lever(element.name, kind, ratio, nodes)  # type: ignore[arg-type]
 
 
-def compound_lever(train: GearTrain) -> CompoundLever | None:
-    """Heights of all shafts on one lever, or None if the train has more free speeds.
+def _willis_rows(train: GearTrain, names: set[str] | None = None) -> list[dict[str, float]]:
+    """One row ``n_a − i0·n_b − (1 − i0)·n_c = 0`` per set or stage (all, or those named)."""
+    return [dict(zip(shafts, (1.0, -ratio, -(1.0 - ratio))))
+            for element, _, shafts, ratio in lever_elements(train) if names is None or element.name in names]
 
-    The heights come from the permanent elements (sets and stages) when they
-    alone leave two degrees of freedom; shafts that only an engaged clutch or
-    brake touches (e.g. the housing) sit at the height of the shaft they are
-    joined to.  Otherwise the engaged clutches and brakes are included in the
-    equations.  The housing counts as a shaft that may turn.  Returns None when
-    no two-dimensional null space is found.
 
-    Examples
-    --------
-    >>> from epicyclic.demo import brandenberger_1952
-    >>> lever = compound_lever(brandenberger_1952()[0])
-    >>> {s: round(y, 4) for s, y in lever.positions.items()}
-    {'I': 0.5189, 'II': 0.2841, 'III': 1.0, 'housing': 0.0}
+def _null_space_heights(order: tuple[str, ...], rows: list[dict[str, float]],
+                        first_set: tuple[str, str] | None) -> dict[str, float] | None:
+    """Heights of the shafts in ``rows`` if their null space is two-dimensional, else None.
+
+    The housing counts as a shaft that may turn, so a rigid rotation is always
+    in the null space; the other direction gives the heights.  Orientation:
+    the housing in the lower half, else the first sun below its ring.
     """
-    rows: list[dict[str, float]] = []
-    for _, _, shafts, ratio in lever_elements(train):
-        rows.append(dict(zip(shafts, (1.0, -ratio, -(1.0 - ratio)))))
-    links = [element.shafts for element in train.shift_elements if element.engaged]
-    positions = _null_space_heights(train, rows)
-    if positions is None:
-        positions = _null_space_heights(train, rows + [{a: 1.0, b: -1.0} for a, b in links])
-        if positions is None:
-            return None
-    for _ in range(len(links)):
-        for a, b in links:
-            if a in positions and b not in positions:
-                positions[b] = positions[a]
-            elif b in positions and a not in positions:
-                positions[a] = positions[b]
-    ordered = {s: positions[s] for s in train.shafts if s in positions}
-    return CompoundLever(MappingProxyType(ordered))
-
-
-def _null_space_heights(train: GearTrain, rows: list[dict[str, float]]) -> dict[str, float] | None:
-    used: list[str] = [s for s in train.shafts if any(s in row for row in rows)]
+    used = [s for s in order if any(s in row for row in rows)]
     if not rows or not used:
         return None
     index = {s: k for k, s in enumerate(used)}
@@ -305,32 +267,134 @@ def _null_space_heights(train: GearTrain, rows: list[dict[str, float]]) -> dict[
     if null.shape[0] != 2:
         return None
     ones = np.ones(len(used)) / np.sqrt(len(used))
-    # the direction in the null space orthogonal to the rigid rotation
-    projected = null - np.outer(null @ ones, ones)
+    projected = null - np.outer(null @ ones, ones)  # the direction orthogonal to the rigid rotation
     v = projected[int(np.argmax(np.linalg.norm(projected, axis=1)))]
     if np.ptp(v) <= 1e-12:
         return None
-    # a fixed orientation: the housing in the lower half, else the first sun below its ring
     key = v[index[HOUSING]] - v.mean() if HOUSING in index else 0.0
-    if abs(key) <= 1e-9 * np.ptp(v):
-        _, _, shafts0, _ = lever_elements(train)[0]
-        key = v[index[shafts0[0]]] - v[index[shafts0[1]]]
+    if abs(key) <= 1e-9 * np.ptp(v) and first_set is not None and all(s in index for s in first_set):
+        key = v[index[first_set[0]]] - v[index[first_set[1]]]
     if key > 0:
         v = -v
     y = (v - v.min()) / np.ptp(v)
-    y = np.where(np.abs(y) < 1e-12, 0.0, y)
+    y = np.where(np.abs(y) < 1e-12, 0.0, np.where(np.abs(y - 1.0) < 1e-12, 1.0, y))
     return {s: float(y[index[s]]) for s in used}
 
 
-def lever_diagram(solution: Solution | None = None, *, train: GearTrain | None = None) -> LeverDiagram:
+def _first_set(train: GearTrain, names: set[str] | None = None) -> tuple[str, str] | None:
+    for element, _, shafts, _ in lever_elements(train):
+        if names is None or element.name in names:
+            return shafts[0], shafts[1]
+    return None
+
+
+def free_levers(train: GearTrain) -> tuple[CompoundLever, ...]:
+    """The compound levers of the free state: sets and stages merged while two DOF remain.
+
+    Starting from one lever per set or stage, two levers are merged whenever
+    their elements together still leave two degrees of freedom (the housing
+    free): they then share two shafts, and all their shafts lie on one lever.
+    This repeats until no pair merges.  The result does not depend on a list
+    of known gearsets.
+
+    Examples
+    --------
+    >>> from epicyclic import GearTrain, PlanetarySet
+    >>> simpson = GearTrain([PlanetarySet("front", "sun", "front_ring", "out", -72 / 33),
+    ...                      PlanetarySet("rear", "sun", "out", "rear_carrier", -72 / 33)])
+    >>> [sorted(c.positions) for c in free_levers(simpson)]
+    [['front_ring', 'out', 'rear_carrier', 'sun']]
+    """
+    items = lever_elements(train)
+    groups = [{element.name} for element, *_ in items]
+    shafts_of = {element.name: set(shafts) for element, _, shafts, _ in items}
+
+    def heights(group: set[str]) -> dict[str, float] | None:
+        return _null_space_heights(train.shafts, _willis_rows(train, group), _first_set(train, group))
+
+    merged = True
+    while merged:
+        merged = False
+        for a, b in combinations(range(len(groups)), 2):
+            common = set().union(*(shafts_of[n] for n in groups[a])) & set().union(*(shafts_of[n] for n in groups[b]))
+            if len(common) >= 2 and heights(groups[a] | groups[b]) is not None:
+                groups[a] |= groups.pop(b)
+                merged = True
+                break
+    order = [element.name for element, *_ in items]
+    out = []
+    for group in groups:
+        positions = heights(group)
+        if positions is None:  # pragma: no cover - a single set or stage always has two DOF
+            raise PlottingError(f"lever: elements {sorted(group)} do not form a lever.")
+        ordered = {s: positions[s] for s in train.shafts if s in positions}
+        out.append(CompoundLever(MappingProxyType(ordered), None, tuple(n for n in order if n in group)))
+    return tuple(out)
+
+
+def compound_lever(train: GearTrain) -> CompoundLever | None:
+    """The lever of the train in its shift state, or None if it has more free speeds.
+
+    The heights come from the sets and stages when they alone leave two
+    degrees of freedom (the housing free); shafts that only an engaged clutch
+    or brake touches (the input, the housing) sit at the height of the shaft
+    they are joined to.  Otherwise the engaged clutches and brakes
+    (``n_x = n_y``) are part of the equations: this is the *reduced lever* of
+    a gear.  Returns None when no two-dimensional null space is found.
+
+    Examples
+    --------
+    >>> from epicyclic.demo import brandenberger_1952
+    >>> lever = compound_lever(brandenberger_1952()[0])
+    >>> {s: round(y, 4) for s, y in lever.positions.items()}
+    {'I': 0.5189, 'II': 0.2841, 'III': 1.0, 'housing': 0.0}
+    """
+    rows = _willis_rows(train)
+    links = [element.shafts for element in train.shift_elements if element.engaged]
+    first = _first_set(train)
+    positions = _null_space_heights(train.shafts, rows, first)
+    if positions is None:
+        positions = _null_space_heights(train.shafts, rows + [{a: 1.0, b: -1.0} for a, b in links], first)
+        if positions is None:
+            return None
+    for _ in range(len(links)):
+        for a, b in links:
+            if a in positions and b not in positions:
+                positions[b] = positions[a]
+            elif b in positions and a not in positions:
+                positions[a] = positions[b]
+    ordered = {s: positions[s] for s in train.shafts if s in positions}
+    return CompoundLever(MappingProxyType(ordered), None, tuple(e.name for e, *_ in lever_elements(train)))
+
+
+def gear_speeds(transmission: Any) -> dict[str, dict[str, float]]:
+    """Every shaft's speed per unit input speed in every gear of ``transmission``.
+
+    ``transmission`` is an :class:`epicyclic.transmission.Transmission` (its
+    ``gears`` and ``speeds(gear)``, Willis kinematics only).
+    """
+    return {gear: dict(transmission.speeds(gear, 1.0)) for gear in transmission.gears}
+
+
+def lever_diagram(solution: Solution | None = None, *, train: GearTrain | None = None,
+                  transmission: Any = None, gear: str | None = None,
+                  context: FigureContext | None = None) -> LeverDiagram:
     """The lever diagram of a solved train (speeds drawn) or of a bare train.
 
     Parameters
     ----------
     solution : Solution, optional
-        Gives the train (in its shift state) and the speeds.
+        Gives the train (in its shift state), the speeds, input and output.
     train : GearTrain, optional
         Without a solution: only the levers and positions.
+    transmission : Transmission, optional
+        A multi-speed transmission: its input and output are marked and, when
+        the free state is one compound lever, every gear's speed line is drawn
+        over it (speeds per input speed).
+    gear : str, optional
+        The gear the solution or train is in (drawn bold, named in the title).
+    context : FigureContext, optional
+        Title, units and notes of the figure.
 
     References
     ----------
@@ -345,14 +409,15 @@ def lever_diagram(solution: Solution | None = None, *, train: GearTrain | None =
     >>> round((lv.position("sun") - lv.position("carrier")) / (lv.position("ring") - lv.position("carrier")), 4)
     0.672
     """
-    from ._common import PlottingError
-
     if solution is None and train is None:
         raise PlottingError("lever diagram: give a solution (or train=...) to draw, got neither.")
     if solution is not None:
         train = solution.train
     assert train is not None
+    context = context or FigureContext(title=train.name, gear=gear)
     items = lever_elements(train)
+    if not items:
+        raise PlottingError(f"train {train.name!r} has no planetary set or gear stage; a lever diagram needs one.")
     levers = tuple(_lever(e, ports, shafts, ratio) for e, ports, shafts, ratio in items)
     links = []
     last_seen: dict[str, int] = {}
@@ -363,11 +428,22 @@ def lever_diagram(solution: Solution | None = None, *, train: GearTrain | None =
             last_seen[node.shaft] = k
     shift = tuple((e.name, "clutch" if isinstance(e, Clutch) else "brake", e.shafts, e.engaged)
                   for e in train.shift_elements if isinstance(e, (Clutch, Brake)))
+    free = free_levers(train)
+    permanent = free[0] if len(free) == 1 else None
     compound = compound_lever(train)
-    permanent = compound_lever(train.with_engaged([])) if train.shift_elements else compound
-    if permanent is not None and len({round(y, 9) for y in permanent.positions.values()}) < 2:
-        permanent = None
-    if compound is not None and solution is not None:
-        compound = CompoundLever(compound.positions,
-                                 MappingProxyType({s: solution.speed(s) for s in compound.positions}))
-    return LeverDiagram(train.name, levers, tuple(links), shift, compound, permanent)
+    if solution is not None:
+        speeds = {s: solution.speed(s) for s in train.shafts}
+        free = tuple(c.with_speeds(speeds) for c in free)
+        if compound is not None:
+            compound = compound.with_speeds(speeds)
+    drives = solution.drives if solution is not None else ()
+    loads = solution.loads if solution is not None else ()
+    inp = transmission.input if transmission is not None else (drives[0] if len(drives) == 1 else None)
+    out = transmission.output if transmission is not None else (loads[0] if len(loads) == 1 else None)
+    lines: dict[str, dict[str, float]] = {}
+    if transmission is not None and permanent is not None:
+        lines = gear_speeds(transmission)
+    return LeverDiagram(context.title or train.name, levers, tuple(links), shift, compound, permanent, free,
+                        inp, out, MappingProxyType(lines), gear if gear is not None else context.gear, context,
+                        train, tuple(drives), tuple(loads))
+

@@ -16,15 +16,7 @@ to the sun's): a simple set for a minus set with ``|i0| ≥ 1.5`` or
 ``|i0| ≤ 2/3``, a stepped planet with an internal ring otherwise, and a stepped
 planet with two external central gears (Brandenberger's Bild 1) for a plus set.
 
-Brandenberger's speed diagram (Bild 3 and 4): at ``x = 0`` the speeds of the
-central members with the carrier held, ``n1' = n1 − n3`` and
-``n2' = n2 − n3``, are marked, and parallel 45° lines drawn through ``0``,
-``n1'`` and ``n2'``.  A vertical line at ``x`` cuts them at three speeds that
-belong together (all shafts given the extra turn ``x``); the actual operating
-point is ``x = n3``.  The three points where a line crosses zero (one shaft
-stands still: cases 2, 4, 6) split the axis into the four ranges 1, 3, 5, 7,
-numbered from the right.  Speeds are scaled by ±1 so that the faster central
-member with the carrier held (Brandenberger's system II) turns positively.
+Brandenberger's speed diagram of the same set (ranges 1–7) is in :mod:`.ranges`.
 
 References
 ----------
@@ -40,18 +32,19 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
-from ..model.planetary import PlanetarySet
-from ._common import RPM_TO_RAD_S, SHAFT_COLOURS, PlottingError, figure_svg, fmt, planetary_set, pyplot
+from ..model.planetary import PlanetarySet, Teeth
+from ._common import RPM_TO_RAD_S, SHAFT_COLOURS, PlottingError, figure_svg, planetary_set, pyplot
+from ._labels import finish
+from .context import FigureContext
+from .ranges import RangeDiagram, range_diagram
+from .schematic import DrawnSet, drawn_set
+from .values import Scales, clean, fmt, scale_of
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..results.solution import Solution
 
 __all__ = ["PlanetBody", "SetLayout", "set_layout", "SpeedPlan", "speed_plan", "RangeDiagram",
-           "range_diagram", "plot_speed_plan"]
-
-#: |i0| between these bounds is drawn with a stepped planet when no teeth are known.
-_SIMPLE_LAYOUT_BOUNDS = (2.0 / 3.0, 1.5)
-
+           "range_diagram", "plot_speed_plan"]  # RangeDiagram, range_diagram: from .ranges
 
 @dataclass(frozen=True)
 class PlanetBody:
@@ -84,12 +77,16 @@ class SetLayout:
     Attributes
     ----------
     radius_unit : str
-        ``"mm"`` (from tooth counts and module) or ``"r_sun"`` (made up from i0).
+        ``"mm"``: radii from tooth counts and the module.
     central : mapping port → (radius, internal)
         The two central members at their mesh radius; ``internal`` for an
         internal ring gear.
     bodies : tuple of PlanetBody
     from_teeth : bool
+        The set's own tooth counts (False: a schematic set reproducing i0).
+    schematic : bool
+    drawn : DrawnSet
+        The tooth counts drawn and which drawn gear is which port.
     """
 
     set_name: str
@@ -97,6 +94,9 @@ class SetLayout:
     central: Mapping[str, tuple[float, bool]]
     bodies: tuple[PlanetBody, ...]
     from_teeth: bool
+    schematic: bool = False
+    drawn: DrawnSet | None = None
+    stationary_ratio: float = float("nan")
 
 
 def _pitch(a: float, z: float, z_partner: float, internal: bool) -> float:
@@ -107,11 +107,16 @@ def _pitch(a: float, z: float, z_partner: float, internal: bool) -> float:
 def set_layout(pset: PlanetarySet, module: float = 1.0) -> SetLayout:
     """The radii of ``pset`` for the speed plan (see the module text).
 
+    A set given by i0 alone is drawn with the schematic tooth counts of
+    :func:`~epicyclic.plotting.schematic.drawn_set`; where those reproduce i0
+    only approximately, the second central gear's operating pitch radius is
+    set so that the layout reproduces i0 exactly.
+
     Parameters
     ----------
     pset : PlanetarySet
     module : float, default 1.0
-        Gear module in mm (used only with tooth counts).
+        Gear module in mm.
 
     Examples
     --------
@@ -121,18 +126,46 @@ def set_layout(pset: PlanetarySet, module: float = 1.0) -> SetLayout:
     >>> lay.central["sun"], lay.central["ring"], lay.bodies[0].axis
     ((15.0, False), (39.0, True), 27.0)
     """
+    from dataclasses import replace
+
     if not (isinstance(module, (int, float)) and not isinstance(module, bool) and module > 0):
         raise PlottingError(f"speed plan: module must be a positive number of mm, got {module!r}.")
-    teeth = pset.teeth
-    if teeth is None:
-        return _layout_from_ratio(pset)
-    m = float(module)
+    drawn = drawn_set(pset)
+    layout = _layout_from_teeth(pset.name, drawn.teeth, float(module))
+    layout = replace(layout, from_teeth=not drawn.schematic, schematic=drawn.schematic, drawn=drawn,
+                     stationary_ratio=pset.stationary_ratio)
+    if drawn.swapped:  # the set's "sun" port is the larger, internal gear of the drawing
+        central = {"sun": layout.central["ring"], "ring": layout.central["sun"]}
+        bodies = tuple(replace(b, contacts=MappingProxyType({drawn.roles.get(k, k): r for k, r in b.contacts.items()}))
+                       for b in layout.bodies)
+        layout = replace(layout, central=MappingProxyType(central), bodies=bodies)
+    if drawn.schematic and len(layout.bodies) == 1:
+        layout = _exact(layout, pset.stationary_ratio)
+    return layout
+
+
+def _exact(layout: SetLayout, i0: float) -> SetLayout:
+    """Set the ring-side radius so that the layout's i0 equals ``i0`` (operating pitch radius)."""
+    from dataclasses import replace
+
+    body = layout.bodies[0]
+    a, rs = body.axis, body.contacts["sun"]
+    c = i0 * rs / (rs - a)  # ω_sun/ω_ring = i0 with the carrier held; rr/(rr − a) = c
+    rr = c * a / (c - 1.0)
+    internal = layout.central["ring"][1]
+    extent = (min(body.extent[0], rr, 2 * a - rr if not internal else rr),
+              max(body.extent[1], rr, 2 * a - rr if not internal else rr))
+    body = replace(body, contacts=MappingProxyType({**body.contacts, "ring": rr}), extent=extent)
+    return replace(layout, central=MappingProxyType({**layout.central, "ring": (rr, internal)}), bodies=(body,))
+
+
+def _layout_from_teeth(name: str, teeth: Teeth, m: float) -> SetLayout:
     zs, zr, zp = teeth.sun, teeth.ring, teeth.planet
     if teeth.kind == "simple":
         a = m * (zs + zp[0]) / 2
         rs, rr = _pitch(a, zs, zp[0], False), _pitch(a, zr, zp[0], True)
         body = PlanetBody("planet", a, (rs, rr), MappingProxyType({"sun": rs, "ring": rr}))
-        return SetLayout(pset.name, "mm", MappingProxyType({"sun": (rs, False), "ring": (rr, True)}), (body,), True)
+        return SetLayout(name, "mm", MappingProxyType({"sun": (rs, False), "ring": (rr, True)}), (body,), True)
     if teeth.kind == "stepped":
         zb, zc = zp
         sun_internal = getattr(teeth, "sun_internal", False)  # the first ring of a Wolfrom set
@@ -141,8 +174,8 @@ def set_layout(pset: PlanetarySet, module: float = 1.0) -> SetLayout:
         rd = _pitch(a, zr, zc, teeth.ring_internal)
         extent = (min(rs, 2 * a - rs, 2 * a - rd, rd), max(2 * a - rs, rs, rd, 2 * a - rd))
         body = PlanetBody("stepped planet", a, extent, MappingProxyType({"sun": rs, "ring": rd}))
-        return SetLayout(pset.name, "mm", MappingProxyType({"sun": (rs, sun_internal),
-                                                           "ring": (rd, teeth.ring_internal)}), (body,), True)
+        return SetLayout(name, "mm", MappingProxyType({"sun": (rs, sun_internal),
+                                                       "ring": (rd, teeth.ring_internal)}), (body,), True)
     # double planet: planet 1 meshes the sun, planet 2 the ring; their common
     # mesh lies off the radial lines, so each body is drawn on its own radial line.
     z1, z2 = zp
@@ -150,34 +183,7 @@ def set_layout(pset: PlanetarySet, module: float = 1.0) -> SetLayout:
     rs, rr = m * zs / 2, m * zr / 2
     b1 = PlanetBody("planet 1", a1, (rs, 2 * a1 - rs), MappingProxyType({"sun": rs}), 0)
     b2 = PlanetBody("planet 2", a2, (2 * a2 - rr, rr), MappingProxyType({"ring": rr}), 1)
-    return SetLayout(pset.name, "mm", MappingProxyType({"sun": (rs, False), "ring": (rr, True)}), (b1, b2), True)
-
-
-def _layout_from_ratio(pset: PlanetarySet) -> SetLayout:
-    i0 = pset.stationary_ratio
-    k = abs(i0)
-    if i0 < 0 and not (_SIMPLE_LAYOUT_BOUNDS[0] < k < _SIMPLE_LAYOUT_BOUNDS[1]):
-        # simple set: i0 = -r_ring/r_sun; the larger central gear is the internal one
-        a = (1.0 + k) / 2
-        body = PlanetBody("planet", a, (min(1.0, k), max(1.0, k)), MappingProxyType({"sun": 1.0, "ring": k}))
-        central = {"sun": (1.0, k < 1.0), "ring": (k, k > 1.0)}
-    elif i0 < 0:
-        # stepped planet, internal ring: |i0| = r_d·ρ_b/(ρ_c·r_a) with ρ_c = 0.8·a
-        rho_b = k / 2.25
-        a = 1.0 + rho_b
-        rho_c = 0.8 * a
-        rd = a + rho_c
-        body = PlanetBody("stepped planet", a, (1.0, rd), MappingProxyType({"sun": 1.0, "ring": rd}))
-        central = {"sun": (1.0, False), "ring": (rd, True)}
-    else:
-        # stepped planet, two external central gears (Brandenberger Bild 1): i0 = r_d/ρ_c
-        a = 2.0
-        rho_c = 2.0 / (1.0 + i0)
-        rd = a - rho_c
-        body = PlanetBody("stepped planet", a, (min(1.0, rd), max(3.0, a + rho_c)),
-                          MappingProxyType({"sun": 1.0, "ring": rd}))
-        central = {"sun": (1.0, False), "ring": (rd, False)}
-    return SetLayout(pset.name, "r_sun", MappingProxyType(central), (body,), False)
+    return SetLayout(name, "mm", MappingProxyType({"sun": (rs, False), "ring": (rr, True)}), (b1, b2), True)
 
 
 @dataclass(frozen=True)
@@ -205,6 +211,9 @@ class SpeedPlan:
     planet_omegas: tuple[float, ...]
     shafts: Mapping[str, str]
     velocity_unit: str = field(default="m/s")
+    module: float = 1.0
+    context: FigureContext = field(default_factory=FigureContext)
+    speed_scale: float = 0.0
 
     def _v(self, omega: float, r: float) -> float:
         return omega * r / 1000.0 if self.layout.radius_unit == "mm" else omega * r
@@ -257,42 +266,67 @@ class SpeedPlan:
         speeds = ", ".join(f"{p} {fmt(w / RPM_TO_RAD_S)}" for p, w in self.omegas.items())
         return f"<SpeedPlan {self.layout.set_name!r}: {speeds} 1/min, {len(self.layout.bodies)} planet body/ies>"
 
+    def assumptions(self) -> str:
+        """What the radii rest on: the module (given or assumed) and, for a schematic set, its teeth."""
+        text = f"module {fmt(self.module)} mm" + ("" if self.module_given else " assumed")
+        drawn = self.layout.drawn
+        if self.layout.schematic and drawn is not None:
+            t = drawn.teeth
+            teeth = "/".join(str(z) for z in (t.sun, *t.planet, t.ring))
+            how = "" if drawn.exact else ", nearest drawable"
+            text = (f"schematic {t.kind} set {teeth} (the file gives i0 only{how}; "
+                    f"radii reproduce i0 = {fmt(self.i0, 5)}), " + text)
+        return text
+
+    @property
+    def module_given(self) -> bool:
+        return self.module != 1.0
+
+    @property
+    def i0(self) -> float:
+        """The set's stationary ratio, which the layout's radii reproduce."""
+        return self.layout.stationary_ratio
+
     def plot(self, ax: Any = None) -> Any:
         """Draw the diagram (radius up, peripheral speed across) on ``ax``; return ax."""
         plt = pyplot()
         if ax is None:
             _, ax = plt.subplots(figsize=(6, 5))
+        ctx = self.context
         colours = dict(zip(("sun", "ring", "carrier"), SHAFT_COLOURS))
         names = {"sun": "sun", "ring": "ring" if self.layout.central["ring"][1] else "2nd central", "carrier": "carrier"}
-        top = max(abs(w) for w in (*self.omegas.values(), *self.planet_omegas)) or 1.0
+        top = max(self.speed_scale * RPM_TO_RAD_S, scale_of((*self.omegas.values(), *self.planet_omegas)))
 
-        def rpm(w: float) -> str:  # round-off (a held member) shown as 0
-            return fmt(0.0 if abs(w) <= 1e-9 * top else w / RPM_TO_RAD_S, 6)
+        def speed(w: float) -> str:  # in the figure's unit, round-off (a held member) shown as 0
+            return f"{fmt(ctx.convert(clean(w, top) / RPM_TO_RAD_S, 'speed'), 5)} {ctx.unit('speed')}"
 
         for port in ("sun", "ring", "carrier"):
             (r0, v0), (r1, v1) = self.member_points(port)
             ax.plot([v0, v1], [r0, r1], color=colours[port], lw=2,
-                    label=f"{names[port]} ({self.shafts[port]}): {rpm(self.omegas[port])} 1/min")
+                    label=f"{names[port]} ({self.shafts[port]}): {speed(self.omegas[port])}")
         for k, body in enumerate(self.layout.bodies):
             (r0, v0), (r1, v1) = self.planet_line(body)
             ax.plot([v0, v1], [r0, r1], color=SHAFT_COLOURS[3 + k], lw=3.5, alpha=0.8,
-                    label=f"{body.label}: {rpm(self.planet_omegas[body.index])} 1/min")
+                    label=f"{body.label}: {speed(self.planet_omegas[body.index])}")
             for name, (r, v) in self.planet_points(body).items():
                 ax.plot([v], [r], "o", color=colours[name], ms=7, mec="black", zorder=5)
                 ax.annotate(name if name != "carrier" else "axis", (v, r), textcoords="offset points",
                             xytext=(6, -4), fontsize=8)
         ax.axvline(0, color="black", lw=0.8)
         ax.axhline(0, color="black", lw=0.8)
-        unit = "mm" if self.layout.radius_unit == "mm" else "relative to sun radius"
-        ax.set_ylabel(f"radius r in {unit}")
+        ax.set_ylabel(f"radius r in mm ({self.assumptions()})" if not self.layout.schematic else "radius r in mm")
         ax.set_xlabel(f"peripheral speed v in {self.velocity_unit}")
-        ax.set_title(f"Speed plan (Kutzbach) of set {self.layout.set_name!r}")
+        title = f"Speed plan (Kutzbach) of set {self.layout.set_name!r}"
+        if self.layout.schematic:
+            title += "\n" + self.assumptions()
+        ax.set_title(title, fontsize=10)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8, loc="best")
         return ax
 
 
-def speed_plan(solution: Solution, element: str | None = None, *, module: float = 1.0) -> SpeedPlan:
+def speed_plan(solution: Solution, element: str | None = None, *, module: float = 1.0,
+               context: FigureContext | None = None) -> SpeedPlan:
     """The Kutzbach diagram of a planetary set of a solved train.
 
     Parameters
@@ -331,186 +365,24 @@ def speed_plan(solution: Solution, element: str | None = None, *, module: float 
     omegas = {p: state.speeds[p] * RPM_TO_RAD_S for p in ("sun", "ring", "carrier")}
     if state.planet_speeds:
         planet = tuple(n * RPM_TO_RAD_S for n in state.planet_speeds)
-    else:
-        # no tooth counts: the planet's speed from the made-up layout (rolling at the sun mesh)
-        body = layout.bodies[0]
-        rs = body.contacts["sun"]
-        planet = (omegas["carrier"] + (omegas["sun"] - omegas["carrier"]) * rs / (rs - body.axis),)
-    unit = "m/s" if layout.radius_unit == "mm" else "rad/s × r_sun"
-    return SpeedPlan(layout, MappingProxyType(omegas), planet, MappingProxyType(dict(state.ports)), unit)
+    else:  # a schematic set: the drawn planets' speeds
+        assert layout.drawn is not None
+        planet = tuple(n * RPM_TO_RAD_S for n in layout.drawn.planet_speeds(state.speeds))
+    return SpeedPlan(layout, MappingProxyType(omegas), planet, MappingProxyType(dict(state.ports)), "m/s",
+                     float(module), context or FigureContext(), Scales.of(solution).speed)
 
 
-@dataclass(frozen=True)
-class RangeDiagram:
-    """Brandenberger's speed diagram of one set (Bild 3/4) with the operating point.
-
-    Attributes
-    ----------
-    labels : tuple of str
-        ("I", "II", "III") mapped to ports in ``ports``: II is the central
-        member that is faster with the carrier held.
-    ports : tuple of str
-        Ports (sun/ring) of I and II, then "carrier".
-    shafts : tuple of str
-    offsets : tuple of float
-        n1', n2', 0 in 1/min, after the sign scaling.
-    sign : float
-        +1 or −1: the factor applied to all speeds.
-    x_operating : float
-        sign·n3, the position of the operating point.
-    zero_points : tuple of float
-        x where each line crosses zero (cases 2, 4, 6 from the right).
-    operating_range : int or None
-        1…7 (None for a set without relative motion).
-
-    References
-    ----------
-    Brandenberger 1952, eq. 1 and Bild 3–5.
-    """
-
-    set_name: str
-    labels: tuple[str, str, str]
-    ports: tuple[str, str, str]
-    shafts: tuple[str, str, str]
-    offsets: tuple[float, float, float]
-    sign: float
-    x_operating: float
-    zero_points: tuple[float, float, float]
-    operating_range: int | None
-
-    def speeds_at(self, x: float) -> tuple[float, float, float]:
-        """Scaled speeds of I, II, III at position x (the three lines)."""
-        return tuple(o + x for o in self.offsets)  # type: ignore[return-value]
-
-    def range_of(self, x: float) -> int:
-        """The range number 1…7 of position x (2, 4, 6: a shaft stands still)."""
-        p = self.zero_points
-        tol = 1e-9 * max(1.0, *(abs(v) for v in p))
-        for k, point in enumerate(p):
-            if abs(x - point) <= tol:
-                return 2 * k + 2
-        return 1 + 2 * sum(x < point for point in p)
-
-    def graphical_torques(self) -> tuple[float, float, float]:
-        """Torque magnitudes of I, II, III read from the diagram (Bild 3), up to one factor.
-
-        "Ein Drehmoment entspricht der Grösse nach dem Abstand der Geraden, durch
-        welche die Drehzahlen der beiden anderen Systeme graphisch dargestellt
-        werden": |M1| ∝ |n2' − 0|, |M2| ∝ |n1' − 0|, |M3| ∝ |n1' − n2'| (frictionless).
-        """
-        n1, n2, n3 = self.offsets
-        return abs(n2 - n3), abs(n1 - n3), abs(n1 - n2)
-
-    def to_dict(self) -> dict[str, Any]:
-        return {"set": self.set_name, "labels": self.labels, "ports": self.ports, "shafts": self.shafts,
-                "offsets": self.offsets, "sign": self.sign, "x_operating": self.x_operating,
-                "zero_points": self.zero_points, "operating_range": self.operating_range}
-
-    def _repr_html_(self) -> str:
-        return figure_svg(self.plot().figure)
-
-    def __repr__(self) -> str:
-        return f"<RangeDiagram {self.set_name!r}: operating point in range {self.operating_range}>"
-
-    def plot(self, ax: Any = None) -> Any:
-        """Draw the parallel 45° lines, the ranges and the operating point."""
-        plt = pyplot()
-        if ax is None:
-            _, ax = plt.subplots(figsize=(6, 5))
-        p = self.zero_points
-        span = max(abs(self.x_operating), *(abs(v) for v in p), 1.0)
-        lo, hi = min(min(p), self.x_operating) - 0.35 * span, max(max(p), self.x_operating, 0.0) + 0.35 * span
-        for k in range(3):
-            ax.plot([lo, hi], [self.offsets[k] + lo, self.offsets[k] + hi], color=SHAFT_COLOURS[k], lw=2,
-                    label=f"{self.labels[k]} = {self.ports[k]} ({self.shafts[k]})")
-            ax.plot([0], [self.offsets[k]], "o", color=SHAFT_COLOURS[k], mec="black")
-        edges = [hi, *p, lo]
-        for k, point in enumerate(p):
-            ax.axvline(point, color="grey", lw=0.8, ls=":")
-            ax.annotate(str(2 * k + 2), (point, 0), textcoords="offset points", xytext=(3, 4), fontsize=9, color="grey")
-        for k in range(4):
-            mid = 0.5 * (edges[k] + edges[k + 1])
-            ax.text(mid, 0.05, str(2 * k + 1), transform=ax.get_xaxis_transform(), ha="center", fontsize=12,
-                    color="grey", weight="bold")
-        # Bild 3: a torque is the distance between the lines of the other two shafts (at x = 0)
-        tq = self.graphical_torques()
-        total = sum(tq) or 1.0
-        ax.plot([], [], " ", label="torques ∝ distance of the other two lines:\n"
-                + " : ".join(f"M{lab} {t / total:.3f}" for lab, t in zip(self.labels, tq)))
-        ys = self.speeds_at(self.x_operating)
-        ax.plot([self.x_operating] * 2, [min(*ys, 0), max(*ys, 0)], color="black", lw=2.5,
-                label=f"operating point (range {self.operating_range})")
-        for k, y in enumerate(ys):
-            ax.plot([self.x_operating], [y], "s", color=SHAFT_COLOURS[k], mec="black", ms=8, zorder=5)
-        ax.axhline(0, color="black", lw=0.8)
-        factor = "" if self.sign > 0 else " (all speeds × −1)"
-        ax.set_xlabel(f"extra turn of all shafts = carrier speed n_III in 1/min{factor}")
-        ax.set_ylabel(f"shaft speed n in 1/min{factor}")
-        ax.set_title(f"Speed ranges 1–7 of set {self.set_name!r} (Brandenberger Bild 3/4)")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8, loc="upper left")
-        return ax
-
-
-def range_diagram(solution: Solution, element: str | None = None) -> RangeDiagram:
-    """Brandenberger's speed diagram (ranges 1–7) of a set at the solved point.
-
-    Parameters
-    ----------
-    solution : Solution
-    element : str, optional
-        Name of the planetary set (default: the first).
-
-    Returns
-    -------
-    RangeDiagram
-
-    References
-    ----------
-    Brandenberger 1952, eq. 1 and Bild 3–5.
-
-    Examples
-    --------
-    >>> from epicyclic.demo import brandenberger_1952
-    >>> from epicyclic import solve
-    >>> range_diagram(solve(*brandenberger_1952())).operating_range  # Brandenberger: "Bereich 7"
-    7
-    """
-    pset = planetary_set(solution, element)
-    state = solution.elements[pset.name]
-    n = state.speeds
-    rel = {"sun": n["sun"] - n["carrier"], "ring": n["ring"] - n["carrier"]}
-    i0 = pset.stationary_ratio
-    if max(abs(v) for v in rel.values()) <= 1e-12 * max(1.0, *(abs(v) for v in n.values())):
-        rel = {"sun": 1000.0 * i0, "ring": 1000.0}  # locked set: only the shape of the diagram
-        locked = True
-    else:
-        locked = False
-    first, second = ("sun", "ring") if abs(rel["ring"]) >= abs(rel["sun"]) else ("ring", "sun")
-    sign = 1.0 if rel[second] > 0 else -1.0
-    offsets = (sign * rel[first], sign * rel[second], 0.0)
-    zero = tuple(sorted((-o for o in offsets), reverse=True))
-    x_op = sign * n["carrier"]
-    ports = (first, second, "carrier")
-    diagram = RangeDiagram(pset.name, ("I", "II", "III"), ports, tuple(state.ports[p] for p in ports),  # type: ignore[arg-type]
-                           offsets, sign, x_op, zero, None)  # type: ignore[arg-type]
-    if locked:
-        return diagram
-    from dataclasses import replace
-
-    return replace(diagram, operating_range=diagram.range_of(x_op))
-
-
-def plot_speed_plan(solution: Solution, element: str | None = None, *, module: float = 1.0) -> Any:
+def plot_speed_plan(solution: Solution, element: str | None = None, *, module: float = 1.0,
+                    context: FigureContext | None = None) -> Any:
     """Figure with the Kutzbach diagram and the range diagram of every (or one) set."""
     plt = pyplot()
+    context = context or FigureContext(title=solution.train.name)
     sets = [planetary_set(solution, element)] if element is not None else list(solution.train.planetary_sets)
     if not sets:
         planetary_set(solution, None)  # raises the clear error
     fig, axes = plt.subplots(len(sets), 2, figsize=(13, 5.2 * len(sets)), squeeze=False)
     for row, pset in zip(axes, sets):
-        speed_plan(solution, pset.name, module=module).plot(row[0])
-        range_diagram(solution, pset.name).plot(row[1])
-    fig.suptitle(f"{solution.train.name}: speeds", fontsize=13)
-    fig.tight_layout()
-    return fig
+        speed_plan(solution, pset.name, module=module, context=context).plot(row[0])
+        range_diagram(solution, pset.name, context=context).plot(row[1])
+    fig.suptitle(context.heading(solution.train, "speeds"), fontsize=12)
+    return finish(fig, [t for ax in fig.axes for t in ax.texts])

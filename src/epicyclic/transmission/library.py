@@ -86,6 +86,8 @@ class LibraryEntry:
     printed_digits: int = 3
     sources: tuple[str, ...] = ()
     notes: tuple[str, ...] = ()
+    units: Mapping[str, str] = field(default_factory=dict)
+    operating_point: tuple[str, ...] = ()  # TOML lines of an [operating_point] table in the example file
 
 
 def _entry(**kw) -> LibraryEntry:
@@ -233,7 +235,16 @@ _ENTRIES = [
             "reduction sun, reduction carrier fixed): Toyota repair manual, 'Power split planetary gear "
             "unit' construction (copy at zatonevkredit.ru/repair_manuals).",
         ),
-        notes=("Two degrees of freedom: give two of engine, mg1, wheels (or ring) speeds.",),
+        notes=("Two degrees of freedom: give two of engine, mg1, wheels (or ring) speeds.",
+               "Operating point: steady cruise, engine 2000 rpm at 100 N*m, wheels 700 rpm (about 80 km/h "
+               "with a 0.30 m rolling radius); MG2 drives with 3.6 kW, about what MG1 generates (battery "
+               "neutral, losses aside).",),
+        units={"speed": "rpm", "torque": "N*m", "power": "kW"},
+        operating_point=('speeds = { engine = "2000 rpm", wheels = "700 rpm" }',
+                         'torques = { engine = "100 N*m" }',
+                         'powers = { mg2 = "3.6 kW" }',
+                         'drives = ["engine", "mg2"]',
+                         'loads = ["mg1", "wheels"]'),
     ),
 ]
 
@@ -320,6 +331,8 @@ def to_toml(key: str, stationary_efficiency: float = 0.98) -> str:
         lines.append(f"# Published ratios: {shown}")
     lines += ["# Generated from epicyclic.transmission.library (keep both in step: tests compare them).", ""]
     lines.append(f'title = "{e.title}"')
+    if e.units:
+        lines += ["", "[units]", *(f'{k} = "{v}"' for k, v in e.units.items())]
     for s in e.sets:
         lines += ["", "[[planetary]]", f'name = "{s.name}"', f'sun = "{s.sun}"', f'ring = "{s.ring}"',
                   f'carrier = "{s.carrier}"']
@@ -342,4 +355,6 @@ def to_toml(key: str, stationary_efficiency: float = 0.98) -> str:
                   "[transmission.schedule]"]
         for gear, engaged in e.schedule.items():
             lines.append(f'"{gear}" = [' + ", ".join(f'"{n}"' for n in engaged) + "]")
+    if e.operating_point:
+        lines += ["", "[operating_point]", *e.operating_point]
     return "\n".join(lines) + "\n"

@@ -1,0 +1,95 @@
+"""What every figure states about its subject: title, gear and shift state, units, assumptions.
+
+A :class:`FigureContext` travels with a picture's data object.  Figures draw
+values in the user's units (those of the file's ``[units]`` table, as the
+tables of ``analyze`` do), put the train, the gear and the engaged clutches
+and brakes into the title, and add a note line for what was assumed (unit
+input speed and torque when the file has no operating point, a schematic
+geometry where tooth counts are missing).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
+
+from ..units import Units
+from .values import clean, fmt
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..model.train import GearTrain
+
+__all__ = ["FigureContext", "shift_state"]
+
+
+def shift_state(train: GearTrain, gear: str | None = None) -> str:
+    """The shift state in words: ``"gear 1: forward + low_reverse engaged"``, ``"B engaged"``, or ``""``.
+
+    Examples
+    --------
+    >>> from epicyclic import Brake, GearTrain, PlanetarySet
+    >>> train = GearTrain([PlanetarySet("P", "a", "b", "c", -2.0), Brake("B", "b")])
+    >>> shift_state(train), shift_state(train, "1"), shift_state(train.with_engaged([]))
+    ('B engaged', 'gear 1: B engaged', 'all clutches and brakes open')
+    """
+    shift = train.shift_elements
+    engaged = [e.name for e in shift if e.engaged]
+    if not shift:
+        state = ""
+    elif engaged:
+        state = " + ".join(engaged) + " engaged"
+    else:
+        state = "all clutches and brakes open"
+    if gear is None:
+        return state
+    return f"gear {gear}: {state}" if state else f"gear {gear}"
+
+
+@dataclass(frozen=True)
+class FigureContext:
+    """The frame of a figure: what is drawn, in which units, under which assumptions.
+
+    Parameters
+    ----------
+    title : str, optional
+        The train's title (default: the train's name).
+    units : Units, optional
+        Units of speeds, torques and powers on the figure (default 1/min, N·m, W).
+    gear : str, optional
+        The gear of a transmission the figure shows.
+    notes : tuple of str
+        Assumptions to state on the figure, e.g. "unit input speed and torque".
+    """
+
+    title: str = ""
+    units: Units = field(default_factory=Units)
+    gear: str | None = None
+    notes: tuple[str, ...] = ()
+
+    def with_note(self, note: str) -> FigureContext:
+        """A copy with one more note (notes already present are not repeated)."""
+        return self if note in self.notes else replace(self, notes=(*self.notes, note))
+
+    # ------------------------------------------------------------------ words
+    def heading(self, train: GearTrain, what: str) -> str:
+        """Title of a figure: ``"<title>: <what>"``, then the shift state and the notes on a second line."""
+        second = "; ".join(s for s in (shift_state(train, self.gear), *self.notes) if s)
+        first = f"{self.title or train.name}: {what}"
+        return first + (f"\n{second}" if second else "")
+
+    # ------------------------------------------------------------------ units
+    def unit(self, quantity: str) -> str:
+        """The unit of ``quantity`` as printed on figures (``*`` as ``·``).
+
+        >>> FigureContext(units=Units(torque="kp*cm")).unit("torque")
+        'kp·cm'
+        """
+        return self.units.of(quantity).replace("*", "·")
+
+    def convert(self, value: float, quantity: str) -> float:
+        """A core value (1/min, N·m, W) in the figure's unit."""
+        return float(self.units.convert(value, quantity))  # type: ignore[arg-type]
+
+    def text(self, value: float, quantity: str, scale: float, digits: int = 4) -> str:
+        """``"1500 U/min"``: value (core units) converted, zero rule applied against ``scale``."""
+        return f"{fmt(self.convert(clean(value, scale), quantity), digits)} {self.unit(quantity)}"

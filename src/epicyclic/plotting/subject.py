@@ -1,0 +1,108 @@
+"""What a figure of a train file shows: the solved state, its gear, the file's units and assumptions.
+
+:func:`figure_subject` turns a train description (``epicyclic.io.TrainFile``)
+into a :class:`Subject`: the solution to draw, the transmission (if the file
+has a ``[transmission]`` table) and the :class:`FigureContext` with the
+file's title and units.  Files plot as they are:
+
+* with an ``[operating_point]`` the train is solved there (in ``gear`` if one
+  is named, with ``--gear`` or in the file);
+* a transmission without an operating point is drawn at **unit input speed
+  and unit input torque** (1 of the file's speed and torque unit at the
+  input, the output as load), in the gear asked for or else its first gear,
+  and the figure says so;
+* a train with neither cannot be solved: a clear error asks for an
+  operating point.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from ..errors import ModelError
+from .context import FigureContext
+
+__all__ = ["Subject", "figure_subject", "UNIT_INPUT_NOTE"]
+
+#: The note a figure at unit input carries (formatted with the units).
+UNIT_INPUT_NOTE = "no operating point in the file: unit input n_in = 1 {speed}, T_in = 1 {torque}"
+
+
+@dataclass(frozen=True)
+class Subject:
+    """A solved state to draw, with its gear, transmission and context."""
+
+    solution: Any
+    context: FigureContext
+    transmission: Any = None
+    gear: str | None = None
+
+
+def _transmission(train_file: Any) -> Any:
+    spec = getattr(train_file, "transmission", None)
+    if spec is None:
+        return None
+    from ..transmission import Transmission
+
+    return Transmission(train_file.train, dict(spec.schedule), spec.input, spec.output,
+                        name=train_file.title or train_file.train.name)
+
+
+def figure_subject(train_file: Any, gear: str | None = None) -> Subject:
+    """The solved state a figure of ``train_file`` shows (see the module text).
+
+    Parameters
+    ----------
+    train_file : epicyclic.io.TrainFile
+    gear : str, optional
+        A gear of the file's ``[transmission]`` schedule.
+
+    Raises
+    ------
+    ModelError
+        ``gear`` without a transmission table, an unknown gear, or a file with
+        neither operating point nor transmission.
+
+    Examples
+    --------
+    >>> from epicyclic.io import load_train_file
+    >>> s = figure_subject(load_train_file("examples/simpson_c4_3speed.toml"), "2")
+    >>> round(s.solution.ratio, 4), s.context.notes
+    (1.4583, ('no operating point in the file: unit input n_in = 1 1/min, T_in = 1 N·m',))
+    """
+    from ..model.operating_point import OperatingPoint
+    from ..solver import solve
+    from ..units import to_core
+
+    units = train_file.units
+    context = FigureContext(title=train_file.title or train_file.train.name, units=units)
+    transmission = _transmission(train_file)
+    if gear is not None:
+        if transmission is None:
+            raise ModelError(f"--gear {gear!r:.40} needs a [transmission] table with a schedule in the file.")
+        transmission.gear_train(gear)  # a clear error for an unknown gear
+    if train_file.operating_point is not None:
+        from dataclasses import replace
+
+        gear = gear if gear is not None else train_file.gear
+        solution = replace(train_file, gear=gear).solve()  # the file's own errors name its keys
+        return Subject(solution, _with_gear(context, gear), transmission, gear)
+    if transmission is None:
+        raise ModelError(
+            "the file has no [operating_point] table and no [transmission] table, so there is nothing to "
+            "solve; add an [operating_point] with speeds, torques or powers, drives and loads."
+        )
+    gear = gear if gear is not None else transmission.gears[0]
+    speed, torque = to_core(1.0, "speed", default_unit=units.speed), to_core(1.0, "torque", default_unit=units.torque)
+    op = OperatingPoint(speeds={transmission.input: speed}, torques={transmission.input: torque},
+                        drives=[transmission.input], loads=[transmission.output])
+    solution = solve(transmission.gear_train(gear), op)
+    note = UNIT_INPUT_NOTE.format(speed=context.unit("speed"), torque=context.unit("torque"))
+    return Subject(solution, _with_gear(context, gear).with_note(note), transmission, gear)
+
+
+def _with_gear(context: FigureContext, gear: str | None) -> FigureContext:
+    from dataclasses import replace
+
+    return replace(context, gear=gear)
