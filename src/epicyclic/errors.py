@@ -26,6 +26,9 @@ __all__ = [
     "OperatingPointError",
     "UnderdeterminedError",
     "ContradictionError",
+    "NumericalError",
+    "NearSingularError",
+    "NonFiniteResultError",
 ]
 
 
@@ -114,3 +117,54 @@ class ContradictionError(OperatingPointError):
         self.conflicting = tuple(conflicting)
         self.quantity = quantity
         super().__init__(message)
+
+
+class NumericalError(EpicyclicError, ValueError):
+    """The train and operating point are valid, but floating point cannot give a trustworthy result.
+
+    Attributes
+    ----------
+    quantity : str
+        What could not be computed (``"speed"``, ``"torque"``, ``"power"``, ...).
+    """
+
+    def __init__(self, message: str, quantity: str):
+        self.quantity = quantity
+        super().__init__(message)
+
+
+class NearSingularError(NumericalError):
+    """The train's equations are too close to singular: round-off would decide the result.
+
+    Attributes
+    ----------
+    distance : float
+        Relative distance of the (equilibrated) equations from singular: the
+        smallest singular value divided by the largest.
+    shafts : tuple of str
+        The shafts whose speed (or torque) the nearly singular equations leave open.
+    elements : tuple of str
+        The elements whose ratios nearly cancel.
+    """
+
+    def __init__(self, message: str, quantity: str, distance: float, shafts: Sequence[str] = (),
+                 elements: Sequence[str] = ()):
+        self.distance = distance
+        self.shafts = tuple(shafts)
+        self.elements = tuple(elements)
+        super().__init__(message, quantity)
+
+
+class NonFiniteResultError(NumericalError):
+    """A result overflows the floating-point range (or an input makes it infinite).
+
+    Attributes
+    ----------
+    where : str
+        The shaft or element whose value overflows (empty where ``quantity`` says it all,
+        e.g. a path into a result such as ``"shafts.sun.power"``).
+    """
+
+    def __init__(self, message: str, quantity: str = "", where: str = ""):
+        self.where = where
+        super().__init__(message, quantity)

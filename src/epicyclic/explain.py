@@ -46,6 +46,7 @@ from .errors import EpicyclicError
 from .io.tables import fmt
 from .model import Brake, Clutch, GearStage, PlanetarySet
 from .results.solution import Solution
+from .results.zero import clean
 from .text import markdown_text
 from .units import Units
 
@@ -88,7 +89,9 @@ _T = {
         "power_rule": "P = M·n·π/30 (positive: drive, negative: load)",
         "input": "input power", "output": "output power", "total_loss": "total loss",
         "efficiency": "efficiency η = P_out/P_in", "selflock": "SELF-LOCKING",
-        "circulating": "circulating power: largest internal power / input power",
+        "circulating": "circulating power (power around a closed loop, Blindleistung) / input power",
+        "largest": "largest element power / input power",
+        "indeterminate": "not defined (the torque split is statically indeterminate)",
         "signs": "signs: a torque M acts on the shaft from outside; power P = M·ω > 0 flows into the train",
         "none": "none",
     },
@@ -129,7 +132,9 @@ _T = {
         "power_rule": "P = M·n·π/30 (positiv: Antrieb, negativ: Abtrieb)",
         "input": "Antriebsleistung", "output": "Abtriebsleistung", "total_loss": "Verlustleistung gesamt",
         "efficiency": "Wirkungsgrad η = P_ab/P_an", "selflock": "SELBSTHEMMUNG",
-        "circulating": "Blindleistung: grösste innere Leistung / Antriebsleistung",
+        "circulating": "Blindleistung (in einer geschlossenen Schleife umlaufende Leistung) / Antriebsleistung",
+        "largest": "grösste Leistung an einem Glied / Antriebsleistung",
+        "indeterminate": "nicht bestimmt (die Momentenaufteilung ist statisch unbestimmt)",
         "signs": "Vorzeichen: ein Moment M wirkt von aussen auf die Welle; P = M·ω > 0 fliesst hinein",
         "none": "keine",
     },
@@ -326,7 +331,13 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
     elif solution.efficiency is not None:
         results.append(f"{t['efficiency']} = {fmt(p(solution.output_power))} / {fmt(p(solution.input_power))} "
                        f"= {fmt(solution.efficiency, 4)}")
-    results.append(f"{t['circulating']} = {fmt(solution.circulating_power, 4)}")
+    circ = solution.circulation
+    if circ.indeterminate:
+        results.append(f"{t['circulating']}: {t['indeterminate']}")
+    elif circ.ratio is not None:
+        loops = "".join(f" ({loop.describe()}: {fmt(p(loop.power))} {u.power})" for loop in circ.loops)
+        results.append(f"{t['circulating']} = {fmt(circ.ratio, 4)}{loops}; "
+                       f"{t['largest']} = {fmt(circ.largest_element_ratio, 4)}")
     results.extend(f"warning: {w}" for w in solution.warnings)
 
     steps = (
@@ -379,7 +390,7 @@ def _lever_lines(element, state, t, n, m, p, u) -> list[str]:
 
 def _zero(value: float, scale: float) -> str:
     """Show a residual that is zero to round-off as 0."""
-    return "0" if abs(value) <= 1e-9 * max(1.0, abs(scale)) else fmt(value)
+    return fmt(clean(value, scale))
 
 
 class _LanguageError(EpicyclicError, ValueError):

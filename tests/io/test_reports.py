@@ -32,7 +32,9 @@ def test_json_schema_keys_are_stable(brandenberger):
     assert report["schema"] == SCHEMA and report["source"] == "x.toml"
     sol = report["solution"]
     assert {"shafts", "elements", "input_power", "output_power", "loss", "efficiency", "self_locking",
-            "circulating_power", "degrees_of_freedom", "warnings", "ratio", "units"} <= set(sol)
+            "circulation", "degrees_of_freedom", "warnings", "ratio", "units"} <= set(sol)
+    assert set(sol["circulation"]) == {"power", "ratio", "loops", "largest_element_power", "largest_element_ratio",
+                                       "indeterminate"}
     assert set(sol["shafts"]["I"]) == {"speed", "torque", "power", "role"}
     planetary = sol["elements"]["planetary"]
     # Brandenberger 1952: with friction M1' = 66.7, M2' = −40.3, M3' = −26.4 cm kg (paper's signs, all

@@ -1,7 +1,7 @@
 """The ``gears -f html`` report: one self-contained page per transmission, styled like ``analyze``.
 
 Sections: the summary table of every gear (ratio, step, efficiency drive and
-coast, largest internal power, most loaded shift element, rolling sets) with
+coast, circulating power, most loaded shift element, rolling sets) with
 spread and mean step; the speed chart across gears; then per gear its detail
 (every shift element's torque or slip, every set's state, rolling power and
 loss, as multiples of the input) and its lever diagram.  Inline CSS and SVG,
@@ -69,7 +69,8 @@ def _detail(g: Any) -> str:
     coast = "self-locking" if g.efficiency_coast is None else f"{g.efficiency_coast:.4f}"
     drive = "self-locking" if g.efficiency_drive is None else f"{g.efficiency_drive:.4f}"
     kpi = [("ratio", f"{g.ratio:.4f}"), ("η drive", drive), ("η coast", coast),
-           ("largest internal power", f"{g.circulating_power:.3f} × P_in")]
+           ("circulating power", "indeterminate" if g.circulating_power_ratio is None
+            else f"{g.circulating_power_ratio:.3f} × P_in")]
     return ("<div class='kpi'>" + "".join(f"<div>{html.escape(k)}<b>{html.escape(v)}</b></div>" for k, v in kpi)
             + "</div>" + shift + sets)
 

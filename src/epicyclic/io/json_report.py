@@ -16,14 +16,20 @@ The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
                             "coupling_power", "loss", "loss_direction", "efficiency_factor",
                             "engaged", "slip_speed", "planet_speeds", "planet_speeds_relative"}},
         "input_power", "output_power", "loss", "efficiency", "self_locking",
-        "circulating_power", "degrees_of_freedom", "warnings", "ratio"
+        "circulation": {"power", "ratio", "loops": [{"path", "power", "ratio"}],
+                        "largest_element_power", "largest_element_ratio", "indeterminate"},
+        "degrees_of_freedom", "warnings", "ratio"
       },
       "ideal": {... same as "solution", lossless ...} | null,
       "geometry": {element: {"kind", "geometry", "fitting", "forces"}}   # only with geometry; mm, deg, N, N*m
     }
 
-Efficiencies, ratios, ``circulating_power`` (a multiple of the input power)
-and ``loss_direction`` (w) are dimensionless.
+Efficiencies, ratios (the circulation's ``ratio`` and ``largest_element_ratio``
+are multiples of the input power) and ``loss_direction`` (w) are
+dimensionless.  Schema 1 had ``circulating_power`` (largest port power ÷ input
+power); schema 2 replaces it by ``circulation``: the power that flows around
+closed loops (Blindleistung) per loop and in total, and the largest element
+power, each null where the torque split is statically indeterminate.
 
 Examples
 --------
@@ -91,6 +97,11 @@ def _convert_solution(data: dict[str, Any], units: Units) -> dict[str, Any]:
     out["elements"] = elements
     for key in ("input_power", "output_power", "loss"):
         out[key] = power(data[key])
+    circ = dict(data["circulation"])
+    for key in ("power", "largest_element_power"):
+        circ[key] = None if circ[key] is None else power(circ[key])
+    circ["loops"] = [{**loop, "power": power(loop["power"])} for loop in circ["loops"]]
+    out["circulation"] = circ
     return out
 
 

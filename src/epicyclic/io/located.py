@@ -18,7 +18,7 @@ t.toml: [operating_point], key 'speeds': the speed of shaft(s) 'ring' is still f
 >>> check_finite({"shafts": {"in": {"power": float("inf")}}}, "t.toml")
 Traceback (most recent call last):
 ...
-epicyclic.io.located.NonFiniteResultError: t.toml: result 'shafts.in.power' is inf, not a finite number: the numbers overflow double precision (about 1.8e308). Give smaller speeds, torques or powers in [operating_point], or a train further from singular (see docs/limits.md).
+epicyclic.errors.NonFiniteResultError: t.toml: result 'shafts.in.power' is inf, not a finite number: the numbers overflow double precision (about 1.8e308). Give smaller speeds, torques or powers in [operating_point], or a train further from singular (see docs/limits.md).
 """
 
 from __future__ import annotations
@@ -27,23 +27,9 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from ..errors import EpicyclicError
+from ..errors import EpicyclicError, NonFiniteResultError
 
 __all__ = ["NonFiniteResultError", "located", "locate_error", "operating_point_where", "check_finite"]
-
-
-class NonFiniteResultError(EpicyclicError, ValueError):
-    """A result that is infinite or NaN (the inputs overflow double precision).
-
-    Attributes
-    ----------
-    quantity : str
-        Where in the result, e.g. ``"shafts.sun.power"``.
-    """
-
-    def __init__(self, message: str, quantity: str = ""):
-        self.quantity = quantity
-        super().__init__(message)
 
 
 def located(exc: EpicyclicError, source: str, where: str = "", owner: str = "") -> EpicyclicError:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import html
 from dataclasses import dataclass
 
+from ..results.circulation import Circulation
 from ..results.solution import Solution
 from ..text import markdown_text
 from ..units import Units
@@ -115,9 +116,24 @@ def summary_lines(solution: Solution, units: Units | None = None) -> list[tuple[
         lines.append(("efficiency", fmt(solution.efficiency, 4) if solution.efficiency is not None else "—"))
     if solution.ratio is not None:
         lines.append(("speed ratio n_drive/n_load", fmt(solution.ratio)))
-    lines.append(("circulating power", f"{fmt(solution.circulating_power, 4)} × input power"))
+    lines += _circulation_lines(solution.circulation, u)
     lines.append(("degrees of freedom", str(solution.degrees_of_freedom)))
     lines += [("warning", w) for w in solution.warnings]
+    return lines
+
+
+def _circulation_lines(circulation: Circulation, u: Units) -> list[tuple[str, str]]:
+    """Circulating power (total, per loop) and the largest element power, both × input."""
+    if circulation.indeterminate:
+        return [("circulating power", "not defined: the torque split of "
+                 + ", ".join(repr(n) for n in circulation.indeterminate) + " is statically indeterminate")]
+    if circulation.ratio is None:
+        return [("circulating power", "—")]
+    lines = [("circulating power", f"{fmt(u.power_from_core(circulation.power))} {u.power} = "
+              f"{fmt(circulation.ratio, 4)} × input power" if circulation.loops else "none")]
+    lines += [("circulating loop", f"{loop.describe()}: {fmt(u.power_from_core(loop.power))} {u.power} "
+               f"({fmt(loop.ratio, 4)} × input power)") for loop in circulation.loops]
+    lines.append(("largest element power", f"{fmt(circulation.largest_element_ratio, 4)} × input power"))
     return lines
 
 

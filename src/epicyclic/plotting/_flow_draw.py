@@ -130,8 +130,16 @@ def plot_power_flow(flow: Any) -> Any:
 
 def _title(flow: Any) -> str:
     heading = flow.context.heading(flow.train, "power flow") if flow.train is not None else flow.title
-    # the solver's figure: the largest power through an element port per input power
-    circ = f"largest internal power {flow.circulating_power:.3g} × input"
+    # the solver's figures (Solution.circulation): circulating power and the largest element power
+    c = flow.circulation
+    if c.indeterminate:
+        circ = "circulating power not defined (statically indeterminate torque split)"
+    elif c.loops and c.ratio is not None:
+        circ = f"circulating power {c.ratio:.3g} × input"
+    else:
+        circ = "no circulating power"
+    if c.largest_element_ratio is not None:
+        circ += f", largest element power {c.largest_element_ratio:.3g} × input"
     if any(e.circulating for e in flow.edges):
         circ += " — power flows around a closed loop (red)"
     if flow.self_locking:

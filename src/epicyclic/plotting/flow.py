@@ -38,6 +38,7 @@ from .context import FigureContext
 from .values import Scales, clean, fmt, is_zero
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..results.circulation import Circulation
     from ..results.solution import Solution
 
 __all__ = ["FlowNode", "FlowEdge", "PowerFlow", "power_flow", "MAX_WIDTH"]
@@ -83,9 +84,9 @@ class PowerFlow:
     width_per_watt : float
         Band width (data units) per W, the same for every edge.
     input_power : float
-    circulating_power : float
-        The solver's figure (``Solution.circulating_power``: the largest port
-        power as a multiple of the input power).
+    circulation : Circulation
+        The solver's circulating power (``Solution.circulation``: per loop and
+        in total, and the largest element power).
     rolling : mapping element → W
     losses : mapping element → W
     crossings : int
@@ -97,7 +98,7 @@ class PowerFlow:
     edges: tuple[FlowEdge, ...]
     width_per_watt: float
     input_power: float
-    circulating_power: float
+    circulation: Circulation
     rolling: Mapping[str, float]
     losses: Mapping[str, float]
     self_locking: bool = False
@@ -113,7 +114,7 @@ class PowerFlow:
         return {"title": self.title, "units": {"power": "W", "width": "data units"},
                 "nodes": [n.__dict__ for n in self.nodes],
                 "edges": [{k: v for k, v in e.__dict__.items() if k != "route"} for e in self.edges],
-                "input_power": self.input_power, "circulating_power": self.circulating_power,
+                "input_power": self.input_power, "circulation": self.circulation.to_dict(),
                 "rolling": dict(self.rolling), "losses": dict(self.losses), "crossings": self.crossings}
 
     def _repr_html_(self) -> str:
@@ -121,7 +122,7 @@ class PowerFlow:
 
     def __repr__(self) -> str:
         return (f"<PowerFlow {self.title!r}: {len(self.edges)} edges, input {fmt(self.input_power)} W, "
-                f"largest internal power {fmt(self.circulating_power, 3)} × input, {self.crossings} crossings>")
+                f"circulating power {fmt(self.circulation.ratio, 3)} × input, {self.crossings} crossings>")
 
     def plot(self) -> Any:
         """Draw the layered graph; returns the figure."""
@@ -230,7 +231,7 @@ def power_flow(solution: Solution, *, max_width: float = MAX_WIDTH,
               if e.kind in ("planetary set", "gear stage")}
     notes = tuple(w for w in solution.warnings if "indeterminate" in w)
     return PowerFlow(context.title or solution.train.name, tuple(nodes), edges, per_watt, solution.input_power,
-                     solution.circulating_power, MappingProxyType(rolling), MappingProxyType(losses),
+                     solution.circulation, MappingProxyType(rolling), MappingProxyType(losses),
                      solution.self_locking is not None, layout.crossings, context, notes, solution.train)
 
 

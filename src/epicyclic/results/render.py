@@ -1,26 +1,31 @@
 """Render a Solution as plain data, a text table or an HTML table.
 
 Rendering never computes: it reads the result object.  Units are the core
-units (1/min, N·m, W); the I/O layer converts for other units.
+units (1/min, N·m, W); the I/O layer converts for other units.  This module
+knows the result only by its attributes (it imports nothing from
+:mod:`epicyclic.results.solution`, which imports it).
+
+Schema versions of :func:`solution_to_dict`: 1 had ``circulating_power``
+(largest port power ÷ input power); 2 replaces it by ``circulation``
+(circulating power per loop and in total, and the largest element power, in W
+and as a multiple of the input; null values where the torque split is
+statically indeterminate).
 """
 
 from __future__ import annotations
 
 import html
-from typing import TYPE_CHECKING, Any
-
-if TYPE_CHECKING:  # pragma: no cover
-    from .solution import Solution
+from typing import Any
 
 __all__ = ["solution_to_dict", "solution_table", "solution_html", "SCHEMA_VERSION"]
 
 #: Version of the JSON layout produced by :func:`solution_to_dict`.
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
 
 UNITS = {"speed": "1/min", "torque": "N*m", "power": "W"}
 
 
-def solution_to_dict(sol: Solution) -> dict[str, Any]:
+def solution_to_dict(sol: Any) -> dict[str, Any]:
     """JSON-ready dictionary of a solution (stable layout, units stated)."""
     return {
         "schema": SCHEMA_VERSION,
@@ -60,7 +65,7 @@ def solution_to_dict(sol: Solution) -> dict[str, Any]:
             "formal_efficiency": sol.self_locking.formal_efficiency,
             "thresholds": dict(sol.self_locking.thresholds),
         },
-        "circulating_power": sol.circulating_power,
+        "circulation": sol.circulation.to_dict(),
         "degrees_of_freedom": sol.degrees_of_freedom,
         "warnings": list(sol.warnings),
     }
@@ -78,11 +83,11 @@ def _num(value: float | None, digits: int = 6) -> str:
     return "—" if value is None else f"{value:.{digits}g}"
 
 
-def _shaft_rows(sol: Solution) -> list[list[str]]:
+def _shaft_rows(sol: Any) -> list[list[str]]:
     return [[s.name, _num(s.speed), _num(s.torque), _num(s.power), s.role] for s in sol.shafts.values()]
 
 
-def _element_rows(sol: Solution) -> list[list[str]]:
+def _element_rows(sol: Any) -> list[list[str]]:
     rows = []
     for e in sol.elements.values():
         torques = " / ".join(f"{p} {_num(t, 5)}" for p, t in e.torques.items())
@@ -90,7 +95,7 @@ def _element_rows(sol: Solution) -> list[list[str]]:
     return rows
 
 
-def _summary(sol: Solution) -> list[str]:
+def _summary(sol: Any) -> list[str]:
     lines = [f"input power   {sol.input_power:.6g} W", f"output power  {sol.output_power:.6g} W",
              f"total loss    {sol.loss:.6g} W"]
     if sol.self_locking is not None:
@@ -98,8 +103,22 @@ def _summary(sol: Solution) -> list[str]:
         lines.append("SELF-LOCKING: " + sol.self_locking.message)
     else:
         lines.append(f"efficiency    {_num(sol.efficiency)}")
-    lines.append(f"circulating power  {sol.circulating_power:.4g} × input")
+    lines += _circulation_lines(sol.circulation)
     lines += [f"warning: {w}" for w in sol.warnings]
+    return lines
+
+
+def _circulation_lines(circulation: Any) -> list[str]:
+    if circulation.indeterminate:
+        return ["circulating power  — (" + circulation.describe() + ")"]
+    if circulation.loops:
+        lines = [f"circulating power  {_num(circulation.power)} W"
+                 + (f" = {_num(circulation.ratio, 4)} × input" if circulation.ratio is not None else "")]
+        lines += [f"  loop {loop.describe()}: {_num(loop.power)} W" for loop in circulation.loops]
+    else:
+        lines = ["circulating power  none"]
+    if circulation.largest_element_ratio is not None:
+        lines.append(f"largest element power  {_num(circulation.largest_element_ratio, 4)} × input")
     return lines
 
 
@@ -108,7 +127,7 @@ ELEMENT_HEADERS = ["element", "kind", "state", "port torques [N*m]", "rolling po
                    "coupling power [W]", "loss [W]"]
 
 
-def solution_table(sol: Solution) -> str:
+def solution_table(sol: Any) -> str:
     """Plain-text report: shafts, elements, summary."""
     return "\n\n".join([
         f"{sol.train.name}",
@@ -124,7 +143,7 @@ def _html_table(headers: list[str], rows: list[list[str]]) -> str:
     return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
 
 
-def solution_html(sol: Solution) -> str:
+def solution_html(sol: Any) -> str:
     """HTML fragment (for notebooks and reports)."""
     summary = "".join(f"<li>{html.escape(line)}</li>" for line in _summary(sol))
     return (

@@ -13,6 +13,11 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from ..errors import UnknownShaftError
+from .circulation import Circulation
+from .render import solution_html, solution_table, solution_to_dict
+from .zero import ZERO_TOLERANCE
+
 if TYPE_CHECKING:  # pragma: no cover
     from ..model.operating_point import OperatingPoint
     from ..model.train import GearTrain
@@ -109,8 +114,8 @@ class ElementState:
         ports = list(self.ports)
         carrier = self.speeds[ports[2]]
         relative = max(abs(self.speeds[p] - carrier) for p in ports[:2])
-        level = max(1.0, *(abs(v) for v in self.speeds.values()))
-        return "locked" if relative <= 1e-9 * level else "idle"
+        level = max(abs(v) for v in self.speeds.values())
+        return "locked" if relative <= ZERO_TOLERANCE * level else "idle"
 
 
 @dataclass(frozen=True)
@@ -149,9 +154,10 @@ class Solution:
     efficiency : float or None
         output/input; None when the train self-locks or has no drive/load.
     self_locking : SelfLocking or None
-    circulating_power : float
-        Largest power through any element port as a multiple of the input
-        power (> 1 means power circulates inside the train).
+    circulation : Circulation
+        Circulating power (Blindleistung) per closed loop and in total, and
+        the largest element power, each in W and as a multiple of the input;
+        not defined where the torque split is statically indeterminate.
     degrees_of_freedom : int
         Of the train (speeds to give), before the given speeds.
     warnings : tuple of str
@@ -168,7 +174,7 @@ class Solution:
     loss: float
     efficiency: float | None
     self_locking: SelfLocking | None
-    circulating_power: float
+    circulation: Circulation
     degrees_of_freedom: int
     warnings: tuple[str, ...] = ()
     ideal: Solution | None = None
@@ -190,8 +196,6 @@ class Solution:
         try:
             return self.shafts[shaft]
         except KeyError:
-            from ..errors import UnknownShaftError
-
             raise UnknownShaftError(shaft, list(self.shafts), "solution") from None
 
     @property
@@ -217,19 +221,13 @@ class Solution:
     # ------------------------------------------------------------------ rendering
     def to_dict(self) -> dict[str, Any]:
         """Plain data (JSON-ready) with units stated; see :mod:`epicyclic.results.render`."""
-        from .render import solution_to_dict
-
         return solution_to_dict(self)
 
     def table(self) -> str:
         """A plain-text table for terminals."""
-        from .render import solution_table
-
         return solution_table(self)
 
     def _repr_html_(self) -> str:
-        from .render import solution_html
-
         return solution_html(self)
 
     def __str__(self) -> str:

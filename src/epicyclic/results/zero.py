@@ -21,7 +21,8 @@ the train's own scale at that place, never an absolute number of units:
 * a power, loss or rolling power: the product of a cleaned torque and a cleaned
   speed, so it is zero exactly when one of them is.
 
-Every value also loses its sign when zero (``-0.0`` becomes ``0.0``).
+Every value also loses its sign when zero (``-0.0`` becomes ``0.0``); an
+infinite or NaN value is never zero (the solver reports it as an error).
 
 The tolerance is far above the round-off of the equilibrated solve (a few
 units of 1e-16) and far below anything physical: a speed 1e-12 of the speeds
@@ -40,6 +41,7 @@ Examples
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 
 import numpy as np
@@ -65,7 +67,7 @@ def is_zero(value: float, scale: float = 0.0) -> bool:
     -------
     bool
     """
-    return abs(value) <= ZERO_TOLERANCE * abs(scale)
+    return math.isfinite(value) and abs(value) <= ZERO_TOLERANCE * abs(scale)
 
 
 def clean(value: float, scale: float = 0.0) -> float:
@@ -99,7 +101,8 @@ def clean_array(values: Iterable[float] | np.ndarray, scale: float | np.ndarray 
     ndarray of float
     """
     array = np.asarray(values, dtype=float)
-    zero = np.abs(array) <= ZERO_TOLERANCE * np.abs(np.asarray(scale, dtype=float))
+    with np.errstate(invalid="ignore", over="ignore"):
+        zero = (np.abs(array) <= ZERO_TOLERANCE * np.abs(np.asarray(scale, dtype=float))) & np.isfinite(array)
     return np.where(zero, 0.0, array) + 0.0
 
 

@@ -20,14 +20,16 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import OperatingPointError
+from ..errors import NonFiniteResultError, OperatingPointError
 from ..model.elements import HOUSING
 from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
 from .assembly import matrices
-from .kinematics import speed_solver
-from .solve import MAX_PATTERN_TRIES, _validate, loss_pattern
+from .evaluate import evaluate
+from .kinematics import check_speeds, speed_solver
+from .self_locking import SELF_LOCKING_MARGIN
+from .solve import MAX_PATTERN_TRIES, _validate
 from .statics import torque_solver
 
 __all__ = ["BatchSolution", "solve_batch"]
@@ -150,14 +152,14 @@ def solve_batch(
     mats = matrices(train, template.external_shafts)
     points = int(np.prod(shape)) if shape else 1
 
-    # kinematics: one product for all points
+    # kinematics: one product for all points (held shafts exactly 0, givens exactly)
     given_speed = [s for s in speed_in if s != HOUSING]
     g = np.array([speed_in[s] for s in given_speed]).reshape(len(given_speed), points)
     kin = speed_solver(mats, given_speed)
-    moving = kin.speeds(g) if given_speed else np.zeros((len(mats.speed_index), points))
+    with np.errstate(all="ignore"):
+        moving = kin.speeds(g) if given_speed else np.zeros((len(mats.speed_index), points))
+    check_speeds(mats, moving)
     kin.check(g, moving)
-    for r, shaft in enumerate(given_speed):  # givens exactly, not round-off
-        moving[mats.speed_index[shaft]] = g[r]
     n = np.vstack([moving, np.zeros((1, points))])  # housing last
     shaft_row = {s: k for k, s in enumerate(train.shafts)}
 
@@ -167,14 +169,20 @@ def solve_batch(
     for r, shaft in enumerate(given):
         omega = n[shaft_row[shaft]] * RPM_TO_RAD_S
         if shaft in power_in:
-            still = np.abs(omega) < 1e-12
+            still = omega == 0.0
             if np.any(still):
                 k = int(np.flatnonzero(still)[0])
                 raise OperatingPointError(
                     f"batch: powers[{shaft!r}] is given, but shaft {shaft!r} stands still at point {k}; "
                     "give a torque there instead."
                 )
-            value = power_in[shaft] / omega
+            with np.errstate(all="ignore"):
+                value = power_in[shaft] / omega
+            if not np.all(np.isfinite(value)):
+                k = int(np.flatnonzero(~np.isfinite(value))[0])
+                raise NonFiniteResultError(
+                    f"batch: powers[{shaft!r}] at point {k} needs a torque beyond the floating-point range "
+                    "(about 1.8e308 N·m); give a larger speed or a smaller power.", "torque", shaft)
         else:
             value = torque_in[shaft].copy()
         sign = np.sign(omega)
@@ -183,20 +191,24 @@ def solve_batch(
         elif shaft in loads:
             value = np.where(sign != 0, -np.abs(value) * sign, value)
         tau[r] = value
+    given_map = {s: tau[r] for r, s in enumerate(given)}
 
     ideal = torque_solver(mats, given, None)
-    x_ideal = ideal.operator @ tau
+    with np.errstate(all="ignore"):
+        x_ideal = ideal.operator @ tau
     ideal.check(tau, x_ideal)
+    ideal_eval = evaluate(mats, n, x_ideal, None, given_map)
 
     # loss directions: group points by pattern, one solve per pattern
-    pattern = loss_pattern(mats, x_ideal, n)
+    pattern = ideal_eval.pattern.copy()
     first_pattern = pattern.copy()
     x = np.array(x_ideal)
     consistent = np.zeros(points, dtype=bool)
     pending = np.arange(points)
     solved: set[tuple[int, ...]] = set()
     first_x = np.array(x_ideal)
-    for attempt in range(MAX_PATTERN_TRIES):
+    lossy = any(lever.efficiency != 1.0 for lever in mats.levers)
+    for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
         # one integer code per pattern (base 3) is much faster to group than rows
@@ -208,11 +220,13 @@ def solve_batch(
             members = pending[inverse.ravel() == k]
             solver = torque_solver(mats, given, row)
             solved.add(tuple(int(w) for w in row))
-            xs = solver.operator @ tau[:, members]
+            with np.errstate(all="ignore"):
+                xs = solver.operator @ tau[:, members]
             x[:, members] = xs
             if attempt == 0:
                 first_x[:, members] = xs
-            observed = loss_pattern(mats, xs, n[:, members])
+            observed = evaluate(mats, n[:, members], xs, np.repeat(row[:, None], members.size, axis=1),
+                                {s: v[members] for s, v in given_map.items()}).pattern
             column = row[:, None]
             ok = np.all((column == observed) | (observed == 0), axis=0)
             consistent[members[ok]] = True
@@ -222,57 +236,52 @@ def solve_batch(
                 pattern[:, bad] = nxt
                 still_pending.append(bad)
         pending = np.concatenate(still_pending) if still_pending else np.array([], dtype=int)
+    if not lossy:
+        consistent[:] = True
+        solved.add(tuple(int(w) for w in first_pattern[:, 0]) if points else ())
     # points with no consistent pattern keep the formal solution of the ideal pattern
     x[:, ~consistent] = first_x[:, ~consistent]
     pattern[:, ~consistent] = first_pattern[:, ~consistent]
+    ev = evaluate(mats, n, x, pattern if lossy else None, given_map)
 
     # assemble results
-    ext_torque = {s: (x[mats.external_column(s)] if s in mats.external else np.zeros(points)) for s in train.shafts}
-    power = {s: ext_torque[s] * n[shaft_row[s]] * RPM_TO_RAD_S for s in train.shafts}
-    port_torques = {(e, p): x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
-    losses = {}
-    for element in train.elements:
-        total = np.zeros(points)
-        for (name, shaft, col) in mats.port_shaft_columns:
-            if name == element.name:
-                total = total + x[col] * n[shaft_row[shaft]] * RPM_TO_RAD_S
-        losses[element.name] = total
-
-    external = [s for s in mats.external if s != HOUSING]
+    port_torques = {(e, p): ev.x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
+    lever_index = {lever.element.name: k for k, lever in enumerate(mats.levers)}
+    losses = {e.name: (ev.loss[lever_index[e.name]] if e.name in lever_index else np.zeros(points))
+              for e in train.elements}
     drive_power = np.zeros(points)
     load_power = np.zeros(points)
-    wrong = np.zeros(points, dtype=bool)
-    ideal_power = {s: x_ideal[mats.external_column(s)] * n[shaft_row[s]] for s in external}
-    scale = np.zeros(points)
-    for s in external:
-        scale = np.maximum(scale, np.abs(power[s]))
-    for s in external:
+    for s in mats.external:
+        power = ev.powers[shaft_row[s]]
         if s in drives:
             is_drive, is_load = np.ones(points, dtype=bool), np.zeros(points, dtype=bool)
         elif s in loads:
             is_drive, is_load = np.zeros(points, dtype=bool), np.ones(points, dtype=bool)
         else:  # role from the ideal solution's sign
-            is_drive, is_load = ideal_power[s] > 0, ideal_power[s] < 0
-        drive_power += np.where(is_drive, power[s], 0.0)
-        load_power -= np.where(is_load, power[s], 0.0)
-        wrong |= is_drive & (power[s] < -1e-9 * scale)
-        wrong |= is_load & (power[s] > 1e-9 * scale)
+            ideal_power = ideal_eval.powers[shaft_row[s]]
+            is_drive, is_load = ideal_power > 0, ideal_power < 0
+        drive_power += np.where(is_drive, power, 0.0)
+        load_power -= np.where(is_load, power, 0.0)
+    drive_power, load_power = drive_power + 0.0, load_power + 0.0
+    scale = np.maximum(drive_power, load_power)
+    flowing = (drive_power != 0) | (load_power != 0)
+    loss = sum(losses.values(), np.zeros(points)) + 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
-        nothing_out = (drive_power > 0) & (load_power <= 1e-12 * drive_power)  # formal η ≤ 0
-    self_locking = wrong | ~consistent | nothing_out
-    loss = sum(losses.values(), np.zeros(points))
-    with np.errstate(divide="ignore", invalid="ignore"):
+        wrong = _wrong_way(ev.powers, mats, drives, loads, ideal_eval, shaft_row, scale)
+        at_limit = load_power <= SELF_LOCKING_MARGIN * drive_power
+        self_locking = flowing & (wrong | ~consistent | at_limit)
         efficiency = np.where((drive_power > 0) & ~self_locking, load_power / drive_power, np.nan)
-    efficiency = np.where((efficiency > 1.0) & (efficiency <= 1.0 + 1e-9), 1.0, efficiency)  # round-off
+    exact = (loss == 0) & (np.abs(efficiency - 1.0) <= 1e-9)
+    efficiency = np.where(exact, 1.0, np.minimum(efficiency, 1.0))
 
     def shaped(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape)
 
     return BatchSolution(
         train=train,
-        speeds=MappingProxyType({s: shaped(n[shaft_row[s]]) for s in train.shafts}),
-        torques=MappingProxyType({s: shaped(v) for s, v in ext_torque.items()}),
-        powers=MappingProxyType({s: shaped(v) for s, v in power.items()}),
+        speeds=MappingProxyType({s: shaped(ev.speeds[shaft_row[s]]) for s in train.shafts}),
+        torques=MappingProxyType({s: shaped(ev.torques[shaft_row[s]]) for s in train.shafts}),
+        powers=MappingProxyType({s: shaped(ev.powers[shaft_row[s]]) for s in train.shafts}),
         port_torques=MappingProxyType({k: shaped(v) for k, v in port_torques.items()}),
         losses=MappingProxyType({k: shaped(v) for k, v in losses.items()}),
         input_power=shaped(drive_power),
@@ -282,3 +291,20 @@ def solve_batch(
         self_locking=shaped(self_locking),
         patterns=len(solved),
     )
+
+
+def _wrong_way(powers, mats, drives, loads, ideal_eval, shaft_row, scale) -> np.ndarray:
+    """Points where a load delivers, or a drive absorbs, more than the margin of the input power."""
+    wrong = np.zeros(scale.shape, dtype=bool)
+    for s in mats.external:
+        power = powers[shaft_row[s]]
+        if s in drives:
+            is_drive, is_load = True, False
+        elif s in loads:
+            is_drive, is_load = False, True
+        else:
+            ideal_power = ideal_eval.powers[shaft_row[s]]
+            is_drive, is_load = ideal_power > 0, ideal_power < 0
+        wrong |= is_drive & (power < -SELF_LOCKING_MARGIN * scale)
+        wrong |= is_load & (power > SELF_LOCKING_MARGIN * scale)
+    return wrong

@@ -4,6 +4,12 @@ The train's constraint rows K (one Willis row per lever, one equality per
 engaged clutch or brake) and one row per given speed form A n = b.  The rank
 of K gives the degrees of freedom; the null space of A names the shafts whose
 speed is still free; a non-zero residual names the givens in conflict.
+Shafts the train holds still get exactly 0, shafts it makes turn together get
+exactly the same speed; a speed that is round-off of the terms it is computed
+from is exactly 0 (the rule of :mod:`epicyclic.results.zero`, with the
+componentwise error bound of the solve as the scale).  Equations too close to singular raise
+:class:`~epicyclic.errors.NearSingularError` instead of a result that
+round-off decides.
 
 References
 ----------
@@ -14,23 +20,22 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
-from ..errors import ContradictionError, UnderdeterminedError
+from ..errors import ContradictionError, NearSingularError, NonFiniteResultError, UnderdeterminedError
 from ..model.elements import HOUSING
+from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, pseudoinverse
+from .linear import Pseudoinverse, pseudoinverse, unreached_columns
 
-__all__ = ["SpeedSolver", "speed_solver", "degrees_of_freedom", "free_speed_shafts"]
+__all__ = ["SpeedSolver", "speed_solver", "degrees_of_freedom", "free_speed_shafts", "solve_speeds", "check_speeds"]
 
 
 def degrees_of_freedom(mats: TrainMatrices) -> int:
     """Number of speeds that must be given to fix every shaft speed."""
-    k = mats.kinematics
-    if k.shape[0] == 0:
-        return k.shape[1]
-    return k.shape[1] - pseudoinverse(k).rank
+    return mats.degrees_of_freedom
 
 
 def free_speed_shafts(mats: TrainMatrices, given: Sequence[str] = ()) -> list[str]:
@@ -61,9 +66,50 @@ class SpeedSolver:
     given: tuple[str, ...]
     system: Pseudoinverse
 
+    @cached_property
+    def operator(self) -> np.ndarray:
+        """Matrix S with speeds = S @ given speeds; rows of held shafts exactly 0."""
+        rows = self.mats.kinematics.shape[0]
+        unit = np.zeros((self.system.matrix.shape[0], len(self.given)))
+        unit[rows:] = np.eye(len(self.given))
+        s = self.system.solve(unit)
+        s[unreached_columns(self.mats.kinematics, [self.mats.speed_index[g] for g in self.given])] = 0.0
+        follow = self._representatives
+        return np.where((follow >= 0)[:, None], s[np.maximum(follow, 0)], 0.0)
+
+    @cached_property
+    def _representatives(self) -> np.ndarray:
+        """Per moving shaft: the column whose speed it has exactly (a given shaft of its class if
+        there is one), or −1 where the train holds it still."""
+        index = self.mats.speed_index
+        classes = self.mats.speed_classes
+        chosen = {classes[g]: g for g in reversed(self.given)}
+        return np.array([-1 if classes[s] == HOUSING else index[chosen.get(classes[s], classes[s])]
+                         for s in self.mats.train.moving_shafts], dtype=int)
+
     def speeds(self, values: Sequence[float] | np.ndarray) -> np.ndarray:
+        """Speeds of the moving shafts (1/min): givens exactly, round-off of zero exactly 0.
+
+        A speed n_j is round-off when |n_j| ≤ ZERO_TOLERANCE · (|A⁺|·|A|·|n|)_j: the magnitude of
+        the terms it is computed from, every equation's terms weighted by how much n_j depends on
+        that equation (A: the equations with the given speeds, A⁺ their pseudoinverse).  This is
+        the componentwise error bound of the solve, scaled up; it keeps a chain's 3^-30, and zeroes
+        what stands still by the ratios (sets sharing their shafts and a held member).
+        """
         g = np.asarray(values, dtype=float)
-        return self.system.inverse[:, self.mats.kinematics.shape[0]:] @ g
+        g = np.where(np.abs(g) < np.finfo(float).tiny, 0.0, g)  # a given speed below 2.2e-308 1/min is 0
+        shape = (-1,) + (1,) * (g.ndim - 1)
+        n = self.operator @ g
+        for r, shaft in enumerate(self.given):
+            n[self.mats.speed_index[shaft]] = g[r]
+        size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
+        terms = np.abs(self.system.inverse) @ (np.abs(self.system.matrix) @ size)
+        zero = size <= ZERO_TOLERANCE * terms
+        zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given
+        n = np.where(zero & np.isfinite(n), 0.0, n)
+        follow = self._representatives  # shafts turning together: bit for bit the same speed
+        n = np.where((follow >= 0).reshape(shape), n[np.maximum(follow, 0)], 0.0) + 0.0
+        return n + 0.0
 
     def check(self, values: Sequence[float] | np.ndarray, speeds: np.ndarray) -> None:
         """Raise ContradictionError if the given speeds violate the constraints."""
@@ -120,8 +166,13 @@ def speed_solver(mats: TrainMatrices, given: Sequence[str]) -> SpeedSolver:
         Some shaft speeds are not fixed: the message names them.
     """
     given = tuple(given)
+    key = ("speed", given)
+    if key in mats.solvers:
+        return mats.solvers[key]
     system = pseudoinverse(_system(mats, given))
     free = [mats.train.moving_shafts[c] for c in system.free_columns()]
+    if system.near_singular and not free:
+        raise _near_singular(mats, given, system)
     if free:
         dof = degrees_of_freedom(mats)
         missing = mats.train.moving_shafts.__len__() - system.rank
@@ -134,7 +185,47 @@ def speed_solver(mats: TrainMatrices, given: Sequence[str]) -> SpeedSolver:
             free,
             "speed",
         )
-    return SpeedSolver(mats, given, system)
+    mats.solvers[key] = SpeedSolver(mats, given, system)
+    return mats.solvers[key]
+
+
+def _near_singular(mats: TrainMatrices, given: Sequence[str], system: Pseudoinverse) -> NearSingularError:
+    distance, direction, row_weights = system.near_singular[-1]
+    shafts = mats.train.moving_shafts
+    weak = [shafts[c] for c in np.flatnonzero(np.abs(direction) > 0.1 * np.abs(direction).max())]
+    parts = [*mats.levers, *mats.links]
+    involved = [parts[r].element.name for r in np.flatnonzero(np.abs(row_weights[:len(parts)]) > 0.1 * np.abs(row_weights).max())]
+    near_one = [f"{lv.element.name!r} has i0 − 1 = {lv.ratio - 1.0:.3g}" for lv in mats.levers
+                if lv.element.name in involved and abs(lv.ratio - 1.0) < 1e-6]
+    return NearSingularError(
+        f"the speed of {', '.join(repr(s) for s in weak)} is fixed only by nearly cancelling ratios of "
+        f"{', '.join(repr(n) for n in involved) or 'the train'}"
+        + (f" ({'; '.join(near_one)})" if near_one else "")
+        + f": the equations are {distance:.2g} (relative) from singular, so round-off would decide the result "
+        f"(it would be amplified about {1 / distance:.1g} times). Give the speed of {' or '.join(repr(s) for s in weak)} "
+        "instead, or check these ratios.",
+        "speed", distance, weak, involved,
+    )
+
+
+def check_speeds(mats: TrainMatrices, speeds: np.ndarray) -> None:
+    """Raise NonFiniteResultError if a speed over- or underflows (``speeds``: moving shafts, points trailing)."""
+    size = np.abs(speeds)
+    bad = ~np.isfinite(speeds) | ((size < np.finfo(float).tiny) & (size > 0))
+    if not bad.any():
+        return
+    where = np.argwhere(bad)[0]
+    shaft = mats.train.moving_shafts[where[0]]
+    point = f" at operating point {int(where[1])}" if speeds.ndim > 1 and speeds.shape[1] > 1 else ""
+    large = not np.isfinite(speeds[tuple(where)])
+    raise NonFiniteResultError(
+        f"the speed of shaft {shaft!r}{point} "
+        + ("is not a finite number: it overflows the floating-point range (about 1.8e308 1/min): the given "
+           "speeds are too large for the ratios of this train; give smaller speeds." if large else
+           "underflows the floating-point range (below 2.2e-308 1/min it loses its digits): the given speeds "
+           "are too small for the ratios of this train; give larger speeds."),
+        "speed", shaft,
+    )
 
 
 def solve_speeds(mats: TrainMatrices, speeds: Mapping[str, float]) -> dict[str, float]:
@@ -142,9 +233,10 @@ def solve_speeds(mats: TrainMatrices, speeds: Mapping[str, float]) -> dict[str, 
     given = [s for s in speeds if s != HOUSING]
     values = np.array([speeds[s] for s in given], dtype=float)
     solver = speed_solver(mats, given)
-    n = solver.speeds(values)
+    with np.errstate(all="ignore"):
+        n = solver.speeds(values)
+    check_speeds(mats, n)
     solver.check(values, n)
     result = {s: float(n[c]) for s, c in mats.speed_index.items()}
-    result.update({s: float(v) for s, v in zip(given, values)})  # givens exactly, not round-off
     result[HOUSING] = 0.0
     return result

@@ -6,10 +6,16 @@
 4. Lossy statics with η0^w; re-read w from the lossy solution.  When it
    agrees (w = 0 agrees with anything, since such an element carries no loss)
    the solution is consistent; otherwise try the lossy pattern, a few times.
-5. Self-locking: a consistent lossy solution in which a load delivers power
-   or a drive absorbs it, or no consistent pattern at all, means the train
-   cannot move in the asked direction.  The threshold η0 where this starts is
-   found per element by bisection.
+5. Self-locking (:mod:`epicyclic.solver.self_locking`): a consistent lossy
+   solution in which no power reaches the loads, a load delivers power or a
+   drive absorbs it (each beyond a margin), or no consistent pattern at all,
+   means the train cannot move in the asked direction.
+
+Every number passes the zero rule of :mod:`epicyclic.results.zero` once, in
+:func:`epicyclic.solver.evaluate.evaluate`: held shafts, idle and locked
+elements are exactly 0, and the efficiency is never computed from round-off
+(no power flowing is "no efficiency", and it is never above 1).  The
+circulating power is that of :mod:`epicyclic.results.circulation`.
 
 References
 ----------
@@ -24,22 +30,24 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import ContradictionError, EpicyclicError, OperatingPointError
-from ..model.elements import HOUSING, Brake, Clutch, GearStage
+from ..errors import ContradictionError, NonFiniteResultError, OperatingPointError
+from ..model.elements import HOUSING, Clutch, GearStage
 from ..model.operating_point import OperatingPoint
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
-from ..results.solution import RPM_TO_RAD_S, ElementState, SelfLocking, ShaftState, Solution
+from ..results.circulation import circulation, indeterminate_circulation
+from ..results.solution import RPM_TO_RAD_S, ElementState, ShaftState, Solution
+from ..results.zero import clean, scale_of
 from .assembly import TrainMatrices, matrices
+from .evaluate import Evaluation, evaluate
 from .kinematics import degrees_of_freedom, solve_speeds
+from .self_locking import self_locking
 from .statics import TorqueSolver, torque_solver
 
-__all__ = ["solve", "given_torques", "loss_pattern", "MAX_PATTERN_TRIES"]
+__all__ = ["solve", "given_torques", "MAX_PATTERN_TRIES"]
 
 #: How many loss-direction patterns are tried before declaring self-locking.
 MAX_PATTERN_TRIES = 8
-#: Rolling powers below this fraction of the largest port power count as zero.
-ZERO_POWER = 1e-9
 
 
 def _validate(train: GearTrain, op: OperatingPoint) -> None:
@@ -81,13 +89,20 @@ def given_torques(op: OperatingPoint, speeds: Mapping[str, float]) -> dict[str, 
     result: dict[str, float] = {}
     for shaft, power in op.powers.items():
         omega = speeds[shaft] * RPM_TO_RAD_S
-        if abs(omega) < 1e-12:
+        if omega == 0.0:
             raise OperatingPointError(
                 f"operating point: powers[{shaft!r}] = {power:g} W is given, but shaft {shaft!r} "
                 "stands still (speed 0), so the power fixes no torque; give torques[" + repr(shaft) + "] instead.",
                 group="powers", shafts=[shaft],
             )
-        result[shaft] = _with_role(op, shaft, power / omega, omega)
+        torque = power / omega
+        if not np.isfinite(torque):
+            raise NonFiniteResultError(
+                f"operating point: powers[{shaft!r}] = {power:g} W at {speeds[shaft]:g} 1/min needs a torque "
+                "beyond the floating-point range (about 1.8e308 N·m); give a larger speed or a smaller power.",
+                "torque", shaft,
+            )
+        result[shaft] = _with_role(op, shaft, torque, omega)
     for shaft, torque in op.torques.items():
         result[shaft] = _with_role(op, shaft, torque, speeds[shaft] * RPM_TO_RAD_S)
     return result
@@ -101,34 +116,6 @@ def _with_role(op: OperatingPoint, shaft: str, torque: float, omega: float) -> f
     if shaft in op.loads:
         return -abs(torque) * np.sign(omega)
     return torque
-
-
-def loss_pattern(mats: TrainMatrices, x: np.ndarray, speeds: np.ndarray) -> np.ndarray:
-    """w = sign of the rolling power of every lever, 0 where it is negligible.
-
-    ``x`` holds torques (columns of ``mats.torque_columns``, points along
-    trailing axes) and ``speeds`` the speeds of all shafts in
-    ``mats.train.shafts`` order.  Returns an int array (levers, ...).
-    """
-    index = {s: k for k, s in enumerate(mats.train.shafts)}
-    rolling = []
-    for lever in mats.levers:
-        col = mats.torque_index[("port", lever.element.name, lever.ports[0])]
-        a, _, c = (index[s] for s in lever.shafts)
-        rolling.append(x[col] * (speeds[a] - speeds[c]) * RPM_TO_RAD_S)
-    if not rolling:
-        return np.zeros((0,) + np.shape(x)[1:], dtype=int)
-    rolling = np.array(rolling)
-    scale = _power_scale(mats, x, speeds)
-    pattern = np.sign(rolling).astype(int)
-    pattern[np.abs(rolling) <= ZERO_POWER * scale] = 0
-    return pattern
-
-
-def _power_scale(mats: TrainMatrices, x: np.ndarray, speeds: np.ndarray) -> np.ndarray:
-    index = {s: k for k, s in enumerate(mats.train.shafts)}
-    powers = [np.abs(x[col] * speeds[index[shaft]] * RPM_TO_RAD_S) for _, shaft, col in mats.port_shaft_columns]
-    return np.max(np.array(powers), axis=0) if powers else np.ones(np.shape(x)[1:])
 
 
 def _consistent(pattern: np.ndarray, observed: np.ndarray) -> bool:
@@ -155,6 +142,10 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     Raises
     ------
     UnknownShaftError, UnderdeterminedError, ContradictionError, OperatingPointError
+    NearSingularError
+        The train's equations are too close to singular for round-off not to decide the result.
+    NonFiniteResultError
+        A speed, torque or power overflows the floating-point range.
 
     References
     ----------
@@ -176,49 +167,52 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     _validate(train, op)
     mats = matrices(train, op.external_shafts)
     speeds = solve_speeds(mats, op.speeds)
-    speed_vector = np.array([speeds[s] for s in train.shafts])
+    n = np.array([[speeds[s]] for s in train.shafts])
     torques = given_torques(op, speeds)
     given = list(torques)
     values = np.array([torques[s] for s in given])
+    given_map = {s: np.array([v]) for s, v in torques.items()}
 
     ideal_solver = torque_solver(mats, given, None)
     x_ideal = ideal_solver.torques(values)
     ideal_solver.check(values, x_ideal)
-    roles = _roles(train, op, mats, x_ideal, speeds)
-    ideal_pattern = loss_pattern(mats, x_ideal, speed_vector)
-    ideal = _build(train, op, mats, speeds, x_ideal, ideal_pattern, ideal_solver, roles, None, lossless=True)
+    ideal_eval = evaluate(mats, n, x_ideal[:, None], None, given_map)
+    roles = _roles(train, op, mats, ideal_eval)
+    ideal = _build(train, op, mats, ideal_eval, ideal_solver, roles, None, lossless=True)
     if lossless or all(lever.efficiency == 1.0 for lever in mats.levers):
         return replace(ideal, ideal=None) if lossless else replace(ideal, ideal=ideal)
 
+    ideal_pattern = ideal_eval.pattern[:, 0]
     pattern = ideal_pattern
     tried: list[tuple[int, ...]] = []
-    consistent = None
-    first = None
+    consistent: tuple[TorqueSolver, Evaluation] | None = None
+    first: tuple[TorqueSolver, Evaluation] | None = None
     while len(tried) < MAX_PATTERN_TRIES and tuple(pattern) not in tried:
         tried.append(tuple(pattern))
         solver = torque_solver(mats, given, pattern)
         x = solver.torques(values)
         solver.check(values, x)
+        ev = evaluate(mats, n, x[:, None], pattern[:, None], given_map)
         if first is None:
-            first = (solver, x, pattern)
-        observed = loss_pattern(mats, x, speed_vector)
+            first = (solver, ev)
+        observed = ev.pattern[:, 0]
         if _consistent(pattern, observed):
-            consistent = (solver, x, pattern)
+            consistent = (solver, ev)
             break
         pattern = np.where(observed == 0, pattern, observed)
 
-    solver, x, pattern = consistent if consistent is not None else first
-    solution = _build(train, op, mats, speeds, x, pattern, solver, roles, ideal)
-    locked = _self_locking(solution, consistent is not None, mats, given, values, speed_vector, first)
+    solver, ev = consistent if consistent is not None else first
+    solution = _build(train, op, mats, ev, solver, roles, ideal)
+    locked = self_locking(solution, consistent is not None, mats, given, values, n, ideal_pattern)
     if locked is not None:
         solution = replace(solution, self_locking=locked, efficiency=None)
     return solution
 
 
-def _roles(train, op, mats, x_ideal, speeds) -> dict[str, str]:
+def _roles(train: GearTrain, op: OperatingPoint, mats: TrainMatrices, ideal: Evaluation) -> dict[str, str]:
     """drive/load per shaft: as designated, else from the ideal power's sign."""
     roles: dict[str, str] = {}
-    for shaft in train.shafts:
+    for k, shaft in enumerate(train.shafts):
         if shaft == HOUSING:
             roles[shaft] = "housing"
         elif shaft in op.drives:
@@ -226,41 +220,43 @@ def _roles(train, op, mats, x_ideal, speeds) -> dict[str, str]:
         elif shaft in op.loads:
             roles[shaft] = "load"
         elif shaft in mats.external:
-            power = x_ideal[mats.external_column(shaft)] * speeds[shaft]
-            roles[shaft] = "drive" if power > 0 else "load" if power < 0 else "held" if speeds[shaft] == 0 else "external"
+            power = ideal.powers[k, 0]
+            roles[shaft] = ("drive" if power > 0 else "load" if power < 0
+                            else "held" if ideal.speeds[k, 0] == 0 else "external")
         else:
             roles[shaft] = "internal"
     return roles
 
 
-def _build(train, op, mats, speeds, x, pattern, solver: TorqueSolver, roles, ideal, lossless=False) -> Solution:
-    shafts = {}
-    for shaft in train.shafts:
-        torque = float(x[mats.external_column(shaft)]) if shaft in mats.external else 0.0
-        power = torque * speeds[shaft] * RPM_TO_RAD_S + 0.0  # no −0.0 at the housing
-        shafts[shaft] = ShaftState(shaft, speeds[shaft], torque, power, roles[shaft])
+def _efficiency(drive_power: float, load_power: float, loss: float) -> float | None:
+    """output/input; None when no power enters; never above 1 (round-off of a lossless path)."""
+    if drive_power <= 0.0:
+        return None
+    efficiency = load_power / drive_power
+    if loss == 0.0 and abs(efficiency - 1.0) <= 1e-9:
+        return 1.0
+    return min(efficiency, 1.0)
 
+
+def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, lossless=False) -> Solution:
+    shafts = {}
+    for k, shaft in enumerate(train.shafts):
+        shafts[shaft] = ShaftState(shaft, float(ev.speeds[k, 0]), float(ev.torques[k, 0]),
+                                   float(ev.powers[k, 0]), roles[shaft])
     elements = {}
     lever_index = {lever.element.name: k for k, lever in enumerate(mats.levers)}
     for element in train.elements:
-        elements[element.name] = _element_state(element, mats, x, speeds, pattern, lever_index, lossless)
+        elements[element.name] = _element_state(element, mats, ev, lever_index, lossless)
 
-    drive_power = sum(s.power for s in shafts.values() if s.role == "drive")
-    load_power = -sum(s.power for s in shafts.values() if s.role == "load")
-    loss = sum(e.loss for e in elements.values())
-    efficiency = load_power / drive_power if drive_power > 0 else None
-    if efficiency is not None and 1.0 < efficiency <= 1.0 + 1e-9:
-        efficiency = 1.0  # round-off of a lossless path, never above 1
-    port_power = max((abs(p) for e in elements.values() for p in e.port_powers.values()), default=0.0)
-    circulating = port_power / drive_power if drive_power > 0 else 0.0
-    warnings = []
+    drive_power = sum(s.power for s in shafts.values() if s.role == "drive") + 0.0
+    load_power = -sum(s.power for s in shafts.values() if s.role == "load") + 0.0
+    loss = sum(e.loss for e in elements.values()) + 0.0
+    efficiency = _efficiency(drive_power, load_power, loss)
     if solver.indeterminate:
-        warnings.append(
-            "the internal torque split of " + ", ".join(repr(n) for n in solver.indeterminate)
-            + " is statically indeterminate (redundant locking); the minimum-norm split is shown."
-        )
-    if circulating > 1.0 + 1e-9:
-        warnings.append(f"power circulates: the largest internal power is {circulating:.3g} × the input power.")
+        circ = indeterminate_circulation(solver.indeterminate)
+    else:
+        flows = [(e.name, e.ports[p], power) for e in elements.values() for p, power in e.port_powers.items()]
+        circ = circulation(flows, drive_power, train.shafts)
     return Solution(
         train=train,
         operating_point=op,
@@ -271,52 +267,72 @@ def _build(train, op, mats, speeds, x, pattern, solver: TorqueSolver, roles, ide
         loss=loss,
         efficiency=efficiency,
         self_locking=None,
-        circulating_power=circulating,
+        circulation=circ,
         degrees_of_freedom=degrees_of_freedom(mats),
-        warnings=tuple(warnings),
+        warnings=tuple(_warnings(shafts, solver, circ, drive_power, load_power)),
         ideal=ideal,
     )
 
 
-def _element_state(element, mats, x, speeds, pattern, lever_index, lossless) -> ElementState:
+def _warnings(shafts, solver, circ, drive_power, load_power) -> list[str]:
+    warnings = []
+    for s in shafts.values():
+        if s.role in ("drive", "load") and s.speed == 0.0 and s.torque != 0.0:
+            warnings.append(f"{s.name!r} is a {s.role} but the train holds it still (speed 0): it takes "
+                            f"{abs(s.torque):.6g} N·m as a reaction torque, not power.")
+    if drive_power == 0.0 and load_power == 0.0 and any(s.role in ("drive", "load") for s in shafts.values()):
+        warnings.append("no power flows through the train at this operating point, so it has no efficiency.")
+    if solver.indeterminate:
+        warnings.append(
+            "the internal torque split of " + ", ".join(repr(n) for n in solver.indeterminate)
+            + " is statically indeterminate (redundant locking): the minimum-norm split is shown, and the "
+            "circulating power and the largest element power are not defined."
+        )
+    if circ.loops:
+        warnings.append("power circulates: " + circ.describe() + ".")
+    return warnings
+
+
+def _element_state(element, mats: TrainMatrices, ev: Evaluation, lever_index, lossless) -> ElementState:
     idx = mats.torque_index
+    row = {s: k for k, s in enumerate(mats.train.shafts)}
     if isinstance(element, (PlanetarySet, GearStage)):
-        lever = mats.levers[lever_index[element.name]]
+        k = lever_index[element.name]
+        lever = mats.levers[k]
         ports = dict(zip(lever.ports, lever.shafts))
-        torques = {p: float(x[idx[("port", element.name, p)]]) for p in lever.ports}
-        port_speeds = {p: speeds[s] for p, s in ports.items()}
-        a, b, c = lever.ports
-        w = int(pattern[lever_index[element.name]])  # direction of rolling power (0: none)
-        rolling = torques[a] * (port_speeds[a] - port_speeds[c]) * RPM_TO_RAD_S
-        coupling = torques[a] * port_speeds[c] * RPM_TO_RAD_S + 0.0
-        loss = sum(torques[p] * port_speeds[p] for p in lever.ports) * RPM_TO_RAD_S
+        torques = {p: float(ev.x[idx[("port", element.name, p)], 0]) for p in lever.ports}
+        port_speeds = {p: float(ev.speeds[row[s], 0]) for p, s in ports.items()}
+        w = int(ev.direction[k, 0])
+        relative_speed = float(ev.relative[k, 0])
         planets: tuple[float, ...] = ()
         relative: tuple[float, ...] = ()
         if isinstance(element, PlanetarySet) and element.teeth is not None:
-            relative = tuple(k * (port_speeds[a] - port_speeds[c]) for k in element.teeth.planet_factors)
-            planets = tuple(port_speeds[c] + r for r in relative)
+            carrier = port_speeds[lever.ports[2]]
+            relative = tuple(f * relative_speed + 0.0 for f in element.teeth.planet_factors)
+            planets = tuple(clean(carrier + r, scale_of(carrier, r)) for r in relative)
         return ElementState(
             element.name,
             "planetary set" if isinstance(element, PlanetarySet) else "gear stage",
             MappingProxyType(ports),
             MappingProxyType(torques),
             MappingProxyType(port_speeds),
-            rolling_power=rolling,
-            coupling_power=coupling,
-            loss=max(loss, 0.0) if abs(loss) <= 1e-9 * max(1.0, abs(rolling)) else loss,
+            rolling_power=float(ev.rolling[k, 0]),
+            coupling_power=float(ev.coupling[k, 0]),
+            loss=float(ev.loss[k, 0]),
             loss_direction=w,
-            efficiency_factor=1.0 if lossless else lever.efficiency ** w,
+            efficiency_factor=1.0 if lossless or w == 0 else lever.efficiency ** w,
             planet_speeds=planets,
             planet_speeds_relative=relative,
         )
     # clutch or brake
     port_names = ("first", "second") if isinstance(element, Clutch) else ("shaft", "housing")
     ports = dict(zip(port_names, element.shafts))
-    port_speeds = {p: speeds[s] for p, s in ports.items()}
+    port_speeds = {p: float(ev.speeds[row[s], 0]) for p, s in ports.items()}
     if element.engaged:
-        torques = {p: float(x[idx[("port", element.name, p)]]) for p in port_names}
+        torques = {p: float(ev.x[idx[("port", element.name, p)], 0]) for p in port_names}
     else:
         torques = {p: 0.0 for p in port_names}
+    first, second = (port_speeds[p] for p in port_names)
     return ElementState(
         element.name,
         "clutch" if isinstance(element, Clutch) else "brake",
@@ -324,96 +340,5 @@ def _element_state(element, mats, x, speeds, pattern, lever_index, lossless) -> 
         MappingProxyType(torques),
         MappingProxyType(port_speeds),
         engaged=element.engaged,
-        slip_speed=port_speeds[port_names[0]] - port_speeds[port_names[1]],
+        slip_speed=clean(first - second, scale_of(first, second)),
     )
-
-
-def _self_locking(solution: Solution, consistent: bool, mats, given, values, speed_vector, first) -> SelfLocking | None:
-    """Detect self-locking and find each lossy element's threshold η0."""
-    scale = max(solution.input_power, solution.output_power, 1e-300)
-    wrong = [
-        s.name for s in solution.shafts.values()
-        if (s.role == "load" and s.power > 1e-9 * scale) or (s.role == "drive" and s.power < -1e-9 * scale)
-    ]
-    transmits = solution.efficiency is None or solution.efficiency > 1e-12
-    if consistent and not wrong and transmits:
-        return None
-    formal = _formal_efficiency(mats, given, values, speed_vector, first[2], solution)
-    thresholds = _thresholds(mats, given, values, speed_vector, first[2], solution)
-    if wrong:
-        reason = (
-            "with losses, " + ", ".join(repr(s) for s in wrong)
-            + " would have to deliver power although it is the load" if any(
-                solution.shafts[s].role == "load" for s in wrong) else
-            "with losses, " + ", ".join(repr(s) for s in wrong) + " would have to absorb power although it is the drive"
-        )
-    elif not consistent:
-        reason = "no loss-direction pattern is consistent with the given load"
-    else:
-        reason = "with losses, no power reaches the load (the train is exactly at its self-locking limit)"
-    where = ", ".join(f"{name}: η0 < {eta:.6g}" for name, eta in thresholds.items())
-    message = (
-        f"the train self-locks in this direction of power flow: {reason}"
-        + (f" (formal efficiency {formal:.4g})" if formal is not None else "")
-        + (f"; self-locking starts at {where}" if where else "")
-        + ". Drive it from the other side, or raise the efficiency."
-    )
-    return SelfLocking(message, formal, MappingProxyType(thresholds))
-
-
-def _formal_efficiency(mats, given, values, speed_vector, pattern, solution, etas=None) -> float | None:
-    """Efficiency from the loss rule with the ideal pattern (may be ≤ 0)."""
-    if etas is not None:
-        levers = tuple(replace(lv, efficiency=etas.get(lv.element.name, lv.efficiency)) for lv in mats.levers)
-        mats = _with_levers(mats, levers)
-    solver = torque_solver(mats, given, pattern)
-    x = solver.torques(values)
-    powers = {
-        s: x[mats.external_column(s)] * speed_vector[k] * RPM_TO_RAD_S
-        for k, s in enumerate(mats.train.shafts) if s in mats.external
-    }
-    drive = sum(p for s, p in powers.items() if solution.shafts[s].role == "drive")
-    load = -sum(p for s, p in powers.items() if solution.shafts[s].role == "load")
-    if drive == 0.0 and load == 0.0:
-        return None
-    # The ratio is invariant to which side's torque is given, as long as both are finite.
-    if drive == 0.0:
-        return -np.inf if load < 0 else np.inf
-    return float(load / drive)
-
-
-def _with_levers(mats: TrainMatrices, levers) -> TrainMatrices:
-    clone = TrainMatrices(mats.train, mats.external)
-    clone.__dict__["_parts"] = (levers, mats.links)
-    return clone
-
-
-def _thresholds(mats, given, values, speed_vector, pattern, solution) -> dict[str, float]:
-    """Per lossy element: the η0 at which the formal efficiency crosses zero."""
-    out: dict[str, float] = {}
-    for k, lever in enumerate(mats.levers):
-        if lever.efficiency == 1.0 or pattern[k] == 0:
-            continue
-
-        def efficiency(eta: float) -> float:
-            try:
-                value = _formal_efficiency(mats, given, values, speed_vector, pattern, solution,
-                                           {lever.element.name: eta})
-            except EpicyclicError:  # singular exactly at the threshold
-                return 0.0
-            return -np.inf if value is None else value
-
-        hi = 1.0
-        if efficiency(hi) <= 0:
-            continue
-        lo = lever.efficiency
-        if efficiency(lo) > 0:
-            continue
-        for _ in range(80):
-            mid = 0.5 * (lo + hi)
-            if efficiency(mid) > 0:
-                hi = mid
-            else:
-                lo = mid
-        out[lever.element.name] = 0.5 * (lo + hi)
-    return out

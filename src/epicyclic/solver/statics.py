@@ -1,9 +1,11 @@
 """Statics: port and external torques for a loss-direction pattern.
 
 Unknowns are the torques at every element port and the external torques at
-drives, loads and the housing.  Rows: each lever's torque ratio with
-η0^w and its torque sum, each link's torque pair, torque balance at every
-shaft, and one row per given external torque.
+drives and loads.  Rows: each lever's two torque ratios with η0^w, each
+link's torque pair, torque balance at every moving shaft, and one row per
+given external torque (see :mod:`epicyclic.solver.assembly`).  Ports that can
+carry no torque (idle elements) get exactly 0; equations too close to
+singular raise :class:`~epicyclic.errors.NearSingularError`.
 
 References
 ----------
@@ -14,13 +16,13 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
-from ..errors import ContradictionError, UnderdeterminedError
-from ..model.elements import HOUSING
+from ..errors import ContradictionError, NearSingularError, UnderdeterminedError
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, pseudoinverse
+from .linear import Pseudoinverse, pseudoinverse, unreached_columns
 
 __all__ = ["TorqueSolver", "torque_solver"]
 
@@ -51,11 +53,17 @@ class TorqueSolver:
     system: Pseudoinverse
     indeterminate: tuple[str, ...]
 
-    @property
+    @cached_property
     def operator(self) -> np.ndarray:
-        """Matrix S with x = S @ given torques."""
+        """Matrix S with x = S @ given torques; rows of idle ports exactly 0."""
         rows = self.system.matrix.shape[0] - len(self.given)
-        return self.system.inverse[:, rows:]
+        unit = np.zeros((self.system.matrix.shape[0], len(self.given)))
+        unit[rows:] = np.eye(len(self.given))
+        s = self.system.solve(unit)
+        s[self.mats.idle_columns(self.pattern)] = 0.0
+        s[unreached_columns(self.mats.statics(self.pattern),
+                            [self.mats.external_column(g) for g in self.given])] = 0.0
+        return s
 
     def torques(self, values: Sequence[float] | np.ndarray) -> np.ndarray:
         return self.operator @ np.asarray(values, dtype=float)
@@ -110,13 +118,17 @@ def torque_solver(mats: TrainMatrices, given: Sequence[str], pattern: Sequence[i
     """
     given = tuple(given)
     key = None if pattern is None else tuple(int(w) for w in pattern)
+    if ("torque", given, key) in mats.solvers:
+        return mats.solvers[("torque", given, key)]
     system = pseudoinverse(_system(mats, given, key))
     columns = mats.torque_columns
     free = system.free_columns()
     free_external = [columns[c][1] for c in free if columns[c][0] == "external"]
+    if system.near_singular and not free_external:
+        raise _near_singular(mats, system)
     if free_external:
         missing = len(mats.torque_columns) - system.rank
-        shown = [s for s in free_external if s != HOUSING] or free_external
+        shown = free_external
         raise UnderdeterminedError(
             f"the torques at shaft(s) {', '.join(repr(s) for s in shown)} are not determined "
             f"({'only ' + ', '.join(repr(s) for s in given) if given else 'no torque or power'} given): "
@@ -125,4 +137,21 @@ def torque_solver(mats: TrainMatrices, given: Sequence[str], pattern: Sequence[i
             "torque",
         )
     indeterminate = tuple(dict.fromkeys(columns[c][1] for c in free if columns[c][0] == "port"))
-    return TorqueSolver(mats, given, key, system, indeterminate)
+    mats.solvers[("torque", given, key)] = TorqueSolver(mats, given, key, system, indeterminate)
+    return mats.solvers[("torque", given, key)]
+
+
+def _near_singular(mats: TrainMatrices, system) -> NearSingularError:
+    distance, direction, row_weights = system.near_singular[-1]
+    columns = mats.torque_columns
+    big = np.flatnonzero(np.abs(direction) > 0.1 * np.abs(direction).max())
+    elements = list(dict.fromkeys(columns[c][1] for c in big if columns[c][0] == "port"))
+    shafts = [columns[c][1] for c in big if columns[c][0] == "external"]
+    return NearSingularError(
+        f"the torques of {', '.join(repr(e) for e in elements) or 'the train'} are fixed only by nearly "
+        f"cancelling torque ratios (i0·η0 close to 1 where a set's carrier takes no torque, or ratios of a loop "
+        f"that nearly cancel): the equations are {distance:.2g} (relative) from singular, so round-off would decide "
+        f"the torques (amplified about {1 / distance:.1g} times). Check the ratios and efficiencies of "
+        f"{', '.join(repr(e) for e in elements) or 'the elements'}.",
+        "torque", distance, shafts, elements,
+    )

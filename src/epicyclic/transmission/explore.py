@@ -26,16 +26,15 @@ import itertools
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
 from ..model.train import GearTrain
 from ..solver.assembly import matrices
-from ..solver.linear import RELATIVE_TOLERANCE
 from ..text import markdown_text
+from .errors import ShiftScheduleError
 from .results import RATIO_TOLERANCE, classify
-from .transmission import ShiftScheduleError, Transmission
 
 __all__ = ["Combination", "Exploration", "explore"]
 
@@ -161,15 +160,30 @@ class Exploration:
                 f"{len(self.distinct_ratios)} distinct ratios from {self.states} states>")
 
 
+class Scheduled(Protocol):
+    """What :func:`explore` reads of a :class:`~epicyclic.transmission.Transmission`."""
+
+    train: GearTrain
+    input: str
+    output: str
+    name: str
+    schedule: Any
+
+
+#: Singular values below this fraction of the largest count as zero (unscaled kinematic rows: ratios of
+#: real transmissions are within a few decades of 1, and the search tries up to 2^20 states).
+_RANK_TOLERANCE = 1e-10
+
+
 def _rank(matrix: np.ndarray) -> int:
     if matrix.shape[0] == 0:
         return 0
     s = np.linalg.svd(matrix, compute_uv=False)
-    return int(np.sum(s > RELATIVE_TOLERANCE * max(s[0], 1e-300))) if s.size and s[0] > 0 else 0
+    return int(np.sum(s > _RANK_TOLERANCE * max(s[0], 1e-300))) if s.size and s[0] > 0 else 0
 
 
 def explore(
-    transmission: Transmission | GearTrain,
+    transmission: Scheduled | GearTrain,
     input: str | None = None,
     output: str | None = None,
     *,
@@ -208,7 +222,7 @@ def explore(
     """
     start = time.perf_counter()
     schedule: dict[frozenset, str] = {}
-    if isinstance(transmission, Transmission):
+    if not isinstance(transmission, GearTrain) and isinstance(getattr(transmission, "train", None), GearTrain):
         train = transmission.train
         input = input or transmission.input
         output = output or transmission.output

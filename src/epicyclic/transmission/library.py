@@ -35,6 +35,7 @@ from types import MappingProxyType
 
 from ..errors import ModelError
 from ..model import Brake, Clutch, GearStage, GearTrain, PlanetarySet
+from .transmission import Transmission
 
 __all__ = ["LibraryEntry", "LIBRARY", "entry", "build_train", "build", "names", "to_toml"]
 
@@ -292,7 +293,7 @@ def build_train(key: str, stationary_efficiency: float = 1.0) -> GearTrain:
     return GearTrain(elements, name=e.title)
 
 
-def build(key: str, stationary_efficiency: float = 1.0):
+def build(key: str, stationary_efficiency: float = 1.0) -> Transmission:
     """The :class:`~epicyclic.transmission.Transmission` of entry ``key``.
 
     Raises
@@ -307,8 +308,6 @@ def build(key: str, stationary_efficiency: float = 1.0):
     >>> round(t.ratio("1"), 4), round(t.ratio("R"), 4)
     (4.6957, -3.2968)
     """
-    from .transmission import Transmission
-
     e = entry(key)
     if not e.schedule:
         raise ModelError(

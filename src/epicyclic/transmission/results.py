@@ -15,19 +15,24 @@ from __future__ import annotations
 
 import html
 import math
-import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 from ..model.elements import Clutch
 from ..model.planetary import PlanetarySet
 from ..results.solution import Solution
 from ..text import markdown_text
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .transmission import Transmission
+
+class Scheduled(Protocol):
+    """What the results read of a :class:`~epicyclic.transmission.Transmission`."""
+
+    train: Any
+    input: str
+    output: str
+    schedule: Any
 
 __all__ = ["GearResult", "TransmissionAnalysis", "gear_result"]
 
@@ -68,8 +73,13 @@ class GearResult:
         Loss of each set per input power (drive).
     set_status : mapping set → str
         "rolling", "idle" (turns without load) or "locked" (turns as a block or stands).
-    circulating_power : float
-        Largest power through any element port per input power (> 1: power circulates).
+    circulating_power_ratio : float or None
+        Power that circulates around closed loops (Blindleistung) per input
+        power (drive); 0 when none circulates, None when the torque split is
+        statically indeterminate.
+    largest_element_ratio : float or None
+        Largest power through any element port per input power (drive); None
+        when the torque split is statically indeterminate.
     indeterminate : tuple of str
         Elements whose torque split is statically indeterminate in this gear
         (redundant locking): their torques shown are the minimum-norm split.
@@ -88,7 +98,8 @@ class GearResult:
     rolling_power: Mapping[str, float]
     set_losses: Mapping[str, float]
     set_status: Mapping[str, str]
-    circulating_power: float
+    circulating_power_ratio: float | None
+    largest_element_ratio: float | None
     indeterminate: tuple[str, ...]
     drive: Solution
     coast: Solution
@@ -109,7 +120,8 @@ class GearResult:
             "rolling_power_per_input_power": dict(self.rolling_power),
             "set_losses_per_input_power": dict(self.set_losses),
             "set_status": dict(self.set_status),
-            "circulating_power": self.circulating_power,
+            "circulating_power_per_input_power": self.circulating_power_ratio,
+            "largest_element_power_per_input_power": self.largest_element_ratio,
             "indeterminate": list(self.indeterminate),
         }
 
@@ -118,7 +130,8 @@ class GearResult:
         lines = [f"gear {self.gear} ({self.kind}): ratio {self.ratio:.4f}, engaged {', '.join(self.engaged) or '—'}",
                  f"  efficiency drive {_fmt(self.efficiency_drive)}, coast {_fmt(self.efficiency_coast)}"
                  + ("" if self.efficiency_coast is not None else " (self-locking in coast)")
-                 + f", circulating power {self.circulating_power:.3f} × P_in"]
+                 + (f", circulating power {self.circulating_power_ratio:.3f} × P_in"
+                    if self.circulating_power_ratio is not None else ", circulating power indeterminate")]
         for name, t in self.element_torques.items():
             note = " (indeterminate split)" if name in self.indeterminate else ""
             lines.append(f"  {name:>12}: engaged, torque {t:+.4f} × T_in{note}")
@@ -153,14 +166,7 @@ def classify(ratio: float) -> str:
     return "overdrive" if ratio < 1.0 else "reduction"
 
 
-def _indeterminate(solution: Solution) -> tuple[str, ...]:
-    for warning in solution.warnings:
-        if warning.startswith("the internal torque split of"):
-            return tuple(re.findall(r"'([^']+)'", warning.split(" is statically")[0]))
-    return ()
-
-
-def _element_torques(t: Transmission, solution: Solution, input_torque: float) -> dict[str, float]:
+def _element_torques(t: Scheduled, solution: Solution, input_torque: float) -> dict[str, float]:
     out = {}
     for element in t.train.shift_elements:
         state = solution.elements[element.name]
@@ -170,7 +176,7 @@ def _element_torques(t: Transmission, solution: Solution, input_torque: float) -
     return out
 
 
-def gear_result(t: Transmission, gear: str, ratio: float, drive: Solution, coast: Solution) -> GearResult:
+def gear_result(t: Scheduled, gear: str, ratio: float, drive: Solution, coast: Solution) -> GearResult:
     """Assemble a :class:`GearResult` from the drive and coast solutions of ``gear``."""
     n_in = drive.speed(t.input)
     m_in = drive.torque(t.input)
@@ -197,8 +203,9 @@ def gear_result(t: Transmission, gear: str, ratio: float, drive: Solution, coast
         rolling_power=MappingProxyType(rolling),
         set_losses=MappingProxyType(losses),
         set_status=MappingProxyType(status),
-        circulating_power=drive.circulating_power,
-        indeterminate=_indeterminate(drive),
+        circulating_power_ratio=drive.circulation.ratio,
+        largest_element_ratio=drive.circulation.largest_element_ratio,
+        indeterminate=drive.circulation.indeterminate,
         drive=drive,
         coast=coast,
     )
@@ -277,7 +284,7 @@ class TransmissionAnalysis:
             rows.append([
                 g.gear, "+".join(g.engaged), f"{g.ratio:.4f}", _fmt(step_of.get(g.gear), 3),
                 _fmt(g.efficiency_drive), _fmt(g.efficiency_coast) if g.efficiency_coast is not None else "self-locking",
-                f"{g.circulating_power:.3f}",
+                _fmt(g.circulating_power_ratio, 3),
                 f"{top[0]} {top[1]:+.3f}" if top else "—",
                 ",".join(rolling) or "—",
             ])

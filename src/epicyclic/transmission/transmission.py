@@ -27,38 +27,18 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import ModelError, TopologyError
+from ..errors import ModelError
 from ..model.operating_point import OperatingPoint
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
 from ..solver import solve
 from ..solver.assembly import matrices
 from ..solver.kinematics import degrees_of_freedom, free_speed_shafts, solve_speeds
+from .errors import GearFreedomError, ShiftScheduleError
+from .explore import Exploration, explore
+from .results import GearResult, TransmissionAnalysis, gear_result
 
 __all__ = ["Transmission", "ShiftScheduleError", "GearFreedomError"]
-
-
-class ShiftScheduleError(ModelError):
-    """A shift schedule names an unknown element, no gear, or a bad input/output shaft."""
-
-
-class GearFreedomError(ShiftScheduleError, TopologyError):
-    """A gear does not leave exactly one degree of freedom between input and output.
-
-    Attributes
-    ----------
-    gear : str
-    degrees_of_freedom : int
-        Of the gear's shift state (speeds that must be given).
-    free : tuple of str
-        Shafts whose speed the input speed leaves free.
-    """
-
-    def __init__(self, message: str, gear: str, dof: int, free: Iterable[str]):
-        self.gear = gear
-        self.degrees_of_freedom = dof
-        self.free = tuple(free)
-        super().__init__(message)
 
 
 def _as_schedule(schedule: object) -> Mapping[str, tuple[str, ...]]:
@@ -246,7 +226,7 @@ class Transmission:
                             self.input, self.output, self.name)
 
     # ------------------------------------------------------------------ analysis
-    def analyze(self, gear: str, *, input_speed: float = 1000.0, input_torque: float = 100.0):
+    def analyze(self, gear: str, *, input_speed: float = 1000.0, input_torque: float = 100.0) -> GearResult:
         """Analyse one gear in drive and coast.
 
         Parameters
@@ -268,8 +248,6 @@ class Transmission:
         Brandenberger 1952, eqs. 7, 7' and 10 (efficiency by direction of
         power flow).
         """
-        from .results import gear_result
-
         if not (np.isfinite(input_speed) and input_speed != 0):
             raise ModelError(f"transmission: input_speed must be a finite, non-zero 1/min value, got {input_speed!r}.")
         if not (np.isfinite(input_torque) and input_torque > 0):
@@ -285,17 +263,13 @@ class Transmission:
         coast = solve(train, coast_op)
         return gear_result(self, gear, ratio, drive, coast)
 
-    def analyze_all(self, *, input_speed: float = 1000.0, input_torque: float = 100.0):
+    def analyze_all(self, *, input_speed: float = 1000.0, input_torque: float = 100.0) -> TransmissionAnalysis:
         """:meth:`analyze` every gear; returns a :class:`TransmissionAnalysis`."""
-        from .results import TransmissionAnalysis
-
         results = tuple(self.analyze(g, input_speed=input_speed, input_torque=input_torque) for g in self.schedule)
         return TransmissionAnalysis(self.name, self.input, self.output, results)
 
-    def explore(self, **kwargs):
+    def explore(self, **kwargs) -> Exploration:
         """Every one-DOF combination of this train's shift elements (see :func:`explore`)."""
-        from .explore import explore
-
         return explore(self, **kwargs)
 
     # ------------------------------------------------------------------ files

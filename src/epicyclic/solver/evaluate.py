@@ -1,0 +1,217 @@
+"""From solved speeds and torques to the quantities of a result, cleaned once.
+
+The scalar solver and the batch solver both call :func:`evaluate`, with the
+operating points along the last axis of every array, so that they agree point
+for point.  Here the zero rule of :mod:`epicyclic.results.zero` is applied:
+
+* every element's torques keep its own ratios exactly (T_b = −i0·η0^w·T_a,
+  T_c = −(1 − i0·η0^w)·T_a, the two torques of a clutch or brake opposite),
+  and a port torque that is round-off of the element's largest is 0;
+* an element whose torques are round-off of the torques of the elements it
+  shares a shaft with (the housing, which takes every element's reaction,
+  aside) is idle (all its torques exactly 0), and so is an element whose
+  torques are round-off of the scale by which a neighbour was found idle;
+* a lever whose relative speed is round-off of its port speeds is locked
+  (relative speed, rolling power and loss exactly 0);
+* external torques are the given values exactly, and elsewhere the balance of
+  the (cleaned) port torques on the shaft: the housing's reaction, a load's
+  torque;
+* powers are products of cleaned torques and speeds (0 where either is 0);
+* the loss of a lever is P_w·(1 − η0^w), never a difference of large port powers.
+
+References
+----------
+Brandenberger 1952, eqs. 3' and 7 (the loss is the rolling power times 1 − η0^w);
+Queitsch, Wälz- und Kupplungsleistung.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import NonFiniteResultError
+from ..results.solution import RPM_TO_RAD_S
+from ..results.zero import ZERO_TOLERANCE, clean_array
+from .assembly import TrainMatrices
+
+__all__ = ["Evaluation", "evaluate", "check_finite"]
+
+#: The smallest normal float: below it a result has lost its precision (underflow).
+_TINY = np.finfo(float).tiny
+
+
+@dataclass(frozen=True, eq=False)
+class Evaluation:
+    """Cleaned quantities, shafts/columns/levers along axis 0, points along the last axis.
+
+    Attributes
+    ----------
+    speeds : ndarray (shafts, P)
+        1/min, in ``train.shafts`` order (housing last, exactly 0).
+    x : ndarray (columns, P)
+        Port torques (idle ones exactly 0) and external torques, N·m.
+    torques, powers : ndarray (shafts, P)
+        External torque (N·m) and power (W) of every shaft; 0 where none acts.
+    relative : ndarray (levers, P)
+        n_a − n_c of every lever, 1/min (exactly 0 when locked).
+    rolling, coupling, loss : ndarray (levers, P)
+        W.
+    pattern : ndarray of int (levers, P)
+        Sign of the rolling power (0 exactly where it is 0).
+    direction : ndarray of int (levers, P)
+        The loss direction w the torques were solved with where rolling power
+        flows, 0 where none flows (equal to ``pattern`` in a consistent solution,
+        and to it without losses).
+    """
+
+    speeds: np.ndarray
+    x: np.ndarray
+    torques: np.ndarray
+    powers: np.ndarray
+    relative: np.ndarray
+    rolling: np.ndarray
+    coupling: np.ndarray
+    loss: np.ndarray
+    pattern: np.ndarray
+    direction: np.ndarray
+
+
+def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
+             given: Mapping[str, np.ndarray]) -> Evaluation:
+    """Clean the solved torques and derive torques, powers, rolling powers and losses.
+
+    Parameters
+    ----------
+    mats : TrainMatrices
+    speeds : ndarray (shafts, P)
+        All shaft speeds in ``train.shafts`` order, 1/min.
+    x : ndarray (columns, P)
+        Solved torques, N·m (columns of ``mats.torque_columns``).
+    pattern : ndarray (levers, P) or None
+        Loss directions the torques were solved with (None: lossless).
+    given : mapping shaft → ndarray (P,)
+        Given external torques (signed), N·m.
+
+    Returns
+    -------
+    Evaluation
+    """
+    with np.errstate(all="ignore"):  # overflow is reported by check_finite, by name
+        result = _evaluate(mats, speeds, x, pattern, given)
+    check_finite(mats, result)
+    return result
+
+
+def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
+              given: Mapping[str, np.ndarray]) -> Evaluation:
+    lay = mats.layout
+    points = speeds.shape[1:]
+    x = np.array(x, dtype=float)
+
+    used = np.zeros((len(mats.levers),) + points, dtype=int) if pattern is None else np.asarray(pattern, dtype=int)
+
+    # every element's torques exactly in its own ratios: T_b = −k_b·T_a, T_c = −k_c·T_a, link T_2 = −T_1
+    if len(mats.levers):
+        f = lay.lever_factors[(...,) + (None,) * len(points)]  # (levers, w + 1, 2, 1…)
+        k_b = np.where(used > 0, f[:, 2, 0], np.where(used < 0, f[:, 0, 0], f[:, 1, 0]))
+        k_c = np.where(used > 0, f[:, 2, 1], np.where(used < 0, f[:, 0, 1], f[:, 1, 1]))
+        t_a = x[lay.lever_a_columns]
+        x[lay.lever_b_columns] = -k_b * t_a + 0.0
+        x[lay.lever_c_columns] = -k_c * t_a + 0.0
+    x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
+
+    # idle elements: torques that are round-off of the torques of the elements they share a shaft with
+    port = x[lay.port_columns]
+    size = np.abs(port)
+    own = np.maximum.reduceat(size, lay.part_starts, axis=0) if lay.parts else np.zeros((0,) + points)
+    padded = np.zeros((lay.parts + 1,) + points)  # the last row: no neighbour
+    padded[:-1] = own
+    scale = np.max(padded[lay.neighbours], axis=1) if lay.parts else own
+    for shaft, value in given.items():  # a given torque at one of its shafts
+        for k in lay.parts_at[lay.rows[shaft]]:
+            scale[k] = np.maximum(scale[k], np.abs(value))
+    idle = own <= ZERO_TOLERANCE * scale
+    # an idle element hands the scale it was judged by on to its neighbours (an isolated group of
+    # elements that only a now-idle element joined to the rest is round-off of the same scale)
+    for _ in range(lay.parts if idle.any() else 0):
+        padded[:-1] = np.where(idle, scale, 0.0)
+        reach = np.max(padded[lay.neighbours], axis=1)
+        grown = np.where(idle | (own <= ZERO_TOLERANCE * reach), np.maximum(scale, reach), scale)
+        more = own <= ZERO_TOLERANCE * grown
+        if (more == idle).all() and (grown == scale).all():
+            break
+        scale, idle = grown, idle | more
+    port = np.where(idle[lay.port_parts], 0.0, clean_array(port, own[lay.port_parts])) + 0.0
+    x[lay.port_columns] = port
+
+    # external torques: given exactly, else the balance of the port torques on the shaft
+    torques = np.zeros((len(lay.rows),) + points)
+    if len(lay.reacting_rows):
+        ordered = port[lay.reacting_ports]
+        torques[lay.reacting_rows] = clean_array(np.add.reduceat(ordered, lay.reacting_starts, axis=0),
+                                                 np.maximum.reduceat(np.abs(ordered), lay.reacting_starts, axis=0))
+    for shaft, value in given.items():
+        torques[lay.rows[shaft]] = value
+    x[lay.external_columns] = torques[lay.external_rows]
+    powers = torques * speeds * RPM_TO_RAD_S + 0.0
+
+    # levers: relative speed, rolling and coupling power, loss
+    a, c = speeds[lay.lever_a_rows], speeds[lay.lever_c_rows]
+    relative = clean_array(a - c, np.maximum(np.abs(a), np.abs(c)))
+    t_a = x[lay.lever_a_columns]
+    rolling = t_a * relative * RPM_TO_RAD_S + 0.0
+    coupling = t_a * c * RPM_TO_RAD_S + 0.0
+    eta = lay.efficiencies[(slice(None),) + (None,) * len(points)]
+    factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
+    loss = rolling * (1.0 - factor) + 0.0
+    if any(((np.abs(a) < _TINY) & (a != 0)).any() for a in (powers, rolling, coupling, loss)):
+        # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
+        # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
+        powers, rolling, coupling, loss = (_flush(a) for a in (powers, rolling, coupling, loss))
+    observed = np.sign(rolling).astype(int)
+    direction = observed if pattern is None else np.where(observed == 0, 0, used)
+    return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction)
+
+
+def _flush(values: np.ndarray) -> np.ndarray:
+    """Subnormal values that are numerically zero next to their kind at the same point become 0.
+
+    What stays subnormal is a whole quantity below the float range: :func:`check_finite` names it.
+    """
+    size = np.abs(values)
+    if values.size == 0 or not np.any((size < _TINY) & (size > 0)):
+        return values
+    scale = size.max(axis=0, keepdims=True)
+    return np.where((size < _TINY) & (size <= ZERO_TOLERANCE * scale), 0.0, values) + 0.0
+
+
+def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
+    """Raise :class:`~epicyclic.errors.NonFiniteResultError` naming the first quantity that over- or underflows."""
+    arrays = (ev.speeds, ev.x[mats.layout.port_columns], ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)
+    if all(np.isfinite(a).all() and not ((np.abs(a) < _TINY) & (a != 0)).any() for a in arrays):
+        return
+    shafts = [f"shaft {s!r}" for s in mats.train.shafts]
+    ports = [f"{element!r} at shaft {shaft!r}" for element, shaft, _ in mats.port_shaft_columns]
+    levers = [repr(lever.element.name) for lever in mats.levers]
+    for quantity, array, labels, unit in zip(
+        ("speed", "torque", "torque", "power", "rolling power", "coupling power", "loss"), arrays,
+        (shafts, ports, shafts, shafts, levers, levers, levers), ("1/min", "N·m", "N·m", "W", "W", "W", "W"),
+    ):
+        size = np.abs(array)
+        bad = ~np.isfinite(array) | ((size < _TINY) & (size > 0))
+        if not bad.any():
+            continue
+        where = np.argwhere(bad)[0]
+        point = f" at operating point {int(where[1])}" if array.ndim > 1 and array.shape[1] > 1 else ""
+        how = ("is not a finite number: it overflows" if not np.isfinite(array[tuple(where)])
+               else "underflows")
+        raise NonFiniteResultError(
+            f"the {quantity} of {labels[where[0]]}{point} {how} the floating-point range "
+            f"(about 2.2e-308 to 1.8e308 {unit}): the given speeds, torques or powers are too "
+            f"{'small' if how == 'underflows' else 'large'} for this train; give them in a range where "
+            "speeds and torques and their products stay between about 1e-300 and 1e300.",
+            quantity, labels[where[0]],
+        )
