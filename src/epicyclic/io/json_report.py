@@ -14,7 +14,8 @@ The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
         "shafts": {name: {"speed", "torque", "power", "role"}},
         "elements": {name: {"kind", "status", "ports", "torques", "speeds", "rolling_power",
                             "coupling_power", "loss", "loss_direction", "efficiency_factor",
-                            "engaged", "slip_speed", "planet_speeds", "planet_speeds_relative"}},
+                            "engaged", "slip_speed", "planet_speeds", "planet_speeds_relative",
+                            "loss_sources"}},
         "input_power", "output_power", "loss", "efficiency", "self_locking",
         "circulation": {"power", "ratio", "loops": [{"path", "power", "ratio"}],
                         "largest_element_power", "largest_element_ratio", "indeterminate"},
@@ -93,6 +94,7 @@ def _convert_solution(data: dict[str, Any], units: Units) -> dict[str, Any]:
             converted["slip_speed"] = speed(e["slip_speed"])
         converted["planet_speeds"] = [speed(n) for n in e["planet_speeds"]]
         converted["planet_speeds_relative"] = [speed(n) for n in e["planet_speeds_relative"]]
+        converted["loss_sources"] = {k: power(v) for k, v in e.get("loss_sources", {}).items()}
         elements[name] = converted
     out["elements"] = elements
     for key in ("input_power", "output_power", "loss"):

@@ -170,6 +170,10 @@ class TrainFile:
                 "to solve; add speeds, torques or powers, drives and loads.", self.source, "[operating_point]",
             )
         try:
+            if self.losses and not lossless:  # losses from the geometry (docs/losses.md)
+                from ..losses import solve_with_losses
+
+                return solve_with_losses(self.operating_train, self.operating_point, self.losses)
             return solve(self.operating_train, self.operating_point, lossless=lossless)
         except EpicyclicError as exc:
             raise locate_error(exc, self.source, self.operating_point, "[operating_point]") from None

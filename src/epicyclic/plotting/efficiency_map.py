@@ -30,12 +30,13 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
         low, high = float(eta.min()), float(eta.max())
         if high - low < 1e-6:
             levels = np.linspace(low - 1e-4, high + 1e-4, 3)
-        else:
-            levels = np.linspace(low, high, 12)
+        else:  # levels at quantiles of η: the bulk of the map, not only its low-torque corner, gets contours
+            levels = np.unique(np.round(np.quantile(eta.compressed(), np.linspace(0.0, 1.0, 13)), 6))
+            levels[0], levels[-1] = low - 1e-9, high + 1e-9
         filled = left.contourf(n, t, eta, levels=levels, cmap="viridis")
-        lines = left.contour(n, t, eta, levels=levels[1:-1:2], colors="white", linewidths=0.7)
+        lines = left.contour(n, t, eta, levels=levels[2:-1:2], colors="white", linewidths=0.7)
         left.clabel(lines, fmt="%.4f", fontsize=7)
-        fig.colorbar(filled, ax=left, label="efficiency η")
+        fig.colorbar(filled, ax=left, label="efficiency η", spacing="uniform", format="%.4f")
     else:
         left.text(0.5, 0.5, "too few points with a defined efficiency", ha="center", va="center",
                   transform=left.transAxes)
@@ -61,6 +62,5 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
         right.set_title("total loss (no drag model)", fontsize=10)
     right.set_xlabel(f"input speed n_{emap.input} in 1/min")
     right.set_ylabel(left.get_ylabel())
-    right.text(0.02, 0.02, f"losses over the map: {text}", transform=right.transAxes, fontsize=7,
-               bbox={"facecolor": "white", "alpha": 0.8, "edgecolor": "none"})
+    right.set_title(right.get_title() + f"\nsum over the map: {text}", fontsize=10)
     return fig
