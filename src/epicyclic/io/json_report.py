@@ -30,7 +30,9 @@ are multiples of the input power) and ``loss_direction`` (w) are
 dimensionless.  Schema 1 had ``circulating_power`` (largest port power ÷ input
 power); schema 2 replaces it by ``circulation``: the power that flows around
 closed loops (Blindleistung) per loop and in total, and the largest element
-power, each null where the torque split is statically indeterminate.
+power, each null where the torque split is statically indeterminate.  Schema 3
+adds ``geometry`` and each element's ``loss_sources`` (the loss by source in
+the power unit: ``mesh``, ``bearing``, ``drag``; see ``docs/losses.md``).
 
 Examples
 --------
