@@ -51,6 +51,10 @@ from . import efficiency_map as _efficiency_map  # noqa: E402
 
 app.command("map")(_efficiency_map.efficiency_map)
 
+from . import synthesize as _synthesize  # noqa: E402
+
+app.command("synthesize")(_synthesize.synthesize)
+
 from . import serve as _serve  # noqa: E402
 
 app.command("serve")(_serve.serve)
