@@ -155,3 +155,33 @@ def test_degenerate_units_are_refused(unit, match):
 def test_the_grammar_reads_products_powers_and_spaces(text, quantity, expected):
     # exact factors: W = kg·m²/s³, PS = 735.49875 W (DIN 1301), kp = 9.80665 N; relative 1e-12
     assert to_core(text, quantity) == pytest.approx(expected, rel=1e-12)
+
+
+# ---- the known units: read without pint, equal to the registry (issue 11, fast start)
+from epicyclic import units as _units  # noqa: E402
+
+
+@pytest.mark.parametrize(("quantity", "unit"), [(q, u) for q, table in _units._KNOWN_FACTORS.items() for u in table])
+def test_known_unit_factors_equal_the_registry(quantity, unit):
+    # The table only saves building the registry; the registry (pint + the sources' definitions:
+    # DIN 1301 PS, kp = 9.80665 N, U = one revolution) stays the reference.
+    ureg = _units.registry()
+    value = ureg.Quantity(1.0, unit)
+    if quantity == "torque" and unit.endswith("kg"):
+        value = value * ureg.Quantity(_units.G0, "N/kg")  # cm kg in the sources' sense: kp·cm
+    reference = value.to(_units.CORE_UNITS[quantity]).magnitude
+    assert _units._KNOWN_FACTORS[quantity][unit] == pytest.approx(reference, rel=1e-15)
+    assert _units.to_core(f"2.5 {unit}", quantity) == pytest.approx(2.5 * reference, rel=1e-15)
+
+
+def test_reading_the_sources_units_does_not_import_pint():
+    import subprocess
+    import sys
+
+    code = ("import sys\nfrom epicyclic.io import load_train_file\n"
+            "f = load_train_file('examples/brandenberger_1952.toml')\nf.units.convert(f.solve().loss, 'power')\n"
+            "print('pint' in sys.modules)")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                          cwd=__import__("pathlib").Path(__file__).resolve().parents[1])
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "False"

@@ -44,14 +44,17 @@ U/min (71620 = 75·100·60/(2π)).  DIN 1301 for PS = 735.49875 W.
 from __future__ import annotations
 
 import math
+import numbers
 import re
 from dataclasses import dataclass
 from functools import lru_cache
-
-import pint
+from typing import TYPE_CHECKING
 
 from .errors import EpicyclicError
 from .limits import MAX_DECIMAL_EXPONENT, MAX_UNIT_CHARS, MAX_UNIT_POWER, UNIT_FACTOR_RANGE
+
+if TYPE_CHECKING:  # pragma: no cover
+    import pint
 
 __all__ = [
     "CORE_UNITS",
@@ -107,9 +110,23 @@ class UnitError(EpicyclicError, ValueError):
         super().__init__(message)
 
 
+#: Core units per unit for the units of the sources, the examples and the documentation, so that
+#: reading them needs neither pint nor its registry (importing pint and building the registry cost
+#: about 0.3 s of every start).  Not a second definition: tests/test_units.py checks every entry
+#: against the registry, which stays the reference for every other unit.
+_KNOWN_FACTORS: dict[str, dict[str, float]] = {
+    "speed": {"1/min": 1.0, "U/min": 1.0, "rpm": 1.0, "1/s": 60.0, "rad/s": 30.0 / math.pi},
+    "torque": {"N*m": 1.0, "Nm": 1.0, "kN*m": 1000.0, "kp*cm": G0 / 100, "cm*kg": G0 / 100, "kp*m": G0,
+               "m*kg": G0, "lbf*ft": 0.45359237 * G0 * 0.3048},
+    "power": {"W": 1.0, "kW": 1000.0, "MW": 1e6, "PS": 735.49875, "hp": 0.45359237 * G0 * 0.3048 * 550},
+}
+
+
 @lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
     """The project's unit registry (built once; pint's defaults plus the sources' units)."""
+    import pint  # imported here: the known units below need neither pint nor its registry
+
     ureg = pint.UnitRegistry(on_redefinition="ignore", cache_folder=None)
     for definition in _DEFINITIONS:
         ureg.define(definition)
@@ -154,6 +171,23 @@ def _read_number(text: str, field: str, quantity: str) -> tuple[float | None, st
         raise UnitError(f"{field}: {text!r} is not a finite {quantity} (it overflows a double).",
                         field, quantity, text)
     return value, text[match.end():]
+
+
+def _known(text: str, quantity: str, field: str) -> tuple[float, bool] | None:
+    """(number, False) for a bare number, (core value, True) for a number with a known unit, None
+    if the registry must read ``text``.  The number is read by the grammar's ``_read_number``."""
+    if len(text) > MAX_UNIT_CHARS:
+        return None
+    number, rest = _read_number(text, field, quantity)
+    if number is None:
+        return None
+    unit = rest.strip()
+    if not unit:
+        return number, False
+    factor = _KNOWN_FACTORS[quantity].get(unit) if rest[:1].isspace() or rest[:1].isalpha() else None
+    if factor is None or not math.isfinite(number * factor):
+        return None
+    return number * factor, True
 
 
 def _read_unit(text: str, full: str, field: str, quantity: str) -> pint.Unit:
@@ -288,6 +322,9 @@ def unit_factor(unit: str, quantity: str, field: str = "units") -> float:
             f"{field}: {unit!r} is not a unit: give a unit name without a number, such as "
             f"{CORE_UNITS[quantity]!r} (units: {QUANTITIES[quantity]}).", field, quantity, unit,
         )
+    known = _KNOWN_FACTORS[quantity].get(text)
+    if known is not None:
+        return known
     factor = _to_core_quantity(_parse(f"1 {text}", field, quantity, unit), quantity, field, unit)
     low, high = UNIT_FACTOR_RANGE
     if not low <= abs(factor) <= high:
@@ -304,9 +341,11 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
 
     Parameters
     ----------
-    value : float, int or str
-        A number (read in ``default_unit``, or the core unit if that is None)
-        or a string with number and unit, e.g. ``"3 PS"``, ``"1500 U/min"``.
+    value : float, int, str or pint.Quantity
+        A number (read in ``default_unit``, or the core unit if that is None),
+        a string with number and unit, e.g. ``"3 PS"``, ``"1500 U/min"``, or a
+        pint quantity of any registry (its unit names are read in ours, so
+        ``rpm`` stays 1/min and ``PS`` is the metric horsepower).
     quantity : {"speed", "torque", "power"}
     field : str
         Where the value was given; named in error messages.
@@ -349,6 +388,8 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
             raise UnitError(f"{field}: {value!r} {default_unit} is not a finite {quantity} in "
                             f"{CORE_UNITS[quantity]} (it overflows a double).", field, quantity, value)
         return core
+    if _is_quantity(value):
+        return _from_quantity(value, quantity, field)
     if not isinstance(value, str):
         raise UnitError(
             f"{field}: expected a number or a string with unit such as {_example(quantity)!r}, "
@@ -357,11 +398,42 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
     text = value.strip()
     if not text:
         raise UnitError(f"{field}: expected a {quantity}, got an empty string.", field, quantity, value)
+    known = _known(text, quantity, field)
+    if known is not None:
+        value_known, with_unit = known
+        return value_known if with_unit else to_core(value_known, quantity, field=field, default_unit=default_unit)
     parsed = _parse(text, field, quantity)
     if parsed.dimensionless and parsed.units == registry().dimensionless:
         # a bare number in a string: same as a plain number
         return to_core(float(parsed.magnitude), quantity, field=field, default_unit=default_unit)
     return _to_core_quantity(parsed, quantity, field, value)
+
+
+def _is_quantity(value: object) -> bool:
+    """Whether ``value`` is a pint quantity (of any registry: the user's, pint's application registry)."""
+    return all(hasattr(value, name) for name in ("to_tuple", "magnitude", "units", "dimensionality"))
+
+
+def _from_quantity(value: object, quantity: str, field: str) -> float:
+    """A pint quantity of any registry in core units, read unit name by unit name in ours.
+
+    The names are looked up in this module's registry, so a user's ``1500 rpm`` is 1500 1/min
+    (not 1500·2π as pint's default turns revolutions into radians) and ``3 PS`` is metric horsepower.
+    """
+    magnitude, units = value.to_tuple()  # type: ignore[attr-defined]
+    if isinstance(magnitude, bool) or not isinstance(magnitude, numbers.Real):
+        raise UnitError(f"{field}: expected one {quantity}, got the quantity {value!r} "
+                        f"(its magnitude is {type(magnitude).__name__}, not a number).", field, quantity, value)
+    ureg = registry()
+    unit = ureg.Unit("")
+    for name, power in units:
+        try:
+            unit = unit * ureg.Unit(name) ** power
+        except Exception:  # pint: UndefinedUnitError and friends
+            raise UnitError(f"{field}: the unit {name!r} of {value!r} is not known here; give the {quantity} "
+                            f"as a string such as {_example(quantity)!r} (units: {QUANTITIES[quantity]}).",
+                            field, quantity, value) from None
+    return _to_core_quantity(ureg.Quantity(float(magnitude), unit), quantity, field, value)
 
 
 def from_core(value: float, quantity: str, unit: str) -> float:

@@ -237,3 +237,35 @@ def test_internal_error_exits_1(monkeypatch):
     result = run("analyze", BRANDENBERGER)
     assert result.exit_code == 1
     assert "internal error: RuntimeError: boom" in result.stderr and "Traceback" not in result.output
+
+
+def test_version_option_prints_the_package_version_and_exits_0():
+    from epicyclic import __version__
+
+    result = run("--version")
+    assert result.exit_code == 0, result.output
+    assert result.stdout.strip() == f"epicyclic {__version__}"
+
+
+def test_set_overrides_a_file_value():
+    result = run("analyze", BRANDENBERGER, "--format", "json", "--set", 'operating_point.speeds.II="3000 U/min"')
+    assert result.exit_code == 0, result.output
+    assert round(json.loads(result.stdout)["solution"]["shafts"]["I"]["speed"]) == 5480
+
+
+@pytest.mark.parametrize("command", ["analyze", "explain", "plot", "animate"])
+def test_set_with_a_bad_value_exits_2_naming_file_and_key(command, tmp_path):
+    out = ["--out", str(tmp_path / ("x.png" if command == "plot" else "x.html"))] if command in ("plot", "animate") \
+        else []
+    result = run(command, BRANDENBERGER, *out, "--set", "operating_point.speeds.II=fast")
+    assert result.exit_code == 2
+    assert "brandenberger_1952.toml" in result.stderr and "speeds.II" in result.stderr
+    assert "Traceback" not in result.output
+
+
+@pytest.mark.parametrize("command", ["gears", "explore"])
+def test_set_on_transmission_commands(command):
+    zf = str(EXAMPLES / "zf_8hp70_8speed.toml")
+    result = run(command, zf, "--set", "brake.nope.engaged=true")
+    assert result.exit_code == 2 and "no [[brake]] named 'nope'" in result.stderr
+    assert run(command, zf, "--set", "planetary.P1.stationary_efficiency=0.9").exit_code == 0

@@ -65,7 +65,7 @@ def test_a_file_with_nothing_to_solve_is_bad_input(tmp_path):
 
 def test_animation_size(tmp_path):
     out = tmp_path / "a.svg"
-    result = run("animate", str(EXAMPLES / "zf_8hp70_8speed.toml"), "--gear", "2", "--set", "P4", "--size", "300",
+    result = run("animate", str(EXAMPLES / "zf_8hp70_8speed.toml"), "--gear", "2", "--element", "P4", "--size", "300",
                  "-o", str(out))
     assert result.exit_code == 0, result.output
     text = out.read_text()
@@ -87,7 +87,7 @@ def test_animate_html_and_gif(tmp_path):
 @pytest.mark.parametrize("args, message", [
     (["plot", BRANDENBERGER, "--out", "x.txt"], "suffix '.txt'; expected one of .svg, .png, .pdf"),
     (["animate", BRANDENBERGER, "--out", "x.mp4"], "suffix '.mp4'; expected one of .svg, .html, .gif"),
-    (["animate", BRANDENBERGER, "--set", "nope"], "no planetary set named 'nope'"),
+    (["animate", BRANDENBERGER, "--element", "nope"], "no planetary set named 'nope'"),
     (["plot", str(EXAMPLES / "zf_8hp70_8speed.toml"), "--gear", "9"], "no gear '9' in the \\[transmission\\] schedule; gears are '1', '2'"),
     (["plot", str(EXAMPLES / "brandenberger_1952.toml"), "-k", "chart"], "speed chart shows every gear"),
     (["animate", BRANDENBERGER, "--size", "50"], "--size"),

@@ -16,6 +16,7 @@ from epicyclic import (
     ToothCountError,
     TopologyError,
 )
+from epicyclic.units import UnitError
 
 
 def simple(**kw):
@@ -54,7 +55,8 @@ def simple(**kw):
         (lambda: GearTrain([Brake("B", "a"), Brake("B", "b")]), ModelError, r"'B' is used twice"),
         (lambda: GearTrain(["not an element"]), ModelError, r"must be a PlanetarySet, GearStage, Clutch or Brake"),
         (lambda: OperatingPoint(speeds={"a": float("inf")}), OperatingPointError, r"speeds\['a'\] must be finite"),
-        (lambda: OperatingPoint(speeds={"a": "fast"}), OperatingPointError, r"must be a number"),
+        (lambda: OperatingPoint(speeds={"a": "fast"}), UnitError, r"operating_point\.speeds\.a: cannot read 'fast'"),
+        (lambda: OperatingPoint(speeds={"a": [1500]}), UnitError, r"operating_point\.speeds\.a: expected a number"),
         (lambda: OperatingPoint(drives=["a"], loads=["a"]), OperatingPointError, r"both as drive and as load"),
         (lambda: OperatingPoint(torques={"a": 1}, powers={"a": 1}), OperatingPointError, r"not both"),
     ],

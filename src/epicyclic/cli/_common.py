@@ -22,7 +22,7 @@ from typer.core import TyperGroup
 from ..errors import EpicyclicError
 
 __all__ = ["EXIT_OK", "EXIT_INTERNAL", "EXIT_BAD_INPUT", "OutputFormat", "FormatOption", "OutOption",
-           "guarded", "emit", "say", "fail", "check_finite", "load", "solved", "OneLineErrors"]
+           "SetOption", "guarded", "emit", "say", "fail", "check_finite", "load", "solved", "OneLineErrors"]
 
 EXIT_OK = 0
 EXIT_INTERNAL = 1
@@ -43,6 +43,11 @@ class OutputFormat(str, Enum):
 #: The ``--format`` and ``--out`` options, the same on every reporting sub-command.
 FormatOption = Annotated[OutputFormat, typer.Option("--format", "-f", help="Output format.")]
 OutOption = Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")]
+#: ``--set KEY=VALUE`` (repeatable): override a value of the train file before it is read.
+SetOption = Annotated[Optional[list[str]], typer.Option(
+    "--set", metavar="KEY=VALUE",
+    help="Override a value of FILE before it is read (repeatable): a dotted key and a TOML value, "
+         "e.g. --set operating_point.speeds.sun=\"2000 rpm\" or --set planetary.P1.stationary_efficiency=0.97.")]
 
 
 def fail(message: str, code: int = EXIT_BAD_INPUT) -> None:
@@ -115,14 +120,17 @@ def check_finite(data: Any, file: Path | str | None, what: str = "") -> None:
     check(data, str(file) if file is not None else "result", what)
 
 
-def load(file: Path, gear: str | None = None):
-    """The train file ``file`` (a :class:`~epicyclic.io.TrainFile`), in ``gear`` of its schedule if given."""
+def load(file: Path, gear: str | None = None, overrides: list[str] | None = None):
+    """The train file ``file`` (a :class:`~epicyclic.io.TrainFile`), in ``gear`` of its schedule if given.
+
+    ``overrides`` are the ``--set KEY=VALUE`` values, applied before the file is read.
+    """
     from dataclasses import replace
 
     from ..errors import ModelError
     from ..io import load_train_file
 
-    train_file = load_train_file(file)
+    train_file = load_train_file(file, overrides=overrides or ())
     if gear is None:
         return train_file
     if train_file.transmission is None:

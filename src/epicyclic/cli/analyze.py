@@ -17,7 +17,7 @@ from ..io.geometry_report import geometry_dict, geometry_html, geometry_markdown
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
-from ._common import FormatOption, OutOption, OutputFormat, emit, guarded, load, solved
+from ._common import FormatOption, OutOption, OutputFormat, SetOption, emit, guarded, load, solved
 
 __all__ = ["analyze"]
 
@@ -30,9 +30,10 @@ def analyze(
     gear: Annotated[Optional[str], typer.Option(
         "--gear", "-g", help="Solve in this gear of the \\[transmission] schedule.")] = None,
     lang: Annotated[str, typer.Option(help="Language of the worked solution in HTML reports: en or de.")] = "en",
+    set_: SetOption = None,
 ) -> None:
     """Solve FILE: speeds, torques, powers, losses, efficiency, self-locking, circulating power."""
-    train_file = load(file, gear)
+    train_file = load(file, gear, set_)
     solution = solved(train_file, file)
     units, title, source = train_file.units, train_file.title, str(file)
     shapes = geometry_results(train_file.geometry, solution)

@@ -12,8 +12,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..explain import explain as worked_solution
-from ._common import emit, guarded, load, solved
+from ._common import SetOption, emit, guarded, load, solved
 
 __all__ = ["Language", "ExplainFormat", "explain"]
 
@@ -38,9 +37,12 @@ def explain(
     lang: Annotated[Language, typer.Option("--lang", "-l", help="Language: en or de.")] = Language.en,
     format: Annotated[ExplainFormat, typer.Option("--format", "-f", help="Output format.")] = ExplainFormat.text,
     out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
+    set_: SetOption = None,
 ) -> None:
     """Show the worked solution of FILE: Willis, loss rule, torque balance, results, with numbers."""
-    train_file = load(file)
+    from ..explain import explain as worked_solution  # imported here: other commands start faster
+
+    train_file = load(file, None, set_)
     solution = solved(train_file, file)
     result = worked_solution(solution, train_file.units, lang=lang.value, title=train_file.title)
     emit(result.markdown() if format is ExplainFormat.markdown else result.text(), out)

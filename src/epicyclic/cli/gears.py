@@ -12,14 +12,16 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from ..errors import EpicyclicError
 from ..io.located import located
-from ..transmission import Transmission, explore as _explore
-from ._common import FormatOption, OutOption, OutputFormat, check_finite, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..transmission import Transmission
 
 __all__ = ["gears", "explore"]
 
@@ -51,33 +53,36 @@ def gears(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     detail: Annotated[bool, typer.Option("--detail", help="Also list every shift element and set per gear.")] = False,
+    set_: SetOption = None,
 ) -> None:
     """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread.
 
     With ``-f html``: one self-contained page styled like ``analyze -f html``, with every gear's detail,
     its lever diagram and the speed chart across gears.
     """
-    transmission = Transmission.from_file(file)
+    from ..transmission import Transmission  # imported here: other commands start faster without it
+
+    transmission = Transmission.from_file(file, overrides=set_ or ())
     try:
         analysis = transmission.analyze_all()
     except EpicyclicError as exc:  # name the gear: the file has no [operating_point] to blame
         raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission)}'!r}") from None
     check_finite(analysis.to_dict(), file)
     if format is OutputFormat.html:
-        emit(_gears_html(file, transmission, analysis), out)
+        emit(_gears_html(file, transmission, analysis, set_), out)
         return
     detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
     emit(_render(analysis, format, detail_text), out)
 
 
-def _gears_html(file: Path, transmission, analysis) -> str:
+def _gears_html(file: Path, transmission, analysis, overrides: list[str] | None = None) -> str:
     import matplotlib
 
     from ..io import load_train_file
     from ..io.gears_report import gears_html
 
     matplotlib.use("Agg")  # files only: no display needed
-    spec = load_train_file(file)
+    spec = load_train_file(file, overrides=overrides or ())
     return gears_html(transmission, analysis, spec.units, title=spec.title or None, source=str(file))
 
 
@@ -87,9 +92,12 @@ def explore(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     redundant: Annotated[bool, typer.Option("--redundant", help="Also list states with a redundant element.")] = False,
+    set_: SetOption = None,
 ) -> None:
     """Every combination of the file's clutches and brakes that drives the output: ratio and kind."""
-    transmission = Transmission.from_file(file)
+    from ..transmission import Transmission, explore as _explore
+
+    transmission = Transmission.from_file(file, overrides=set_ or ())
     states = _explore(transmission, include_redundant=redundant)
     check_finite(states.to_dict(), file)
     emit(_render(states, format), out)

@@ -7,6 +7,8 @@ traceback), 1 internal error.
 
 from __future__ import annotations
 
+from typing import Annotated
+
 import typer
 
 from ._common import OneLineErrors
@@ -20,8 +22,19 @@ app = typer.Typer(
 )
 
 
+def _print_version(value: bool) -> None:
+    if value:
+        from .. import __version__
+
+        typer.echo(f"epicyclic {__version__}")
+        raise typer.Exit()
+
+
 @app.callback()
-def _root() -> None:
+def _root(
+    version: Annotated[bool, typer.Option(
+        "--version", callback=_print_version, is_eager=True, help="Print the version and exit.")] = False,
+) -> None:
     """epicyclic — planetary gear train analysis."""
 
 

@@ -20,7 +20,6 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..analysis.modes import two_shaft_modes
 from ..errors import EpicyclicError, ModelError
 from ..io.expressions import evaluate
 from ..io.located import located
@@ -118,6 +117,8 @@ def modes(
         planetary = planetary_from_options(kind, sun, ring, planet, planet_sun, planet_ring, external_ring, i0, eta0)
     except EpicyclicError as exc:
         raise _with_option(exc) from None
+    from ..analysis.modes import two_shaft_modes  # imported here: other commands start faster
+
     table = two_shaft_modes(planetary)
     check_finite(table.to_dict(), "modes")
     if format is ModesFormat.json:

@@ -22,7 +22,7 @@ from ..errors import EpicyclicError
 from ..io.located import located
 from ..io.output import atomic_path, refuse_input
 from ..limits import DPI_RANGE, FPS_RANGE, FRAMES_RANGE, SIZE_RANGE, check_range
-from ._common import check_finite, guarded, load, say
+from ._common import SetOption, check_finite, guarded, load, say
 
 __all__ = ["PlotKind", "plot", "animate"]
 
@@ -38,7 +38,7 @@ class PlotKind(str, Enum):
     chart = "chart"
 
 
-def _subject(file: Path, gear: str | None):
+def _subject(file: Path, gear: str | None, overrides: list[str] | None = None):
     """The solved state a figure of ``file`` shows (``--gear`` applied, unit input if no operating point).
 
     Errors name the file and the table; the numbers are checked to be finite.
@@ -46,7 +46,7 @@ def _subject(file: Path, gear: str | None):
     from ..io.json_report import report_data
     from ..plotting import figure_subject
 
-    train_file = load(file, gear)
+    train_file = load(file, gear, overrides)
     try:
         subject = figure_subject(train_file, gear)
     except EpicyclicError as exc:
@@ -73,6 +73,7 @@ def plot(
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule "
                                                 "(default: the operating point's, else the first gear).")] = None,
     dpi: Annotated[int, typer.Option(help="Resolution of .png output (20 … 600).")] = 150,
+    set_: SetOption = None,
 ) -> None:
     """Draw FILE: speed plan, torque bars, power rectangles, lever diagram, power flow or speed chart."""
     from ..plotting import FIGURE_SUFFIXES, save_plot
@@ -83,7 +84,7 @@ def plot(
     check_suffix(out, FIGURE_SUFFIXES, "plot --out")
     refuse_input(out, [file])
     _agg()
-    subject = _subject(file, gear)
+    subject = _subject(file, gear, set_)
     try:
         with atomic_path(out) as temporary:
             save_plot(subject.solution, kind.value, temporary, dpi=dpi, context=subject.context,
@@ -98,13 +99,15 @@ def animate(
     file: Annotated[Path, typer.Argument(help="Train description (.toml), see docs/file-format.md.")],
     out: Annotated[Optional[Path], typer.Option(
         "--out", "-o", help="Output file: .html, .svg or .gif (default: FILE-animation.html here).")] = None,
-    element: Annotated[Optional[str], typer.Option("--set", "-s", help="Planetary set (default: the first).")] = None,
+    element: Annotated[Optional[str], typer.Option(
+        "--element", "-e", help="Name of the planetary set to animate (default: the first).")] = None,
     willis: Annotated[bool, typer.Option(
         "--willis", help="Show the three superposed motions of the Willis derivation in turn.")] = False,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
     frames: Annotated[int, typer.Option(help="Frames of one GIF loop (2 … 240).")] = 48,
     fps: Annotated[int, typer.Option(help="Frames per second (1 … 60).")] = 16,
     size: Annotated[int, typer.Option(help="Width of the SVG or GIF in pixels (120 … 2000).")] = 480,
+    set_: SetOption = None,
 ) -> None:
     """Animate a planetary set of FILE at its solved speeds (HTML/SVG plays offline; or GIF)."""
     from ..plotting import planetary_animation
@@ -118,7 +121,7 @@ def animate(
     check_suffix(out, ANIMATION_SUFFIXES, "animate --out")
     refuse_input(out, [file])
     _agg()
-    subject = _subject(file, gear)
+    subject = _subject(file, gear, set_)
     anim = planetary_animation(subject.solution, element, willis=willis, frames=frames, fps=fps, size=size,
                                context=subject.context)
     with atomic_path(out) as temporary:

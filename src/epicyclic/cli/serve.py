@@ -8,6 +8,7 @@ loopback address by default, so only this computer reaches it; with another
 from __future__ import annotations
 
 import ipaddress
+import math
 from typing import Annotated
 
 import typer
@@ -60,6 +61,9 @@ def serve(
         from ..web import Limits, create_app
     except ImportError as exc:  # pragma: no cover - the web dependencies are installed with the package
         fail(f"error: epicyclic serve needs the web dependencies ({exc.name}); reinstall epicyclic.")
+        return
+    if not math.isfinite(timeout):  # a float range lets NaN through (every comparison is False)
+        fail(f"error: serve --timeout must be a number of seconds from 0.1 to 3600, got {timeout}.")
         return
     problem = _address_problem(host, port)
     if problem:

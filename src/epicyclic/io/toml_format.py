@@ -40,7 +40,7 @@ Brandenberger 1952, Beispiel
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -54,6 +54,7 @@ from ..text import short, terminal_text
 from ..units import Units, to_core
 from . import geometry_format
 from .located import locate_error, operating_point_where
+from .overrides import OverrideError, apply_overrides
 from .reader import TableReader, at_key, kind_of
 from .source import InputFileError, parse_toml, read_source
 
@@ -180,7 +181,7 @@ class TrainFile:
 
 
 # ---------------------------------------------------------------------- public functions
-def load_train_file(path: str | Path, *, max_bytes: int | None = None) -> TrainFile:
+def load_train_file(path: str | Path, *, max_bytes: int | None = None, overrides: Sequence[str] = ()) -> TrainFile:
     """Read a train description from a TOML file.
 
     Parameters
@@ -189,6 +190,9 @@ def load_train_file(path: str | Path, *, max_bytes: int | None = None) -> TrainF
         A regular file of at most ``max_bytes`` bytes of UTF-8 TOML.
     max_bytes : int, optional
         Size limit; default :func:`epicyclic.limits.max_file_bytes` (1 MiB).
+    overrides : sequence of str
+        ``KEY=VALUE`` overrides applied to the parsed file before it is read
+        (the CLI's ``--set``; see :mod:`epicyclic.io.overrides`).
 
     Returns
     -------
@@ -204,11 +208,11 @@ def load_train_file(path: str | Path, *, max_bytes: int | None = None) -> TrainF
         Model errors (tooth counts, efficiencies, shafts), prefixed with the
         file and the element.
     """
-    return loads_train_file(read_source(path, max_bytes), source=str(path))
+    return loads_train_file(read_source(path, max_bytes), source=str(path), overrides=overrides)
 
 
-def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
-    """Read a train description from TOML text.
+def loads_train_file(text: str, source: str = "<string>", overrides: Sequence[str] = ()) -> TrainFile:
+    """Read a train description from TOML text (``overrides`` as in :func:`load_train_file`).
 
     Examples
     --------
@@ -231,7 +235,13 @@ def loads_train_file(text: str, source: str = "<string>") -> TrainFile:
     >>> round(f.solve().speed("out"), 6)
     833.333333
     """
-    return _Reader(source).read(parse_toml(text, source))
+    data = parse_toml(text, source)
+    if overrides:
+        try:
+            data = apply_overrides(data, overrides)
+        except OverrideError as exc:
+            raise OverrideError(f"{source}: {exc}") from None
+    return _Reader(source).read(data)
 
 
 # ---------------------------------------------------------------------- the reader

@@ -8,6 +8,7 @@ Units other than these are converted at the edges (:mod:`epicyclic.units`).
 
 from __future__ import annotations
 
+import numbers
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -18,17 +19,28 @@ from .planetary import finite_float
 __all__ = ["OperatingPoint"]
 
 
-def _frozen_values(values: Mapping[str, float] | None, field_name: str) -> Mapping[str, float]:
+#: The quantity of each group of values (for unit conversion).
+_QUANTITIES = {"speeds": "speed", "torques": "torque", "powers": "power"}
+
+
+def _frozen_values(values: Mapping[str, object] | None, field_name: str) -> Mapping[str, float]:
     checked: dict[str, float] = {}
     for shaft, value in dict(values or {}).items():
         if not isinstance(shaft, str):
             raise OperatingPointError(f"operating point: {field_name} keys must be shaft names, got {shaft!r}.",
                                       group=field_name)
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if isinstance(value, bool):
             raise OperatingPointError(
                 f"operating point: {field_name}[{shaft!r}] must be a number, got {value!r}.",
                 group=field_name, shafts=[shaft],
             )
+        if not isinstance(value, numbers.Real):
+            # a unit string or a pint quantity: converted at this boundary, by the one converter
+            from ..units import to_core
+
+            value = to_core(value, _QUANTITIES[field_name], field=f"operating_point.{field_name}.{shaft}")
+        elif not isinstance(value, (int, float)):
+            value = float(value)  # numpy scalars and other real numbers
         if finite_float(value) is None:
             raise OperatingPointError(
                 f"operating point: {field_name}[{shaft!r}] must be finite, got {value!r}.",
@@ -44,12 +56,14 @@ class OperatingPoint:
 
     Parameters
     ----------
-    speeds : mapping shaft → float
-        Given speeds in 1/min.
-    torques : mapping shaft → float
-        Given external torques in N·m (sign: positive with positive speed at a drive).
-    powers : mapping shaft → float
-        Given external powers in W.  A positive value at a load is read as its
+    speeds : mapping shaft → float, str or pint.Quantity
+        Given speeds in 1/min, or with a unit: ``"1500 rpm"``, ``"157 rad/s"``
+        or a pint quantity (converted by :func:`epicyclic.units.to_core`).
+    torques : mapping shaft → float, str or pint.Quantity
+        Given external torques in N·m (sign: positive with positive speed at a
+        drive), or with a unit: ``"143.24 kp*cm"``, ``"100 lbf*ft"``.
+    powers : mapping shaft → float, str or pint.Quantity
+        Given external powers in W, or with a unit: ``"3 PS"``, ``"30 kW"``.  A positive value at a load is read as its
         magnitude (power leaving the train); likewise a drive's power is taken
         as entering the train.
     drives, loads : iterable of str
@@ -61,11 +75,22 @@ class OperatingPoint:
         follows from the solution, e.g. both ends of a train run in either
         direction.
 
+    Raises
+    ------
+    UnitError
+        A value with a unit that cannot be read or has the wrong dimension; its
+        ``field`` names the value (``"operating_point.speeds.in"``).
+    OperatingPointError
+        A value that is no number, not finite, a shaft named both drive and
+        load, or both a torque and a power at one shaft.
+
     Examples
     --------
     >>> op = OperatingPoint(speeds={"in": 1500}, powers={"in": 3000}, drives=["in"], loads=["out"])
     >>> op.external_shafts
     ('in', 'out')
+    >>> OperatingPoint(speeds={"in": "1500 U/min"}, powers={"in": "3 PS"}).powers["in"]
+    2206.49625
     """
 
     speeds: Mapping[str, float] = field(default_factory=dict)

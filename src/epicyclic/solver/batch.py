@@ -210,14 +210,15 @@ def solve_batch(
     ideal.check(tau, x_ideal)
     ideal_eval = evaluate(mats, n, x_ideal, None, given_map)
 
-    # loss directions: group points by pattern, one solve per pattern
+    # loss directions: group points by pattern, one solve per pattern; then all points are evaluated
+    # at once, and only the (rare) points whose re-read pattern differs are tried again
     pattern = ideal_eval.pattern.copy()
     first_pattern = pattern.copy()
     x = np.array(x_ideal)
+    first_x = x
     consistent = np.zeros(points, dtype=bool)
     pending = np.arange(points)
     solved: set[tuple[int, ...]] = set()
-    first_x = np.array(x_ideal)
     extra = given_losses(mats, efficiencies, loss_torques, points)
     rows = effs = dragged = None
     if extra is not None:  # reference η0 per lever: the median over the points; the rest is a correction
@@ -227,45 +228,47 @@ def solve_batch(
         rows = extra.rows(mats) if dragged is not None else None
     lossy = any(lever.efficiency != 1.0 for lever in mats.levers) or (
         extra is not None and (dragged is not None or bool(np.any(effs != 1.0))))
+    ev = ideal_eval  # lossless: the ideal evaluation is the result
+    retried = False
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
         # one integer code per pattern (base 3) is much faster to group than rows
         codes = ((pattern[:, pending] + 1) * (3 ** np.arange(pattern.shape[0]))[:, None]).sum(axis=0)
         unique_codes, first_index, inverse = np.unique(codes, return_index=True, return_inverse=True)
-        still_pending = []
         for k in range(unique_codes.size):
             row = pattern[:, pending[first_index[k]]]
             members = pending[inverse.ravel() == k]
             solver = torque_solver(mats, given, row)
             solved.add(tuple(int(w) for w in row))
             with np.errstate(all="ignore"):
-                xs = _corrected(train, mats, given, solver, row, tau[:, members],
-                                None if rows is None else rows[:, members],
-                                None if effs is None else effs[:, members])
-            x[:, members] = xs
-            if attempt == 0:
-                first_x[:, members] = xs
-            observed = evaluate(mats, n[:, members], xs, np.repeat(row[:, None], members.size, axis=1),
-                                {s: v[members] for s, v in given_map.items()},
-                                None if effs is None else effs[:, members],
-                                None if dragged is None else dragged[:, members]).pattern
-            column = row[:, None]
-            ok = np.all((column == observed) | (observed == 0), axis=0)
-            consistent[members[ok]] = True
-            bad = members[~ok]
-            if bad.size:
-                nxt = np.where(observed[:, ~ok] == 0, column, observed[:, ~ok])
-                pattern[:, bad] = nxt
-                still_pending.append(bad)
-        pending = np.concatenate(still_pending) if still_pending else np.array([], dtype=int)
+                x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
+                                           None if rows is None else rows[:, members],
+                                           None if effs is None else effs[:, members])
+        column = pattern[:, pending]
+        if attempt == 0:  # every point (pending is all of them): this evaluation is kept where consistent
+            first_x = x.copy()
+            ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
+            observed = ev.pattern
+        else:
+            retried = True
+            observed = evaluate(mats, n[:, pending], x[:, pending], column,
+                                {s: v[pending] for s, v in given_map.items()},
+                                None if effs is None else effs[:, pending],
+                                None if dragged is None else dragged[:, pending]).pattern
+        ok = np.all((column == observed) | (observed == 0), axis=0)
+        consistent[pending[ok]] = True
+        pending = pending[~ok]
+        if pending.size:
+            pattern[:, pending] = np.where(observed[:, ~ok] == 0, column[:, ~ok], observed[:, ~ok])
     if not lossy:
         consistent[:] = True
         solved.add(tuple(int(w) for w in first_pattern[:, 0]) if points else ())
-    # points with no consistent pattern keep the formal solution of the ideal pattern
-    x[:, ~consistent] = first_x[:, ~consistent]
-    pattern[:, ~consistent] = first_pattern[:, ~consistent]
-    ev = evaluate(mats, n, x, pattern if lossy else None, given_map, effs, dragged)
+    elif retried or not consistent.all():
+        # points with no consistent pattern keep the formal solution of the ideal pattern
+        x[:, ~consistent] = first_x[:, ~consistent]
+        pattern[:, ~consistent] = first_pattern[:, ~consistent]
+        ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
 
     # assemble results
     port_torques = {(e, p): ev.x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}

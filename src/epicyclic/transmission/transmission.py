@@ -21,7 +21,7 @@ Queitsch part 1, eqs. 12 and 26 (Willis and torque relations).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import Any
@@ -285,10 +285,11 @@ class Transmission:
 
     # ------------------------------------------------------------------ files
     @classmethod
-    def from_file(cls, path) -> Transmission:
+    def from_file(cls, path, *, overrides: Sequence[str] = ()) -> Transmission:
         """Read a train file (TOML) with a ``[transmission]`` table.
 
-        Uses :func:`epicyclic.io.load_train_file`.
+        Uses :func:`epicyclic.io.load_train_file`; ``overrides`` are its
+        ``KEY=VALUE`` overrides (the CLI's ``--set``).
 
         Raises
         ------
@@ -297,7 +298,7 @@ class Transmission:
         """
         from ..io import load_train_file  # the file format lives in epicyclic.io
 
-        data = load_train_file(path)
+        data = load_train_file(path, overrides=overrides)
         spec = getattr(data, "transmission", None)
         if spec is None:
             raise ShiftScheduleError(
