@@ -97,6 +97,7 @@ def nested(depth: int) -> str:
 GEO_T = "\n[planetary.geometry]\nmodule = 2\nface_width = 20\n"
 GEO = sub(EFF, EFF + GEO_T)
 LOSS = sub(EFF, "planets = 3" + GEO_T + "\n[planetary.losses]\nfriction = 0.05\n")
+SCHLENK = sub("friction = 0.05", "friction = 'schlenk'\nroughness = 0.5", LOSS) + "[lubricant]\nviscosity = 30\n"
 
 
 # ------------------------------------------------------------------ file-system set-ups
@@ -615,6 +616,10 @@ CORPUS: list[Bad] = [
     Bad("map --out of unknown type", "map", LOSS, ".txt", ("{file}", "--out", "{tmp}/m.txt")),
     Bad("map --out is the input", "map", LOSS, "is the input file", ("{file}", "--out", "{file}")),
     Bad("map --gear without a transmission", "map", LOSS, "--gear", ("{file}", "--gear", "1")),
+    Bad("map at a torque no teeth carry", "map", SCHLENK, "leaves no efficiency", ("{file}", "--torque", "1e300",
+                                                                                   "--speed", "1000")),
+    Bad("analyze at a torque no teeth carry", "analyze", sub(TORQUES, "torques = { in = 1e300 }", SCHLENK),
+        "leaves no efficiency"),
     Bad("map a broken file", "map", sub("friction = 0.05", "friction = 2", LOSS), "key 'losses.friction'"),
     # serve: a row that wrongly passed would start a server, so those that reach the command run in a process
     Bad("serve --port 0", "serve", None, "--port", ("--port", "0")),

@@ -157,3 +157,15 @@ def test_schlenk_set_efficiency_is_below_one(torque, speed, viscosity, roughness
     torques = {"sun": np.array([torque]), "ring": np.array([2.6 * torque]), "carrier": np.array([-3.6 * torque])}
     eta = model.evaluate(speeds, torques).efficiency[0]
     assert 0.9 < eta < 1.0
+
+
+def test_a_load_beyond_the_friction_correlation_is_an_error_not_a_negative_efficiency():
+    # Schlenk's μ grows as (load per face width)^0.2: at 1e12 N·m on a 20 mm set μ·H_V passes 1.
+    sun, _ = set_meshes(geometry())
+    friction = SchlenkFriction(Lubricant(30.0), 0.4)
+    eta, mu = sun.efficiency(friction, np.array([100.0]), np.array([2000.0]))
+    assert 0.98 < eta[0] < 1.0 and 0.01 < mu[0] < 0.1
+    with pytest.raises(LossModelError, match=r"mesh sun-planet: the coefficient of friction .* leaves no efficiency"):
+        sun.efficiency(friction, np.array([100.0, 1e300]), np.array([2000.0, 2000.0]))
+    with pytest.raises(LossModelError, match="leaves no efficiency"):  # a NaN load is never an efficiency
+        sun.efficiency(friction, np.array([np.nan]), np.array([2000.0]))

@@ -17,7 +17,7 @@ from typing import Annotated, Optional
 import typer
 
 from ..text import short
-from ._common import emit, guarded, load, say
+from ._common import SetOption, emit, guarded, load, say
 
 __all__ = ["efficiency_map", "parse_axis", "MAX_POINTS"]
 
@@ -71,6 +71,7 @@ def efficiency_map(
     coast: Annotated[bool, typer.Option("--coast", help="Drive from the output (engine braking).")] = False,
     out: Annotated[Optional[Path], typer.Option(
         "--out", "-o", help="Write the map: .png, .svg, .pdf (figure), .csv or .json.")] = None,
+    set_: SetOption = None,
 ) -> None:
     """Efficiency map of FILE over input speed × torque, with the losses split by source."""
     from ..errors import ModelError
@@ -84,7 +85,7 @@ def efficiency_map(
                          f"{MAX_POINTS:,}; use fewer values.")
     if out is not None and out.suffix.lower() not in MAP_SUFFIXES:
         raise ModelError(f"--out {str(out)!r}: give a file ending in {', '.join(MAP_SUFFIXES)}.")
-    train_file = load(file, gear)
+    train_file = load(file, gear, set_)
     emap = compute(train_file, speeds, torques, direction="coast" if coast else "drive")
     if out is None:
         emit(emap.table() + "\n", None)

@@ -20,16 +20,16 @@ import typer
 
 from ..limits import MAX_PLANETS
 from ..text import short
-from ._common import FormatOption, OutOption, OutputFormat, check_finite, emit, guarded, load, solved
+from ._common import FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded, load, solved
 
 __all__ = ["fit", "forces", "search", "parse_range", "parse_tolerance"]
 
 
-def _load(file: Path, gear: str | None):
-    """The train file with ``--gear`` applied; an error if it has no geometry table."""
+def _load(file: Path, gear: str | None, overrides: list[str] | None):
+    """The train file with ``--set`` and ``--gear`` applied; an error if it has no geometry table."""
     from ..errors import ModelError
 
-    train_file = load(file, gear)
+    train_file = load(file, gear, overrides)
     if not train_file.geometry:
         raise ModelError(
             f"{file}: no element has a geometry table; add one to a [[planetary]] or [[gear]] element, e.g. "
@@ -71,11 +71,12 @@ def fit(
     allow_unequal: Annotated[bool, typer.Option("--allow-unequal", help="Accept unequal planet spacing.")] = False,
     min_clearance: Annotated[float, typer.Option(help="Least tip clearance between planets, mm.", min=0.0)] = 0.0,
     undercut: Annotated[Undercut, typer.Option(help="Undercut limit.")] = Undercut.theoretical,
+    set_: SetOption = None,
 ) -> None:
     """Fitting of every set with geometry: coaxiality, assembly and phasing, neighbours, undercut, interference."""
     from ..io.geometry_report import geometry_results
 
-    train_file = _load(file, None)
+    train_file = _load(file, None, set_)
     results = geometry_results(train_file.geometry, None, planets=planets, allow_unequal=allow_unequal,
                                min_clearance=min_clearance, undercut=undercut.value)
     emit(_render(results, format, f"fitting of {train_file.title}", "fitting"), out)
@@ -88,11 +89,12 @@ def forces(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
+    set_: SetOption = None,
 ) -> None:
     """Tooth, bearing and pin forces (× K_γ) at the file's operating point, for every element with geometry."""
     from ..io.geometry_report import geometry_dict, geometry_results
 
-    train_file = _load(file, gear)
+    train_file = _load(file, gear, set_)
     results = geometry_results(train_file.geometry, solved(train_file, file))
     check_finite(geometry_dict(results), file, "forces")
     emit(_render(results, format, f"forces of {train_file.title}", "forces"), out)

@@ -120,7 +120,7 @@ class MeshForce:
     @property
     def normal(self) -> float:
         """|F_n| = sqrt(F_t² + F_r² + F_a²), N."""
-        return math.sqrt(self.tangential ** 2 + self.radial ** 2 + self.axial ** 2)
+        return math.hypot(self.tangential, self.radial, self.axial)
 
 
 @dataclass(frozen=True)

@@ -37,6 +37,7 @@ from ..geometry.gear import MeshGeometry
 from ..geometry.set_geometry import SetGeometry
 from ..geometry.stage_geometry import StageGeometry
 from ..results.solution import RPM_TO_RAD_S
+from .errors import LossModelError
 from .tooth_loss import base_helix_angle, tooth_loss_factor
 
 __all__ = ["MeshLoss", "set_meshes", "stage_meshes", "meshes_efficiency"]
@@ -90,10 +91,27 @@ class MeshLoss:
         return load, sum_velocity
 
     def efficiency(self, friction, torque, relative_speed):
-        """η = 1 − μ H_V with μ from ``friction`` at this load and speed (arrays)."""
+        """η = 1 − μ H_V with μ from ``friction`` at this load and speed (arrays).
+
+        Raises
+        ------
+        LossModelError
+            μ H_V ≥ 1 (or not finite) somewhere: a load per face width beyond any gear, for which the
+            friction correlation gives no efficiency.
+        """
         load, sum_velocity = self.operating_state(torque, relative_speed)
         mu = friction.coefficient(load, sum_velocity, self.curvature_radius)
-        return 1.0 - mu * self.loss_factor, mu
+        loss = np.asarray(mu * self.loss_factor)
+        bad = ~(loss < 1.0)  # also NaN
+        if np.any(bad):
+            k = np.flatnonzero(bad.ravel())[0]
+            raise LossModelError(
+                f"mesh {self.mesh.name}: the coefficient of friction {np.ravel(mu)[k]:.4g} (load "
+                f"{np.ravel(np.broadcast_to(load, bad.shape))[k]:.4g} N/mm per face width) times H_V "
+                f"{self.loss_factor:.4g} leaves no efficiency (μ·H_V >= 1): the torque is far beyond what these "
+                "teeth carry; check the operating torques and the face width."
+            )
+        return 1.0 - loss, mu
 
 
 def _planet_pitch_radius(mesh: MeshGeometry, planet_is_gear1: bool) -> float:
