@@ -14,7 +14,7 @@ Rows run in-process through typer's ``CliRunner``; rows marked ``process=True``
 (FIFOs, devices: a regression would block or exhaust memory) run in a
 subprocess under a timeout.
 
-To add a command (fit, forces, search, map, serve, synthesize, ...), append
+To add a command (synthesize, ...), append
 rows for it: one per class of input it reads, with the same base files.
 """
 
@@ -91,6 +91,13 @@ def sub(old: str, new: str, base: str = GOOD) -> str:
 
 def nested(depth: int) -> str:
     return "x = " + "[" * depth + "]" * depth
+
+
+#: A geometry table for P (module 2 mm, face width 20 mm), and a mesh friction on top of it.
+GEO_T = "\n[planetary.geometry]\nmodule = 2\nface_width = 20\n"
+GEO = sub(EFF, EFF + GEO_T)
+LOSS = sub(EFF, "planets = 3" + GEO_T + "\n[planetary.losses]\nfriction = 0.05\n")
+SCHLENK = sub("friction = 0.05", "friction = 'schlenk'\nroughness = 0.5", LOSS) + "[lubricant]\nviscosity = 30\n"
 
 
 # ------------------------------------------------------------------ file-system set-ups
@@ -518,6 +525,102 @@ CORPUS: list[Bad] = [
     Bad("modes double without planets", "modes", None, "--planet-sun", ("--sun", "30", "--ring", "78", "--kind",
                                                                         "double")),
     Bad("modes --out is a folder", "modes", None, "is a folder", ("--i0", "-2", "--out", "{tmp}")),
+    # ---- geometry and loss tables (analyze reads them; fit, forces, map rely on them)
+    Bad("geometry not a table", "analyze", sub(EFF, EFF + "\ngeometry = 2"), "table 'geometry'"),
+    Bad("geometry unknown key", "fit", sub("module = 2", "modul = 2", GEO), "did you mean 'module'"),
+    Bad("geometry module missing", "fit", sub("module = 2\n", "", GEO), "missing key 'module'"),
+    Bad("geometry module negative", "fit", sub("module = 2", "module = -2", GEO), "key 'geometry.module'"),
+    Bad("geometry module nan", "fit", sub("module = 2", "module = nan", GEO), "key 'geometry.module'"),
+    Bad("geometry module a string", "fit", sub("module = 2", "module = 'two'", GEO), "key 'geometry.module'"),
+    Bad("geometry helix angle 90", "fit", sub("module = 2", "module = 2\nhelix_angle = 90", GEO), "helix"),
+    Bad("geometry pressure angle 0", "fit", sub("module = 2", "module = 2\npressure_angle = 0", GEO), "pressure"),
+    Bad("geometry profile shift unknown gear", "fit",
+        sub("module = 2", "module = 2\nprofile_shift = { son = 0.1 }", GEO), "did you mean 'sun'"),
+    Bad("geometry face width zero", "fit", sub("face_width = 20", "face_width = 0", GEO), "key 'geometry.face_width'"),
+    Bad("geometry planets contradict", "fit", sub(EFF, "planets = 3" + GEO_T.replace("20\n", "20\nplanets = 4\n")),
+        "give the number once"),
+    Bad("geometry planets 1000", "fit", sub("module = 2", "module = 2\nplanets = 1000", GEO), "planets"),
+    Bad("geometry load sharing below 1", "fit", sub("module = 2", "module = 2\nload_sharing = 0.5", GEO), "K_gamma"),
+    Bad("geometry ring module on a simple set", "fit", sub("module = 2", "module = 2\nring_module = 3", GEO),
+        "only stepped sets"),
+    Bad("geometry with stationary ratio", "fit", sub(TEETH, "stationary_ratio = -2.6", GEO), "needs tooth counts"),
+    Bad("geometry on a gear without meshes", "fit", STAGE + "ratio = 2\n[gear.geometry]\nmodule = 2\n",
+        "needs tooth counts"),
+    Bad("geometry profile shifts per mesh wrong", "fit", STAGE + "meshes = [[20, 40]]\n[gear.geometry]\nmodule = 2\n"
+        "profile_shift = [0.1]\n", "key 'geometry.profile_shift'"),
+    Bad("losses unknown key", "analyze", sub("friction = 0.05", "fricton = 0.05", LOSS), "did you mean 'friction'"),
+    Bad("losses friction 1.5", "analyze", sub("friction = 0.05", "friction = 1.5", LOSS), "key 'losses.friction'"),
+    Bad("losses friction a word", "analyze", sub("friction = 0.05", "friction = 'oily'", LOSS),
+        "key 'losses.friction'"),
+    Bad("losses friction without geometry", "analyze", sub(EFF, "[planetary.losses]\nfriction = 0.05"), "geometry"),
+    Bad("losses friction and an efficiency", "analyze", sub("planets = 3", EFF + "\nplanets = 3", LOSS),
+        "remove the element's"),
+    Bad("schlenk friction without lubricant", "analyze", sub("friction = 0.05", "friction = 'schlenk'\nroughness = 0.5",
+                                                           LOSS), "[lubricant]"),
+    Bad("lubricant viscosity negative", "analyze", GOOD + "[lubricant]\nviscosity = -3\n", "key 'viscosity'"),
+    Bad("lubricant unknown key", "analyze", GOOD + "[lubricant]\nviscosity = 30\ngrade = 'VG'\n",
+        "unknown key 'grade'"),
+    Bad("drag on a non-member", "analyze", sub("friction = 0.05", "drag = { member = 'moon', coefficients = [0.1] }",
+                                               LOSS), "moon"),
+    Bad("drag coefficient negative", "analyze", sub("friction = 0.05", "drag = { member = 'carrier', coefficients = "
+                                                    "[-0.1] }", LOSS), "coefficients[0]"),
+    Bad("drag coefficients a number", "analyze", sub("friction = 0.05", "drag = { member = 'carrier', coefficients = "
+                                                     "0.1 }", LOSS), "key 'coefficients'"),
+    Bad("bearing type unknown", "analyze", sub("friction = 0.05", "bearing = { bore = 20, type = 'plain' }", LOSS),
+        "bearing type"),
+    Bad("two rings not coaxial", "analyze", sub(TEETH, "teeth = { kind = 'two_rings', first = 81, planet_first = 27, "
+                                                "planet_second = 20, second = 78 }"), "cannot be coaxial"),
+    Bad("two suns module ratio 0", "analyze", sub(TEETH, "teeth = { kind = 'two_suns', first = 30, planet_first = 20, "
+                                                  "planet_second = 24, second = 26, module_ratio = 0 }"),
+        "module_ratio"),
+    Bad("stepped not coaxial", "analyze", sub(TEETH, "teeth = { kind = 'stepped', sun = 20, planet_sun = 30, "
+                                              "planet_ring = 18, ring = 86 }"), "module_ratio = 0.735"),
+    Bad("teeth kind wolfrom", "analyze", sub("{ sun = 30", "{ kind = 'wolfrom', sun = 30"), "'two_rings'"),
+    # ---- fit, forces
+    Bad("fit without geometry", "fit", GOOD, "no element has a geometry table"),
+    Bad("fit --out is the input", "fit", GEO, "is the input file", ("{file}", "--out", "{file}")),
+    Bad("fit --planets 0", "fit", GEO, "--planets", ("{file}", "--planets", "0"), usage=True),
+    Bad("fit --planets 1000", "fit", GEO, "--planets", ("{file}", "--planets", "1000"), usage=True),
+    Bad("fit --min-clearance negative", "fit", GEO, "--min-clearance", ("{file}", "--min-clearance", "-1"), usage=True),
+    Bad("fit a broken file", "fit", sub("sun = 30", "sun = 0", GEO), "key 'teeth'"),
+    Bad("forces without operating point", "forces", GEO.split("[operating_point]")[0], "[operating_point]"),
+    Bad("forces --gear without a transmission", "forces", GEO, "--gear", ("{file}", "--gear", "1")),
+    Bad("forces an overflowing solution", "forces", sub(SPEEDS, "speeds = { in = 1e300 }", GEO).replace(
+        TORQUES, "torques = { in = 1e300 }"), "not a finite number"),
+    Bad("forces --out is a folder", "forces", GEO, "is a folder", ("{file}", "--out", "{tmp}")),
+    # ---- search
+    Bad("search --ratio nan", "search", None, "--ratio", ("--ratio", "nan")),
+    Bad("search --ratio 0", "search", None, "--ratio", ("--ratio", "0")),
+    Bad("search --ratio 1e300", "search", None, "--ratio", ("--ratio", "1e300")),
+    Bad("search --ratio a word", "search", None, "--ratio", ("--ratio", "five"), usage=True),
+    Bad("search without --ratio", "search", None, "--ratio", ()),
+    Bad("search --tolerance a word", "search", None, "--tolerance", ("--ratio", "5", "--tolerance", "lots")),
+    Bad("search --tolerance 150%", "search", None, "--tolerance", ("--ratio", "5", "--tolerance", "150%")),
+    Bad("search --planets reversed", "search", None, "--planets", ("--ratio", "5", "--planets", "6..3")),
+    Bad("search --planets 100", "search", None, "--planets", ("--ratio", "5", "--planets", "3..100")),
+    Bad("search --sun below 3", "search", None, "--sun", ("--ratio", "5", "--sun", "1..20")),
+    Bad("search --ring a word", "search", None, "--ring", ("--ratio", "5", "--ring", "many")),
+    Bad("search --module 0", "search", None, "--module", ("--ratio", "5", "--module", "0"), usage=True),
+    Bad("search --format unknown", "search", None, "--format", ("--ratio", "5", "--format", "xml"), usage=True),
+    Bad("search --out is a folder", "search", None, "is a folder", ("--ratio", "5", "--out", "{tmp}")),
+    # ---- map
+    Bad("map --speed a word", "map", LOSS, "--speed", ("{file}", "--speed", "fast")),
+    Bad("map --speed 0", "map", LOSS, "--speed", ("{file}", "--speed", "0..100:5")),
+    Bad("map --speed reversed", "map", LOSS, "--speed", ("{file}", "--speed", "6000..500:5")),
+    Bad("map --speed nan", "map", LOSS, "--speed", ("{file}", "--speed", "nan..100:5")),
+    Bad("map --speed 1e400", "map", LOSS, "--speed", ("{file}", "--speed", "1..1e400:5")),
+    Bad("map --torque count a word", "map", LOSS, "--torque", ("{file}", "--torque", "10..50:many")),
+    Bad("map --torque count 10^7", "map", LOSS, "--torque", ("{file}", "--torque", "10..50:10000000")),
+    Bad("map too many points", "map", LOSS, "exceed the limit", ("{file}", "--speed", "1..2:5000", "--torque",
+                                                                 "1..2:5000")),
+    Bad("map --out of unknown type", "map", LOSS, ".txt", ("{file}", "--out", "{tmp}/m.txt")),
+    Bad("map --out is the input", "map", LOSS, "is the input file", ("{file}", "--out", "{file}")),
+    Bad("map --gear without a transmission", "map", LOSS, "--gear", ("{file}", "--gear", "1")),
+    Bad("map at a torque no teeth carry", "map", SCHLENK, "leaves no efficiency", ("{file}", "--torque", "1e300",
+                                                                                   "--speed", "1000")),
+    Bad("analyze at a torque no teeth carry", "analyze", sub(TORQUES, "torques = { in = 1e300 }", SCHLENK),
+        "leaves no efficiency"),
+    Bad("map a broken file", "map", sub("friction = 0.05", "friction = 2", LOSS), "key 'losses.friction'"),
     # serve: a row that wrongly passed would start a server, so those that reach the command run in a process
     Bad("serve --port 0", "serve", None, "--port", ("--port", "0")),
     Bad("serve --port 70000", "serve", None, "--port", ("--port", "70000")),
@@ -590,7 +693,8 @@ def test_the_corpus_is_large_and_its_classes_distinct():
     assert len(set(IDS)) == len(IDS)
     assert len(CORPUS) >= 150
     commands = {case.command for case in CORPUS}
-    assert {"analyze", "explain", "gears", "explore", "plot", "animate", "modes", "serve", "synthesize"} <= commands
+    assert {"analyze", "explain", "gears", "explore", "plot", "animate", "modes", "serve", "synthesize", "fit",
+            "forces", "search", "map"} <= commands
 
 
 @pytest.mark.parametrize("case", CORPUS, ids=IDS)

@@ -45,7 +45,7 @@ def test_analyze_json_reproduces_brandenberger_in_original_units():
     result = run("analyze", BRANDENBERGER, "--format", "json")
     assert result.exit_code == 0, result.output
     report = json.loads(result.stdout)
-    assert report["schema"] == "epicyclic-report/2"
+    assert report["schema"] == "epicyclic-report/3"  # bumped for the "geometry" section (issue 14)
     assert report["units"] == {"speed": "U/min", "torque": "kp*cm", "power": "PS"}
     sol = report["solution"]
     assert round(sol["shafts"]["I"]["speed"]) == 2740

@@ -1,8 +1,9 @@
 """``epicyclic analyze FILE``: solve a train description and report it.
 
-Formats: ``table`` (terminal), ``json`` (schema ``epicyclic-report/2``),
+Formats: ``table`` (terminal), ``json`` (schema ``epicyclic-report/3``),
 ``markdown`` and ``html`` (one self-contained file).  Numbers are in the
-file's ``[units]`` (core units 1/min, N·m, W otherwise).
+file's ``[units]`` (core units 1/min, N·m, W otherwise).  Elements with a
+``geometry`` table add their gears, fitting and forces (mm, N).
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from ..io.geometry_report import geometry_dict, geometry_html, geometry_markdown, geometry_results, geometry_text
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
@@ -34,13 +36,14 @@ def analyze(
     train_file = load(file, gear, set_)
     solution = solved(train_file, file)
     units, title, source = train_file.units, report_title(train_file), str(file)
+    shapes = geometry_results(train_file.geometry, solution)
     if format is OutputFormat.json:
-        text = json_report(solution, units, title=title, source=source)
+        text = json_report(solution, units, title=title, source=source, geometry=geometry_dict(shapes))
     elif format is OutputFormat.markdown:
-        text = markdown_report(solution, units, title=title)
+        text = markdown_report(solution, units, title=title) + ("\n" + geometry_markdown(shapes) if shapes else "")
     elif format is OutputFormat.html:
         text = html_report(solution, units, title=title, source=source, description=train_file.description,
-                           lang=lang)
+                           lang=lang, sections=geometry_html(shapes))
     else:
-        text = text_report(solution, units, title=title)
+        text = text_report(solution, units, title=title) + ("\n\n" + geometry_text(shapes) if shapes else "")
     emit(text, out)

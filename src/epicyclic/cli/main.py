@@ -54,6 +54,16 @@ from . import plot as _plot  # noqa: E402
 app.command("plot")(_plot.plot)
 app.command("animate")(_plot.animate)
 
+from . import geometry as _geometry  # noqa: E402
+
+app.command("fit")(_geometry.fit)
+app.command("forces")(_geometry.forces)
+app.command("search")(_geometry.search)
+
+from . import efficiency_map as _efficiency_map  # noqa: E402
+
+app.command("map")(_efficiency_map.efficiency_map)
+
 from . import synthesize as _synthesize  # noqa: E402
 
 app.command("synthesize")(_synthesize.synthesize)

@@ -9,8 +9,8 @@ from collections.abc import Sequence
 def _cell(value: object) -> str:
     if isinstance(value, bool) or value is None:
         return {True: "yes", False: "no", None: "-"}[value]
-    if isinstance(value, float):
-        return f"{value:.4f}"
+    if isinstance(value, float):  # 4 decimals (mm, N); huge values in exponent form
+        return f"{value:.4f}" if abs(value) < 1e9 else f"{value:.6g}"
     return str(value)
 
 

@@ -143,11 +143,14 @@ def assembly_ticks(teeth) -> int:
     """Number T of possible planet positions on the circle (φ_min = 360°/T).
 
     For a simple set ``T = z_s + z_r``; double-planet ``T = |z_r − z_s|``;
-    stepped ``T = |z_s z_c ± z_r z_b| / gcd(z_b, z_c)`` (+ internal ring).
+    stepped ``T = |σ_r z_s z_c − σ_s z_r z_b| / gcd(z_b, z_c)`` with σ = +1 for an
+    internal and −1 for an external central gear (so ``z_s z_c + z_r z_b`` for
+    sun and ring, ``|z_s z_c − z_r z_b|`` for two suns or two rings).
 
-    Derivation: with the carrier held the central gears turn by δ_s = i0 δ_r; a
-    copy of a planet at carrier angle φ meshes iff φ + δ_s and φ + δ_r are whole
-    tooth pitches of sun and ring.
+    Derivation: turning a planet copy by ψ relative to the carrier turns central
+    gear j by σ_j ψ z_pj/z_j; a copy at carrier angle φ meshes iff
+    φ − σ_j ψ z_pj/z_j is a whole tooth pitch of both central gears for some ψ,
+    i.e. φ is a multiple of 360° g/D.
 
     >>> from epicyclic.model import Teeth
     >>> assembly_ticks(Teeth("simple", 17, 49, (16,)))
@@ -164,7 +167,9 @@ def assembly_ticks(teeth) -> int:
     if teeth.kind == "double":
         return abs(zr - zs)
     zb, zc = zp
-    d = abs(zs * zc + zr * zb) if teeth.ring_internal else abs(zs * zc - zr * zb)
+    sigma_s = 1 if getattr(teeth, "sun_internal", False) else -1
+    sigma_r = 1 if teeth.ring_internal else -1
+    d = abs(sigma_r * zs * zc - sigma_s * zr * zb)
     return d // math.gcd(zb, zc)
 
 

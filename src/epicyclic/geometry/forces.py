@@ -120,7 +120,7 @@ class MeshForce:
     @property
     def normal(self) -> float:
         """|F_n| = sqrt(F_t² + F_r² + F_a²), N."""
-        return math.sqrt(self.tangential ** 2 + self.radial ** 2 + self.axial ** 2)
+        return math.hypot(self.tangential, self.radial, self.axial)
 
 
 @dataclass(frozen=True)
@@ -314,7 +314,8 @@ def planetary_forces(
     geometry : SetGeometry
         Geometry of that set (same tooth counts).
     load_sharing : float, optional
-        K_γ ≥ 1; default :func:`default_load_sharing` of the number of planets.
+        K_γ ≥ 1; default ``geometry.load_sharing``, else :func:`default_load_sharing`
+        of the number of planets.
     angles : sequence of float, optional
         Carrier angles of the planets, degrees (default equally spaced; give the
         angles of :func:`~epicyclic.geometry.fitting.check_assembly` for unequal spacing).
@@ -347,6 +348,8 @@ def planetary_forces(
         raise GeometryError("planetary_forces: at least one planet angle is needed.")
     if angles is None:
         angles = [360.0 * i / n for i in range(n)]
+    if load_sharing is None:
+        load_sharing = geometry.load_sharing
     k = default_load_sharing(n) if load_sharing is None else load_sharing
     if isinstance(k, bool) or not isinstance(k, (int, float)) or not math.isfinite(k) or k < 1.0:
         raise GeometryError(f"planetary_forces: load_sharing (K_gamma) must be a number >= 1, got {load_sharing!r}.")
@@ -355,6 +358,7 @@ def planetary_forces(
     names = geometry.planet_gear_names
     sun_mesh, ring_mesh = geometry.sun_mesh, geometry.ring_mesh
     ring_internal = ring_mesh.internal
+    sun_internal = geometry.gears["sun"].internal  # the first ring of a Wolfrom set
     bodies: list[PlanetLoad] = []
     sums = {"sun": [0.0, 0.0], "ring": [0.0, 0.0], "carrier": [0.0, 0.0]}
     carrier_torque = 0.0
@@ -373,7 +377,7 @@ def planetary_forces(
 
     for j, angle in enumerate(angles):
         theta = math.radians(angle)
-        sun_force, _ = _central_mesh(t_sun, n, sun_mesh, False, theta, outward=True)
+        sun_force, _ = _central_mesh(t_sun, n, sun_mesh, sun_internal, theta, outward=not sun_internal)
         sums["sun"][0] -= sun_force.force_on_planet[0]
         sums["sun"][1] -= sun_force.force_on_planet[1]
         if geometry.kind != "double":

@@ -119,6 +119,13 @@ class ToothSearch:
     def _repr_html_(self) -> str:
         return html_table(self._HEAD, self._rows(50), title=f"tooth-count search, target {self.target:g}")
 
+    def to_csv(self) -> str:
+        """Every candidate as comma-separated values with a header line (error in %, clearance in mm)."""
+        head = "z_sun,z_planet,z_ring,planets,ratio,error_percent,hunting,clearance_mm"
+        lines = [f"{c.z_sun},{c.z_planet},{c.z_ring},{c.planets},{c.ratio!r},{100 * c.error!r},"
+                 f"{str(c.hunting).lower()},{c.clearance!r}" for c in self.candidates]
+        return "\n".join([head, *lines]) + "\n"
+
     def to_dict(self) -> dict[str, Any]:
         return {"target": self.target, "mode": dict(zip(("held", "driver", "driven"), self.mode)),
                 "tolerance": self.tolerance, "module": self.module,

@@ -10,9 +10,10 @@ Meshes by kind of set (``Teeth.kind``):
 
 * ``simple``: sun–planet (external), planet–ring (internal);
 * ``double``: sun–planet1, planet1–planet2 (external), planet2–ring (internal);
-* ``stepped``: sun–planet_sun (external), planet_ring–ring (internal, or
-  external when ``Teeth.ring_internal`` is False).  The ring mesh may have
-  its own module (``ring_module``), as stepped planets often do.
+* ``stepped``: sun–planet_sun, planet_ring–ring; each central gear is
+  external or internal (``Teeth.sun_internal``, ``Teeth.ring_internal``:
+  sun + ring, two suns, or two rings as in the Wolfrom set).  The ring mesh
+  may have its own module (``ring_module``), as stepped planets often do.
 
 References
 ----------
@@ -21,6 +22,7 @@ Queitsch, Formelzeichen (m, r_0, r_b, r_g, a, a_0, α_0, α_b); ISO 21771:2007.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
@@ -31,7 +33,10 @@ from ._render import html_table, text_table
 from .errors import GeometryError
 from .gear import BasicRack, GearGeometry, MeshGeometry
 
-__all__ = ["SetGeometry", "planet_names"]
+__all__ = ["SetGeometry", "planet_names", "TWO_CENTRAL_NAMES"]
+
+#: Names of the gears of a set with two suns or two rings (``teeth.kind`` two_suns / two_rings in files).
+TWO_CENTRAL_NAMES = {"sun": "first", "planet_sun": "planet_first", "planet_ring": "planet_second", "ring": "second"}
 
 
 def planet_names(teeth: Teeth) -> tuple[str, ...]:
@@ -65,6 +70,13 @@ class SetGeometry:
     tip_shortening : bool, default True
         Shorten the tips of external pairs by k m_n (ISO 21771) to keep the
         standard tip clearance at the shifted centre distance.
+    face_width : float or mapping gear → float, optional
+        Face width b in mm, one for all gears or one per gear name (``sun``,
+        ``planet``, ``ring``, ...); a mesh's width is the smaller of its two
+        gears'.  Needed for mesh losses (load per face width).
+    load_sharing : float, optional
+        Load-sharing factor K_γ ≥ 1 for the design forces (default: by number
+        of planets, :func:`~epicyclic.geometry.forces.default_load_sharing`).
 
     References
     ----------
@@ -89,6 +101,8 @@ class SetGeometry:
     x_planet: tuple[float, ...] | float = 0.0
     ring_module: float | None = None
     tip_shortening: bool = True
+    face_width: float | Mapping[str, float] | None = None
+    load_sharing: float | None = None
     gears: Mapping[str, GearGeometry] = field(init=False, repr=False, compare=False)
     meshes: tuple[MeshGeometry, ...] = field(init=False, repr=False, compare=False)
 
@@ -128,22 +142,28 @@ class SetGeometry:
         planet_racks = [self.rack] * len(names)
         if teeth.kind == "stepped":
             planet_racks[1] = ring_rack
-        gears: dict[str, GearGeometry] = {"sun": GearGeometry(teeth.sun, self.rack, self.x_sun)}
+        gears: dict[str, GearGeometry] = {
+            "sun": GearGeometry(teeth.sun, self.rack, self.x_sun, internal=teeth.sun_internal)}
         for name, z, x, rk in zip(names, teeth.planet, xp, planet_racks):
             gears[name] = GearGeometry(z, rk, x)
         gears["ring"] = GearGeometry(teeth.ring, ring_rack, self.x_ring, internal=teeth.ring_internal)
 
         pairs = _mesh_pairs(teeth.kind, names)
-        meshes = [MeshGeometry(gears[a], gears[b], f"{a}-{b}") for a, b in pairs]
+        meshes = [_mesh(gears, a, b) for a, b in pairs]
         if self.tip_shortening:
             k: dict[str, float] = {}
             for (a, b), mesh in zip(pairs, meshes):
                 for g in (a, b):
                     k[g] = max(k.get(g, 0.0), mesh.tip_shortening)
             gears = {n: replace(g, tip_shortening=k.get(n, 0.0)) if not g.internal else g for n, g in gears.items()}
-            meshes = [MeshGeometry(gears[a], gears[b], f"{a}-{b}") for a, b in pairs]
+            meshes = [_mesh(gears, a, b) for a, b in pairs]
         object.__setattr__(self, "gears", MappingProxyType(gears))
         object.__setattr__(self, "meshes", tuple(meshes))
+        object.__setattr__(self, "face_width", _face_widths(self.face_width, tuple(gears), owner))
+        k_gamma = self.load_sharing
+        if k_gamma is not None and (isinstance(k_gamma, bool) or not isinstance(k_gamma, (int, float))
+                                    or not math.isfinite(k_gamma) or k_gamma < 1.0):
+            raise GeometryError(f"{owner}: load_sharing (K_gamma) must be a number >= 1, got {k_gamma!r}.")
 
     # ------------------------------------------------------------------ constructors
     @classmethod
@@ -161,10 +181,13 @@ class SetGeometry:
         x_ring: float = 0.0,
         ring_module: float | None = None,
         tip_shortening: bool = True,
+        face_width: float | Mapping[str, float] | None = None,
+        load_sharing: float | None = None,
     ) -> SetGeometry:
-        """Build the geometry from plain numbers (module in mm, angles in degrees)."""
+        """Build the geometry from plain numbers (module and face width in mm, angles in degrees)."""
         rack = BasicRack(module, pressure_angle, helix_angle, addendum, dedendum)
-        return cls(planetary_set, rack, x_sun, x_ring, x_planet, ring_module, tip_shortening)  # type: ignore[arg-type]
+        return cls(planetary_set, rack, x_sun, x_ring, x_planet, ring_module, tip_shortening,  # type: ignore[arg-type]
+                   face_width, load_sharing)
 
     # ------------------------------------------------------------------ properties
     @property
@@ -195,6 +218,24 @@ class SetGeometry:
         """The mesh of the second central gear (ring) with its planet gear."""
         return self.meshes[-1]
 
+    def mesh_face_width(self, mesh: MeshGeometry | str) -> float:
+        """Face width of a mesh, mm: the smaller of its two gears' widths.
+
+        Raises
+        ------
+        GeometryError
+            No face width was given.
+        """
+        name = mesh if isinstance(mesh, str) else mesh.name
+        widths = self.face_width
+        if widths is None:
+            raise GeometryError(
+                f"SetGeometry of {self.planetary_set.name!r}: no face width is given; mesh losses need the load "
+                "per face width: give face_width (mm)."
+            )
+        a, b = self.mesh(name).name.split("-")
+        return min(widths[a], widths[b])  # type: ignore[index]
+
     @property
     def carrier_radius(self) -> float:
         """Radius of the planet (first planet gear) axes on the carrier = sun-mesh centre distance, mm."""
@@ -222,10 +263,16 @@ class SetGeometry:
             "meshes": [m.to_dict() for m in self.meshes],
         }
 
+    def gear_label(self, name: str) -> str:
+        """The gear's name as a user of this arrangement says it: ``first``/``second`` for two suns or rings."""
+        if self.planetary_set.teeth.arrangement in ("two rings", "two suns"):  # type: ignore[union-attr]
+            return TWO_CENTRAL_NAMES.get(name, name)
+        return name
+
     def _rows(self) -> tuple[list[str], list[list[object]]]:
         headers = ["gear", "z", "x", "d", "d_b", "d_a", "d_f"]
         rows = [
-            [n + (" (internal)" if g.internal else ""), g.teeth, g.profile_shift, g.reference_diameter,
+            [self.gear_label(n) + (" (internal)" if g.internal else ""), g.teeth, g.profile_shift, g.reference_diameter,
              g.base_diameter, g.tip_diameter, g.root_diameter]
             for n, g in self.gears.items()
         ]
@@ -243,7 +290,7 @@ class SetGeometry:
     def table(self) -> str:
         """Gears and meshes as a text table (mm, degrees)."""
         title = (
-            f"{self.kind} set {self.planetary_set.name!r}: m_n = {self.rack.module} mm, "
+            f"{self.planetary_set.teeth.arrangement} set {self.planetary_set.name!r}: m_n = {self.rack.module} mm, "
             f"alpha_n = {self.rack.pressure_angle} deg, beta = {self.rack.helix_angle} deg"
         )
         return text_table(*self._rows(), title=title) + "\n\n" + text_table(*self._mesh_rows())
@@ -254,6 +301,34 @@ class SetGeometry:
     def __repr__(self) -> str:
         centres = ", ".join(f"{m.name} a_w={m.center_distance:.3f}" for m in self.meshes)
         return f"SetGeometry({self.kind} {self.planetary_set.name!r}, m_n={self.rack.module}, {centres})"
+
+
+def _face_widths(value, names: tuple[str, ...], owner: str) -> Mapping[str, float] | None:
+    """Face width per gear name (mm) from one number or a mapping; None stays None."""
+    if value is None:
+        return None
+    if isinstance(value, Mapping):
+        unknown = [k for k in value if k not in names]
+        missing = [n for n in names if n not in value]
+        if unknown or missing:
+            raise GeometryError(
+                f"{owner}: face_width needs one value per gear {', '.join(names)}"
+                + (f"; unknown {', '.join(map(repr, unknown))}" if unknown else "")
+                + (f"; missing {', '.join(missing)}" if missing else "") + "."
+            )
+        widths = dict(value)
+    else:
+        widths = {n: value for n in names}
+    for n, b in widths.items():
+        if isinstance(b, bool) or not isinstance(b, (int, float)) or not math.isfinite(b) or b <= 0:
+            raise GeometryError(f"{owner}: face_width of {n} must be a positive number of mm, got {b!r}.")
+    return MappingProxyType({n: float(b) for n, b in widths.items()})
+
+
+def _mesh(gears: Mapping[str, GearGeometry], a: str, b: str) -> MeshGeometry:
+    """The mesh of gears ``a`` and ``b``, named ``"a-b"``, with the internal gear (if any) second."""
+    first, second = (gears[b], gears[a]) if gears[a].internal else (gears[a], gears[b])
+    return MeshGeometry(first, second, f"{a}-{b}")
 
 
 def _mesh_pairs(kind: str, names: tuple[str, ...]) -> list[tuple[str, str]]:

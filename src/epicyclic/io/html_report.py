@@ -74,6 +74,7 @@ def html_report(
     figures: bool = True,
     explanation: bool = True,
     lang: str = "en",
+    sections: str = "",
 ) -> str:
     """The report as one self-contained HTML document.
 
@@ -90,6 +91,9 @@ def html_report(
         Include the worked solution.
     lang : {"en", "de"}
         Language of the worked solution.
+    sections : str, optional
+        Further HTML (escaped, self-contained) placed after the tables, e.g. the
+        geometry, fitting and forces of :mod:`epicyclic.io.geometry_report`.
 
     Returns
     -------
@@ -134,6 +138,8 @@ def html_report(
     parts.append(elements.html())
     parts.append("<table><caption>Summary</caption><tbody>" + "".join(
         f"<tr><th>{esc(k)}</th><td>{esc(v)}</td></tr>" for k, v in summary) + "</tbody></table>")
+    if sections:
+        parts.append(sections)
 
     if figures:
         found, note = report_figures(solution, units, name)

@@ -3,10 +3,10 @@
 The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
 (core units) with every dimensioned number converted into the chosen
 :class:`~epicyclic.units.Units`, wrapped with metadata.  Layout (schema
-``"epicyclic-report/2"``, documented in ``docs/file-format.md``)::
+``"epicyclic-report/3"``, documented in ``docs/file-format.md``)::
 
     {
-      "schema": "epicyclic-report/2",
+      "schema": "epicyclic-report/3",
       "generator": "epicyclic 0.1.0",
       "title": str, "source": str | null,
       "units": {"speed": str, "torque": str, "power": str},
@@ -14,13 +14,15 @@ The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
         "shafts": {name: {"speed", "torque", "power", "role"}},
         "elements": {name: {"kind", "status", "ports", "torques", "speeds", "rolling_power",
                             "coupling_power", "loss", "loss_direction", "efficiency_factor",
-                            "engaged", "slip_speed", "planet_speeds", "planet_speeds_relative"}},
+                            "engaged", "slip_speed", "planet_speeds", "planet_speeds_relative",
+                            "loss_sources"}},
         "input_power", "output_power", "loss", "efficiency", "self_locking",
         "circulation": {"power", "ratio", "loops": [{"path", "power", "ratio"}],
                         "largest_element_power", "largest_element_ratio", "indeterminate"},
         "degrees_of_freedom", "warnings", "ratio"
       },
-      "ideal": {... same as "solution", lossless ...} | null
+      "ideal": {... same as "solution", lossless ...} | null,
+      "geometry": {element: {"kind", "geometry", "fitting", "forces"}}   # only with geometry; mm, deg, N, N*m
     }
 
 Efficiencies, ratios (the circulation's ``ratio`` and ``largest_element_ratio``
@@ -28,7 +30,9 @@ are multiples of the input power) and ``loss_direction`` (w) are
 dimensionless.  Schema 1 had ``circulating_power`` (largest port power ÷ input
 power); schema 2 replaces it by ``circulation``: the power that flows around
 closed loops (Blindleistung) per loop and in total, and the largest element
-power, each null where the torque split is statically indeterminate.
+power, each null where the torque split is statically indeterminate.  Schema 3
+adds ``geometry`` and each element's ``loss_sources`` (the loss by source in
+the power unit: ``mesh``, ``bearing``, ``drag``; see ``docs/losses.md``).
 
 Examples
 --------
@@ -68,7 +72,7 @@ from ..units import Units
 __all__ = ["SCHEMA", "report_dict", "report_data", "json_report"]
 
 #: Identifier of the layout; bumped on any incompatible change.
-SCHEMA = "epicyclic-report/2"
+SCHEMA = "epicyclic-report/3"
 
 
 def _convert_solution(data: dict[str, Any], units: Units) -> dict[str, Any]:
@@ -92,6 +96,7 @@ def _convert_solution(data: dict[str, Any], units: Units) -> dict[str, Any]:
             converted["slip_speed"] = speed(e["slip_speed"])
         converted["planet_speeds"] = [speed(n) for n in e["planet_speeds"]]
         converted["planet_speeds_relative"] = [speed(n) for n in e["planet_speeds_relative"]]
+        converted["loss_sources"] = {k: power(v) for k, v in e.get("loss_sources", {}).items()}
         elements[name] = converted
     out["elements"] = elements
     for key in ("input_power", "output_power", "loss"):
@@ -121,6 +126,7 @@ def report_dict(
     *,
     title: str | None = None,
     source: str | None = None,
+    geometry: dict[str, Any] | None = None,
 ) -> dict[str, Any]:
     """The report as plain data (JSON-ready), numbers in ``units``.
 
@@ -131,17 +137,21 @@ def report_dict(
         Output units; core units (1/min, N·m, W) by default.
     title, source : str, optional
         Title (default: the train's name) and input file.
+    geometry : dict, optional
+        The ``"geometry"`` section (:func:`~epicyclic.io.geometry_report.geometry_dict`):
+        gears, meshes, fitting and forces of the elements with a geometry table, in
+        mm, degrees, N and N·m; the key is left out without one.
 
     Returns
     -------
     dict
         See the module docstring for the layout.
     """
-    return _finite(report_data(solution, units, title=title, source=source))
+    return _finite(report_data(solution, units, title=title, source=source, geometry=geometry))
 
 
 def report_data(solution: Solution, units: Units | None = None, *, title: str | None = None,
-                source: str | None = None) -> dict[str, Any]:
+                source: str | None = None, geometry: dict[str, Any] | None = None) -> dict[str, Any]:
     """:func:`report_dict` before non-finite numbers become null (to check them: ``check_finite``)."""
     from .. import __version__
 
@@ -152,7 +162,7 @@ def report_data(solution: Solution, units: Units | None = None, *, title: str | 
     if solution.ideal is not None:
         ideal = _convert_solution(solution.ideal.to_dict(), units)
         ideal["ratio"] = solution.ideal.ratio
-    return {
+    report = {
         "schema": SCHEMA,
         "generator": f"epicyclic {__version__}",
         "title": title or solution.train.name,
@@ -161,10 +171,13 @@ def report_data(solution: Solution, units: Units | None = None, *, title: str | 
         "solution": body,
         "ideal": ideal,
     }
+    if geometry is not None:  # only for files with geometry tables
+        report["geometry"] = geometry
+    return report
 
 
 def json_report(solution: Solution, units: Units | None = None, *, title: str | None = None,
-                source: str | None = None, indent: int = 2) -> str:
+                source: str | None = None, indent: int = 2, geometry: dict[str, Any] | None = None) -> str:
     """The report as JSON text (see :func:`report_dict`)."""
-    return json.dumps(report_dict(solution, units, title=title, source=source), indent=indent,
+    return json.dumps(report_dict(solution, units, title=title, source=source, geometry=geometry), indent=indent,
                       ensure_ascii=False) + "\n"

@@ -109,6 +109,10 @@ def summary_lines(solution: Solution, units: Units | None = None) -> list[tuple[
         ("output power", f"{fmt(u.power_from_core(solution.output_power))} {u.power}"),
         ("total loss", f"{fmt(u.power_from_core(solution.loss))} {u.power}"),
     ]
+    sources = solution.loss_sources
+    if set(sources) - {"mesh"}:  # losses from loss models (docs/losses.md)
+        lines.append(("loss by source", ", ".join(f"{k} {fmt(u.power_from_core(v))} {u.power}"
+                                                   for k, v in sources.items())))
     if solution.self_locking is not None:
         lines.append(("efficiency", "— (self-locking)"))
         lines.append(("self-locking", solution.self_locking.message))

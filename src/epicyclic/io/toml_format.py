@@ -52,6 +52,7 @@ from ..model import HOUSING, Brake, Clutch, GearStage, GearTrain, OperatingPoint
 from ..model.planetary import check_planets
 from ..text import short, terminal_text
 from ..units import Units, to_core
+from . import geometry_format
 from .located import locate_error, operating_point_where
 from .overrides import OverrideError, apply_overrides
 from .reader import TableReader, at_key, kind_of
@@ -60,13 +61,15 @@ from .source import InputFileError, parse_toml, read_source
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission"}
+             "operating_point", "transmission", "lubricant"}
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
-                   "mesh_efficiencies", "planets"}
+                   "mesh_efficiencies", "planets", "geometry", "losses"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
                "double": {"kind", "sun", "planet_sun", "planet_ring", "ring"},
-               "stepped": {"kind", "sun", "planet_sun", "planet_ring", "ring", "ring_internal"}}
-_GEAR_KEYS = {"name", "first", "second", "meshes", "ratio", "efficiency"}
+               "stepped": {"kind", "sun", "planet_sun", "planet_ring", "ring", "ring_internal", "module_ratio"},
+               "two_rings": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"},
+               "two_suns": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"}}
+_GEAR_KEYS = {"name", "first", "second", "meshes", "ratio", "efficiency", "geometry", "losses"}
 _CLUTCH_KEYS = {"name", "first", "second", "engaged"}
 _BRAKE_KEYS = {"name", "shaft", "engaged"}
 _UNIT_KEYS = {"speed", "torque", "power"}
@@ -128,6 +131,10 @@ class TrainFile:
     gear : str or None
         The gear of ``[operating_point] gear``: the operating point applies
         to the train in that gear.
+    geometry : mapping element → SetGeometry or StageGeometry
+        The elements' ``geometry`` tables (see ``docs/file-format.md``).
+    losses : mapping element → ElementLosses
+        The elements' ``losses`` tables (mesh friction, planet bearings, drag).
     """
 
     source: str
@@ -138,6 +145,8 @@ class TrainFile:
     transmission: Transmission | None = None
     description: str = ""
     gear: str | None = None
+    geometry: Mapping[str, Any] = field(default_factory=dict)
+    losses: Mapping[str, Any] = field(default_factory=dict)
 
     @property
     def operating_train(self) -> GearTrain:
@@ -162,6 +171,10 @@ class TrainFile:
                 "to solve; add speeds, torques or powers, drives and loads.", self.source, "[operating_point]",
             )
         try:
+            if self.losses and not lossless:  # losses from the geometry (docs/losses.md)
+                from ..losses import solve_with_losses
+
+                return solve_with_losses(self.operating_train, self.operating_point, self.losses)
             return solve(self.operating_train, self.operating_point, lossless=lossless)
         except EpicyclicError as exc:
             raise locate_error(exc, self.source, self.operating_point, "[operating_point]") from None
@@ -276,7 +289,17 @@ class _Reader(TableReader):
                                           "[[gear]], [[clutch]] or [[brake]] table.")
         read = {"planetary": self.read_planetary, "gear": self.read_gear,
                 "clutch": self.read_shift, "brake": self.read_shift}
-        elements = [read[kind](table, k, kind) for kind, group in tables.items() for k, table in enumerate(group)]
+        lubricant = geometry_format.read_lubricant(self, data)
+        elements, geometry, losses = [], {}, {}
+        for kind, group in tables.items():
+            for k, table in enumerate(group):
+                element, shape, model = geometry_format.read_extras(
+                    self, kind, table, read[kind](table, k, kind), self.element_where(kind, k, table), lubricant)
+                elements.append(element)
+                if shape is not None:
+                    geometry[element.name] = shape
+                if model is not None:
+                    losses[element.name] = model
         shafts = self.names(data.get("shafts", []), "shafts", "top level")
         train = self.checked("top level", "gear train", GearTrain, elements, shafts, title)
         self.checked("top level, key 'shafts'", "", check_count, len(train.shafts), "top level", MAX_SHAFTS,
@@ -288,7 +311,8 @@ class _Reader(TableReader):
         if "operating_point" in data:
             op, gear = self.read_operating_point(
                 self.table(data["operating_point"], "[operating_point]"), train, transmission)
-        return TrainFile(self.source, title, train, op, self.units, transmission, description, gear)
+        return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
+                         MappingProxyType(geometry), MappingProxyType(losses))
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")
@@ -298,10 +322,15 @@ class _Reader(TableReader):
         return Units(**chosen)
 
     # ---- elements
+    @staticmethod
+    def element_where(kind: str, k: int, table: Mapping[str, Any]) -> str:
+        """Where the k-th ``[[kind]]`` table is, for messages: ``[[kind]] #k 'name'``."""
+        name = table.get("name")
+        return f"[[{kind}]] #{k + 1}" + (f" {short(name, 40)}" if isinstance(name, str) else "")
+
     def element(self, kind: str, k: int, table: Mapping[str, Any], keys: set[str]) -> tuple[str, str]:
         """(where, name) of the k-th ``[[kind]]`` table, its keys and its name checked."""
-        name = table.get("name")
-        where = f"[[{kind}]] #{k + 1}" + (f" {short(name, 40)}" if isinstance(name, str) else "")
+        where = self.element_where(kind, k, table)
         self.check_keys(table, keys, where)
         name = self.name(table, "name", where)
         if name in self.element_names:
@@ -338,17 +367,21 @@ class _Reader(TableReader):
             return self.checked(key, owner, PlanetarySet, name, stationary_ratio=ratio,
                                 stationary_efficiency=1.0 if eta is None else eta, planets=planets, **shafts)
         teeth = self.table(table["teeth"], at_key(where, "teeth"))
-        return self.planetary_from_teeth(teeth, name, shafts, eta, meshes, planets, where)
+        return self.planetary_from_teeth(teeth, name, shafts, eta, meshes, planets, where,
+                                         geometry_format.module_ratio(self, table, where))
 
-    def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where) -> PlanetarySet:
+    def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where, ratio=None) -> PlanetarySet:
         kind = teeth.get("kind", "simple")
         if kind not in _TEETH_KEYS:
-            raise self.error(at_key(where, "teeth.kind"), f"expected 'simple', 'double' or 'stepped', got "
+            raise self.error(at_key(where, "teeth.kind"), f"expected 'simple', 'double' or 'stepped' (or "
+                                                          f"'two_rings' for a Wolfrom set, 'two_suns'), got "
                                                           f"{short(kind)}.")
         in_teeth = at_key(where, "teeth") + f" (kind {kind!r})"
         self.check_keys(teeth, _TEETH_KEYS[kind], in_teeth)
         z = {key: self.integer(self.require(teeth, key, in_teeth), f"teeth.{key}", where)
-             for key in sorted(_TEETH_KEYS[kind] - {"kind", "ring_internal"})}
+             for key in sorted(_TEETH_KEYS[kind] - {"kind", "ring_internal", "module_ratio"})}
+        if "module_ratio" in teeth:
+            ratio = self.number(teeth["module_ratio"], "teeth.module_ratio", where)
         owner = f"planetary set {name!r}"
         common = dict(stationary_efficiency=eta, mesh_efficiencies=meshes, planets=planets, **shafts)
         key = at_key(where, "teeth")
@@ -359,9 +392,16 @@ class _Reader(TableReader):
             return self.checked(key, owner, PlanetarySet.double_planet, name, z_sun=z["sun"],
                                 z_planet_sun=z["planet_sun"], z_planet_ring=z["planet_ring"], z_ring=z["ring"],
                                 **common)
+        if kind in ("two_rings", "two_suns"):
+            build = PlanetarySet.two_rings if kind == "two_rings" else PlanetarySet.two_suns
+            return self.checked(key, owner, build, name, first=common.pop("sun"), second=common.pop("ring"),
+                                z_first=z["first"], z_planet_first=z["planet_first"],
+                                z_planet_second=z["planet_second"], z_second=z["second"], module_ratio=ratio,
+                                **common)
         internal = self.boolean(teeth, "ring_internal", at_key(where, "teeth"), True)
         return self.checked(key, owner, PlanetarySet.stepped, name, z_sun=z["sun"], z_planet_sun=z["planet_sun"],
-                            z_planet_ring=z["planet_ring"], z_ring=z["ring"], ring_internal=internal, **common)
+                            z_planet_ring=z["planet_ring"], z_ring=z["ring"], ring_internal=internal,
+                            module_ratio=ratio, **common)
 
     def read_gear(self, table: Mapping[str, Any], k: int, kind: str = "gear") -> GearStage:
         where, name = self.element(kind, k, table, _GEAR_KEYS)

@@ -22,16 +22,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Literal
 
 from ..errors import EfficiencyError, ModelError, ToothCountError
-from ..limits import MAX_NAME_CHARS, MAX_PLANETS, MAX_TEETH, MIN_TEETH
+from ..limits import MAX_NAME_CHARS, MAX_PLANETS
+from .teeth import COAXIAL_TOLERANCE_TEETH, Teeth, check_double, check_stepped, check_teeth
 
-__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "check_planets", "finite_float"]
-
-#: Largest mismatch |z_ring - z_sun - 2 z_planet| (in teeth) that profile shift
-#: can absorb in a simple set; larger ones cannot be made coaxial.
-COAXIAL_TOLERANCE_TEETH = 2
+__all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "check_planets", "finite_float",
+           "check_teeth", "COAXIAL_TOLERANCE_TEETH"]
 
 
 def check_name(value: object, field_name: str, owner: str) -> str:
@@ -95,82 +92,6 @@ def check_efficiency(value: object, field_name: str, owner: str) -> float:
             "Give an efficiency such as 0.98, not a percentage or a loss."
         )
     return value
-
-
-def check_teeth(value: object, field_name: str, owner: str) -> int:
-    """Return ``value`` as int if it is a whole number of teeth in MIN_TEETH … MAX_TEETH, else raise."""
-    if isinstance(value, bool) or not isinstance(value, int):
-        if isinstance(value, float) and value.is_integer():
-            value = int(value)
-        else:
-            raise ToothCountError(f"{owner}: {field_name} must be a whole number of teeth, got {value!r:.40}.")
-    if value < MIN_TEETH:
-        raise ToothCountError(
-            f"{owner}: {field_name} must be at least {MIN_TEETH} teeth, got {value}."
-        )
-    if value > MAX_TEETH:
-        raise ToothCountError(
-            f"{owner}: {field_name} must be at most {MAX_TEETH} teeth, got {value:.4g} (see docs/limits.md)."
-        )
-    return value
-
-
-@dataclass(frozen=True)
-class Teeth:
-    """Tooth counts of a planetary set.
-
-    Parameters
-    ----------
-    kind : {"simple", "double", "stepped"}
-        ``simple``: sun–planet–ring.  ``double``: sun meshes planet 1, planet 1
-        meshes planet 2, planet 2 meshes the ring (a plus set).  ``stepped``: a
-        planet with two gears on one shaft, the first meshing the sun, the
-        second meshing the second central gear (Brandenberger's a/b·c/d).
-    sun, ring : int
-        Teeth of the first and second central gear.
-    planet : tuple of int
-        Planet teeth: ``(z_p,)`` for a simple set, ``(z_p1, z_p2)`` otherwise,
-        the first meshing the sun.
-    ring_internal : bool
-        Whether the second central gear is internal (a ring).  Only a stepped
-        set may have an external second central gear.
-    """
-
-    kind: Literal["simple", "double", "stepped"]
-    sun: int
-    ring: int
-    planet: tuple[int, ...]
-    ring_internal: bool = True
-
-    @property
-    def stationary_ratio(self) -> float:
-        """i0 from the tooth counts (sign from the meshes).
-
-        >>> Teeth("simple", 30, 78, (24,)).stationary_ratio
-        -2.6
-        """
-        s, r, p = self.sun, self.ring, self.planet
-        if self.kind == "simple":
-            return -r / s
-        if self.kind == "double":
-            return r / s
-        sign = -1.0 if self.ring_internal else 1.0
-        return sign * (r * p[0]) / (s * p[1])
-
-    @property
-    def planet_factors(self) -> tuple[float, ...]:
-        """Factors k with n_planet - n_carrier = k (n_sun - n_carrier), per planet gear.
-
-        References
-        ----------
-        tec-science, "Willis-Gleichung", Grundgleichung: n_P z_P = n_T (z_P + z_S) - n_S z_S.
-        """
-        s, p = self.sun, self.planet
-        if self.kind == "simple":
-            return (-s / p[0],)
-        if self.kind == "double":
-            return (-s / p[0], s / p[1])
-        return (-s / p[0],)  # both steps turn together
 
 
 @dataclass(frozen=True)
@@ -309,7 +230,10 @@ class PlanetarySet:
     ) -> PlanetarySet:
         """A double-planet (plus) set: sun–planet 1–planet 2–ring, i0 = +z_ring/z_sun.
 
-        ``mesh_efficiencies`` are the three meshes' efficiencies (combined by product).
+        ``mesh_efficiencies`` are the three meshes' efficiencies (combined by
+        product).  The planets must be placeable: planet 1 at (z_sun + z_p1)/2,
+        planet 2 at (z_ring − z_p2)/2 and their centre distance (z_p1 + z_p2)/2
+        (modules) must close a triangle (see :func:`~epicyclic.model.teeth.check_double`).
         """
         owner = f"planetary set {name!r}"
         zs = check_teeth(z_sun, "z_sun", owner)
@@ -321,6 +245,7 @@ class PlanetarySet:
                 f"{owner}: the ring must have more teeth than the sun, got z_ring={zr}, z_sun={zs}."
             )
         teeth = Teeth("double", zs, zr, (z1, z2))
+        check_double(teeth, owner)
         return cls(
             name, sun, ring, carrier, teeth.stationary_ratio,
             _combine(stationary_efficiency, mesh_efficiencies, 3, owner), planets, teeth,
@@ -339,15 +264,30 @@ class PlanetarySet:
         z_planet_ring: int,
         z_ring: int,
         ring_internal: bool = True,
+        sun_internal: bool = False,
+        module_ratio: float | None = None,
         stationary_efficiency: float | None = None,
         mesh_efficiencies: tuple[float, ...] | None = None,
         planets: int = 3,
     ) -> PlanetarySet:
         """A stepped-planet set (Brandenberger's a/b·c/d).
 
-        The sun (a) meshes planet gear b; planet gear c, on the same planet
-        shaft, meshes the second central gear d (internal ring or external
-        gear): i0 = ∓ (z_d z_b)/(z_c z_a), minus with an internal ring.
+        The first central gear a (``sun``) meshes planet gear b; planet gear
+        c, on the same planet shaft, meshes the second central gear d
+        (``ring``).  Each central gear is external or internal
+        (``sun_internal``, ``ring_internal``):
+        i0 = σ_a σ_d (z_d z_b)/(z_a z_c) with σ = −1 for an external and +1
+        for an internal central gear (minus with one ring, plus with two suns
+        or two rings).
+
+        Parameters
+        ----------
+        module_ratio : float, optional
+            m_d/m_a, the module of the second mesh over that of the first.
+            Given, the tooth counts are checked for coaxiality
+            (|(z_a ± z_b) − (m_d/m_a)(z_d ± z_c)| ≤ 2 max(1, m_d/m_a) teeth);
+            ``None`` (default) leaves coaxiality to the geometry
+            (:func:`~epicyclic.geometry.check_coaxiality`).
 
         References
         ----------
@@ -365,14 +305,105 @@ class PlanetarySet:
         zb = check_teeth(z_planet_sun, "z_planet_sun", owner)
         zc = check_teeth(z_planet_ring, "z_planet_ring", owner)
         zr = check_teeth(z_ring, "z_ring", owner)
-        if ring_internal and zr <= zc:
-            raise ToothCountError(
-                f"{owner}: an internal ring must have more teeth than the planet gear meshing it, "
-                f"got z_ring={zr}, z_planet_ring={zc}."
-            )
-        teeth = Teeth("stepped", zs, zr, (zb, zc), ring_internal)
+        for flag, value in (("ring_internal", ring_internal), ("sun_internal", sun_internal)):
+            if not isinstance(value, bool):
+                raise ToothCountError(f"{owner}: {flag} must be True or False, got {value!r}.")
+        teeth = Teeth("stepped", zs, zr, (zb, zc), ring_internal, sun_internal)
+        check_stepped(teeth, owner, module_ratio)
         return cls(
             name, sun, ring, carrier, teeth.stationary_ratio,
+            _combine(stationary_efficiency, mesh_efficiencies, 2, owner), planets, teeth,
+        )
+
+    @classmethod
+    def two_rings(
+        cls,
+        name: str,
+        *,
+        first: str,
+        second: str,
+        carrier: str,
+        z_first: int,
+        z_planet_first: int,
+        z_planet_second: int,
+        z_second: int,
+        module_ratio: float | None = 1.0,
+        stationary_efficiency: float | None = None,
+        mesh_efficiencies: tuple[float, ...] | None = None,
+        planets: int = 3,
+    ) -> PlanetarySet:
+        """A stepped set with two internal rings: the Wolfrom (3K) set, i0 = +(z_2 z_p1)/(z_1 z_p2).
+
+        ``first`` and ``second`` are the shafts of the two rings (the set's
+        ``sun`` and ``ring`` ports); ring 1 meshes planet gear ``z_planet_first``,
+        ring 2 planet gear ``z_planet_second`` on the same planet shaft.  With
+        equal modules (``module_ratio = 1``, default) the tooth counts must be
+        coaxial: z_1 − z_p1 = z_2 − z_p2 within ±2 teeth.
+
+        References
+        ----------
+        Brandenberger 1952, eq. 1 (a/b·c/d with both meshes internal: no sign change);
+        SDP/SI D785, eq. (13-6) (equal centre distances).
+
+        Examples
+        --------
+        A Wolfrom set: ring 1 (81 teeth) held, ring 2 (78) output, stepped planet 27/24:
+
+        >>> w = PlanetarySet.two_rings("W", first="r1", second="r2", carrier="c", z_first=81,
+        ...                            z_planet_first=27, z_planet_second=24, z_second=78)
+        >>> round(w.stationary_ratio, 6), w.teeth.arrangement
+        (1.083333, 'two rings')
+        """
+        return cls._two_central(name, True, first, second, carrier, (z_first, z_planet_first, z_planet_second,
+                                z_second), module_ratio, stationary_efficiency, mesh_efficiencies, planets)
+
+    @classmethod
+    def two_suns(
+        cls,
+        name: str,
+        *,
+        first: str,
+        second: str,
+        carrier: str,
+        z_first: int,
+        z_planet_first: int,
+        z_planet_second: int,
+        z_second: int,
+        module_ratio: float | None = 1.0,
+        stationary_efficiency: float | None = None,
+        mesh_efficiencies: tuple[float, ...] | None = None,
+        planets: int = 3,
+    ) -> PlanetarySet:
+        """A stepped set with two external suns, i0 = +(z_2 z_p1)/(z_1 z_p2) (Brandenberger's Bild 1).
+
+        With equal modules (``module_ratio = 1``, default) the tooth counts must
+        be coaxial: z_1 + z_p1 = z_2 + z_p2 within ±2 teeth.
+
+        References
+        ----------
+        Brandenberger 1952, eq. 1 and Bild 1: n2 − n3 = (n1 − n3)·(a/b)(c/d).
+
+        Examples
+        --------
+        >>> s = PlanetarySet.two_suns("B", first="I", second="II", carrier="III", z_first=50,
+        ...                           z_planet_first=24, z_planet_second=30, z_second=42)
+        >>> round(s.stationary_ratio, 4)
+        0.672
+        """
+        return cls._two_central(name, False, first, second, carrier, (z_first, z_planet_first, z_planet_second,
+                                z_second), module_ratio, stationary_efficiency, mesh_efficiencies, planets)
+
+    @classmethod
+    def _two_central(cls, name, internal, first, second, carrier, counts, module_ratio, stationary_efficiency,
+                     mesh_efficiencies, planets) -> PlanetarySet:
+        """A stepped set whose two central gears are both internal (rings) or both external (suns)."""
+        owner = f"planetary set {name!r}"
+        labels = ("z_first", "z_planet_first", "z_planet_second", "z_second")
+        z1, zb, zc, z2 = (check_teeth(z, label, owner) for z, label in zip(counts, labels))
+        teeth = Teeth("stepped", z1, z2, (zb, zc), ring_internal=internal, sun_internal=internal)
+        check_stepped(teeth, owner, module_ratio, labels)
+        return cls(
+            name, first, second, carrier, teeth.stationary_ratio,
             _combine(stationary_efficiency, mesh_efficiencies, 2, owner), planets, teeth,
         )
 

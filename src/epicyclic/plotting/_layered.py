@@ -179,7 +179,7 @@ def layered_layout(nodes: Sequence[Hashable], edges: Sequence[tuple[Hashable, Ha
                   tuple(tuple(layer_nodes) for layer_nodes in order), tuple(links))
 
 
-def _starts(order: list[list[Hashable]], shuffles: int = 6) -> list[list[list[Hashable]]]:
+def _starts(order: list[list[Hashable]], shuffles: int = 12) -> list[list[list[Hashable]]]:
     """Initial orders for the crossing reduction: as given, reversed, and a few fixed shuffles."""
     import random
 

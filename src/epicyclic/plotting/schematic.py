@@ -152,7 +152,7 @@ def schematic_teeth(i0: float, planets: int = 3) -> tuple[Teeth, Mapping[str, st
     --------
     >>> t, roles, exact = schematic_teeth(-96 / 48)
     >>> t, exact
-    (Teeth(kind='simple', sun=16, ring=32, planet=(8,), ring_internal=True), True)
+    (Teeth(kind='simple', sun=16, ring=32, planet=(8,), ring_internal=True, sun_internal=False), True)
     >>> t, roles, exact = schematic_teeth(72 / 30)
     >>> t.kind, t.stationary_ratio == 72 / 30
     ('double', True)

@@ -168,13 +168,14 @@ def _layout_from_teeth(name: str, teeth: Teeth, m: float) -> SetLayout:
         return SetLayout(name, "mm", MappingProxyType({"sun": (rs, False), "ring": (rr, True)}), (body,), True)
     if teeth.kind == "stepped":
         zb, zc = zp
-        a = m * (zs + zb) / 2
-        rs = _pitch(a, zs, zb, False)
+        sun_internal = getattr(teeth, "sun_internal", False)  # the first ring of a Wolfrom set
+        a = m * (zs - zb if sun_internal else zs + zb) / 2
+        rs = _pitch(a, zs, zb, sun_internal)
         rd = _pitch(a, zr, zc, teeth.ring_internal)
-        extent = (min(rs, 2 * a - rd, rd), max(2 * a - rs, rd, 2 * a - rd))
+        extent = (min(rs, 2 * a - rs, 2 * a - rd, rd), max(2 * a - rs, rs, rd, 2 * a - rd))
         body = PlanetBody("stepped planet", a, extent, MappingProxyType({"sun": rs, "ring": rd}))
-        return SetLayout(name, "mm", MappingProxyType({"sun": (rs, False), "ring": (rd, teeth.ring_internal)}),
-                         (body,), True)
+        return SetLayout(name, "mm", MappingProxyType({"sun": (rs, sun_internal),
+                                                       "ring": (rd, teeth.ring_internal)}), (body,), True)
     # double planet: planet 1 meshes the sun, planet 2 the ring; their common
     # mesh lies off the radial lines, so each body is drawn on its own radial line.
     z1, z2 = zp

@@ -51,6 +51,7 @@ def solution_to_dict(sol: Any) -> dict[str, Any]:
                 "slip_speed": e.slip_speed,
                 "planet_speeds": list(e.planet_speeds),
                 "planet_speeds_relative": list(e.planet_speeds_relative),
+                "loss_sources": dict(e.loss_sources),
             }
             for e in sol.elements.values()
         },

@@ -73,6 +73,9 @@ class ElementState:
     planet_speeds, planet_speeds_relative : tuple of float
         Planet gear speeds, absolute and relative to the carrier (1/min), when
         tooth counts are known.
+    loss_sources : mapping source → float
+        The loss split by source, W (``mesh``, ``bearing``, ``drag``; see
+        :mod:`epicyclic.solver.given_losses`); ``{"mesh": loss}`` with a typed-in η0.
 
     References
     ----------
@@ -93,6 +96,7 @@ class ElementState:
     slip_speed: float | None = None
     planet_speeds: tuple[float, ...] = ()
     planet_speeds_relative: tuple[float, ...] = ()
+    loss_sources: Mapping[str, float] = field(default_factory=dict)
 
     @property
     def port_powers(self) -> dict[str, float]:
@@ -201,6 +205,15 @@ class Solution:
     @property
     def drives(self) -> tuple[str, ...]:
         return tuple(s.name for s in self.shafts.values() if s.role == "drive")
+
+    @property
+    def loss_sources(self) -> dict[str, float]:
+        """The train's loss by source (``mesh``, ``bearing``, ``drag``), W: the elements' summed."""
+        out: dict[str, float] = {}
+        for element in self.elements.values():
+            for source, value in element.loss_sources.items():
+                out[source] = out.get(source, 0.0) + value
+        return out
 
     @property
     def loads(self) -> tuple[str, ...]:

@@ -15,7 +15,7 @@ Brandenberger 1952, eqs. 1–10.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 
 import numpy as np
@@ -27,10 +27,11 @@ from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
 from .assembly import matrices
 from .evaluate import evaluate
+from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
 from .self_locking import SELF_LOCKING_MARGIN
 from .solve import MAX_PATTERN_TRIES, _validate
-from .statics import torque_solver
+from .statics import TorqueSolver, torque_solver
 
 __all__ = ["BatchSolution", "solve_batch"]
 
@@ -57,6 +58,8 @@ class BatchSolution:
     self_locking : ndarray of bool
     patterns : int
         Number of distinct loss-direction patterns solved.
+    loss_sources : mapping element → mapping source → ndarray
+        Each element's loss by source (``mesh``, ``bearing``, ``drag``), W.
     """
 
     train: GearTrain
@@ -71,6 +74,7 @@ class BatchSolution:
     efficiency: np.ndarray
     self_locking: np.ndarray
     patterns: int
+    loss_sources: Mapping[str, ArrayMap] = field(default_factory=dict)
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -116,6 +120,8 @@ def solve_batch(
     drives: Sequence[str] = (),
     loads: Sequence[str] = (),
     connected: Sequence[str] = (),
+    efficiencies: Mapping[str, Mapping[str, object]] | None = None,
+    loss_torques: Mapping[str, Mapping[str, object]] | None = None,
 ) -> BatchSolution:
     """Solve ``train`` at many operating points at once.
 
@@ -127,6 +133,11 @@ def solve_batch(
         an array; all broadcast to one shape.
     drives, loads, connected : sequence of str
         As in :class:`~epicyclic.OperatingPoint`.
+    efficiencies, loss_torques : mapping, optional
+        As in :func:`~epicyclic.solver.solve.solve`, each value a number or an
+        array of the points (flattened order): per-point efficiency factors are
+        solved with the operator of their loss pattern and a correction of the
+        lever rows (:func:`_corrected`), the torques as a right-hand side.
 
     Returns
     -------
@@ -208,7 +219,15 @@ def solve_batch(
     consistent = np.zeros(points, dtype=bool)
     pending = np.arange(points)
     solved: set[tuple[int, ...]] = set()
-    lossy = any(lever.efficiency != 1.0 for lever in mats.levers)
+    extra = given_losses(mats, efficiencies, loss_torques, points)
+    rows = effs = dragged = None
+    if extra is not None:  # reference η0 per lever: the median over the points; the rest is a correction
+        mats = matrices(with_efficiencies(train, {lv.element.name: float(np.median(extra.efficiency[k]))
+                                                  for k, lv in enumerate(mats.levers)}), template.external_shafts)
+        effs, dragged = extra.efficiency, (extra.torques if extra.has_torques else None)
+        rows = extra.rows(mats) if dragged is not None else None
+    lossy = any(lever.efficiency != 1.0 for lever in mats.levers) or (
+        extra is not None and (dragged is not None or bool(np.any(effs != 1.0))))
     ev = ideal_eval  # lossless: the ideal evaluation is the result
     retried = False
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
@@ -223,16 +242,20 @@ def solve_batch(
             solver = torque_solver(mats, given, row)
             solved.add(tuple(int(w) for w in row))
             with np.errstate(all="ignore"):
-                x[:, members] = solver.operator @ tau[:, members]
+                x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
+                                           None if rows is None else rows[:, members],
+                                           None if effs is None else effs[:, members])
         column = pattern[:, pending]
         if attempt == 0:  # every point (pending is all of them): this evaluation is kept where consistent
             first_x = x.copy()
-            ev = evaluate(mats, n, x, pattern, given_map)
+            ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
             observed = ev.pattern
         else:
             retried = True
             observed = evaluate(mats, n[:, pending], x[:, pending], column,
-                                {s: v[pending] for s, v in given_map.items()}).pattern
+                                {s: v[pending] for s, v in given_map.items()},
+                                None if effs is None else effs[:, pending],
+                                None if dragged is None else dragged[:, pending]).pattern
         ok = np.all((column == observed) | (observed == 0), axis=0)
         consistent[pending[ok]] = True
         pending = pending[~ok]
@@ -245,13 +268,20 @@ def solve_batch(
         # points with no consistent pattern keep the formal solution of the ideal pattern
         x[:, ~consistent] = first_x[:, ~consistent]
         pattern[:, ~consistent] = first_pattern[:, ~consistent]
-        ev = evaluate(mats, n, x, pattern, given_map)
+        ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
 
     # assemble results
     port_torques = {(e, p): ev.x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
     lever_index = {lever.element.name: k for k, lever in enumerate(mats.levers)}
-    losses = {e.name: (ev.loss[lever_index[e.name]] if e.name in lever_index else np.zeros(points))
-              for e in train.elements}
+    losses, sources = {}, {}
+    for e in train.elements:
+        k = lever_index.get(e.name)
+        rolling = ev.loss[k] if k is not None else np.zeros(points)
+        parts = ({"mesh": rolling} if extra is None else extra.split(k, rolling)) if k is not None else {}
+        if extra is not None and e.name in extra.element_torques:
+            parts[DRAG] = extra.drag_loss(e.name, ev.speeds)
+        losses[e.name] = rolling + parts.get(DRAG, 0.0)
+        sources[e.name] = parts
     drive_power = np.zeros(points)
     load_power = np.zeros(points)
     for s in mats.external:
@@ -293,6 +323,8 @@ def solve_batch(
         efficiency=shaped(efficiency),
         self_locking=shaped(self_locking),
         patterns=len(solved),
+        loss_sources=MappingProxyType({e: MappingProxyType({k: shaped(v) for k, v in parts.items()})
+                                       for e, parts in sources.items()}),
     )
 
 
@@ -311,3 +343,51 @@ def _wrong_way(powers, mats, drives, loads, ideal_eval, shaft_row, scale) -> np.
         wrong |= is_drive & (power < -SELF_LOCKING_MARGIN * scale)
         wrong |= is_load & (power > SELF_LOCKING_MARGIN * scale)
     return wrong
+
+
+#: Rounds of the lever-row correction before a point is solved with its own matrix.
+CORRECTION_ROUNDS = 60
+
+
+def _corrected(train, mats, given, solver: TorqueSolver, row, tau, rows, effs) -> np.ndarray:
+    """Torques of points that share the pattern ``row`` but have their own lever efficiencies ``effs``.
+
+    The lever rows T_b + k T_a = 0, T_c + (1 − k) T_a = 0 with the point's
+    k = i0·η0^w differ from the pattern's reference k0 only on the right-hand
+    side: T_b + k0 T_a = −(k − k0) T_a, T_c + (1 − k0) T_a = (k − k0) T_a.  Iterating
+    x ← S τ + R (r + correction(x)) converges geometrically (the corrections are
+    of the order of the spread of η0 times the torque gain); a point that does
+    not settle is solved with its own matrix.
+    """
+    x = solver.torques(tau, rows)
+    if effs is None:
+        return x
+    levers = mats.levers
+    w = np.asarray(row, dtype=int)[:, None]
+    i0 = np.array([lv.ratio for lv in levers])[:, None]
+    k = np.where(w > 0, i0 * effs, np.where(w < 0, i0 / effs, i0))
+    k0 = np.array([lv.factors(int(wk))[0] for lv, wk in zip(levers, row)])[:, None]
+    delta = k - k0
+    if not np.any(delta):
+        return x
+    slots = mats._statics_template[1]
+    size = solver.row_operator.shape[1]
+    pending = np.arange(tau.shape[1])
+    for _ in range(CORRECTION_ROUNDS):
+        rhs = np.zeros((size, pending.size)) if rows is None else rows[:, pending].copy()
+        for r, col, lever in slots:
+            rhs[r] -= delta[lever, pending] * x[col, pending]
+            rhs[r + 1] += delta[lever, pending] * x[col, pending]
+        new = solver.torques(tau[:, pending], rhs)
+        scale = np.max(np.abs(new), axis=0) + 1e-300
+        done = np.max(np.abs(new - x[:, pending]), axis=0) <= 1e-14 * scale
+        x[:, pending] = new
+        pending = pending[~done]
+        if pending.size == 0:
+            return x
+    for j in pending:  # too slow to settle (near self-locking): the point's own equations
+        own = matrices(with_efficiencies(train, {lv.element.name: float(effs[q, j]) for q, lv in enumerate(levers)}),
+                       mats.external)
+        exact = torque_solver(own, given, row)
+        x[:, j] = exact.torques(tau[:, j], None if rows is None else rows[:, j])
+    return x

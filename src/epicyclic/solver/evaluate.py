@@ -35,6 +35,7 @@ import numpy as np
 from ..errors import NonFiniteResultError
 from ..results.solution import RPM_TO_RAD_S
 from ..results.zero import ZERO_TOLERANCE, clean_array
+from ..model.elements import HOUSING
 from .assembly import TrainMatrices
 
 __all__ = ["Evaluation", "evaluate", "check_finite"]
@@ -80,7 +81,8 @@ class Evaluation:
 
 
 def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
-             given: Mapping[str, np.ndarray]) -> Evaluation:
+             given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
+             shaft_torques: np.ndarray | None = None) -> Evaluation:
     """Clean the solved torques and derive torques, powers, rolling powers and losses.
 
     Parameters
@@ -94,19 +96,25 @@ def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np
         Loss directions the torques were solved with (None: lossless).
     given : mapping shaft → ndarray (P,)
         Given external torques (signed), N·m.
+    efficiencies : ndarray (levers, P), optional
+        η0 of every lever at every point (default: the levers' own).
+    shaft_torques : ndarray (shafts, P), optional
+        Given loss torques acting on the shafts (:mod:`~epicyclic.solver.given_losses`),
+        N·m: a shaft's external torque balances them too (M_s + T_loss − Σ T_port = 0).
 
     Returns
     -------
     Evaluation
     """
     with np.errstate(all="ignore"):  # overflow is reported by check_finite, by name
-        result = _evaluate(mats, speeds, x, pattern, given)
+        result = _evaluate(mats, speeds, x, pattern, given, efficiencies, shaft_torques)
     check_finite(mats, result)
     return result
 
 
 def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
-              given: Mapping[str, np.ndarray]) -> Evaluation:
+              given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
+              shaft_torques: np.ndarray | None = None) -> Evaluation:
     lay = mats.layout
     points = speeds.shape[1:]
     x = np.array(x, dtype=float)
@@ -115,9 +123,14 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
 
     # every element's torques exactly in its own ratios: T_b = −k_b·T_a, T_c = −k_c·T_a, link T_2 = −T_1
     if len(mats.levers):
-        f = lay.lever_factors[(...,) + (None,) * len(points)]  # (levers, w + 1, 2, 1…)
-        k_b = np.where(used > 0, f[:, 2, 0], np.where(used < 0, f[:, 0, 0], f[:, 1, 0]))
-        k_c = np.where(used > 0, f[:, 2, 1], np.where(used < 0, f[:, 0, 1], f[:, 1, 1]))
+        if efficiencies is None:
+            f = lay.lever_factors[(...,) + (None,) * len(points)]  # (levers, w + 1, 2, 1…)
+            k_b = np.where(used > 0, f[:, 2, 0], np.where(used < 0, f[:, 0, 0], f[:, 1, 0]))
+            k_c = np.where(used > 0, f[:, 2, 1], np.where(used < 0, f[:, 0, 1], f[:, 1, 1]))
+        else:  # η0 per point (given losses): k_b = i0·η0^w, k_c = 1 − k_b
+            i0 = np.array([lv.ratio for lv in mats.levers]).reshape((-1,) + (1,) * len(points))
+            k_b = np.where(used > 0, i0 * efficiencies, np.where(used < 0, i0 / efficiencies, i0))
+            k_c = 1.0 - k_b
         t_a = x[lay.lever_a_columns]
         x[lay.lever_b_columns] = -k_b * t_a + 0.0
         x[lay.lever_c_columns] = -k_c * t_a + 0.0
@@ -133,6 +146,10 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     for shaft, value in given.items():  # a given torque at one of its shafts
         for k in lay.parts_at[lay.rows[shaft]]:
             scale[k] = np.maximum(scale[k], np.abs(value))
+    if shaft_torques is not None:  # and a loss torque
+        for row in range(len(lay.rows) - 1):
+            for k in lay.parts_at[row]:
+                scale[k] = np.maximum(scale[k], np.abs(shaft_torques[row]))
     idle = own <= ZERO_TOLERANCE * scale
     # an idle element hands the scale it was judged by on to its neighbours (an isolated group of
     # elements that only a now-idle element joined to the rest is round-off of the same scale)
@@ -151,8 +168,16 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     torques = np.zeros((len(lay.rows),) + points)
     if len(lay.reacting_rows):
         ordered = port[lay.reacting_ports]
-        torques[lay.reacting_rows] = clean_array(np.add.reduceat(ordered, lay.reacting_starts, axis=0),
-                                                 np.maximum.reduceat(np.abs(ordered), lay.reacting_starts, axis=0))
+        total = np.add.reduceat(ordered, lay.reacting_starts, axis=0)
+        terms = np.maximum.reduceat(np.abs(ordered), lay.reacting_starts, axis=0)
+        if shaft_torques is not None:  # M_s = Σ T_port − T_loss
+            total = total - shaft_torques[lay.reacting_rows]
+            terms = np.maximum(terms, np.abs(shaft_torques[lay.reacting_rows]))
+        torques[lay.reacting_rows] = clean_array(total, terms)
+    if shaft_torques is not None:  # reactions of loss torques where no port is (the housing, say)
+        reacting = set(lay.reacting_rows.tolist())
+        bare = [row for row in (lay.rows[s] for s in (*mats.external, HOUSING)) if row not in reacting]
+        torques[bare] = -shaft_torques[bare] + 0.0
     for shaft, value in given.items():
         torques[lay.rows[shaft]] = value
     x[lay.external_columns] = torques[lay.external_rows]
@@ -164,7 +189,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     t_a = x[lay.lever_a_columns]
     rolling = t_a * relative * RPM_TO_RAD_S + 0.0
     coupling = t_a * c * RPM_TO_RAD_S + 0.0
-    eta = lay.efficiencies[(slice(None),) + (None,) * len(points)]
+    eta = lay.efficiencies[(slice(None),) + (None,) * len(points)] if efficiencies is None else efficiencies
     factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
     loss = rolling * (1.0 - factor) + 0.0
     if any(((np.abs(a) < _TINY) & (a != 0)).any() for a in (powers, rolling, coupling, loss)):

@@ -40,6 +40,7 @@ from ..results.solution import RPM_TO_RAD_S, ElementState, ShaftState, Solution
 from ..results.zero import clean, scale_of
 from .assembly import TrainMatrices, matrices
 from .evaluate import Evaluation, evaluate
+from .given_losses import DRAG, GivenLosses, given_losses, with_efficiencies
 from .kinematics import degrees_of_freedom, solve_speeds
 from .self_locking import self_locking
 from .statics import TorqueSolver, torque_solver
@@ -123,7 +124,9 @@ def _consistent(pattern: np.ndarray, observed: np.ndarray) -> bool:
     return bool(np.all((pattern == observed) | (observed == 0)))
 
 
-def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool = False) -> Solution:
+def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool = False,
+          efficiencies: Mapping[str, Mapping[str, float]] | None = None,
+          loss_torques: Mapping[str, Mapping[str, float]] | None = None) -> Solution:
     """Solve a gear train at an operating point, with losses by power flow.
 
     Parameters
@@ -133,11 +136,19 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
         Given speeds (1/min), torques (N·m) or powers (W), drives and loads.
     lossless : bool, default False
         Ignore all losses (η = 1 everywhere).
+    efficiencies : mapping element → mapping source → float, optional
+        Efficiency factors by source (e.g. ``{"P1": {"mesh": 0.985, "bearing": 0.999}}``)
+        whose product replaces the element's η0 in the loss rule; the loss is
+        reported split by source (:mod:`~epicyclic.solver.given_losses`).
+    loss_torques : mapping element → mapping shaft → float, optional
+        Loss torques of an element acting on shafts, N·m (drag, with its
+        reactions); they enter the shafts' torque balances.
 
     Returns
     -------
     Solution
-        With ``.ideal`` holding the lossless solution at the same point.
+        With ``.ideal`` holding the lossless solution at the same point and
+        each element's loss by source in ``loss_sources``.
 
     Raises
     ------
@@ -166,6 +177,7 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     op = operating_point
     _validate(train, op)
     mats = matrices(train, op.external_shafts)
+    extra = None if lossless else given_losses(mats, efficiencies, loss_torques, 1)
     speeds = solve_speeds(mats, op.speeds)
     n = np.array([[speeds[s]] for s in train.shafts])
     torques = given_torques(op, speeds)
@@ -179,8 +191,13 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     ideal_eval = evaluate(mats, n, x_ideal[:, None], None, given_map)
     roles = _roles(train, op, mats, ideal_eval)
     ideal = _build(train, op, mats, ideal_eval, ideal_solver, roles, None, lossless=True)
-    if lossless or all(lever.efficiency == 1.0 for lever in mats.levers):
+    if extra is not None:  # the given factors are the levers' η0
+        mats = matrices(with_efficiencies(train, {lv.element.name: float(extra.efficiency[k, 0])
+                                                  for k, lv in enumerate(mats.levers)}), op.external_shafts)
+    dragged = extra.torques if extra is not None and extra.has_torques else None
+    if lossless or (dragged is None and all(lever.efficiency == 1.0 for lever in mats.levers)):
         return replace(ideal, ideal=None) if lossless else replace(ideal, ideal=ideal)
+    rows = None if dragged is None else extra.rows(mats)[:, 0]
 
     ideal_pattern = ideal_eval.pattern[:, 0]
     pattern = ideal_pattern
@@ -190,9 +207,9 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     while len(tried) < MAX_PATTERN_TRIES and tuple(pattern) not in tried:
         tried.append(tuple(pattern))
         solver = torque_solver(mats, given, pattern)
-        x = solver.torques(values)
-        solver.check(values, x)
-        ev = evaluate(mats, n, x[:, None], pattern[:, None], given_map)
+        x = solver.torques(values, rows)
+        solver.check(values, x, rows)
+        ev = evaluate(mats, n, x[:, None], pattern[:, None], given_map, shaft_torques=dragged)
         if first is None:
             first = (solver, ev)
         observed = ev.pattern[:, 0]
@@ -202,7 +219,7 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
         pattern = np.where(observed == 0, pattern, observed)
 
     solver, ev = consistent if consistent is not None else first
-    solution = _build(train, op, mats, ev, solver, roles, ideal)
+    solution = _build(train, op, mats, ev, solver, roles, ideal, extra=extra)
     locked = self_locking(solution, consistent is not None, mats, given, values, n, ideal_pattern)
     if locked is not None:
         solution = replace(solution, self_locking=locked, efficiency=None)
@@ -238,7 +255,8 @@ def _efficiency(drive_power: float, load_power: float, loss: float) -> float | N
     return min(efficiency, 1.0)
 
 
-def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, lossless=False) -> Solution:
+def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, lossless=False,
+           extra: GivenLosses | None = None) -> Solution:
     shafts = {}
     for k, shaft in enumerate(train.shafts):
         shafts[shaft] = ShaftState(shaft, float(ev.speeds[k, 0]), float(ev.torques[k, 0]),
@@ -246,7 +264,7 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
     elements = {}
     lever_index = {lever.element.name: k for k, lever in enumerate(mats.levers)}
     for element in train.elements:
-        elements[element.name] = _element_state(element, mats, ev, lever_index, lossless)
+        elements[element.name] = _element_state(element, mats, ev, lever_index, lossless, extra)
 
     drive_power = sum(s.power for s in shafts.values() if s.role == "drive") + 0.0
     load_power = -sum(s.power for s in shafts.values() if s.role == "load") + 0.0
@@ -293,12 +311,29 @@ def _warnings(shafts, solver, circ, drive_power, load_power) -> list[str]:
     return warnings
 
 
-def _element_state(element, mats: TrainMatrices, ev: Evaluation, lever_index, lossless) -> ElementState:
+def _sources(element, extra: GivenLosses | None, ev: Evaluation, k: int | None, lossless: bool):
+    """(loss, loss by source) of an element: its rolling loss split by source, plus its loss torques' loss."""
+    rolling = float(ev.loss[k, 0]) if k is not None else 0.0
+    if lossless:
+        return rolling, {}
+    parts = {"mesh": rolling} if k is not None else {}
+    if extra is not None:
+        if k is not None:
+            parts = {source: float(v[0]) for source, v in extra.split(k, ev.loss[k]).items()}
+        drag = float(extra.drag_loss(element.name, ev.speeds)[0])
+        if drag:
+            parts[DRAG] = drag
+    return rolling + parts.get(DRAG, 0.0), parts
+
+
+def _element_state(element, mats: TrainMatrices, ev: Evaluation, lever_index, lossless,
+                   extra: GivenLosses | None = None) -> ElementState:
     idx = mats.torque_index
     row = {s: k for k, s in enumerate(mats.train.shafts)}
     if isinstance(element, (PlanetarySet, GearStage)):
         k = lever_index[element.name]
         lever = mats.levers[k]
+        loss, sources = _sources(element, extra, ev, k, lossless)
         ports = dict(zip(lever.ports, lever.shafts))
         torques = {p: float(ev.x[idx[("port", element.name, p)], 0]) for p in lever.ports}
         port_speeds = {p: float(ev.speeds[row[s], 0]) for p, s in ports.items()}
@@ -318,7 +353,8 @@ def _element_state(element, mats: TrainMatrices, ev: Evaluation, lever_index, lo
             MappingProxyType(port_speeds),
             rolling_power=float(ev.rolling[k, 0]),
             coupling_power=float(ev.coupling[k, 0]),
-            loss=float(ev.loss[k, 0]),
+            loss=loss,
+            loss_sources=MappingProxyType(sources),
             loss_direction=w,
             efficiency_factor=1.0 if lossless or w == 0 else lever.efficiency ** w,
             planet_speeds=planets,
@@ -333,6 +369,7 @@ def _element_state(element, mats: TrainMatrices, ev: Evaluation, lever_index, lo
     else:
         torques = {p: 0.0 for p in port_names}
     first, second = (port_speeds[p] for p in port_names)
+    loss, sources = _sources(element, extra, ev, None, lossless)
     return ElementState(
         element.name,
         "clutch" if isinstance(element, Clutch) else "brake",
@@ -341,4 +378,6 @@ def _element_state(element, mats: TrainMatrices, ev: Evaluation, lever_index, lo
         MappingProxyType(port_speeds),
         engaged=element.engaged,
         slip_speed=clean(first - second, scale_of(first, second)),
+        loss=loss,
+        loss_sources=MappingProxyType(sources),
     )

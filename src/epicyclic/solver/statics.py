@@ -65,14 +65,28 @@ class TorqueSolver:
                             [self.mats.external_column(g) for g in self.given])] = 0.0
         return s
 
-    def torques(self, values: Sequence[float] | np.ndarray) -> np.ndarray:
-        return self.operator @ np.asarray(values, dtype=float)
+    @cached_property
+    def row_operator(self) -> np.ndarray:
+        """Matrix R with x = R @ r for a right-hand side r of the static rows (given loss torques).
 
-    def check(self, values: Sequence[float] | np.ndarray, x: np.ndarray) -> None:
-        """Raise ContradictionError if the given torques cannot all hold."""
+        Unlike :attr:`operator`, no port is zeroed as idle: a loss torque loads even
+        an element that transmits nothing (see :mod:`epicyclic.solver.given_losses`).
+        """
+        rows = self.system.matrix.shape[0] - len(self.given)
+        unit = np.zeros((self.system.matrix.shape[0], rows))
+        unit[:rows] = np.eye(rows)
+        return self.system.solve(unit)
+
+    def torques(self, values: Sequence[float] | np.ndarray, rows: np.ndarray | None = None) -> np.ndarray:
+        """All torques for given external torques and, optionally, a right-hand side of the static rows."""
+        x = self.operator @ np.asarray(values, dtype=float)
+        return x if rows is None else x + self.row_operator @ rows
+
+    def check(self, values: Sequence[float] | np.ndarray, x: np.ndarray, loss_rows: np.ndarray | None = None) -> None:
+        """Raise ContradictionError if the given torques (and loss torques) cannot all hold."""
         g = np.asarray(values, dtype=float)
         rows = self.system.matrix.shape[0] - len(self.given)
-        rhs = np.concatenate([np.zeros((rows,) + g.shape[1:]), g])
+        rhs = np.concatenate([np.zeros((rows,) + g.shape[1:]) if loss_rows is None else loss_rows, g])
         scale = np.max(np.abs(g), axis=0) if g.size else 1.0
         ok = self.system.is_consistent(x, rhs, scale)
         if np.all(ok):

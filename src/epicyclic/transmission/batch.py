@@ -138,14 +138,21 @@ def solve_gears(
     t = transmission
     solutions = {}
     ratios = {}
+    batch = solve_batch
+    if getattr(t, "losses", None):  # a file's loss models: every gear solved with them
+        from functools import partial
+
+        from ..losses import solve_batch_with_losses
+
+        batch = partial(solve_batch_with_losses, losses=t.losses)
     for gear in chosen:
         train = t.gear_train(gear)
         ratio = t.ratio(gear)
         ratios[gear] = ratio
         if direction == "drive":
-            solutions[gear] = solve_batch(train, speeds={t.input: n}, torques={t.input: torque},
+            solutions[gear] = batch(train, speeds={t.input: n}, torques={t.input: torque},
                                           drives=[t.input], loads=[t.output])
         else:
-            solutions[gear] = solve_batch(train, speeds={t.input: n}, torques={t.output: torque * abs(ratio)},
+            solutions[gear] = batch(train, speeds={t.input: n}, torques={t.output: torque * abs(ratio)},
                                           drives=[t.output], loads=[t.input])
     return TransmissionBatch(t.name, direction, MappingProxyType(ratios), MappingProxyType(solutions))

@@ -24,6 +24,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
+from typing import Any
 
 import numpy as np
 
@@ -107,6 +108,9 @@ class Transmission:
     output: str
     name: str = ""
     _trains: Mapping[str, GearTrain] = field(default=None, repr=False, compare=False)  # type: ignore[assignment]
+    #: Loss models of elements (element → :class:`~epicyclic.losses.ElementLosses`), e.g. a file's loss tables:
+    #: every gear is then solved with them (:func:`~epicyclic.losses.solve_with_losses`).
+    losses: Mapping[str, Any] = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not isinstance(self.train, GearTrain):
@@ -262,12 +266,19 @@ class Transmission:
         train = self.gear_train(gear)
         drive_op = OperatingPoint(speeds={self.input: input_speed}, torques={self.input: input_torque},
                                   drives=[self.input], loads=[self.output])
-        drive = solve(train, drive_op)
+        run = solve
+        if self.losses:
+            from ..losses import solve_with_losses
+
+            def run(train, op):
+                return solve_with_losses(train, op, self.losses)
+
+        drive = run(train, drive_op)
         ratio = self.ratio(gear)
         coast_op = OperatingPoint(speeds={self.input: input_speed},
                                   torques={self.output: input_torque * abs(ratio)},
                                   drives=[self.output], loads=[self.input])
-        coast = solve(train, coast_op)
+        coast = run(train, coast_op)
         return gear_result(self, gear, ratio, drive, coast)
 
     def analyze_all(self, *, input_speed: float = 1000.0, input_torque: float = 100.0) -> TransmissionAnalysis:
@@ -302,7 +313,7 @@ class Transmission:
                 "schedule); add one to analyse gears."
             )
         return cls(data.train, dict(spec.schedule), spec.input, spec.output,
-                   name=getattr(data, "title", "") or data.train.name)
+                   name=getattr(data, "title", "") or data.train.name, losses=dict(getattr(data, "losses", {})))
 
     # ------------------------------------------------------------------ rendering
     def __repr__(self) -> str:

@@ -1,0 +1,147 @@
+"""Geometry of a fixed-axis gear stage: one :class:`MeshGeometry` per mesh of its chain.
+
+A :class:`~epicyclic.model.GearStage` built from tooth counts keeps its meshes
+``(z_driving, z_driven, "external" | "internal")`` from the first shaft to the
+second; :class:`StageGeometry` adds the basic rack (one for all meshes or one per
+mesh), profile shifts and face widths.  In an internal mesh the larger gear is
+the internal one.
+
+References
+----------
+ISO 21771:2007 (cylindrical gears); Brandenberger 1952, eq. 5 (a chain of meshes).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from ..model.elements import GearStage
+from ._render import html_table, text_table
+from .errors import GeometryError
+from .gear import BasicRack, GearGeometry, MeshGeometry
+
+__all__ = ["StageGeometry"]
+
+
+def _per_mesh(value, count: int, name: str, owner: str) -> tuple:
+    if isinstance(value, (list, tuple)):
+        if len(value) != count:
+            raise GeometryError(f"{owner}: {name} needs {count} value(s), one per mesh, got {len(value)}.")
+        return tuple(value)
+    return (value,) * count
+
+
+@dataclass(frozen=True)
+class StageGeometry:
+    """Gear geometry of one fixed-axis stage.
+
+    Parameters
+    ----------
+    stage : GearStage
+        A stage built from tooth counts (``stage.meshes`` not empty).
+    rack : BasicRack or sequence of BasicRack
+        One basic rack for all meshes, or one per mesh.
+    profile_shifts : sequence of (float, float), optional
+        (x_driving, x_driven) per mesh (default 0).
+    face_width : float or sequence of float, optional
+        Face width of each mesh, mm (one for all, or one per mesh).
+    tip_shortening : bool, default True
+        Shorten the tips of external pairs (ISO 21771).
+
+    Examples
+    --------
+    Brandenberger's fixed stage 40/44 · 20/64 with module 2:
+
+    >>> from epicyclic import GearStage
+    >>> stage = GearStage.from_teeth("V", "III", "II", [(40, 44, "external"), (20, 64, "external")])
+    >>> g = StageGeometry(stage, BasicRack(2.0), face_width=20.0)
+    >>> [round(m.center_distance, 3) for m in g.meshes]
+    [84.0, 84.0]
+    """
+
+    stage: GearStage
+    rack: BasicRack | Sequence[BasicRack]
+    profile_shifts: Sequence[tuple[float, float]] = ()
+    face_width: float | Sequence[float] | None = None
+    tip_shortening: bool = True
+    meshes: tuple[MeshGeometry, ...] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        stage = self.stage
+        if not isinstance(stage, GearStage):
+            raise GeometryError(f"StageGeometry: stage must be a GearStage, got {type(stage).__name__}.")
+        owner = f"StageGeometry of {stage.name!r}"
+        if not stage.meshes:
+            raise GeometryError(
+                f"{owner}: the stage has no tooth counts (it was built from a ratio); build it with "
+                "GearStage.from_teeth (in a file: 'meshes' instead of 'ratio')."
+            )
+        count = len(stage.meshes)
+        racks = _per_mesh(self.rack, count, "rack", owner)
+        if not all(isinstance(r, BasicRack) for r in racks):
+            raise GeometryError(f"{owner}: rack must be a BasicRack or one per mesh.")
+        shifts = tuple(self.profile_shifts) or ((0.0, 0.0),) * count
+        if len(shifts) != count or not all(isinstance(x, (tuple, list)) and len(x) == 2 for x in shifts):
+            raise GeometryError(
+                f"{owner}: profile_shifts needs one pair (x_driving, x_driven) per mesh ({count}), got {shifts!r}."
+            )
+        widths = None
+        if self.face_width is not None:
+            widths = _per_mesh(self.face_width, count, "face_width", owner)
+            for b in widths:
+                if isinstance(b, bool) or not isinstance(b, (int, float)) or not math.isfinite(b) or b <= 0:
+                    raise GeometryError(f"{owner}: face_width must be a positive number of mm, got {b!r}.")
+            widths = tuple(float(b) for b in widths)
+        meshes = []
+        for k, ((z1, z2, kind), rack, (x1, x2)) in enumerate(zip(stage.meshes, racks, shifts)):
+            name = f"mesh {k + 1} ({z1}/{z2})"
+            if kind == "internal":
+                small, large = ((z1, x1), (z2, x2)) if z1 < z2 else ((z2, x2), (z1, x1))
+                mesh = MeshGeometry(GearGeometry(small[0], rack, small[1]),
+                                    GearGeometry(large[0], rack, large[1], internal=True), name)
+            else:
+                mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2), name)
+                if self.tip_shortening:
+                    mesh = mesh.with_tip_shortening()
+            meshes.append(mesh)
+        object.__setattr__(self, "rack", racks if isinstance(self.rack, (list, tuple)) else self.rack)
+        object.__setattr__(self, "profile_shifts", tuple(tuple(float(v) for v in x) for x in shifts))
+        object.__setattr__(self, "face_width", widths)
+        object.__setattr__(self, "meshes", tuple(meshes))
+
+    def mesh_face_width(self, index: int) -> float:
+        """Face width of mesh ``index`` (0-based), mm."""
+        if self.face_width is None:
+            raise GeometryError(
+                f"StageGeometry of {self.stage.name!r}: no face width is given; mesh losses need the load "
+                "per face width: give face_width (mm)."
+            )
+        return self.face_width[index]  # type: ignore[index]
+
+    def driving_is_gear1(self, index: int) -> bool:
+        """Whether gear 1 of mesh ``index`` is its driving gear (the one on the side of the first shaft)."""
+        z1, z2, kind = self.stage.meshes[index]
+        return kind != "internal" or z1 < z2
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain data (mm, degrees)."""
+        return {"stage": self.stage.name, "face_width": None if self.face_width is None else list(self.face_width),
+                "meshes": [m.to_dict() for m in self.meshes]}
+
+    def _rows(self) -> list[list[object]]:
+        return [[m.name, m.gear1.teeth, m.gear2.teeth, m.rack.module, m.center_distance, m.operating_pressure_angle,
+                 m.contact_ratio] for m in self.meshes]
+
+    _HEAD = ["mesh", "z1", "z2", "m_n", "a_w", "alpha_wt", "eps_alpha"]
+
+    def table(self) -> str:
+        return text_table(self._HEAD, self._rows(), title=f"stage {self.stage.name!r}")
+
+    def _repr_html_(self) -> str:
+        return html_table(self._HEAD, self._rows(), title=f"stage {self.stage.name}")
+
+    def __repr__(self) -> str:
+        return f"StageGeometry({self.stage.name!r}, {len(self.meshes)} mesh(es))"

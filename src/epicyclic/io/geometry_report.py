@@ -1,0 +1,130 @@
+"""Fitting and forces of the elements of a train file that have a ``geometry`` table.
+
+Used by ``epicyclic analyze`` (all formats), ``epicyclic fit`` and
+``epicyclic forces``: one entry per element with geometry, in file order, with
+the set's :class:`~epicyclic.geometry.FittingReport` and the forces at the
+solved operating point (:class:`~epicyclic.geometry.PlanetaryForces` for a set,
+:class:`~epicyclic.geometry.StageForces` for a stage).
+
+JSON layout (the ``"geometry"`` key of the report, null without geometry)::
+
+    {element: {"kind": "planetary set" | "gear stage",
+               "geometry": SetGeometry.to_dict() | StageGeometry.to_dict(),
+               "fitting": FittingReport.to_dict() | null,      # sets only
+               "forces": PlanetaryForces.to_dict() | StageForces.to_dict() | null}}
+
+Lengths in mm, angles in degrees, forces in N, torques in N·m (whatever the
+file's ``[units]``).
+"""
+
+from __future__ import annotations
+
+import html
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from ..geometry import SetGeometry, check_fitting, planetary_forces, stage_forces
+
+__all__ = ["GeometryResult", "geometry_results", "geometry_dict", "geometry_text", "geometry_markdown",
+           "geometry_html"]
+
+
+@dataclass(frozen=True)
+class GeometryResult:
+    """Geometry, fitting (sets) and forces (when solved) of one element."""
+
+    name: str
+    geometry: Any
+    fitting: Any = None
+    forces: Any = None
+
+    @property
+    def kind(self) -> str:
+        return "planetary set" if isinstance(self.geometry, SetGeometry) else "gear stage"
+
+
+def geometry_results(geometry: Mapping[str, Any], solution=None, *, planets: int | None = None,
+                     allow_unequal: bool = False, min_clearance: float = 0.0,
+                     undercut: str = "theoretical") -> tuple[GeometryResult, ...]:
+    """Fitting of every set and, with a solution, the forces of every element with geometry.
+
+    Parameters
+    ----------
+    geometry : mapping element → SetGeometry or StageGeometry
+        ``TrainFile.geometry``.
+    solution : Solution, optional
+        The solved operating point (forces need it).
+    planets, allow_unequal, min_clearance, undercut
+        As in :func:`~epicyclic.geometry.check_fitting` (``planets`` overrides every set's).
+    """
+    out = []
+    for name, shape in geometry.items():
+        fitting = forces = None
+        if isinstance(shape, SetGeometry):
+            fitting = check_fitting(shape, planets, allow_unequal=allow_unequal, min_clearance=min_clearance,
+                                    undercut=undercut)  # type: ignore[arg-type]
+            if solution is not None and name in solution.elements:
+                angles = fitting.checks[1].angles if not fitting.checks[1].equally_spaced and \
+                    fitting.checks[1].passed else None
+                forces = planetary_forces(solution, name, shape, angles=angles)
+        elif solution is not None and name in solution.elements:
+            forces = stage_forces(solution, name, shape)
+        out.append(GeometryResult(name, shape, fitting, forces))
+    return tuple(out)
+
+
+def geometry_dict(results: tuple[GeometryResult, ...]) -> dict[str, Any] | None:
+    """The ``"geometry"`` section of the JSON report (None without geometry)."""
+    if not results:
+        return None
+    return {r.name: {"kind": r.kind, "geometry": r.geometry.to_dict(),
+                     "fitting": None if r.fitting is None else r.fitting.to_dict(),
+                     "forces": None if r.forces is None else r.forces.to_dict()} for r in results}
+
+
+def geometry_text(results: tuple[GeometryResult, ...]) -> str:
+    """Gears, meshes, fitting and forces as text tables (mm, degrees, N)."""
+    blocks = []
+    for r in results:
+        blocks.append(r.geometry.table())
+        if r.fitting is not None:
+            blocks.append(r.fitting.table())
+        if r.forces is not None:
+            blocks.append(r.forces.table())
+    return "\n\n".join(blocks)
+
+
+def _markdown_table(text: str) -> str:
+    """A fixed-width text table as a Markdown code block (keeps alignment; no | or HTML to escape)."""
+    return "```text\n" + text + "\n```"
+
+
+def geometry_markdown(results: tuple[GeometryResult, ...]) -> str:
+    """A ``## Geometry, fitting and forces`` section."""
+    if not results:
+        return ""
+    parts = ["## Geometry, fitting and forces"]
+    for r in results:
+        parts.append(f"### {r.kind} {r.name}".replace("<", "&lt;"))
+        parts.append(_markdown_table(r.geometry.table()))
+        if r.fitting is not None:
+            parts.append(_markdown_table(r.fitting.table()))
+        if r.forces is not None:
+            parts.append(_markdown_table(r.forces.table()))
+    return "\n\n".join(parts) + "\n"
+
+
+def geometry_html(results: tuple[GeometryResult, ...]) -> str:
+    """The same as an HTML section (escaped tables)."""
+    if not results:
+        return ""
+    parts = ["<h2>Geometry, fitting and forces</h2>"]
+    for r in results:
+        parts.append(f"<h3>{html.escape(r.kind)} {html.escape(r.name)}</h3>")
+        parts.append(r.geometry._repr_html_())
+        if r.fitting is not None:
+            parts.append(r.fitting._repr_html_())
+        if r.forces is not None:
+            parts.append(r.forces._repr_html_())
+    return "\n".join(parts)

@@ -1,0 +1,35 @@
+"""Losses from gear geometry: mesh friction, planet bearings, drag; the efficiency they give.
+
+* :mod:`~epicyclic.losses.tooth_loss` — Ohlendorf's tooth loss factor H_V (external and
+  internal meshes) and the mesh efficiency η = 1 − μ H_V;
+* :mod:`~epicyclic.losses.friction` — μ given, or Schlenk's load- and speed-dependent
+  correlation (ISO/TR 14179-2);
+* :mod:`~epicyclic.losses.mesh` — the meshes of a set or stage, loaded and turned by the
+  element's state;
+* :mod:`~epicyclic.losses.bearing` — planet-bearing friction (SKF, M = 0.5 μ P d);
+* :mod:`~epicyclic.losses.drag` — load-independent drag torques, functions of speed;
+* :mod:`~epicyclic.losses.element` — all of them for one element, evaluated over arrays;
+* :mod:`~epicyclic.losses.solve` — the general solver fed with the models (load-dependent: fixed point);
+* :mod:`~epicyclic.losses.efficiency_map` — η and losses over speed × torque.
+
+Lengths in mm, speeds in 1/min, torques in N·m, powers in W, viscosity in mPa·s,
+roughness in µm.  See ``docs/losses.md``.
+"""
+
+from .bearing import BEARING_FRICTION, PlanetBearing
+from .drag import DragTorque
+from .efficiency_map import EfficiencyMap, efficiency_map
+from .element import SOURCES, ElementLosses, LossState
+from .errors import LossModelError
+from .friction import ConstantFriction, Lubricant, SchlenkFriction, schlenk_friction
+from .mesh import MeshLoss, set_meshes, stage_meshes
+from .solve import solve_batch_with_losses, solve_with_losses
+from .tooth_loss import addendum_contact_ratios, mesh_efficiency, tooth_loss_factor, tooth_loss_factor_numerical
+
+__all__ = [
+    "BEARING_FRICTION", "ConstantFriction", "DragTorque", "EfficiencyMap", "ElementLosses", "LossModelError",
+    "LossState", "efficiency_map", "solve_batch_with_losses", "solve_with_losses",
+    "Lubricant", "MeshLoss", "PlanetBearing", "SOURCES", "SchlenkFriction", "addendum_contact_ratios",
+    "mesh_efficiency", "schlenk_friction", "set_meshes", "stage_meshes", "tooth_loss_factor",
+    "tooth_loss_factor_numerical",
+]

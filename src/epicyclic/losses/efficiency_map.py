@@ -1,0 +1,300 @@
+"""Efficiency maps: η over input speed × input torque, with the losses split by source.
+
+:func:`efficiency_map` solves a train (one gear of a transmission) on a grid of
+input speeds and torques with the elements' loss models — one batch solve per
+round of the load-dependent friction (:func:`~epicyclic.losses.solve.solve_batch_with_losses`),
+never a loop over points — and returns an :class:`EfficiencyMap` that plots
+itself (η contours and the share of the load-independent losses), writes CSV
+and JSON and renders in notebooks.
+
+References
+----------
+Brandenberger 1952, eqs. 7–10 (η by the direction of power flow); ISO/TR 14179-2:2001
+(load-dependent mesh losses and no-load losses add up to the gearbox loss).
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import ModelError
+from ..model.train import GearTrain
+from .element import SOURCES, ElementLosses
+from .solve import solve_batch_with_losses
+
+__all__ = ["EfficiencyMap", "efficiency_map", "MAP_SUFFIXES"]
+
+#: File suffixes :meth:`EfficiencyMap.save` writes.
+MAP_SUFFIXES = (".png", ".svg", ".pdf", ".csv", ".json")
+
+
+@dataclass(frozen=True, eq=False)
+class EfficiencyMap:
+    """η and losses of a train on a grid of input speed × input torque.
+
+    Attributes
+    ----------
+    name : str
+    gear : str or None
+    direction : {"drive", "coast"}
+    input, output : str
+        The input and output shafts.
+    speeds : ndarray (S,)
+        Input speeds, 1/min.
+    torques : ndarray (T,)
+        Input torque magnitudes, N·m (coast: the output torque is torque × |ratio|).
+    efficiency : ndarray (T, S)
+        NaN where the train self-locks or no power flows.
+    input_power, output_power, loss : ndarray (T, S)
+        W.
+    losses : mapping source → ndarray (T, S)
+        Losses by source (``mesh``, ``bearing``, ``drag``), W.
+    self_locking : ndarray of bool (T, S)
+    ratio : float
+        n_input/n_output.
+    """
+
+    name: str
+    gear: str | None
+    direction: str
+    input: str
+    output: str
+    speeds: np.ndarray
+    torques: np.ndarray
+    efficiency: np.ndarray
+    input_power: np.ndarray
+    output_power: np.ndarray
+    loss: np.ndarray
+    losses: Mapping[str, np.ndarray]
+    self_locking: np.ndarray
+    ratio: float
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return self.efficiency.shape  # type: ignore[return-value]
+
+    def loss_split(self) -> dict[str, float]:
+        """Share of each source in the summed loss over the map (0…1)."""
+        total = sum(float(np.nansum(v)) for v in self.losses.values())
+        return {k: (float(np.nansum(v)) / total if total > 0 else 0.0) for k, v in self.losses.items()}
+
+    def summary(self) -> dict[str, Any]:
+        eff = self.efficiency[~np.isnan(self.efficiency)]
+        return {
+            "points": int(self.efficiency.size),
+            "efficiency_min": float(eff.min()) if eff.size else None,
+            "efficiency_max": float(eff.max()) if eff.size else None,
+            "efficiency_mean": float(eff.mean()) if eff.size else None,
+            "self_locking_points": int(self.self_locking.sum()),
+            "loss_split": self.loss_split(),
+        }
+
+    # ------------------------------------------------------------------ rendering
+    def title(self) -> str:
+        gear = f", gear {self.gear}" if self.gear is not None else ""
+        return f"{self.name}{gear} ({self.direction}, ratio {self.ratio:.4g})"
+
+    def table(self) -> str:
+        s = self.summary()
+        split = ", ".join(f"{k} {100 * v:.1f} %" for k, v in s["loss_split"].items())
+        lines = [
+            f"efficiency map of {self.title()}",
+            f"input speed {self.speeds.min():g}..{self.speeds.max():g} 1/min ({self.speeds.size} values), "
+            f"input torque {self.torques.min():g}..{self.torques.max():g} N*m ({self.torques.size} values)",
+        ]
+        if s["efficiency_min"] is not None:
+            lines.append(f"efficiency {s['efficiency_min']:.4f} .. {s['efficiency_max']:.4f} "
+                         f"(mean {s['efficiency_mean']:.4f})")
+        lines.append(f"self-locking at {s['self_locking_points']} of {s['points']} points")
+        lines.append(f"losses by source (sum over the map): {split or 'none'}")
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        s = self.summary()
+        span = (f"η {s['efficiency_min']:.4f}…{s['efficiency_max']:.4f}" if s["efficiency_min"] is not None
+                else "no defined efficiency")
+        return f"<EfficiencyMap {self.title()}: {self.torques.size}×{self.speeds.size} points, {span}>"
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: axes, 2-D arrays as nested lists (rows: torques), NaN as None."""
+        def grid(a: np.ndarray) -> list:
+            return [[None if not np.isfinite(v) else float(v) for v in row] for row in a]
+
+        return {
+            "name": self.name, "gear": self.gear, "direction": self.direction, "input": self.input,
+            "output": self.output, "ratio": self.ratio,
+            "units": {"speed": "1/min", "torque": "N*m", "power": "W"},
+            "speeds": self.speeds.tolist(), "torques": self.torques.tolist(),
+            "efficiency": grid(self.efficiency), "input_power": grid(self.input_power),
+            "loss": grid(self.loss), "losses": {k: grid(v) for k, v in self.losses.items()},
+            "self_locking": self.self_locking.tolist(), "summary": self.summary(),
+        }
+
+    def to_json(self) -> str:
+        return json.dumps(self.to_dict(), indent=1, allow_nan=False) + "\n"
+
+    def to_csv(self) -> str:
+        """One line per point: speed, torque, efficiency, powers and the losses by source (empty = undefined)."""
+        sources = list(self.losses)
+        head = ["speed_rpm", "torque_Nm", "efficiency", "input_power_W", "output_power_W", "loss_W",
+                *(f"loss_{s}_W" for s in sources), "self_locking"]
+        lines = [",".join(head)]
+
+        def cell(v: float) -> str:
+            return "" if not np.isfinite(v) else repr(float(v))
+
+        for i, torque in enumerate(self.torques):
+            for j, speed in enumerate(self.speeds):
+                row = [repr(float(speed)), repr(float(torque)), cell(self.efficiency[i, j]),
+                       cell(self.input_power[i, j]), cell(self.output_power[i, j]), cell(self.loss[i, j]),
+                       *(cell(self.losses[s][i, j]) for s in sources),
+                       "true" if self.self_locking[i, j] else "false"]
+                lines.append(",".join(row))
+        return "\n".join(lines) + "\n"
+
+    def plot(self, *, figsize: tuple[float, float] = (11.0, 4.6)):
+        """η contours over speed × torque, and the share of the load-independent (drag) loss; a Figure."""
+        from ..plotting.efficiency_map import efficiency_map_figure
+
+        return efficiency_map_figure(self, figsize=figsize)
+
+    def _repr_html_(self) -> str:
+        import html
+
+        from ..plotting._common import figure_svg
+
+        fig = self.plot()
+        svg = figure_svg(fig)
+        fig.clf()
+        return f"<div><pre>{html.escape(self.table())}</pre>{svg}</div>"
+
+    def save(self, path: str | Path) -> Path:
+        """Write the map: ``.png``/``.svg``/``.pdf`` (figure), ``.csv`` or ``.json`` by the suffix."""
+        path = Path(path)
+        suffix = path.suffix.lower()
+        if suffix not in MAP_SUFFIXES:
+            raise ModelError(
+                f"efficiency map: cannot write {path.name!r}; give a file ending in "
+                f"{', '.join(MAP_SUFFIXES)}."
+            )
+        path.parent.mkdir(parents=True, exist_ok=True)
+        if suffix == ".csv":
+            path.write_text(self.to_csv(), encoding="utf-8")
+        elif suffix == ".json":
+            path.write_text(self.to_json(), encoding="utf-8")
+        else:
+            from ..plotting._common import save_figure
+
+            save_figure(self.plot(), path)
+        return path
+
+
+def _axis(values, name: str) -> np.ndarray:
+    arr = np.asarray(values, dtype=float).ravel()
+    if arr.size == 0 or not np.all(np.isfinite(arr)):
+        raise ModelError(f"efficiency_map: {name} must be finite numbers, got {values!r}.")
+    if np.any(arr <= 0):
+        raise ModelError(f"efficiency_map: {name} must be > 0 (magnitudes; give the direction with "
+                         f"direction='drive' or 'coast'), got a value {float(arr.min())!r}.")
+    return arr
+
+
+def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequence[float] | np.ndarray, *,
+                   gear: str | None = None, losses: Mapping[str, ElementLosses] | None = None,
+                   direction: str = "drive", input: str | None = None, output: str | None = None) -> EfficiencyMap:
+    """η and losses over a grid of input speeds × input torques.
+
+    Parameters
+    ----------
+    train : TrainFile, Transmission or GearTrain
+        A train file (its ``[transmission]``, loss tables and operating point's
+        drive and load are used), a :class:`~epicyclic.transmission.Transmission`,
+        or a train with ``input`` and ``output`` given.
+    speeds : array_like
+        Input speeds, 1/min (> 0).
+    torques : array_like
+        Input torques, N·m (> 0; in coast the output is driven with torque × |ratio|).
+    gear : str, optional
+        Gear of the transmission's schedule (default: the file's operating-point gear).
+    losses : mapping element → ElementLosses, optional
+        Loss models (default: the train file's).
+    direction : {"drive", "coast"}
+    input, output : str, optional
+        Shafts (default: the transmission's, else the file's drive and load).
+
+    Returns
+    -------
+    EfficiencyMap
+
+    Examples
+    --------
+    >>> from epicyclic.io import load_train_file
+    >>> f = load_train_file("examples/geometry_simple_set.toml")
+    >>> m = efficiency_map(f, [1000.0, 3000.0], [20.0, 60.0])
+    >>> m.shape, bool(((m.efficiency > 0.9) & (m.efficiency < 1)).all())
+    ((2, 2), True)
+    """
+    if direction not in ("drive", "coast"):
+        raise ModelError(f"efficiency_map: direction must be 'drive' or 'coast', got {direction!r}.")
+    name, title_gear = "gear train", gear
+    if hasattr(train, "operating_train") and hasattr(train, "losses"):  # a TrainFile
+        file = train
+        name = file.title
+        losses = dict(file.losses) if losses is None else losses
+        gear = gear if gear is not None else file.gear
+        if gear is not None:
+            if file.transmission is None:
+                raise ModelError(f"{file.source}: gear {gear!r} needs a [transmission] table with a schedule.")
+            base = file.transmission.train_in_gear(file.train, gear)
+        else:
+            base = file.train
+        op = file.operating_point
+        if file.transmission is not None:
+            input = input or file.transmission.input
+            output = output or file.transmission.output
+        elif op is not None:
+            input = input or (op.drives[0] if op.drives else None)
+            output = output or (op.loads[0] if op.loads else None)
+        title_gear = gear
+    elif hasattr(train, "gear_train") and hasattr(train, "schedule"):  # a Transmission
+        name = train.name
+        if gear is None:
+            raise ModelError("efficiency_map: a transmission needs gear=... (one of "
+                             f"{', '.join(repr(g) for g in train.gears)}).")
+        base = train.gear_train(gear)
+        input, output = input or train.input, output or train.output
+    elif isinstance(train, GearTrain):
+        base, name = train, train.name
+    else:
+        raise ModelError(f"efficiency_map: expected a TrainFile, Transmission or GearTrain, got {type(train).__name__}.")
+    if input is None or output is None:
+        raise ModelError("efficiency_map: give input= and output= shafts (or a file with a [transmission] table "
+                         "or an [operating_point] with drives and loads).")
+    for shaft in (input, output):
+        base.check_shaft(shaft, "efficiency_map")
+    n = _axis(speeds, "speeds")
+    t = _axis(torques, "torques")
+    speed_grid, torque_grid = np.meshgrid(n, t)
+    models = dict(losses or {})
+    ratio_sol = solve_batch_with_losses(base, {}, speeds={input: np.array([1000.0])}, torques={input: np.array([1.0])},
+                                        drives=[input], loads=[output])
+    ratio = float(1000.0 / ratio_sol.speeds[output][0])
+    if direction == "drive":
+        sol = solve_batch_with_losses(base, models, speeds={input: speed_grid}, torques={input: torque_grid},
+                                      drives=[input], loads=[output])
+    else:
+        sol = solve_batch_with_losses(base, models, speeds={input: speed_grid},
+                                      torques={output: torque_grid * abs(ratio)}, drives=[output], loads=[input])
+    sources = {s: np.zeros(sol.shape) for s in SOURCES}
+    for parts in sol.loss_sources.values():
+        for source, value in parts.items():
+            sources[source] = sources.get(source, np.zeros(sol.shape)) + value
+    sources = {k: v for k, v in sources.items() if np.any(v != 0) or k == "mesh"}
+    return EfficiencyMap(name, title_gear, direction, input, output, n, t, sol.efficiency, sol.input_power,
+                         sol.output_power, sol.loss, sources, sol.self_locking, ratio)

@@ -1,0 +1,173 @@
+"""Solve a train whose elements have loss models: the general solver, fed with the models' losses.
+
+The loss models of :mod:`epicyclic.losses.element` depend on the state they
+act in (the mesh friction on the tooth load and the sliding speed), and the
+state on the losses.  Both are found by a fixed-point iteration around the
+general solver:
+
+1. solve without losses: the loads and speeds of every element;
+2. evaluate each element's models there: its efficiency factors by source
+   (mesh, bearing) and its drag torques;
+3. solve with these (Brandenberger's rule applies the factors in the direction
+   of the rolling power; the drag torques act on the members' shafts);
+4. re-evaluate at the new loads and repeat until no factor changes by more
+   than ``tolerance`` (two or three rounds: μ depends on the load as F^0.2).
+
+The drag torques depend on the speeds only, which the losses do not change.
+The batch form does the same over arrays of operating points, each round one
+batch solve.
+
+References
+----------
+Brandenberger 1952, eqs. 3', 7 (η0 in the direction of the rolling power);
+ISO/TR 14179-2:2001 (μ_mZ from the load: evaluated at the state it acts in).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+from ..model.operating_point import OperatingPoint
+from ..model.train import GearTrain
+from ..solver import solve
+from ..solver.batch import BatchSolution, solve_batch
+from .element import ElementLosses
+from .errors import LossModelError
+
+__all__ = ["solve_with_losses", "solve_batch_with_losses", "TOLERANCE", "MAX_ITERATIONS"]
+
+#: Largest change of any efficiency factor between two rounds at convergence.
+TOLERANCE = 1e-12
+#: Rounds of the fixed-point iteration before giving up.
+MAX_ITERATIONS = 30
+
+
+def _models(train: GearTrain, losses: Mapping[str, ElementLosses]) -> dict[str, ElementLosses]:
+    """The models of the train's elements (a transmission's models apply to every gear)."""
+    names = {e.name: e for e in train.elements}
+    out = {}
+    for name, model in losses.items():
+        if not isinstance(model, ElementLosses):
+            raise LossModelError(f"losses[{name!r}] must be an ElementLosses, got {type(model).__name__}.")
+        if name not in names:
+            raise LossModelError(
+                f"losses: the train has no element {name!r}; its elements are "
+                f"{', '.join(repr(n) for n in names)}."
+            )
+        element = names[name]
+        if type(element) is not type(model.element) or element.shafts != model.element.shafts:
+            raise LossModelError(
+                f"losses[{name!r}] was built for another element (shafts {model.element.shafts}, here "
+                f"{element.shafts}); build it from this train's element."
+            )
+        out[name] = model
+    return out
+
+
+def _state(models, speeds, port_torques):
+    """Factors and drag torques of every model at the given element states."""
+    efficiencies, torques = {}, {}
+    for name, model in models.items():
+        state = model.evaluate(speeds(model), port_torques(model))
+        efficiencies[name] = dict(state.factors)
+        torques[name] = dict(state.torques)
+    return efficiencies, torques
+
+
+def _change(old, new) -> float:
+    if old is None:
+        return np.inf
+    change = 0.0
+    for name, factors in new.items():
+        for source, value in factors.items():
+            change = max(change, float(np.max(np.abs(np.asarray(value) - np.asarray(old[name][source])),
+                                              initial=0.0)))
+    return change
+
+
+def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses: Mapping[str, ElementLosses], *,
+                      tolerance: float = TOLERANCE, max_iterations: int = MAX_ITERATIONS):
+    """Solve ``train`` at an operating point with the elements' loss models.
+
+    Parameters
+    ----------
+    train : GearTrain
+    operating_point : OperatingPoint
+    losses : mapping element name → ElementLosses
+        Elements without a model keep their own η0.
+    tolerance : float
+        Convergence of the efficiency factors.
+    max_iterations : int
+
+    Returns
+    -------
+    Solution
+        Each element's losses split by source in ``elements[name].loss_sources``
+        (``mesh``, ``bearing``, ``drag``, W).
+
+    Raises
+    ------
+    LossModelError
+        A model for an element the train does not have, or no convergence.
+    """
+    models = _models(train, losses)
+    if not models:
+        return solve(train, operating_point)
+    state = solve(train, operating_point, lossless=True)
+
+    def speeds(model):
+        e = state.elements[model.name]
+        return {p: e.speeds[p] for p in model.ports if p != "housing"}
+
+    def torques(model):
+        e = state.elements[model.name]
+        return {p: e.torques[p] for p in model.ports if p != "housing"}
+
+    previous = None
+    for _ in range(max_iterations):
+        efficiencies, loss_torques = _state(models, speeds, torques)
+        state = solve(train, operating_point, efficiencies=efficiencies, loss_torques=loss_torques)
+        if _change(previous, efficiencies) <= tolerance:
+            return state
+        previous = efficiencies
+    raise LossModelError(
+        f"losses: the load-dependent efficiencies did not settle in {max_iterations} rounds; the train is too "
+        "close to self-locking for the friction model (check the friction inputs)."
+    )
+
+
+def solve_batch_with_losses(train: GearTrain, losses: Mapping[str, ElementLosses], *,
+                            speeds: Mapping[str, object], torques: Mapping[str, object] | None = None,
+                            powers: Mapping[str, object] | None = None, drives: Sequence[str] = (),
+                            loads: Sequence[str] = (), tolerance: float = TOLERANCE,
+                            max_iterations: int = MAX_ITERATIONS) -> BatchSolution:
+    """:func:`solve_with_losses` over arrays of operating points (see :func:`~epicyclic.solver.batch.solve_batch`).
+
+    Each round is one batch solve with per-point efficiency factors and drag torques.
+    """
+    models = _models(train, losses)
+    common = dict(speeds=speeds, torques=torques, powers=powers, drives=drives, loads=loads)
+    if not models:
+        return solve_batch(train, **common)
+    unit = {name: {"mesh": 1.0} for name in models}
+    state = solve_batch(train, efficiencies=unit, **common)
+
+    def element_speeds(model):
+        return {p: state.speeds[shaft] for p, shaft in model.ports.items() if p != "housing"}
+
+    def element_torques(model):
+        return {p: state.port_torques[(model.name, p)] for p in model.ports if p != "housing"}
+
+    previous = None
+    for _ in range(max_iterations):
+        efficiencies, loss_torques = _state(models, element_speeds, element_torques)
+        state = solve_batch(train, efficiencies=efficiencies, loss_torques=loss_torques, **common)
+        if _change(previous, efficiencies) <= tolerance:
+            return state
+        previous = efficiencies
+    raise LossModelError(
+        f"losses: the load-dependent efficiencies did not settle in {max_iterations} rounds at some operating "
+        "points; the train is too close to self-locking for the friction model there."
+    )

@@ -1,0 +1,66 @@
+"""The picture of an efficiency map: η contours over speed × torque and the share of the drag loss.
+
+Left: filled contours of the efficiency with labelled iso-efficiency lines
+(self-locking points hatched grey).  Right: the share of the load-independent
+(drag) loss in the total loss, where it dominates (high speed, low torque) and
+where the load-dependent mesh and bearing friction do.  Drawn from the map's
+arrays only (compute, then draw).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ._common import pyplot
+
+__all__ = ["efficiency_map_figure"]
+
+
+def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.6)) -> Any:
+    """A matplotlib Figure of :class:`~epicyclic.losses.efficiency_map.EfficiencyMap` ``emap``."""
+    plt = pyplot()
+    fig, (left, right) = plt.subplots(1, 2, figsize=figsize, constrained_layout=True)
+    n, t = np.meshgrid(emap.speeds, emap.torques)
+    eta = np.ma.masked_invalid(emap.efficiency)
+    fig.suptitle(f"Efficiency map — {emap.title()}", fontsize=11)
+
+    if eta.count() >= 4 and emap.speeds.size > 1 and emap.torques.size > 1:
+        low, high = float(eta.min()), float(eta.max())
+        if high - low < 1e-6:
+            levels = np.linspace(low - 1e-4, high + 1e-4, 3)
+        else:  # levels at quantiles of η: the bulk of the map, not only its low-torque corner, gets contours
+            levels = np.unique(np.round(np.quantile(eta.compressed(), np.linspace(0.0, 1.0, 13)), 6))
+            levels[0], levels[-1] = low - 1e-9, high + 1e-9
+        filled = left.contourf(n, t, eta, levels=levels, cmap="viridis")
+        lines = left.contour(n, t, eta, levels=levels[2:-1:2], colors="white", linewidths=0.7)
+        left.clabel(lines, fmt="%.4f", fontsize=7)
+        fig.colorbar(filled, ax=left, label="efficiency η", spacing="uniform", format="%.4f")
+    else:
+        left.text(0.5, 0.5, "too few points with a defined efficiency", ha="center", va="center",
+                  transform=left.transAxes)
+    if emap.self_locking.any():
+        left.contourf(n, t, emap.self_locking.astype(float), levels=[0.5, 1.5], colors="none", hatches=["xx"])
+    left.set_xlabel(f"input speed n_{emap.input} in 1/min")
+    left.set_ylabel(f"input torque M_{emap.input} in N·m" if emap.direction == "drive"
+                    else f"output torque / |i| in N·m")
+    left.set_title("efficiency η = P_out / P_in", fontsize=10)
+
+    total = np.where(emap.loss > 0, emap.loss, np.nan)
+    drag = emap.losses.get("drag")
+    split = emap.loss_split()
+    text = ", ".join(f"{k} {100 * v:.1f} %" for k, v in split.items())
+    if drag is not None and np.any(drag > 0) and emap.speeds.size > 1 and emap.torques.size > 1:
+        share = np.ma.masked_invalid(100.0 * drag / total)
+        filled = right.contourf(n, t, share, levels=np.linspace(0.0, 100.0, 11), cmap="magma_r")
+        fig.colorbar(filled, ax=right, label="drag share of the loss in %")
+        right.set_title("load-independent (drag) share of the loss", fontsize=10)
+    else:
+        filled = right.contourf(n, t, np.ma.masked_invalid(total), levels=12, cmap="magma_r")
+        fig.colorbar(filled, ax=right, label="total loss in W")
+        right.set_title("total loss (no drag model)", fontsize=10)
+    right.set_xlabel(f"input speed n_{emap.input} in 1/min")
+    right.set_ylabel(left.get_ylabel())
+    right.set_title(right.get_title() + f"\nsum over the map: {text}", fontsize=10)
+    return fig

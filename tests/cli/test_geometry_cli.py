@@ -1,0 +1,102 @@
+"""``epicyclic fit``, ``forces``, ``search`` and ``analyze`` with geometry tables."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from epicyclic.cli.main import app
+from epicyclic.geometry import search_teeth
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+runner = CliRunner()
+
+
+def test_fit_table_and_json():
+    result = runner.invoke(app, ["fit", str(EXAMPLES / "geometry_simple_set.toml")])
+    assert result.exit_code == 0, result.output
+    # lecad test run: both meshes at a = 56.8 mm, sun tip 41.7008 mm (printed), 3 planets fit
+    assert "a_w = 56.7999 mm" in result.output and "41.7007" in result.output and "passes" in result.output
+    result = runner.invoke(app, ["fit", str(EXAMPLES / "wolfrom_drive.toml"), "-f", "json"])
+    data = json.loads(result.output)["fitting"]
+    assert data["W"]["fitting"]["passed"] and data["W"]["kind"] == "planetary set"
+    assembly = next(c for c in data["W"]["fitting"]["checks"] if c["condition"] == "assembly")
+    assert assembly["ticks"] == 54  # |81·24 − 78·27| / gcd(27, 24)
+
+
+def test_fit_reports_a_failing_condition_with_its_fix():
+    result = runner.invoke(app, ["fit", str(EXAMPLES / "geometry_simple_set.toml"), "--planets", "5"])
+    assert result.exit_code == 0
+    assert "FAILS" in result.output and "cannot be equally spaced" in result.output
+    assert "do not fit" in result.output or "neighbour" in result.output.lower()
+
+
+def test_forces_table_json_and_equilibrium():
+    result = runner.invoke(app, ["forces", str(EXAMPLES / "geometry_simple_set.toml"), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    forces = json.loads(result.output)["forces"]["P"]["forces"]
+    # the three pins take the carrier torque: Σ pin forces × radii + friction moments = solver carrier torque
+    assert forces["carrier_torque_from_forces"] == pytest.approx(forces["torques"]["carrier"], rel=1e-9)
+    assert forces["planets"] == 3 and forces["load_sharing_factor"] == 1.0
+    result = runner.invoke(app, ["forces", str(EXAMPLES / "zf_8hp70_geometry.toml"), "--gear", "3"])
+    assert result.exit_code == 0, result.output
+    assert "forces of 'P4'" in result.output
+
+
+def test_fit_and_forces_need_geometry():
+    for command in ("fit", "forces"):
+        result = runner.invoke(app, [command, str(EXAMPLES / "simple_set_ring_held_sun_drives.toml")])
+        assert result.exit_code == 2
+        assert "no element has a geometry table" in result.output and "module" in result.output
+
+
+def test_search_matches_the_library_in_every_format(tmp_path):
+    args = ["search", "--ratio", "5.2", "--tolerance", "3%", "--planets", "3..6", "--module", "2"]
+    direct = search_teeth(5.2, tolerance=0.03, planets=(3, 4, 5, 6), module=2.0)
+    table = runner.invoke(app, args)
+    assert table.exit_code == 0, table.output
+    assert f"{len(direct)} tooth-count sets" in table.output
+    data = json.loads(runner.invoke(app, [*args, "-f", "json"]).output)
+    assert [c["z_sun"] for c in data["candidates"]] == [c.z_sun for c in direct.candidates]
+    out = tmp_path / "s.csv"
+    assert runner.invoke(app, [*args, "-f", "csv", "-o", str(out)]).exit_code == 0
+    rows = list(csv.DictReader(io.StringIO(out.read_text())))
+    assert len(rows) == len(direct) and int(rows[0]["z_ring"]) == direct.best.z_ring
+
+
+@pytest.mark.parametrize(
+    ("args", "match"),
+    [
+        (["--tolerance", "3x"], "expected a relative deviation such as 3% or 0.03"),
+        (["--tolerance", "150%"], "0 <= tolerance < 100 %"),
+        (["--planets", "6..3"], "expected a range LOW..HIGH"),
+        (["--sun", "a..b"], "--sun: expected a whole number or a range"),
+        (["--held", "sun", "--driver", "sun"], "held, driver and driven must be"),
+    ],
+)
+def test_search_bad_input_exit_2(args, match):
+    result = runner.invoke(app, ["search", "--ratio", "4", *args])
+    assert result.exit_code == 2 and match in result.output
+
+
+def test_analyze_reports_geometry_in_every_format(tmp_path):
+    path = str(EXAMPLES / "geometry_simple_set.toml")
+    text = runner.invoke(app, ["analyze", path]).output
+    assert "fitting of 'P': passes" in text and "forces of 'P'" in text
+    report = json.loads(runner.invoke(app, ["analyze", path, "-f", "json"]).output)
+    assert report["schema"] == "epicyclic-report/3"
+    assert report["geometry"]["P"]["fitting"]["passed"] is True
+    assert report["geometry"]["P"]["geometry"]["meshes"][0]["center_distance"] == pytest.approx(56.8, abs=1e-3)
+    markdown = runner.invoke(app, ["analyze", path, "-f", "markdown"]).output
+    assert "## Geometry, fitting and forces" in markdown
+    page = tmp_path / "r.html"
+    assert runner.invoke(app, ["analyze", path, "-f", "html", "-o", str(page)]).exit_code == 0
+    assert "<h2>Geometry, fitting and forces</h2>" in page.read_text()
+    # files without geometry keep the schema-1 keys
+    plain = json.loads(runner.invoke(app, ["analyze", str(EXAMPLES / "brandenberger_1952.toml"), "-f", "json"]).output)
+    assert "geometry" not in plain
