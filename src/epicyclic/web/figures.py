@@ -21,6 +21,7 @@ Settings(option=None, format='gif', size=640, dpi=150, frames=48, fps=16)
 
 from __future__ import annotations
 
+import math
 import tempfile
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -168,12 +169,11 @@ def _whole(text: str, field: str, bounds: tuple[int, int]) -> int:
     try:
         value = float(text)
     except ValueError:
-        raise LimitError(f"{field}: expected a whole number from {bounds[0]} to {bounds[1]}, got {text[:40]!r}.",
-                         field) from None
-    if not value.is_integer():
+        value = math.nan
+    if not value.is_integer():  # also inf and NaN
         raise LimitError(f"{field}: expected a whole number from {bounds[0]} to {bounds[1]}, got {text[:40]!r}.",
                          field)
-    return int(check_range(value, field, bounds))
+    return int(check_range(int(value), field, bounds))
 
 
 def read_settings(kind: FigureKind, given: Mapping[str, str]) -> Settings:

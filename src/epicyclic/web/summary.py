@@ -150,18 +150,30 @@ def other_warnings(solution: Solution) -> list[str]:
 
 
 def gear_table(transmission: Any, current: str | None, source: str) -> dict[str, Any]:
-    """The gear table of a transmission (its own header and rows), or its error located at the schedule."""
-    from ..io.located import located
+    """The gear table of a transmission (its own header and rows), or its error located in the file.
+
+    ``transmission`` is a :class:`~epicyclic.transmission.Transmission` or a function that makes one
+    (whose errors, e.g. a gear that leaves the train free, are located at their schedule key too).
+    """
+    from ..io.located import locate_error
     from ..transmission import TransmissionAnalysis
 
+    def failed(exc: EpicyclicError, where: str) -> dict[str, Any]:
+        return {"error": str(locate_error(exc, source, None, where)), "rows": [], "current": None}
+
+    if callable(transmission):
+        try:
+            transmission = transmission()
+        except EpicyclicError as exc:
+            return failed(exc, "[transmission]")
     results = []
     for gear in transmission.gears:
         try:
             results.append(transmission.analyze(gear))
         except EpicyclicError as exc:  # name the gear, as ``epicyclic gears`` does
-            return {"error": str(located(exc, source, f"[transmission], key {f'schedule.{gear}'!r}")),
-                    "rows": [], "current": None}
+            return failed(exc, f"[transmission], key {f'schedule.{gear}'!r}")
     analysis = TransmissionAnalysis(transmission.name, transmission.input, transmission.output, tuple(results))
     rows = [(g.gear, cells) for g, cells in zip(analysis.gears, analysis._rows())]
-    return {"error": None, "analysis": analysis, "header": analysis.HEADER, "rows": rows, "footer": analysis._footer(),
-            "current": next((g for g in analysis.gears if g.gear == current), None), "current_name": current}
+    return {"error": None, "transmission": transmission, "analysis": analysis, "header": analysis.HEADER,
+            "rows": rows, "footer": analysis._footer(), "current_name": current,
+            "current": next((g for g in analysis.gears if g.gear == current), None)}

@@ -82,13 +82,13 @@ def _subject(train_file: TrainFile, state: PageState) -> Subject:
         number is a :class:`~epicyclic.errors.NonFiniteResultError` naming it.
     """
     from ..io.json_report import report_data
-    from ..io.located import check_finite, located
+    from ..io.located import check_finite, locate_error
     from ..plotting import figure_subject
 
     try:
         subject = figure_subject(train_file)
     except EpicyclicError as exc:
-        raise located(exc, state.source, f"[{_table(train_file)}]") from None
+        raise locate_error(exc, state.source, train_file.operating_point, f"[{_table(train_file)}]") from None
     check_finite(report_data(subject.solution, train_file.units), state.source)
     return replace(subject, context=replace(subject.context, units=_units(train_file, state)))
 
@@ -152,9 +152,10 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
         "field_choices": field_choices, "figures": [], "lang": state.lang, "explanation": None,
     }
     if train_file.transmission is not None:
-        gears = gear_table(transmission or _transmission(train_file), gear, state.source)
+        gears = gear_table(transmission or (lambda: _transmission(train_file)), gear, state.source)
         gears["problem"] = problem(state.text, gears["error"]) if gears["error"] else None
-        result["gears"] = gears
+        same = solve_problem is not None and gears["error"] == solve_problem.message  # said once, above
+        result["gears"] = None if same else gears
     result["problem"] = solve_problem or (result["gears"] or {}).get("problem")  # marked in the editor
     if subject is not None:
         shafts, elements = report_tables(solution, units)
@@ -331,11 +332,10 @@ def _gears_report(train_file: TrainFile, state: PageState) -> str:
 
     if train_file.transmission is None:
         raise EpicyclicError(f"{state.source}: the gears report needs a [transmission] table with a schedule.")
-    transmission = _transmission(train_file)
-    table = gear_table(transmission, None, state.source)
+    table = gear_table(lambda: _transmission(train_file), None, state.source)
     if table["error"]:
         raise _Bad(problem(state.text, table["error"]), state.text)
-    return gears_html(transmission, table["analysis"], _units(train_file, state),
+    return gears_html(table["transmission"], table["analysis"], _units(train_file, state),
                       title=train_file.title or None, source=state.source)
 
 
