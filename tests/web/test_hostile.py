@@ -84,6 +84,19 @@ def test_script_in_names_is_escaped_in_pictures_and_reports(client, page_form):
     assert_inert(report.text)
 
 
+def test_dollar_signs_and_bidirectional_overrides_are_text(client, page_form):
+    """'$' is text in every picture (no TeX math, which would fail on '$\\frac{a}{$'), as in `epicyclic plot`;
+    a right-to-left override in a title is removed (it would reorder what the reader sees)."""
+    data = page_form(hostile(title="cost $\\frac{a}{$ \u202eevil", set_name="$P$", sun="$s"))
+    page = client.post("/apply/text", data=data)
+    assert page.status_code == 200 and "\u202e" not in page.text and "cost $\\frac{a}{$ evil" in page.text
+    for kind in FIGURES:
+        if kind != "chart":
+            picture = client.post(f"/figure/{kind}", data=data)
+            assert picture.status_code == 200, (kind, picture.text[:300])
+            assert "$P$" in picture.text
+
+
 @pytest.mark.parametrize("key_line", ['"<script>x</script>" = 1', 'planetary = "<img src=x onerror=alert(1)>"'])
 def test_script_in_error_messages_is_escaped(client, page_form, key_line):
     answer = client.post("/apply/text", data=page_form(key_line + "\n" + SIMPLE.replace('"TITLE"', '"t"')))

@@ -56,7 +56,9 @@
       chooseGear(event.target.getAttribute("data-gear"));
     }
   });
-  document.addEventListener("submit", function (event) { event.preventDefault(); });
+  document.addEventListener("submit", function (event) {
+    if (event.target.method !== "dialog") { event.preventDefault(); }  // a dialog's form only closes it
+  });
 
   // ---- clicks: a gear row solves in that gear; "line N" jumps there; downloads
   function chooseGear(gear) {
