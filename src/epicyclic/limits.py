@@ -122,6 +122,14 @@ FPS_RANGE = (1, 60)
 #: ``animate --size``: width of the SVG or GIF in pixels.
 SIZE_RANGE = (120, 2000)
 
+# ---------------------------------------------------------------- synthesis
+#: Most planetary sets of a synthesis (five sets have ~10^7 tie patterns before any placement).
+MAX_SYNTHESIS_SETS = 4
+#: Most shift elements (brakes + clutches) of a synthesis.
+MAX_SYNTHESIS_ELEMENTS = 8
+#: Most target ratios (forward and reverse) of a synthesis.
+MAX_SYNTHESIS_GEARS = 16
+
 
 class LimitError(EpicyclicError, ValueError):
     """An input past one of the limits of this module.

@@ -165,6 +165,20 @@ class Bad:
     usage: bool = False  # a command-line usage error, caught before FILE is read: the option is named
 
 
+
+#: A synthesis specification (docs/synthesis.md): the Simpson three-speed's ratios, 2 sets, 2 + 2 elements.
+SYNTH = """\
+title = "three speeds"
+[targets]
+forward = [2.46, 1.46, 1.0]
+reverse = [-2.18]
+[sets]
+simple = 2
+[elements]
+brakes = 2
+clutches = 2
+"""
+
 # ------------------------------------------------------------------ the corpus
 CORPUS: list[Bad] = [
     # ---- the file itself
@@ -498,6 +512,35 @@ CORPUS: list[Bad] = [
     Bad("serve --host unresolvable", "serve", None, "cannot be resolved", ("--host", "::::"), process=True),
     Bad("serve --host not on this computer", "serve", None, "cannot listen there", ("--host", "192.0.2.1"),
         process=True),
+    # ---- synthesize (the specification file and its outputs)
+    Bad("synthesize: missing file", "synthesize", None, "no such file", ("{tmp}/missing.toml",)),
+    Bad("synthesize: folder as input", "synthesize", folder, "is a folder"),
+    Bad("synthesize: FIFO as input", "synthesize", fifo, "FIFO", process=True),
+    Bad("synthesize: file over 1 MiB", "synthesize", too_large, "1 MiB"),
+    Bad("synthesize: not UTF-8", "synthesize", SYNTH.replace("three", "drei Gänge").encode("latin-1"), "not UTF-8"),
+    Bad("synthesize: invalid TOML", "synthesize", SYNTH.replace("[sets]", "[sets"), "not valid TOML"),
+    Bad("synthesize: nested too deeply", "synthesize", SYNTH + nested(40), "nested"),
+    Bad("synthesize: no targets", "synthesize", SYNTH.split("[targets]")[0] + "[sets]\nsimple = 2\n", "[targets]"),
+    Bad("synthesize: unknown table", "synthesize", SYNTH + "[gearbox]\nx = 1\n", "gearbox"),
+    Bad("synthesize: unknown targets key", "synthesize", sub("reverse =", "revers =", SYNTH), "revers"),
+    Bad("synthesize: ratio of zero", "synthesize", sub("[2.46, 1.46, 1.0]", "[2.46, 0.0]", SYNTH), "ratio of 0"),
+    Bad("synthesize: ratio not a number", "synthesize", sub("[2.46, 1.46, 1.0]", '["fast"]', SYNTH),
+        "finite number"),
+    Bad("synthesize: too many sets", "synthesize", sub("simple = 2", "simple = 5", SYNTH), "planetary sets"),
+    Bad("synthesize: too few elements", "synthesize", sub("clutches = 2", "clutches = 0", SYNTH), "cannot give 4 gears"),
+    Bad("synthesize: too many elements", "synthesize", sub("clutches = 2", "clutches = 9", SYNTH),
+        "at most 8 shift elements"),
+    Bad("synthesize: tolerance as percent", "synthesize", sub("reverse = [-2.18]", "reverse = [-2.18]\ntolerance = 1",
+                                                              SYNTH), "tolerance"),
+    Bad("synthesize: |i0| below 1", "synthesize", SYNTH + "[bounds]\nstationary_ratio = [0.5, 3]\n", "must exceed 1"),
+    Bad("synthesize: efficiency above 1", "synthesize", SYNTH + "[search]\nstationary_efficiency = 1.2\n", "(0, 1]"),
+    Bad("synthesize: unknown search key", "synthesize", SYNTH + "[search]\nspeed = 3\n", "unknown constraint"),
+    Bad("synthesize: --out is the input", "synthesize", SYNTH, "is the input file", ("{file}", "--out", "{file}")),
+    Bad("synthesize: --csv is the input", "synthesize", SYNTH, "is the input file", ("{file}", "--csv", "{file}")),
+    Bad("synthesize: --plot with a wrong suffix", "synthesize", SYNTH, "--plot", ("{file}", "--plot", "{tmp}/a.txt"),
+        usage=True),
+    Bad("synthesize: --out-dir is a file", "synthesize", SYNTH, "not a folder", ("{file}", "--out-dir", "{file}")),
+    Bad("synthesize: --workers 0", "synthesize", SYNTH, "--workers", ("{file}", "--workers", "0"), usage=True),
 ]
 
 IDS = [case.id for case in CORPUS]
@@ -532,7 +575,7 @@ def test_the_corpus_is_large_and_its_classes_distinct():
     assert len(set(IDS)) == len(IDS)
     assert len(CORPUS) >= 150
     commands = {case.command for case in CORPUS}
-    assert {"analyze", "explain", "gears", "explore", "plot", "animate", "modes", "serve"} <= commands
+    assert {"analyze", "explain", "gears", "explore", "plot", "animate", "modes", "serve", "synthesize"} <= commands
 
 
 @pytest.mark.parametrize("case", CORPUS, ids=IDS)

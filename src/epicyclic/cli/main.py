@@ -41,6 +41,10 @@ from . import plot as _plot  # noqa: E402
 app.command("plot")(_plot.plot)
 app.command("animate")(_plot.animate)
 
+from . import synthesize as _synthesize  # noqa: E402
+
+app.command("synthesize")(_synthesize.synthesize)
+
 from . import serve as _serve  # noqa: E402
 
 app.command("serve")(_serve.serve)

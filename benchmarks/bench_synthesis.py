@@ -1,0 +1,194 @@
+"""Synthesis: architectures screened per second, a naive baseline, 1 vs 2 Dask workers, the full space.
+
+1. Screening throughput: the vectorised screening (:func:`epicyclic.synthesis.screening.screen`)
+   of every (input, output, 2 brakes + 3 clutches) placement on a sample of 4-set
+   mechanisms against the 8-speed targets of the ZF 8HP 70, in architectures per second.
+   Baseline in the same run: the same first screening level written as a per-architecture
+   loop (each combination's ratio at the 16 box corners from ``numpy.linalg.solve`` of its
+   square system), on a small sample, extrapolated; both must keep the same architectures.
+2. Dask: 40 tasks of the 8HP rediscovery test's search (4 simple sets, 2 brakes + 3 clutches,
+   ties in pairs, input and output on carriers) on LocalClusters of 1 and of 2 worker processes
+   (started beforehand), interleaved, best of 3; wall time, task CPU time and speed-up.
+3. The full space of 4 simple sets and 6 shift elements (every tie pattern, every input and
+   output, every split into brakes (at least one) and clutches, 2, 3 or 4 engaged per gear): its size, counted
+   exactly, and the time to screen it at the measured throughput on N workers.
+
+Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms]
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from math import comb
+
+import numpy as np
+
+from epicyclic.synthesis import SynthesisSpec, enumerate_mechanisms
+from epicyclic.synthesis.kinematics import corner_points, element_rows, willis_matrices
+from epicyclic.synthesis.screening import _masks, _passes, layout, screen
+
+FORWARD = np.array([4.6957, 3.1304, 2.1039, 1.6667, 1.2845, 1.0, 0.8392, 0.6667])  # ZF 8HP 70
+REVERSE = np.array([-3.2968])
+LOW, HIGH = np.full(4, -4.0), np.full(4, -1.5)
+
+
+def naive_level0(mech, lay, x: int, y: int, limit: int) -> tuple[list[int], int]:
+    """Per-architecture loop: every combination of every element set solved on its own at the corners."""
+    rows = element_rows(mech.shafts)
+    lmats = willis_matrices(mech, corner_points(LOW, HIGH))
+    targets = np.concatenate([FORWARD, REVERSE])
+    full = (1 << targets.size) - 1
+    kept, done = [], 0
+    io = (1 << x) | (1 << y)
+    for a in range(len(lay.element_sets)):
+        if lay.brake_shafts[a] & io:
+            continue
+        masks = []
+        for combo in lay.combos[lay.set_combos[a]]:
+            ratios = []
+            for lmat in lmats:
+                system = np.vstack([lmat, rows[combo], np.eye(mech.shafts)[x]])
+                rhs = np.zeros(mech.shafts)
+                rhs[-1] = 1.0
+                try:
+                    n = np.linalg.solve(system, rhs)
+                except np.linalg.LinAlgError:
+                    ratios = None
+                    break
+                ratios.append(1.0 / n[y] if abs(n[y]) > 1e-12 else np.nan)
+            if ratios is None or not np.all(np.isfinite(ratios)) or len({np.sign(r) for r in ratios}) > 1:
+                masks.append(0)
+                continue
+            masks.append(int(_masks(np.array(True), np.array(min(ratios)), np.array(max(ratios)), targets, 0.01)))
+        if _passes(np.array([masks]), full, targets.size)[0]:
+            kept.append(a)
+        done += 1
+        if done >= limit:
+            break
+    return kept, done
+
+
+def throughput(sample: int) -> float:
+    mechs = enumerate_mechanisms(("simple",) * 4, 4, max_members_per_shaft=2)
+    rng = np.random.default_rng(0)
+    chosen = [mechs[i] for i in sorted(rng.choice(len(mechs), size=min(sample, len(mechs)), replace=False))]
+    lay = layout(8, 2, 3, 3)
+    screen(chosen[0], lay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=0)  # warm-up
+    start = time.perf_counter()
+    examined = survivors = 0
+    for m in chosen:
+        placements, n = screen(m, lay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=4)
+        examined += n
+        survivors += len(placements)
+    seconds = time.perf_counter() - start
+    rate = examined / seconds
+    print(f"mechanisms sampled                 {len(chosen):>10d} of {len(mechs)} (4 simple sets, ties in pairs)")
+    print(f"architectures screened             {examined:>10,d} in {seconds:.1f} s -> {rate:,.0f} per s")
+    print(f"passed screening (4 levels)        {survivors:>10,d}")
+
+    # baseline: level 0 only, one mechanism, one input/output pair, first architectures
+    m, (x, y), limit = chosen[0], (0, 1), 300
+    start = time.perf_counter()
+    kept, done = naive_level0(m, lay, x, y, limit)
+    naive_rate = done / (time.perf_counter() - start)
+    start = time.perf_counter()
+    repeat = 20
+    for _ in range(repeat):
+        placements, n = screen(m, lay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=0)
+    fast_rate = repeat * n / (time.perf_counter() - start)
+    allowed = [a for a in range(len(lay.element_sets)) if not lay.brake_shafts[a] & ((1 << x) | (1 << y))][:limit]
+    fast_kept = sorted(a for a in allowed if any(p.input == x and p.output == y and
+                                                  p.elements == tuple(int(e) for e in lay.element_sets[a])
+                                                  for p in placements))
+    agree = fast_kept == sorted(kept)
+    print(f"naive loop, level 0 ({done} archs)   {naive_rate:>10,.0f} per s")
+    print(f"vectorised, level 0                {fast_rate:>10,.0f} per s  ({fast_rate / naive_rate:,.0f} x)")
+    print(f"same architectures kept            {agree!s:>10}")
+    if not agree:
+        raise SystemExit("vectorised and naive screening disagree")
+    return rate
+
+
+def dask_speedup(tasks_used: int = 40, repeats: int = 3) -> None:
+    """1 vs 2 worker processes on the same tasks; clusters started beforehand, best of interleaved runs."""
+    import logging
+    import os
+
+    from distributed import Client, LocalCluster
+
+    from epicyclic.synthesis.distributed import run_tasks
+    from epicyclic.synthesis.search import plan, search_task
+
+    spec = SynthesisSpec.create([*FORWARD, *REVERSE], 4, {"brakes": 2, "clutches": 3, "engaged": 3},
+                                {"tolerance": 0.01, "max_members_per_shaft": 2, "free_input": False,
+                                 "input_members": ["carrier"], "output_members": ["carrier"]})
+    tasks = plan(spec)
+    step = max(1, len(tasks) // tasks_used)
+    tasks = tasks[::step][:tasks_used]
+    clusters = {}
+    for workers in (1, 2):
+        import dask
+
+        environ = {k: v for k, v in dask.config.get("distributed.nanny.pre-spawn-environ").items()
+                   if k != "MALLOC_TRIM_THRESHOLD_"}
+        with dask.config.set({"distributed.nanny.pre-spawn-environ": environ}):
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                                   silence_logs=logging.ERROR)
+        clusters[workers] = (cluster, Client(cluster))
+    best = {1: float("inf"), 2: float("inf")}
+    cpu = {1: 0.0, 2: 0.0}
+    try:
+        for _ in range(repeats):
+            for workers in (1, 2):
+                start = time.perf_counter()
+                results, _used = run_tasks(search_task, tasks, client=clusters[workers][1])
+                wall = time.perf_counter() - start
+                if wall < best[workers]:
+                    best[workers], cpu[workers] = wall, sum(r.cpu_seconds for r in results)
+    finally:
+        for cluster, client in clusters.values():
+            client.close()
+            cluster.close()
+    mechs = sum(len(t.mechanisms) for t in tasks)
+    print(f"Dask: {len(tasks)} tasks ({mechs} mechanisms) of the 8HP test search, best of {repeats}, "
+          f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
+    for workers in (1, 2):
+        print(f"  {workers} worker process(es)            {best[workers]:>10.1f} s wall, task CPU {cpu[workers]:.1f} s "
+              f"= {cpu[workers] / best[workers]:.2f} cores busy")
+    print(f"  speed-up 1 -> 2 workers          {best[1] / best[2]:>10.2f} x")
+
+
+def full_space(rate: float) -> None:
+    kinds = ("simple",) * 4
+    total = 0
+    print("full space, 4 simple sets, 6 shift elements (every split brakes/clutches, k engaged):")
+    for k in (2, 3, 4):
+        for free in (False, True):
+            mechs = enumerate_mechanisms(kinds, k + 1, free_input=free)
+            if not mechs:
+                continue
+            n = mechs[0].shafts
+            members = n - int(free)
+            io = members if free else members * (members - 1)
+            sets_ = sum(comb(n - 2, b) * comb(comb(n, 2), 6 - b) for b in range(1, 7))
+            count = len(mechs) * io * sets_
+            total += count
+            print(f"  k={k} free input={free!s:5}: {len(mechs):>6,d} mechanisms x {io} in/out x {sets_:,} element "
+                  f"sets = {count:.3e}")
+    print(f"  total architectures              {total:.3e}")
+    for workers in (1, 2, 16, 256):
+        hours = total / (rate * workers) / 3600
+        print(f"  screening time on {workers:>3d} workers     {hours:>10.1f} h  (at {rate:,.0f} per s per worker)")
+
+
+def main(sample: int = 24) -> None:
+    rate = throughput(sample)
+    dask_speedup()
+    full_space(rate)
+    print("(the rate was measured with 5 elements, 10 combinations per element set; with 6 elements an element "
+          "set has 15-20 combinations, so the times above are low by about 2x)")
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 24)

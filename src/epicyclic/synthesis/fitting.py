@@ -1,0 +1,179 @@
+"""Stationary ratios that hit the targets, and the shift schedule that goes with them.
+
+For a screened architecture (:class:`~epicyclic.synthesis.screening.Placement`)
+every combination of k engaged elements has a ratio r_t(i0).  For given i0 the
+best *schedule* assigns the forward targets, largest first, to combinations
+with positive ratios in falling order, and the reverse targets to the negative
+ones (a monotone assignment, found by dynamic programming, is optimal for
+sorted targets).  With the assignment fixed, the stationary ratios follow from
+a bounded nonlinear least-squares fit of log(r/target) (SciPy's trust-region
+reflective method); the assignment is then renewed and the fit repeated until it
+no longer changes.  Starts are the centres of the boxes that survived
+screening.
+
+References
+----------
+Kahraman et al. 2004, J. Mech. Des. 126(6), section 3 (gear ratios from
+stationary ratios, tooth counts chosen to meet a ratio set); Branch, Coleman &
+Li (1999), SIAM J. Sci. Comput. 21(1), 1–23 (trust-region reflective least squares).
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+
+import numpy as np
+
+from .kinematics import gear_ratios
+from .mechanisms import Mechanism
+
+__all__ = ["RatioFit", "assign", "fit_ratios", "combinations_of_elements"]
+
+
+@dataclass(frozen=True)
+class RatioFit:
+    """Stationary ratios and schedule of one architecture.
+
+    Attributes
+    ----------
+    stationary_ratios : tuple of float
+        i0 per set.
+    schedule : tuple of int
+        For each target (forward targets largest first, then reverse), the row
+        of the architecture's combinations that gives it.
+    ratios : tuple of float
+        The gear ratios at ``stationary_ratios``, same order as the targets.
+    error : float
+        Largest relative ratio error |r/target − 1|.
+    """
+
+    stationary_ratios: tuple[float, ...]
+    schedule: tuple[int, ...]
+    ratios: tuple[float, ...]
+    error: float
+
+
+def combinations_of_elements(elements: tuple[int, ...], engaged: int) -> np.ndarray:
+    """Every ``engaged``-subset of ``elements`` (element numbers), shape (C, engaged)."""
+    return np.array(list(itertools.combinations(sorted(elements), engaged)), dtype=int).reshape(-1, engaged)
+
+
+def _monotone(values: np.ndarray, targets: np.ndarray) -> tuple[float, list[int]]:
+    """Assign sorted ``targets`` (falling) to a falling subsequence of ``values``; least squared log error."""
+    n, m = targets.size, values.size
+    if n == 0:
+        return 0.0, []
+    if m < n:
+        return np.inf, []
+    order = np.argsort(-values)
+    v = np.log(values[order])
+    t = np.log(targets)
+    cost = np.full((n + 1, m + 1), np.inf)
+    cost[0, :] = 0.0
+    for i in range(1, n + 1):
+        for j in range(i, m + 1):
+            cost[i, j] = min(cost[i, j - 1], cost[i - 1, j - 1] + (v[j - 1] - t[i - 1]) ** 2)
+    picks, i, j = [], n, m
+    while i > 0:
+        if cost[i, j] == cost[i, j - 1] and j > i:
+            j -= 1
+        else:
+            picks.append(int(order[j - 1]))
+            i, j = i - 1, j - 1
+    return float(cost[n, m]), picks[::-1]
+
+
+def assign(ratios: np.ndarray, forward: np.ndarray, reverse: np.ndarray) -> tuple[float, list[int]]:
+    """Best schedule for given combination ratios: (sum of squared log errors, combination per target).
+
+    Parameters
+    ----------
+    ratios : ndarray (C,)
+        Ratio of every combination (NaN: no gear).
+    forward : ndarray
+        Forward targets, largest first.
+    reverse : ndarray
+        Reverse targets (negative), largest magnitude first.
+
+    Examples
+    --------
+    >>> cost, picks = assign(np.array([1.0, 3.1, -3.0, 4.6, 2.0]), np.array([4.7, 3.1, 1.0]), np.array([-3.3]))
+    >>> picks
+    [3, 1, 0, 2]
+    """
+    ratios = np.asarray(ratios, dtype=float)
+    pos = np.flatnonzero(ratios > 0)
+    neg = np.flatnonzero(ratios < 0)
+    c1, p1 = _monotone(ratios[pos], forward)
+    c2, p2 = _monotone(-ratios[neg], -reverse)
+    if not (np.isfinite(c1) and np.isfinite(c2)):
+        return np.inf, []
+    return c1 + c2, [int(pos[p]) for p in p1] + [int(neg[p]) for p in p2]
+
+
+def fit_ratios(mechanism: Mechanism, input: int, output: int, combos: np.ndarray, low: np.ndarray,
+               high: np.ndarray, forward: np.ndarray, reverse: np.ndarray, tolerance: float,
+               starts: np.ndarray) -> RatioFit | None:
+    """Fit the stationary ratios of one architecture to the targets.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+    input, output : int
+        Shaft numbers.
+    combos : ndarray (C, k)
+        The architecture's element combinations.
+    low, high : ndarray (S,)
+        Bounds of the stationary ratios.
+    forward, reverse : ndarray
+        Targets (forward falling, reverse by falling magnitude).
+    tolerance : float
+        Relative tolerance; the fit is returned only if every ratio is within it.
+    starts : ndarray (P, S)
+        Starting points (inside the bounds).
+
+    Returns
+    -------
+    RatioFit or None
+    """
+    from scipy.optimize import least_squares
+
+    targets = np.concatenate([forward, reverse])
+    scale = np.log1p(tolerance)
+
+    def ratios_at(x: np.ndarray) -> np.ndarray:
+        return gear_ratios(mechanism, x[None, :], combos, input, output)[0]
+
+    # rank the starts by their assignment cost, keep the two best
+    at_starts = gear_ratios(mechanism, starts, combos, input, output)
+    costs = [assign(r, forward, reverse)[0] for r in at_starts]
+    best: RatioFit | None = None
+    for s in np.argsort(costs)[:2]:
+        if not np.isfinite(costs[s]):
+            continue
+        x = starts[s].copy()
+        picks = assign(at_starts[s], forward, reverse)[1]
+        for _ in range(3):
+            chosen = np.array(picks)
+
+            def residual(z: np.ndarray) -> np.ndarray:
+                r = ratios_at(z)[chosen]
+                with np.errstate(invalid="ignore", divide="ignore"):
+                    res = np.log(r / targets) / scale
+                return np.where(np.isfinite(res), res, 1e3)
+
+            sol = least_squares(residual, x, bounds=(low, high), method="trf", xtol=1e-12, ftol=1e-12,
+                                max_nfev=80)
+            x = sol.x
+            cost, new = assign(ratios_at(x), forward, reverse)
+            if not np.isfinite(cost) or new == picks:
+                break
+            picks = new
+        r = ratios_at(x)
+        if not picks or not np.all(np.isfinite(r[picks])):
+            continue
+        error = float(np.max(np.abs(r[picks] / targets - 1.0)))
+        if error <= tolerance * (1 + 1e-9) and (best is None or error < best.error):
+            best = RatioFit(tuple(float(v) for v in x), tuple(picks), tuple(float(v) for v in r[picks]), error)
+    return best

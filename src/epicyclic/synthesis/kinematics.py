@@ -1,0 +1,205 @@
+"""Kinematics of many candidate transmissions at once (numpy, no per-candidate loop).
+
+For a mechanism with N shafts and S Willis rows ``L(i0)`` (one per set,
+``n_sun − i0·n_ring − (1 − i0)·n_carrier = 0``), a shift element is a row
+``E``: a brake on shaft x is ``e_x``, a clutch between x and y is ``e_x − e_y``.
+A combination of k = N − S − 1 engaged elements is a gear when the square
+matrix ``[L; E; e_in]`` is regular, and then (Cramer's rule)
+
+.. math:: n_\\mathrm{out}/n_\\mathrm{in} = D_\\mathrm{out} / D_\\mathrm{in},
+          \\qquad D_x = \\det [L; E; e_x].
+
+``D_x`` for every shaft x at once is the vector of signed maximal minors of
+``[L; E]`` (the generalized cross product).  It is computed in the mechanism's
+null space: with ``V`` an orthonormal basis of the null space of ``L`` and
+``R`` of its row space, ``D_x = κ · c(E V) · v_x`` with κ = det(L R)·det[R V]
+and c the cofactor vector of the k×(k+1) matrix ``E V``.  Values within
+round-off of zero (relative to the largest ``D_x`` of the combination, the
+project's one rule :mod:`epicyclic.results.zero`) are exactly zero.  So one mechanism
+gives the determinants of every combination, for every choice of input and
+output, from a handful of small products (:func:`combination_determinants`).
+
+``D_x`` is multilinear in the stationary ratios (each Willis row holds one i0,
+linearly).  Hence a gear ratio ``D_in/D_out`` is a multilinear fraction: it is
+monotone in each i0 on any line parallel to an axis, and its extremes over a
+box of i0 lie at the box's corners (:func:`ratio_ranges`).  That bound is what
+prunes the search before any ratio is fitted.
+
+References
+----------
+Queitsch, eq. 12 (Willis equation with s = i0); Benford & Leising 1981 (a shift
+state adds one lever constraint per element); Kahraman et al. 2004, J. Mech.
+Des. 126(6), eqs. 1–5 (kinematics of a general one-DOF automatic transmission
+as one linear system per gear).
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+
+import numpy as np
+
+from ..results.zero import clean_array
+from .mechanisms import Mechanism
+
+__all__ = ["element_count", "element_shafts", "element_rows", "willis_matrices", "combination_determinants",
+           "corner_points", "ratio_ranges", "gear_ratios"]
+
+
+def element_count(shafts: int) -> int:
+    """Candidate shift elements of a mechanism: one brake per shaft, one clutch per pair of shafts."""
+    return shafts + shafts * (shafts - 1) // 2
+
+
+def element_shafts(shafts: int) -> list[tuple[int, ...]]:
+    """Element number → (shaft,) for a brake, (shaft, shaft) for a clutch; brakes first."""
+    return [(x,) for x in range(shafts)] + list(itertools.combinations(range(shafts), 2))
+
+
+def element_rows(shafts: int) -> np.ndarray:
+    """Kinematic row of every candidate element, shape (elements, shafts)."""
+    rows = np.zeros((element_count(shafts), shafts))
+    for e, s in enumerate(element_shafts(shafts)):
+        rows[e, s[0]] = 1.0
+        if len(s) == 2:
+            rows[e, s[1]] = -1.0
+    return rows
+
+
+def willis_matrices(mechanism: Mechanism, ratios: np.ndarray) -> np.ndarray:
+    """Willis rows at many stationary-ratio vectors: ``ratios`` (P, S) → (P, S, N).
+
+    >>> from epicyclic.synthesis.mechanisms import Mechanism
+    >>> m = Mechanism(("simple",), (0, 1, 2))
+    >>> willis_matrices(m, np.array([[-2.0]])).tolist()
+    [[[1.0, 2.0, -3.0]]]
+    """
+    ratios = np.atleast_2d(np.asarray(ratios, dtype=float))
+    points, sets = ratios.shape
+    out = np.zeros((points, sets, mechanism.shafts))
+    for k in range(sets):
+        s, r, c = mechanism.set_shafts(k)
+        out[:, k, s] += 1.0
+        out[:, k, r] -= ratios[:, k]
+        out[:, k, c] -= 1.0 - ratios[:, k]
+    return out
+
+
+def _det(m: np.ndarray) -> np.ndarray:
+    """Determinants of a stack of small square matrices (explicit for k ≤ 3, fast for many)."""
+    k = m.shape[-1]
+    if k == 0:
+        return np.ones(m.shape[:-2])
+    if k == 1:
+        return m[..., 0, 0]
+    if k == 2:
+        return m[..., 0, 0] * m[..., 1, 1] - m[..., 0, 1] * m[..., 1, 0]
+    if k == 3:
+        return (m[..., 0, 0] * (m[..., 1, 1] * m[..., 2, 2] - m[..., 1, 2] * m[..., 2, 1])
+                - m[..., 0, 1] * (m[..., 1, 0] * m[..., 2, 2] - m[..., 1, 2] * m[..., 2, 0])
+                + m[..., 0, 2] * (m[..., 1, 0] * m[..., 2, 1] - m[..., 1, 1] * m[..., 2, 0]))
+    return np.linalg.det(m)
+
+
+def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray,
+                             rows: np.ndarray | None = None) -> np.ndarray:
+    """``D[p, t, x] = det[L(i0_p); E_t; e_x]`` for points p, combinations t, shafts x.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+    ratios : ndarray, shape (P, S)
+        Stationary ratios per point.
+    combos : ndarray of int, shape (T, k)
+        Element numbers (see :func:`element_shafts`) of each combination,
+        k = degrees of freedom − 1.
+    rows : ndarray, optional
+        Element rows (default :func:`element_rows`).
+
+    Returns
+    -------
+    ndarray, shape (P, T, N)
+    """
+    ratios = np.atleast_2d(np.asarray(ratios, dtype=float))
+    n = mechanism.shafts
+    rows = element_rows(n) if rows is None else rows
+    lmat = willis_matrices(mechanism, ratios)
+    _, _, vt = np.linalg.svd(lmat)  # (P, N, N)
+    sets = mechanism.sets
+    basis_row = np.swapaxes(vt[:, :sets, :], 1, 2)  # (P, N, S)
+    basis_null = np.swapaxes(vt[:, sets:, :], 1, 2)  # (P, N, d)
+    kappa = _det(lmat @ basis_row) * np.linalg.det(np.concatenate([basis_row, basis_null], axis=2))
+    funcs = rows @ basis_null  # (P, elements, d)
+    d = basis_null.shape[2]
+    cof = _cofactors(funcs, combos)  # (P, T, d)
+    det = kappa[:, None, None] * (cof @ np.swapaxes(basis_null, 1, 2))
+    # round-off of an exact zero (an output that stands still) is zero, relative to the largest minor
+    return clean_array(det, np.abs(det).max(axis=2, keepdims=True))
+
+
+def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:
+    """Signed maximal minors c_i = (−1)^(i+k) det(F without column i) of each k×(k+1) matrix F."""
+    k = combos.shape[1]
+    d = funcs.shape[2]
+    if k == 3 and d == 4:  # the common case (three engaged elements): 2×2 minors of the first two rows
+        a, b, c = (funcs[:, combos[:, j], :] for j in range(3))  # (P, T, 4) each
+        m = {(i, j): a[..., i] * b[..., j] - a[..., j] * b[..., i] for i, j in itertools.combinations(range(4), 2)}
+        out = np.empty(a.shape)
+        for i in range(4):
+            p, q, r = [j for j in range(4) if j != i]
+            det = m[(p, q)] * c[..., r] - m[(p, r)] * c[..., q] + m[(q, r)] * c[..., p]
+            out[..., i] = det if (i + k) % 2 == 0 else -det
+        return out
+    picked = funcs[:, combos, :]  # (P, T, k, d)
+    out = np.empty(picked.shape[:2] + (d,))
+    for i in range(d):
+        cols = [j for j in range(d) if j != i]
+        out[..., i] = (-1) ** (i + k) * _det(picked[..., cols])
+    return out
+
+
+def corner_points(low: np.ndarray, high: np.ndarray) -> np.ndarray:
+    """All 2^S corners of the box [low, high] (arrays of length S), shape (2^S, S)."""
+    low, high = np.asarray(low, float), np.asarray(high, float)
+    picks = np.array(list(itertools.product((0, 1), repeat=low.size)), dtype=bool)
+    return np.where(picks, high, low)
+
+
+def ratio_ranges(det_in: np.ndarray, det_out: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Bounds of ratio = D_in/D_out over a box from its corner values (axis 0).
+
+    Returns ``valid`` (both determinants keep one sign at every corner, so
+    neither vanishes in the box: a multilinear function lies between its
+    corner values), and the smallest and largest ratio over the box.
+    """
+    corners = det_in.shape[0]
+    valid = (np.abs(np.sign(det_in).sum(axis=0)) == corners) & (np.abs(np.sign(det_out).sum(axis=0)) == corners)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = det_in / det_out
+    return valid, np.where(valid, ratio.min(axis=0), np.nan), np.where(valid, ratio.max(axis=0), np.nan)
+
+
+def gear_ratios(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray, input: int, output: int,
+                rows: np.ndarray | None = None) -> np.ndarray:
+    """Gear ratio n_in/n_out of each combination at each point, shape (P, T); NaN where no gear.
+
+    Examples
+    --------
+    >>> from epicyclic.synthesis.mechanisms import Mechanism
+    >>> m = Mechanism(("simple",), (0, 1, 2))        # sun 0, ring 1, carrier 2
+    >>> # brake on the ring (element 1), sun in, carrier out: 1 - i0
+    >>> gear_ratios(m, np.array([[-2.0]]), np.array([[1]]), 0, 2).round(9).tolist()
+    [[3.0]]
+    """
+    det = combination_determinants(mechanism, ratios, combos, rows)
+    d_in, d_out = det[..., input], det[..., output]
+    ok = (d_in != 0) & (d_out != 0)  # zeros are exact after clean_array
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(ok, d_in / d_out, np.nan)
+
+
+def combinations_of(elements: Sequence[int], size: int) -> np.ndarray:
+    """All ``size``-subsets of ``elements`` as an int array (rows sorted)."""
+    out = np.array(list(itertools.combinations(sorted(elements), size)), dtype=int)
+    return out.reshape(-1, size)

@@ -1,0 +1,159 @@
+"""The ranked result of a synthesis: a table that renders itself, JSON, CSV, train files and a plot."""
+
+from __future__ import annotations
+
+import csv
+import html
+import io
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .candidate import Candidate
+from .spec import SynthesisSpec
+
+__all__ = ["SynthesisResult"]
+
+
+def _f(value: Any, digits: int = 4) -> str:
+    return "—" if value is None else f"{value:.{digits}f}"
+
+
+@dataclass(frozen=True)
+class SynthesisResult:
+    """Candidates ranked best first (see :func:`~epicyclic.synthesis.candidate.rank_key`).
+
+    Attributes
+    ----------
+    spec : SynthesisSpec
+    candidates : tuple of Candidate
+        All distinct (non-isomorphic) candidates found, ranked.
+    stats : dict
+        Mechanisms, architectures examined, screened, fitted, seconds, workers.
+    """
+
+    spec: SynthesisSpec
+    candidates: tuple[Candidate, ...]
+    stats: dict[str, Any]
+
+    def __len__(self) -> int:
+        return len(self.candidates)
+
+    def __getitem__(self, index: int) -> Candidate:
+        return self.candidates[index]
+
+    @property
+    def best(self) -> Candidate | None:
+        return self.candidates[0] if self.candidates else None
+
+    @property
+    def top(self) -> tuple[Candidate, ...]:
+        """The first ``spec.top`` candidates (what the table shows)."""
+        return self.candidates[:self.spec.top]
+
+    HEADER = ("rank", "ratios", "max err %", "η mean", "η min", "T elem max", "n planet max", "double shifts",
+              "shafts", "teeth (z_s/z_p/z_r ×N)", "architecture")
+
+    def _rows(self) -> list[list[str]]:
+        rows = []
+        for k, c in enumerate(self.top, 1):
+            m = c.metrics
+            teeth = " ".join(f"{t.z_sun}/{t.z_planet or '-'}/{t.z_ring}×{t.planets}" for t in c.teeth)
+            rows.append([str(k), " ".join(f"{r:.3f}" for r in c.ratios), _f(100 * m["ratio_error"], 2),
+                         _f(m["efficiency_mean"]), _f(m["efficiency_min"]), _f(m["element_torque_max"], 2),
+                         _f(m["planet_speed_max"], 2), str(m["double_shifts"]), str(m["shafts"]), teeth, c.describe()])
+        return rows
+
+    def _footer(self) -> str:
+        s = self.stats
+        return (f"{s['candidates']} candidates from {s['architectures']:,} architectures on {s['mechanisms']:,} "
+                f"mechanisms ({s['screened']:,} passed screening, {s['fitted']:,} fitted); {s['tasks']} Dask tasks "
+                f"on {s['workers']} worker(s), {s['seconds']:.1f} s")
+
+    def table(self) -> str:
+        """Text table of the top candidates and their schedules."""
+        targets = ", ".join(f"{t:g}" for t in (*self.spec.forward, *self.spec.reverse))
+        lines = [f"{self.spec.title}: targets {targets} (± {100 * self.spec.tolerance:g} %), "
+                 f"{self.spec.simple} simple + {self.spec.plus} plus set(s), {self.spec.brakes} brakes, "
+                 f"{self.spec.clutches} clutches"]
+        rows = [list(self.HEADER[:-1])] + [r[:-1] for r in self._rows()]
+        widths = [max(len(r[k]) for r in rows) for k in range(len(rows[0]))]
+        for k, r in enumerate(rows):
+            lines.append("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
+            if k == 0:
+                lines.append("  ".join("-" * w for w in widths))
+        for k, c in enumerate(self.top[:5], 1):
+            sched = ", ".join(f"{g}: {'+'.join(v)}" for g, v in c.named_schedule.items())
+            lines.append(f"#{k}: {c.describe()}\n    schedule {sched}")
+        lines.append(self._footer())
+        return "\n".join(lines)
+
+    def markdown(self) -> str:
+        lines = ["| " + " | ".join(self.HEADER) + " |", "|" + "---|" * len(self.HEADER)]
+        lines += ["| " + " | ".join(c.replace("|", "\\|") for c in r) + " |" for r in self._rows()]
+        return "\n".join(lines + ["", self._footer()])
+
+    def _repr_html_(self) -> str:
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in self.HEADER)
+        body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in self._rows())
+        return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table><p>{html.escape(self._footer())}</p>"
+
+    def __str__(self) -> str:
+        return self.table()
+
+    def __repr__(self) -> str:
+        return f"<SynthesisResult {self.spec.title!r}: {len(self)} candidates, {self.stats['seconds']:.1f} s>"
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready: spec, statistics and the top candidates (ratios n_in/n_out, torques × T_in)."""
+        spec = {k: v for k, v in self.spec.__dict__.items()}
+        return {"spec": spec, "stats": dict(self.stats),
+                "candidates": [{"rank": k, **c.to_dict()} for k, c in enumerate(self.top, 1)]}
+
+    def to_json(self) -> str:
+        return json.dumps(self.to_dict(), indent=2, ensure_ascii=False)
+
+    def to_csv(self) -> str:
+        """One row per top candidate: rank, metrics, ratio per gear, architecture."""
+        buffer = io.StringIO()
+        writer = csv.writer(buffer, lineterminator="\n")
+        gears = self.top[0].gears if self.top else []
+        writer.writerow(["rank", "efficiency_mean", "efficiency_min", "element_torque_max", "planet_speed_max",
+                         "double_shifts", "shafts", "ratio_error", *[f"ratio_{g}" for g in gears],
+                         "teeth", "architecture"])
+        for k, c in enumerate(self.top, 1):
+            m = c.metrics
+            writer.writerow([k, m["efficiency_mean"], m["efficiency_min"], m["element_torque_max"],
+                             m["planet_speed_max"], m["double_shifts"], m["shafts"], m["ratio_error"], *c.ratios,
+                             " ".join(f"{t.z_sun}/{t.z_planet or '-'}/{t.z_ring}x{t.planets}" for t in c.teeth),
+                             c.describe()])
+        return buffer.getvalue()
+
+    def write_toml(self, directory: str | Path, count: int | None = None) -> list[Path]:
+        """Write ``candidate_01.toml`` … for the top candidates (``analyze``/``gears`` read them)."""
+        from ..io.output import write_atomic
+
+        directory = Path(directory)
+        return [write_atomic(directory / f"candidate_{k:02d}.toml", c.toml(f"{self.spec.title}, candidate {k}"))
+                for k, c in enumerate(self.top[:count], 1)]
+
+    def plot(self, rank: int = 1, gear: str | None = None, kind: str = "chart") -> Any:
+        """Figure of candidate ``rank`` (default: the best): the speed chart across all gears
+        (``kind="chart"``, ``gear`` highlighted) or its lever diagram (Benford–Leising) in ``gear``
+        (``kind="lever"``; default gear: the first)."""
+        from .. import plotting
+        from .spec import SynthesisError
+
+        if not 1 <= rank <= len(self.candidates):
+            raise SynthesisError(f"plot: rank must lie in 1…{len(self.candidates)}, got {rank!r}.")
+        if kind not in ("lever", "chart"):
+            raise SynthesisError(f"plot: kind must be 'lever' or 'chart', got {kind!r}.")
+        cand = self.candidates[rank - 1]
+        gear = gear or cand.gears[0]
+        t = cand.transmission(f"{self.spec.title}, candidate {rank}")
+        if gear not in t.gears:
+            raise SynthesisError(f"plot: no gear {gear!r}; gears are {', '.join(t.gears)}.")
+        if kind == "chart":
+            return plotting.speed_chart(t, gear=gear).plot()
+        return plotting.lever_diagram(t.analyze(gear).drive).plot()

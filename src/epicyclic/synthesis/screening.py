@@ -1,0 +1,334 @@
+"""Screening: which placements of shift elements on a mechanism can reach the targets.
+
+For one mechanism the candidate architectures are: an input and an output
+shaft, ``b`` brakes on shafts other than input and output, and ``c`` clutches
+between pairs of shafts.  Each gear engages k = DOF − 1 of those elements
+(:mod:`~epicyclic.synthesis.kinematics`).  An architecture passes when its
+C(b + c, k) element combinations can give every target ratio with *one* set of
+stationary ratios inside the bounds.  Screening proves the opposite cheaply,
+vectorised over all architectures of the mechanism:
+
+1. Every combination's ratio range over the whole i0 box (corner values,
+   exact for multilinear fractions) gives the set of targets it can reach
+   (a bit mask).  An architecture is dropped when the union of its
+   combinations' masks misses a target, or fewer combinations reach a target
+   than there are gears.
+2. The same test on each of the 2^S half-width sub-boxes: an architecture
+   must pass in at least one sub-box (all its gears share one i0).
+3. Sets must carry load: a shaft that holds a single set member and is neither
+   input nor output must carry a shift element, or that set idles in every
+   gear and the transmission needs one set fewer.
+
+Survivors go to :mod:`~epicyclic.synthesis.fitting`.  Nothing here fits a
+ratio, so screening never drops an architecture that can reach the targets
+(up to the tolerance widening of the ranges).
+
+References
+----------
+Kahraman et al. 2004, J. Mech. Des. 126(6), section 3 (search that eliminates
+kinematic configurations before the tooth counts); Moore, R. E. (1966),
+*Interval Analysis* (bounds over boxes, bisection).
+"""
+
+from __future__ import annotations
+
+import functools
+import itertools
+from dataclasses import dataclass
+
+import numpy as np
+
+from .kinematics import combination_determinants, element_rows, element_shafts, ratio_ranges
+from .mechanisms import PORTS, Mechanism
+
+__all__ = ["Placement", "Layout", "layout", "screen"]
+
+
+@dataclass(frozen=True)
+class Placement:
+    """A mechanism with input, output and shift elements that passed screening.
+
+    Attributes
+    ----------
+    input, output : int
+        Shaft numbers.
+    elements : tuple of int
+        Element numbers (brakes first, see :func:`~epicyclic.synthesis.kinematics.element_shafts`).
+    boxes : tuple of int
+        Sub-boxes (bit k set: upper half of set k's range) in which the targets
+        may be reached.
+    """
+
+    input: int
+    output: int
+    elements: tuple[int, ...]
+    boxes: tuple[int, ...]
+
+
+@dataclass(frozen=True, eq=False)
+class Layout:
+    """Every choice of shift elements on N shafts (independent of the mechanism).
+
+    Attributes
+    ----------
+    shafts, brakes, clutches, engaged : int
+    combos : ndarray (T, k)
+        Every combination of k elements with at most b brakes and c clutches.
+    element_sets : ndarray (A, b + c)
+        Every choice of b brakes and c clutches (element numbers).
+    set_combos : ndarray (A, C(b+c, k))
+        Row numbers into ``combos`` of each element set's combinations.
+    brake_shafts, touched : ndarray (A,) of int
+        Bit masks of the shafts braked / touched by any element of each set.
+    """
+
+    shafts: int
+    brakes: int
+    clutches: int
+    engaged: int
+    combos: np.ndarray
+    element_sets: np.ndarray
+    set_combos: np.ndarray
+    brake_shafts: np.ndarray
+    touched: np.ndarray
+
+    @functools.cached_property
+    def blocks(self) -> list[tuple[int, int, int]]:
+        """(braked-shaft bit mask, first, stop) of the runs of element sets with the same brakes."""
+        edges = np.flatnonzero(np.diff(self.brake_shafts)) + 1
+        starts = np.concatenate([[0], edges])
+        stops = np.concatenate([edges, [len(self.brake_shafts)]])
+        return [(int(self.brake_shafts[a]), int(a), int(b)) for a, b in zip(starts, stops)]
+
+    @functools.cached_property
+    def columns(self) -> np.ndarray:
+        """``set_combos`` transposed and contiguous (C, A): fast per-combination gathers."""
+        return np.ascontiguousarray(self.set_combos.T)
+
+
+@functools.lru_cache(maxsize=16)
+def layout(shafts: int, brakes: int, clutches: int, engaged: int) -> Layout:
+    """All element sets of ``brakes`` brakes and ``clutches`` clutches on ``shafts`` shafts (cached).
+
+    >>> lay = layout(4, 2, 2, 2)   # Simpson-sized: 4 shafts, 2 brakes, 2 clutches, 2 engaged
+    >>> lay.element_sets.shape, lay.set_combos.shape
+    ((90, 4), (90, 6))
+    """
+    shafts_of = element_shafts(shafts)
+    n_elements = len(shafts_of)
+    is_brake = np.array([len(s) == 1 for s in shafts_of])
+    brake_ids = np.flatnonzero(is_brake)
+    clutch_ids = np.flatnonzero(~is_brake)
+    b_sets = np.array(list(itertools.combinations(brake_ids, brakes)), dtype=np.int32).reshape(-1, brakes)
+    c_sets = np.array(list(itertools.combinations(clutch_ids, clutches)), dtype=np.int32).reshape(-1, clutches)
+    element_sets = np.concatenate([np.repeat(b_sets, len(c_sets), axis=0), np.tile(c_sets, (len(b_sets), 1))], axis=1)
+    all_combos = np.array(list(itertools.combinations(range(n_elements), engaged)), dtype=np.int32).reshape(-1, engaged)
+    nb = is_brake[all_combos].sum(axis=1)
+    combos = all_combos[(nb <= brakes) & (engaged - nb <= clutches)]
+    weights = n_elements ** np.arange(engaged - 1, -1, -1, dtype=np.int64)
+    codes = combos.astype(np.int64) @ weights  # combos are sorted rows in lexicographic order
+    local = np.array(list(itertools.combinations(range(brakes + clutches), engaged)), dtype=np.int32)
+    picked = np.sort(element_sets[:, local], axis=2)  # (A, C, k)
+    set_combos = np.searchsorted(codes, picked.astype(np.int64) @ weights).astype(np.int32)
+    bits = np.array([sum(1 << x for x in s) for s in shafts_of], dtype=np.int64)
+    brake_bits = np.where(is_brake, bits, 0)
+    return Layout(shafts, brakes, clutches, engaged, combos, element_sets, set_combos,
+                  np.bitwise_or.reduce(brake_bits[element_sets], axis=1),
+                  np.bitwise_or.reduce(bits[element_sets], axis=1))
+
+
+def _grid(low: np.ndarray, high: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray]:
+    """Grid of (2^level + 1)^S points over the box and the corner indices of each of its 2^(level·S) boxes.
+
+    Box number: digit k (base 2^level, least significant first) is the cell along set k.
+    """
+    return _cached_grid(tuple(float(v) for v in low), tuple(float(v) for v in high), level)
+
+
+@functools.lru_cache(maxsize=32)
+def _cached_grid(low_t: tuple[float, ...], high_t: tuple[float, ...], level: int) -> tuple[np.ndarray, np.ndarray]:
+    low, high = np.array(low_t), np.array(high_t)
+    sets = low.size
+    cells = 2 ** level
+    axis = np.linspace(0.0, 1.0, cells + 1)
+    codes = np.array(list(itertools.product(range(cells + 1), repeat=sets)))  # last set fastest
+    points = low + (high - low) * axis[codes]
+    stride = (cells + 1) ** np.arange(sets - 1, -1, -1)
+    box_cells = np.array(list(itertools.product(range(cells), repeat=sets)))[:, ::-1]  # set 0 fastest
+    offsets = np.array(list(itertools.product((0, 1), repeat=sets)))
+    corners = ((box_cells[:, None, :] + offsets[None, :, :]) * stride).sum(axis=2)
+    return points, corners
+
+
+def _children(boxes: np.ndarray, level: int, sets: int) -> np.ndarray:
+    """Numbers of the 2^S sub-boxes (at ``level + 1``) of each box (at ``level``), shape (len, 2^S).
+
+    >>> _children(np.array([0]), 0, 2).tolist()
+    [[0, 2, 1, 3]]
+    """
+    cells = 2 ** level
+    boxes = np.asarray(boxes, dtype=np.int64)
+    digits = (boxes[:, None] // cells ** np.arange(sets)) % cells  # (n, S)
+    halves = np.array(list(itertools.product((0, 1), repeat=sets)))  # (2^S, S)
+    weights = (2 * cells) ** np.arange(sets)
+    return ((2 * digits[:, None, :] + halves[None, :, :]) * weights).sum(axis=2)
+
+
+def _masks(valid: np.ndarray, lo: np.ndarray, hi: np.ndarray, targets: np.ndarray, tolerance: float) -> np.ndarray:
+    """Bit mask of the targets each range can reach, widened by the tolerance.
+
+    Bit j stands for the j-th smallest target (the targets a range reaches are
+    consecutive in sorted order, so two searches give the mask).
+    """
+    ordered = np.sort(targets)
+    widen = 1.0 + tolerance
+    with np.errstate(invalid="ignore"):
+        lo_w = np.where(lo > 0, lo / widen, lo * widen)
+        hi_w = np.where(hi > 0, hi * widen, hi / widen)
+    first = np.searchsorted(ordered, np.where(valid, lo_w, np.inf), side="left")
+    stop = np.searchsorted(ordered, np.where(valid, hi_w, -np.inf), side="right")
+    stop = np.maximum(stop, first)
+    one = np.int64(1)
+    return (one << stop.astype(np.int64)) - (one << first.astype(np.int64))
+
+
+def _passes(masks: np.ndarray, full: int, gears: int) -> np.ndarray:
+    """Rows of ``masks`` (..., C) whose union covers ``full`` with at least ``gears`` useful combinations."""
+    union = np.zeros(masks.shape[:-1], dtype=np.int64)
+    useful = np.zeros(masks.shape[:-1], dtype=np.int16)
+    for j in range(masks.shape[-1]):
+        m = masks[..., j] & full
+        union |= m
+        useful += m != 0
+    return (union == full) & (useful >= gears)
+
+
+def _passes_rows(masks: np.ndarray, full: int, gears: int) -> np.ndarray:
+    """:func:`_passes` for masks laid out (C, A): one contiguous row per combination."""
+    union = np.zeros(masks.shape[1], dtype=masks.dtype)
+    useful = np.zeros(masks.shape[1], dtype=np.int16)
+    for row in masks:
+        m = row & full
+        union |= m
+        useful += m != 0
+    return (union == full) & (useful >= gears)
+
+
+def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray, forward: np.ndarray,
+           reverse: np.ndarray, tolerance: float, levels: int = 2,
+           input_members: tuple[str, ...] = PORTS, output_members: tuple[str, ...] = PORTS
+           ) -> tuple[list[Placement], int]:
+    """Every (input, output, element set) of the mechanism that survives screening.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+    lay : Layout
+        From :func:`layout` with ``mechanism.shafts`` shafts.
+    low, high : ndarray (S,)
+        Box of stationary ratios (signed; low < high).
+    forward, reverse : ndarray
+        Target ratios (forward > 0, reverse < 0).
+    tolerance : float
+        Relative tolerance on each target.
+    levels : int, default 2
+        Bisection levels after the whole box (each halves every i0 range);
+        at most 16 // S are used (2^16 boxes).
+    input_members, output_members : tuple of str
+        Members ("sun", "ring", "carrier") the input / output shaft must hold
+        one of (a separate input shaft is always allowed).
+
+    Returns
+    -------
+    placements : list of Placement
+        With the finest boxes in which the targets may be reached.
+    examined : int
+        Architectures (input, output, element set) examined.
+    """
+    mech = mechanism
+    low, high = np.asarray(low, float), np.asarray(high, float)
+    sets = mech.sets
+    levels = min(levels, 16 // sets)  # at most 2^16 boxes
+    targets = np.concatenate([forward, reverse]).astype(float)
+    gears = targets.size
+    full = (1 << gears) - 1
+    points, corners = _grid(low, high, 0)
+    det = combination_determinants(mech, points, lay.combos, element_rows(mech.shafts))  # (2^S, T, N)
+    single = [x for x in range(mech.member_shafts) if len(mech.shaft_members(x)) == 1]
+    if mech.free_input:
+        pairs = [(mech.member_shafts, y) for y in range(mech.member_shafts)]
+    else:
+        pairs = list(itertools.combinations(range(mech.member_shafts), 2))
+
+    def role_ok(shaft: int, kinds: tuple[str, ...]) -> bool:
+        return any(port in kinds for _, port in mech.shaft_members(shaft))
+
+    pairs = [(x, y) for x, y in pairs
+             if role_ok(y, output_members) and (mech.free_input or role_ok(x, input_members))
+             or not mech.free_input and role_ok(x, output_members) and role_ok(y, input_members)]
+    if not pairs:
+        return [], 0
+    survivors: list[tuple[int, int, int]] = []  # (input, output, element set)
+    examined = 0
+    if gears > 62:
+        raise ValueError("screening handles at most 62 target ratios")
+    xs, ys = np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
+    valid, lo, hi = ratio_ranges(det[..., xs], det[..., ys])  # (T, pairs)
+    fwd_mask = _masks(valid, lo, hi, targets, tolerance)
+    rev_mask = _masks(valid, 1.0 / hi, 1.0 / lo, targets, tolerance)  # y -> x: 1/ratio
+    reach_fwd = np.bitwise_or.reduce(fwd_mask, axis=0)  # targets any combination can reach, per pair
+    reach_rev = np.bitwise_or.reduce(rev_mask, axis=0)
+
+    fwd_rows = np.ascontiguousarray(fwd_mask.T)  # (pairs, T)
+    rev_rows = np.ascontiguousarray(rev_mask.T)
+    for p, (x, y) in enumerate(pairs):
+        if reach_fwd[p] != full and (mech.free_input or reach_rev[p] != full):
+            continue  # some target is out of reach of every combination, in both directions
+        io = (1 << x) | (1 << y)
+        need = sum(1 << s for s in single if s not in (x, y)) | ((1 << x) if mech.free_input else 0)
+        blocks = [(start, stop) for bits, start, stop in lay.blocks if not bits & io]
+        if not blocks:
+            continue
+        directions = [d for d in ([(x, y, fwd_rows, reach_fwd)] if mech.free_input else
+                                  [(x, y, fwd_rows, reach_fwd), (y, x, rev_rows, reach_rev)])
+                      if (mech.free_input or role_ok(d[0], input_members)) and role_ok(d[1], output_members)]
+        for start, stop in blocks:
+            covered = (lay.touched[start:stop] & need) == need
+            examined += int(covered.sum()) * len(directions)
+            for a, b, rows, reach in directions:
+                if reach[p] != full:
+                    continue
+                ok = _passes_rows(rows[p][lay.columns[:, start:stop]], full, gears) & covered
+                survivors += [(a, b, start + int(j)) for j in np.flatnonzero(ok)]
+    # bisection: every survivor keeps the boxes (at the current level) in which it may reach the targets
+    boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors}
+    for level in range(1, levels + 1):
+        if not boxes:
+            break
+        used = np.unique(lay.set_combos[[s[2] for s in boxes]])
+        points, corners = _grid(low, high, level)
+        groups: dict[tuple[int, int], list[tuple[int, np.ndarray]]] = {}
+        for (a, b, j), parents in boxes.items():
+            groups.setdefault((a, b), []).append((j, _children(parents, level - 1, sets).ravel()))
+        at = np.unique(corners[np.unique(np.concatenate([c for m in groups.values() for _, c in m]))])
+        det = combination_determinants(mech, points[at], lay.combos[used], element_rows(mech.shafts))
+        nxt = {}
+        for (a, b), members in groups.items():
+            sets_j = np.array([j for j, _ in members])
+            counts = np.array([c.size for _, c in members])
+            flat = np.concatenate([c for _, c in members])
+            needed = np.unique(flat)
+            member_cols = np.searchsorted(used, lay.set_combos[sets_j])  # (M, C) columns of det
+            cols = np.unique(member_cols)
+            idx = np.searchsorted(at, corners[needed].T)  # (2^S, boxes) rows of det
+            valid, lo, hi = ratio_ranges(det[:, cols, a][idx], det[:, cols, b][idx])  # (boxes, cols)
+            mask = _masks(valid, lo, hi, targets, tolerance)
+            owner = np.repeat(np.arange(len(members)), counts)
+            ok = _passes(mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]],
+                         full, gears)
+            for m, (j, keep) in enumerate(zip(sets_j, np.split(ok, np.cumsum(counts)[:-1]))):
+                if keep.any():
+                    nxt[(a, b, int(j))] = members[m][1][keep]
+        boxes = nxt
+    return [Placement(a, b, tuple(int(e) for e in lay.element_sets[j]), tuple(bx))
+            for (a, b, j), bx in boxes.items()], examined

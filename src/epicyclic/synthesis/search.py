@@ -1,0 +1,227 @@
+"""The search: mechanisms → screened architectures → fitted ratios → tooth counts → evaluated candidates.
+
+:func:`search_task` is one independent task (a chunk of mechanisms); it is what
+Dask workers run (:mod:`~epicyclic.synthesis.distributed`).  :func:`plan`
+splits a specification into tasks and :func:`synthesize` runs them and ranks the
+results.
+
+References
+----------
+Kahraman, Ligata, Kienzle & Zini (2004), "A kinematics and power flow analysis
+methodology for automatic transmission planetary gear trains", J. Mech. Des.
+126(6), 1071–1081 (configuration search, tooth counts, power flow);
+Benford & Leising 1981, SAE 810102 (lever analogy).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .candidate import Candidate, evaluate, rank_key
+from .fitting import combinations_of_elements, fit_ratios
+from .mechanisms import Mechanism, enumerate_mechanisms
+from .screening import _grid, layout, screen
+from .spec import SynthesisError, SynthesisSpec
+from .teeth import choose_teeth, tooth_options
+
+__all__ = ["Task", "TaskResult", "plan", "search_task", "synthesize", "synthesize_spec", "bounds"]
+
+
+@dataclass(frozen=True)
+class Task:
+    """Independent unit of work: some mechanisms, one number of engaged elements."""
+
+    spec: SynthesisSpec
+    engaged: int
+    mechanisms: tuple[Mechanism, ...]
+
+
+@dataclass(frozen=True)
+class TaskResult:
+    """Candidates of one task and what it counted."""
+
+    candidates: tuple[Candidate, ...]
+    mechanisms: int
+    architectures: int
+    screened: int
+    fitted: int
+    seconds: float
+    rejected: dict[str, int] = field(default_factory=dict)
+    cpu_seconds: float = 0.0
+
+
+def bounds(spec: SynthesisSpec) -> tuple[np.ndarray, np.ndarray]:
+    """Box of signed stationary ratios: simple sets [−hi, −lo], plus sets [lo, hi]."""
+    lo, hi = spec.stationary_ratio
+    low = np.array([-hi if k == "simple" else lo for k in spec.kinds])
+    high = np.array([-lo if k == "simple" else hi for k in spec.kinds])
+    return low, high
+
+
+def _mechanisms(spec: SynthesisSpec, engaged: int) -> tuple[Mechanism, ...]:
+    dof = engaged + 1
+    found = enumerate_mechanisms(spec.kinds, dof, max_members_per_shaft=spec.max_members_per_shaft)
+    if spec.free_input:
+        found += enumerate_mechanisms(spec.kinds, dof, free_input=True, max_members_per_shaft=spec.max_members_per_shaft)
+    return found
+
+
+def plan(spec: SynthesisSpec, chunk: int | None = None) -> list[Task]:
+    """Split the search into independent tasks (``chunk`` mechanisms each; default about 8)."""
+    tasks = []
+    for k in spec.engaged:
+        mechs = _mechanisms(spec, k)
+        size = chunk or max(1, min(8, len(mechs) // 16 or 1))
+        tasks += [Task(spec, k, mechs[i:i + size]) for i in range(0, len(mechs), size)]
+    if not tasks:
+        raise SynthesisError(
+            f"synthesize: {spec.simple + spec.plus} set(s) cannot form a mechanism with "
+            f"{', '.join(str(k + 1) for k in spec.engaged)} degree(s) of freedom; change the number of sets or "
+            "elements.engaged.")
+    return tasks
+
+
+def search_task(task: Task) -> TaskResult:
+    """Run one task: screen, fit, choose teeth and evaluate every surviving architecture."""
+    start, cpu = time.perf_counter(), time.process_time()
+    spec = task.spec
+    forward = np.array(spec.forward)
+    reverse = np.array(spec.reverse)
+    targets = np.concatenate([forward, reverse])
+    low, high = bounds(spec)
+    out: list[Candidate] = []
+    examined = screened = fitted = 0
+    rejected = {"ratios": 0, "teeth": 0}
+    teeth_cache: dict[tuple[str, float], list] = {}
+    for mech in task.mechanisms:
+        lay = layout(mech.shafts, spec.brakes, spec.clutches, task.engaged)
+        placements, n = screen(mech, lay, low, high, forward, reverse, spec.tolerance, levels=spec.levels,
+                               input_members=spec.input_members, output_members=spec.output_members)
+        examined += n
+        screened += len(placements)
+        if not placements:
+            continue
+        points, corners = _grid(low, high, spec.levels)
+        for p in placements:
+            combos = combinations_of_elements(p.elements, task.engaged)
+            starts = points[corners[list(p.boxes)]].mean(axis=1)
+            fit = fit_ratios(mech, p.input, p.output, combos, low, high, forward, reverse, spec.tolerance, starts)
+            if fit is None:
+                rejected["ratios"] += 1
+                continue
+            fitted += 1
+            options = []
+            for kind, i0 in zip(spec.kinds, fit.stationary_ratios):
+                key = (kind, round(i0, 4))
+                if key not in teeth_cache:
+                    teeth_cache[key] = tooth_options(i0, kind, tolerance=spec.tolerance, sun=spec.sun,
+                                                     planet=spec.planet, planets=spec.planets)
+                options.append(teeth_cache[key])
+            chosen = choose_teeth(mech, p.input, p.output, combos, fit.schedule, targets, options, spec.tolerance)
+            if chosen is None:
+                rejected["teeth"] += 1
+                continue
+            teeth, ratios, _ = chosen
+            cand = Candidate(mech, p.input, p.output, p.elements,
+                             tuple(tuple(int(e) for e in combos[j]) for j in fit.schedule), teeth,
+                             tuple(float(r) for r in ratios), tuple(float(t) for t in targets), forward.size,
+                             spec.stationary_efficiency)
+            out.append(evaluate(cand))
+    return TaskResult(tuple(out), len(task.mechanisms), examined, screened, fitted, time.perf_counter() - start,
+                      rejected, time.process_time() - cpu)
+
+
+def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str | None = None,
+                    workers: int | None = None, processes: bool = True,
+                    progress: Callable[[int, int], None] | None = None, chunk: int | None = None):
+    """Run a validated :class:`SynthesisSpec` on Dask and rank the candidates (see :func:`synthesize`)."""
+    from .distributed import run_tasks
+    from .results import SynthesisResult
+
+    start = time.perf_counter()
+    tasks = plan(spec, chunk)
+    results, used = run_tasks(search_task, tasks, client=client, scheduler=scheduler, workers=workers,
+                              processes=processes, progress=progress)
+    unique: dict[tuple, Candidate] = {}
+    for r in results:
+        for c in r.candidates:
+            unique.setdefault(c.key, c)
+    ranked = sorted(unique.values(), key=rank_key)
+    stats = {
+        "tasks": len(tasks), "workers": used,
+        "mechanisms": sum(r.mechanisms for r in results),
+        "architectures": sum(r.architectures for r in results),
+        "screened": sum(r.screened for r in results),
+        "fitted": sum(r.fitted for r in results),
+        "rejected_ratios": sum(r.rejected.get("ratios", 0) for r in results),
+        "rejected_teeth": sum(r.rejected.get("teeth", 0) for r in results),
+        "candidates": len(ranked),
+        "task_seconds": sum(r.seconds for r in results),
+        "task_cpu_seconds": sum(r.cpu_seconds for r in results),
+        "seconds": time.perf_counter() - start,
+    }
+    return SynthesisResult(spec, tuple(ranked), stats)
+
+
+def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping[str, int] = 2,
+               elements: Mapping[str, int] | None = None, constraints: Mapping[str, Any] | None = None, *,
+               client: Any = None, scheduler: str | None = None, workers: int | None = None,
+               processes: bool = True, progress: Callable[[int, int], None] | None = None,
+               chunk: int | None = None):
+    """Find transmissions (architecture, shift schedule, tooth counts) that give the target ratios.
+
+    Parameters
+    ----------
+    targets : sequence of float or mapping
+        Gear ratios n_in/n_out (negative: reverse), or a mapping with
+        ``forward``, ``reverse``, ``tolerance`` (relative, default 0.01), or
+        ``spread``, ``gears``, ``first``, ``progression`` (see :class:`SynthesisSpec`).
+    sets : int or mapping
+        Number of simple sets, or ``{"simple": n, "plus": m}``.
+    elements : mapping
+        ``{"brakes": b, "clutches": c}`` and optionally ``"engaged"`` per gear.
+    constraints : mapping, optional
+        Bounds and search options: ``stationary_ratio`` (|i0| range), ``sun``,
+        ``planet`` (tooth ranges), ``planets``, ``max_members_per_shaft``,
+        ``free_input``, ``input_members``, ``output_members``, ``levels``,
+        ``stationary_efficiency``, ``top``.
+    client : dask.distributed.Client, optional
+        Run on this client.
+    scheduler : str, optional
+        Address of an existing Dask scheduler (``tcp://host:8786``).
+    workers : int, optional
+        Workers of the local cluster started otherwise (default: CPU count).
+    processes : bool, default True
+        Local cluster with worker processes (False: threads in this process).
+    progress : callable (done, total), optional
+        Called after each finished task.
+
+    Returns
+    -------
+    SynthesisResult
+        Ranked candidates (table, JSON, CSV, TOML files, plot).
+
+    Raises
+    ------
+    SynthesisError
+        Invalid targets, sets, elements or constraints.
+
+    References
+    ----------
+    Kahraman et al. 2004, J. Mech. Des. 126(6), 1071–1081.
+
+    Examples
+    --------
+    >>> res = synthesize([2.46, 1.46, 1.0, -2.18], sets=2, elements={"brakes": 2, "clutches": 2, "engaged": 2},
+    ...                  constraints={"tolerance": 0.01}, processes=False, workers=1)
+    >>> len(res) > 0, res.best.metrics["double_shifts"], round(res.best.ratios[2], 6)
+    (True, 0, 1.0)
+    """
+    spec = SynthesisSpec.create(targets, sets, elements, constraints)
+    return synthesize_spec(spec, client=client, scheduler=scheduler, workers=workers, processes=processes,
+                           progress=progress, chunk=chunk)

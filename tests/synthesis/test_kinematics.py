@@ -1,0 +1,72 @@
+"""Vectorised kinematics against the engine's solver, and the corner bound of ratio ranges.
+
+Reference: every library transmission's gear ratios from the general solver
+(Transmission.ratio, Willis equation per set, Queitsch eq. 12) — an independent
+code path (QR/least-squares solve of the full shift state) from the
+determinant formula used here (Cramer's rule).  Tolerance 1e-9 relative: both
+are exact up to round-off.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from epicyclic.synthesis.candidate import Candidate
+from epicyclic.synthesis.kinematics import combination_determinants, corner_points, gear_ratios, ratio_ranges
+from epicyclic.synthesis.mechanisms import Mechanism
+from epicyclic.transmission.library import build
+
+
+@pytest.mark.parametrize("key", ["simpson_c4", "zf_8hp70", "ravigneaux_aod"])
+def test_gear_ratios_match_the_solver(key):
+    t = build(key)
+    c = Candidate.from_transmission(t)
+    i0 = np.array([[p.stationary_ratio for p in sorted(t.train.planetary_sets, key=lambda p: p.stationary_ratio > 0)]])
+    ratios = gear_ratios(c.mechanism, i0, np.array(c.schedule), c.input, c.output)[0]
+    assert ratios == pytest.approx(list(c.ratios), rel=1e-9)
+
+
+def test_housing_members_are_outside_the_space():
+    from epicyclic.synthesis import SynthesisError
+
+    with pytest.raises(SynthesisError, match="tied to the housing"):
+        Candidate.from_transmission(build("lepelletier_6hp26"))
+
+
+def test_no_gear_gives_nan():
+    m = Mechanism(("simple",), (0, 1, 2))
+    # brake on the sun with sun as input: the input cannot turn -> no gear
+    assert np.isnan(gear_ratios(m, np.array([[-2.0]]), np.array([[0]]), 0, 2)[0, 0])
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.floats(0.0, 1.0), min_size=8, max_size=8), st.integers(0, 9))
+def test_ratio_range_from_corners_bounds_every_interior_point(fractions, combo):
+    """A multilinear fraction has its extremes at the corners of a box (no pole inside)."""
+    t = build("zf_8hp70")
+    c = Candidate.from_transmission(t)
+    low, high = np.full(4, -3.0), np.full(4, -1.8)
+    combos = np.array(c.schedule)
+    det = combination_determinants(c.mechanism, corner_points(low, high), combos)
+    valid, lo, hi = ratio_ranges(det[..., c.input], det[..., c.output])
+    point = low + (high - low) * np.array(fractions[:4])
+    r = gear_ratios(c.mechanism, point[None, :], combos, c.input, c.output)[0]
+    k = combo % len(combos)
+    if valid[k]:
+        assert lo[k] * (1 - 1e-9) - 1e-12 <= r[k] <= hi[k] * (1 + 1e-9) + 1e-12 or \
+            lo[k] * (1 + 1e-9) - 1e-12 <= r[k] <= hi[k] * (1 - 1e-9) + 1e-12
+
+
+def test_determinants_are_multilinear_in_the_stationary_ratios():
+    """det[L; E; e_x] is affine in each i0: the midpoint value is the mean of the end values."""
+    c = Candidate.from_transmission(build("zf_8hp70"))
+    combos = np.array(c.schedule)
+    a = np.array([-2.0, -2.0, -1.6, -3.7])
+    for k in range(4):
+        lo, hi = a.copy(), a.copy()
+        lo[k], hi[k] = -1.5, -4.0
+        d = combination_determinants(c.mechanism, np.stack([lo, (lo + hi) / 2, hi]), combos)
+        assert d[1] == pytest.approx((d[0] + d[2]) / 2, rel=1e-9, abs=1e-9)
