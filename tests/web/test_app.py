@@ -142,7 +142,7 @@ def test_self_locking_shows_thresholds(client, examples, page_form):
     answer = client.post("/apply/text", data=page_form(examples["plus_set_self_locking"].text))
     solution = loads_train_file(examples["plus_set_self_locking"].text).solve()
     assert solution.self_locking is not None
-    assert "Self-locking." in answer.text and kpi(answer.text, "efficiency") == "— (self-locking)"
+    assert "Self-locking:</strong>" in answer.text and kpi(answer.text, "efficiency") == "— (self-locking)"
     for name, eta in solution.self_locking.thresholds.items():
         assert f"{name}: self-locks for η0 &lt; {fmt(eta, 6)}" in answer.text
 

@@ -93,7 +93,7 @@ class CirculationView:
     short : str
         For the key figure: ``"none"``, ``"0.651 × input"``, ``"not defined"`` or ``"—"``.
     text : str
-        A sentence saying what the loops below are, or why there are none.
+        A sentence saying what the loops below are, or that there are none, or why it is not defined.
     loops : tuple of Loop
     largest : str
         The largest power through any element port, as a multiple of the input ("" if not defined).
@@ -117,8 +117,7 @@ def circulation_view(solution: Solution, units: Units) -> CirculationView:
     if c.ratio is None:
         return CirculationView("—", "No power enters the train, so no power circulates.")
     if not c.loops:
-        return CirculationView("none", "No power circulates: every element carries at most what flows from the "
-                               "drives to the loads.", (), largest)
+        return CirculationView("none", "No power circulates around a closed loop of the train.", (), largest)
     loops = tuple(Loop(loop.describe(), f"{fmt(units.power_from_core(loop.power), 6)} {units.power}",
                        "—" if loop.ratio is None else fmt(loop.ratio, 4)) for loop in c.loops)
     text = (f"Power circulates around {len(loops)} closed {_plural(loops, 'loop')}: "
