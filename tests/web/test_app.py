@@ -9,6 +9,7 @@ import pytest
 
 from epicyclic.io import loads_train_file
 from epicyclic.io.tables import fmt
+from epicyclic.plotting import figure_subject
 from epicyclic.web.examples import bundled_examples
 from epicyclic.web.figures import FIGURES
 
@@ -66,12 +67,13 @@ def test_every_bundled_example_opens(client, examples, key):
     assert f'value="{example.file_name}"' in answer.text  # the source shown and sent back
     for shaft in train_file.train.moving_shafts:
         assert f'data-shaft="{shaft}"' in answer.text  # one form row per shaft
-    if train_file.operating_point is not None:
-        solution = train_file.solve()
-        expected = "— (self-locking)" if solution.self_locking else fmt(solution.efficiency, 4)
-        assert kpi(answer.text, "efficiency") == expected
-    elif train_file.transmission is not None:  # the page proposes an operating point in the first gear
-        assert "proposes one" in answer.text and kpi(answer.text, "efficiency")
+    # the state `epicyclic plot` draws: the file's operating point, or a transmission's first gear at unit input
+    solution = figure_subject(train_file).solution
+    expected = "— (self-locking)" if solution.self_locking else fmt(solution.efficiency, 4)
+    assert kpi(answer.text, "efficiency") == expected
+    assert textarea(answer.text) == example.text  # opening never changes the text
+    if train_file.operating_point is None:
+        assert "at unit input" in answer.text
 
 
 def test_unknown_example_is_not_a_path(client):
@@ -123,8 +125,7 @@ def test_switching_gears(client, examples, page_form):
         assert answer.status_code == 200, answer.text[:400]
         assert float(kpi(answer.text, "ratio")) == pytest.approx(ratio, abs=0.01)
         assert f'<tr data-gear="{gear}" class="current"' in answer.text
-        if gear != "1":  # the proposed operating point is in gear 1: no change, the text is not sent back
-            assert f'gear = "{gear}"' in textarea(answer.text)
+        assert f'gear = "{gear}"' in textarea(answer.text)
         assert 'id="gear-state"' in answer.text and f"gear {gear} (" in answer.text
 
 
@@ -141,16 +142,20 @@ def test_self_locking_shows_thresholds(client, examples, page_form):
     answer = client.post("/apply/text", data=page_form(examples["plus_set_self_locking"].text))
     solution = loads_train_file(examples["plus_set_self_locking"].text).solve()
     assert solution.self_locking is not None
-    assert "Self-locking." in answer.text and kpi(answer.text, "efficiency") == "— (self-locking)"
+    assert "Self-locking:</strong>" in answer.text and kpi(answer.text, "efficiency") == "— (self-locking)"
     for name, eta in solution.self_locking.thresholds.items():
         assert f"{name}: self-locks for η0 &lt; {fmt(eta, 6)}" in answer.text
 
 
 # ---------------------------------------------------------------------- pictures, forms, downloads
+#: An example each picture applies to (the speed chart needs a transmission).
+PICTURE_OF = {kind: "simpson_c4_3speed" if kind == "chart" else "brandenberger_1952" for kind in FIGURES}
+
+
 @pytest.mark.parametrize("kind", list(FIGURES))
 def test_every_picture_is_inline_svg(client, examples, page_form, kind):
-    answer = client.post(f"/figure/{kind}", data=page_form(examples["brandenberger_1952"].text))
-    assert answer.status_code == 200
+    answer = client.post(f"/figure/{kind}", data=page_form(examples[PICTURE_OF[kind]].text))
+    assert answer.status_code == 200, answer.text[:300]
     assert "<svg" in answer.text and "<script" not in answer.text
     if kind == "animation":
         assert "<animateTransform" in answer.text
@@ -159,11 +164,11 @@ def test_every_picture_is_inline_svg(client, examples, page_form, kind):
 def test_animation_options(client, examples, page_form):
     """A set at its speeds, the same set in the Willis phases (tec-science), an unknown set is a message."""
     data = page_form(examples["simple_set_ring_held_sun_drives"].text)
-    plain = client.post("/figure/animation", data={**data, "option_animation": "P"})
-    willis = client.post("/figure/animation", data={**data, "option_animation": "P|willis"})
+    plain = client.post("/figure/animation", data={**data, "fig_animation_option": "P"})
+    willis = client.post("/figure/animation", data={**data, "fig_animation_option": "P|willis"})
     assert plain.status_code == willis.status_code == 200
     assert "carrier turns" not in plain.text and "carrier turns" in willis.text
-    unknown = client.post("/figure/animation", data={**data, "option_animation": "Q"})
+    unknown = client.post("/figure/animation", data={**data, "fig_animation_option": "Q"})
     assert unknown.status_code == 422 and "Q" in unknown.text
 
 

@@ -177,13 +177,22 @@ def test_the_animation_runs(browser, server):
     first = browser.execute_script(angle)
     wait(browser, lambda b: abs(b.execute_script(angle) - first) > 0.05, timeout=20)  # it turns
     assert browser.execute_script("return document.querySelector('#fig-animation svg').animationsPaused()") is False
+    size = browser.find_element(By.NAME, "fig_animation_size")  # the animation's width, as animate --size
+    size.clear()
+    size.send_keys("300", Keys.TAB)
+    wait(browser, lambda b: b.find_element(By.CSS_SELECTOR, "#fig-animation svg").get_attribute("width") == "300")
+    browser.find_element(By.CSS_SELECTOR, '#fig-animation [data-enlarge]').click()  # at full width
+    wait(browser, lambda b: b.find_element(By.ID, "zoom").get_attribute("open") is not None)
+    assert browser.find_element(By.CSS_SELECTOR, "#zoom svg").size["width"] > 1000
     shot(browser, "4-animation")
+    browser.find_element(By.CSS_SELECTOR, "#zoom button").click()
+    wait(browser, lambda b: b.find_element(By.ID, "zoom").get_attribute("open") is None)
 
 
 def test_download_reports(browser, server, downloads):
     open_example(browser, server, "brandenberger_1952")
     for kind in ("json", "html", "toml"):
-        browser.find_element(By.CSS_SELECTOR, f'button[data-download="{kind}"]').click()
+        browser.find_element(By.CSS_SELECTOR, f'button[data-download="/download/{kind}"]').click()
         target = downloads / f"brandenberger_1952.{kind}"
         wait(browser, lambda _: target.exists() and target.stat().st_size > 0)
         wait(browser, ec.text_to_be_present_in_element((By.ID, "download-status"), f"downloaded brandenberger_1952.{kind}"))
@@ -191,6 +200,16 @@ def test_download_reports(browser, server, downloads):
     assert report["schema"].startswith("epicyclic-report/") and abs(report["solution"]["efficiency"] - 0.85) < 0.005
     assert (downloads / "brandenberger_1952.html").read_text().startswith("<!DOCTYPE html>")
     assert (downloads / "brandenberger_1952.toml").read_text() == bundled_examples()["brandenberger_1952"].text
+    # a picture as PNG at the resolution asked for
+    browser.find_element(By.CSS_SELECTOR, "#fig-flow details.save summary").click()
+    Select(browser.find_element(By.NAME, "fig_flow_format")).select_by_value("png")
+    dpi = browser.find_element(By.NAME, "fig_flow_dpi")
+    dpi.clear()
+    dpi.send_keys("60")
+    browser.find_element(By.CSS_SELECTOR, '#fig-flow button[data-download="/save/flow"]').click()
+    target = downloads / "brandenberger_1952-flow.png"
+    wait(browser, lambda _: target.exists() and target.stat().st_size > 0)
+    assert target.read_bytes().startswith(b"\x89PNG")
 
 
 def test_an_error_is_shown_at_its_line(browser, server):

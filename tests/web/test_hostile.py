@@ -84,6 +84,19 @@ def test_script_in_names_is_escaped_in_pictures_and_reports(client, page_form):
     assert_inert(report.text)
 
 
+def test_dollar_signs_and_bidirectional_overrides_are_text(client, page_form):
+    """'$' is text in every picture (no TeX math, which would fail on '$\\frac{a}{$'), as in `epicyclic plot`;
+    a right-to-left override in a title is removed (it would reorder what the reader sees)."""
+    data = page_form(hostile(title="cost $\\frac{a}{$ \u202eevil", set_name="$P$", sun="$s"))
+    page = client.post("/apply/text", data=data)
+    assert page.status_code == 200 and "\u202e" not in page.text and "cost $\\frac{a}{$ evil" in page.text
+    for kind in FIGURES:
+        if kind != "chart":
+            picture = client.post(f"/figure/{kind}", data=data)
+            assert picture.status_code == 200, (kind, picture.text[:300])
+            assert "$P$" in picture.text
+
+
 @pytest.mark.parametrize("key_line", ['"<script>x</script>" = 1', 'planetary = "<img src=x onerror=alert(1)>"'])
 def test_script_in_error_messages_is_escaped(client, page_form, key_line):
     answer = client.post("/apply/text", data=page_form(key_line + "\n" + SIMPLE.replace('"TITLE"', '"t"')))
@@ -135,20 +148,29 @@ def test_bad_toml_points_at_its_line(client, page_form):
 
 
 def test_huge_bodies_are_refused_and_the_server_keeps_serving(client, page_form):
-    big = "# " + "x" * (600 * 1024)
-    declared = client.post("/apply/text", data=page_form(big))
-    assert declared.status_code == 413 and "larger than 512 KiB" in declared.text
+    huge = "# " + "x" * (5 * 1024 * 1024)
+    declared = client.post("/apply/text", data=page_form(huge))
+    assert declared.status_code == 413 and "larger than 4096 KiB" in declared.text
 
     def chunks():
-        for _ in range(700):
+        for _ in range(5000):
             yield b"toml=" + b"y" * 1024
 
     streamed = client.post("/apply/text", content=chunks(),
                            headers={"content-type": "application/x-www-form-urlencoded"})
     assert streamed.status_code == 413
-    upload = client.post("/upload", files={"file": ("big.toml", big.encode())})
+    upload = client.post("/upload", files={"file": ("big.toml", huge.encode())})
     assert upload.status_code == 413
     assert client.get("/healthz").text == "ok"
+
+
+def test_texts_larger_than_the_command_line_reads_get_its_message(client, page_form):
+    """The page reads at most what `epicyclic analyze` reads (epicyclic.limits.MAX_FILE_BYTES, 1 MiB)."""
+    big = "# " + "x" * (1024 * 1024 + 10)
+    for answer in (client.post("/apply/text", data=page_form(big, source="big.toml")),
+                   client.post("/upload", files={"file": ("big.toml", big.encode())})):
+        assert answer.status_code == 422 and "big.toml: the file is 1 MiB" in answer.text
+        assert "at most 1 MiB" in answer.text
 
 
 def test_malformed_forms_are_refused(client, page_form):

@@ -52,7 +52,7 @@ def serve(
     workers: Annotated[int, typer.Option(help="Worker processes that solve and draw.", min=1, max=64)] = 2,
     timeout: Annotated[float, typer.Option(help="Seconds a solve or picture may take.", min=0.1, max=3600)] = 10.0,
     max_body: Annotated[int, typer.Option(help="Largest request in KiB (a train description).", min=1,
-                                          max=65536)] = 512,
+                                          max=65536)] = 4096,
 ) -> None:
     """Open a page to work in: examples, an editor, the operating point, results, pictures, reports."""
     try:

@@ -36,7 +36,7 @@ from typing import Any
 from ..errors import ModelError
 from ..limits import MAX_NESTING, MAX_STRING_CHARS, MAX_TOML_VALUES, max_file_bytes
 
-__all__ = ["InputFileError", "read_source", "parse_toml"]
+__all__ = ["InputFileError", "read_source", "decode_source", "parse_toml"]
 
 
 class InputFileError(ModelError):
@@ -108,15 +108,33 @@ def read_source(path: str | Path, max_bytes: int | None = None) -> str:
         raise error(f"cannot read the file ({exc.strerror or exc}).") from None
     if len(data) > limit:  # a file that grew, or one whose size stat() does not know
         raise error(f"the file is larger than {_size(limit)}, the most that is read (see docs/limits.md).")
+    return decode_source(data, name)
+
+
+def decode_source(data: bytes, name: str, max_bytes: int | None = None) -> str:
+    """The bytes of an input file (read from disk, or uploaded to ``epicyclic serve``) as text.
+
+    Checks steps 2–3 of the module docstring: the size limit, no NUL bytes,
+    UTF-8 (a byte-order mark is skipped).
+
+    Raises
+    ------
+    InputFileError
+        Too large, a binary file, not UTF-8 text.
+    """
+    limit = max_file_bytes() if max_bytes is None else max_bytes
+    if len(data) > limit:
+        raise InputFileError(f"{name}: the file is {_size(len(data))}; at most {_size(limit)} are read (see "
+                             "docs/limits.md; raise the limit with EPICYCLIC_MAX_FILE_BYTES).", name)
     if b"\x00" in data:
-        raise error(f"cannot read the file: it contains NUL bytes (at byte {data.index(0)}), so it is a binary "
-                    "file, not TOML text.")
+        raise InputFileError(f"{name}: cannot read the file: it contains NUL bytes (at byte {data.index(0)}), so it "
+                             "is a binary file, not TOML text.", name)
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         line = data[: exc.start].count(b"\n") + 1
-        raise error(f"cannot read the file: not UTF-8 text (byte 0x{data[exc.start]:02x} at line {line}); "
-                    "save it as UTF-8.") from None
+        raise InputFileError(f"{name}: cannot read the file: not UTF-8 text (byte 0x{data[exc.start]:02x} at line "
+                             f"{line}); save it as UTF-8.", name) from None
 
 
 # The nesting scan: one pass over the characters that matter ([ ] { } quotes #),

@@ -38,10 +38,12 @@ from starlette.responses import HTMLResponse, PlainTextResponse, Response
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
-from . import views
+from ..limits import MAX_FILE_BYTES
 from .examples import DEFAULT_EXAMPLE, bundled_examples
 from .jobs import Jobs, failure
+from .render import Reply, render
 from .state import FormError, PageState, clean_text
+from .views import apply, download, figure, open_file, open_text, save_figure, tool
 
 __all__ = ["Limits", "create_app", "LOOPBACK_HOSTS"]
 
@@ -58,8 +60,9 @@ class Limits:
 
     Parameters
     ----------
-    max_body : int, default 512 KiB
-        Largest request body in bytes (a TOML text or an uploaded file).
+    max_body : int, default 4 MiB
+        Largest request body in bytes: a TOML text or an uploaded file as large as the command line reads
+        (:data:`epicyclic.limits.MAX_FILE_BYTES`, 1 MiB), sent URL-encoded (up to three bytes per byte).
     solve_timeout : float, default 10
         Seconds of work for a solve, a picture or a geometry form.
     report_timeout : float, default 60
@@ -72,7 +75,7 @@ class Limits:
         Host headers accepted (loopback names by default; ``("*",)`` for any).
     """
 
-    max_body: int = 512 * 1024
+    max_body: int = 4 * MAX_FILE_BYTES
     solve_timeout: float = 10.0
     report_timeout: float = 60.0
     workers: int = 2
@@ -144,7 +147,7 @@ class SecurityHeaders:
         await self.app(scope, receive, add_headers if scope["type"] == "http" else send)
 
 
-def _reply(reply: views.Reply) -> Response:
+def _reply(reply: Reply) -> Response:
     headers = {"Cache-Control": "no-store"}
     if reply.filename:
         headers["Content-Disposition"] = f'attachment; filename="{reply.filename}"'
@@ -183,7 +186,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
         from .. import __version__
 
         chosen = request.query_params.get("example", DEFAULT_EXAMPLE)
-        body = views.render("page.html", examples=[(e.key, e.title) for e in examples.values()],
+        body = render("page.html", examples=[(e.key, e.title) for e in examples.values()],
                             initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__)
         return HTMLResponse(body, headers={"Cache-Control": "no-store"})
 
@@ -197,7 +200,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
         if key not in examples:
             return _reply(failure(f"no bundled example {key!r}; choose one from the list.", 404))
         example = examples[key]
-        return await work(views.open_text, example.text, example.file_name, state.units, state.lang)
+        return await work(open_text, example.text, example.file_name, state.units, state.lang)
 
     async def upload(request: Request) -> Response:
         try:
@@ -206,16 +209,11 @@ def create_app(limits: Limits | None = None) -> Starlette:
             if file is None or isinstance(file, str):
                 raise FormError("upload: choose a .toml file.")
             data = await file.read()
-            name = clean_text(file.filename or "upload.toml", "file name", 200)
+            name = clean_text(file.filename or "upload.toml", "file name", 200) or "upload.toml"
             state = PageState("", units=form.get("units", "file"), lang=form.get("lang", "en"))
         except FormError as exc:
             return bad(exc)
-        try:
-            text = data.decode("utf-8-sig")
-        except UnicodeDecodeError as exc:
-            return _reply(failure(f"{name}: cannot read the file as UTF-8 text ({exc.reason} at byte {exc.start}); "
-                                  "save it as UTF-8.", 422))
-        return await work(views.open_text, text, name, state.units, state.lang)
+        return await work(open_file, data, name, state.units, state.lang)
 
     async def with_state(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Response:
         """Read the page's form and run ``function(state, *args)`` in a worker."""
@@ -225,27 +223,23 @@ def create_app(limits: Limits | None = None) -> Starlette:
             return bad(exc)
         return await work(function, state, *args, timeout=timeout)
 
-    async def apply(request: Request) -> Response:
+    async def change(request: Request) -> Response:
         origin = request.path_params["origin"]
         if origin not in ("text", "form"):
             return _reply(failure(f"no such action {origin!r}.", 404))
-        return await with_state(request, views.apply, origin)
+        return await with_state(request, apply, origin)
 
-    async def figure(request: Request) -> Response:
-        kind = request.path_params["kind"]
-        try:
-            form = await form_of(request)
-            state = PageState.from_form(form, max_text=limits.max_body)
-            option = clean_text(form.get(f"option_{kind}"), "option", 200)
-        except FormError as exc:
-            return bad(exc)
-        return await work(views.figure, state, kind, option)
+    async def picture(request: Request) -> Response:
+        return await with_state(request, figure, request.path_params["kind"])
 
-    async def tool(request: Request) -> Response:
-        return await with_state(request, views.tool, request.path_params["name"])
+    async def save_picture(request: Request) -> Response:
+        return await with_state(request, save_figure, request.path_params["kind"], timeout=limits.report_timeout)
 
-    async def download(request: Request) -> Response:
-        return await with_state(request, views.download, request.path_params["kind"], timeout=limits.report_timeout)
+    async def geometry(request: Request) -> Response:
+        return await with_state(request, tool, request.path_params["name"])
+
+    async def report(request: Request) -> Response:
+        return await with_state(request, download, request.path_params["kind"], timeout=limits.report_timeout)
 
     async def health(request: Request) -> Response:
         return PlainTextResponse("ok")
@@ -263,10 +257,11 @@ def create_app(limits: Limits | None = None) -> Starlette:
         Route("/healthz", health),
         Route("/example", open_example, methods=["POST"]),
         Route("/upload", upload, methods=["POST"]),
-        Route("/apply/{origin}", apply, methods=["POST"]),
-        Route("/figure/{kind}", figure, methods=["POST"]),
-        Route("/tool/{name}", tool, methods=["POST"]),
-        Route("/download/{kind}", download, methods=["POST"]),
+        Route("/apply/{origin}", change, methods=["POST"]),
+        Route("/figure/{kind}", picture, methods=["POST"]),
+        Route("/save/{kind}", save_picture, methods=["POST"]),
+        Route("/tool/{name}", geometry, methods=["POST"]),
+        Route("/download/{kind}", report, methods=["POST"]),
         Mount("/static", StaticFiles(packages=[("epicyclic.web", "static")]), name="static"),
     ]
     middleware = [

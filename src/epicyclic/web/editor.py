@@ -21,6 +21,9 @@ Examples
 2
 >>> locate(text, "f.toml: not valid TOML: Expected '=' (at line 3, column 6).")
 3
+>>> locate('[transmission]\\ninput = "in"\\n[transmission.schedule]\\n"1" = ["B"]\\n"2" = []\\n',
+...        "f.toml: [transmission], key 'schedule.2': gear '2' leaves the train free.")
+5
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ __all__ = ["Problem", "locate", "problem"]
 _TOML_POSITION = re.compile(r"\(at line (\d+), column (\d+)\)|: line (\d+)[,:]")
 _ARRAY = re.compile(r"\[\[(\w+)\]\] #(\d+)")
 _TABLE = re.compile(r"(?<!\[)\[([A-Za-z_][\w.]*)\](?!\]):?,?(?:\s+(?:key\s+)?'?([A-Za-z_][\w.]*))?")
-_KEY = re.compile(r"key '([A-Za-z_][\w.]*)")
+_KEY = re.compile(r"key '([A-Za-z_][\w.]*…?)")
 _HEADER = re.compile(r"""^\s*(\[\[|\[)\s*([A-Za-z0-9_\-."' ]+?)\s*\]\]?\s*(?:#.*)?$""")
 #: Names in messages that stand for a key of the file (tooth counts are the key 'teeth').
 _ALIASES = {"z_sun": "teeth", "z_planet": "teeth", "z_ring": "teeth", "z_planet_sun": "teeth",
@@ -69,7 +72,12 @@ def _section_end(lines: list[str], start: int) -> int:
 
 
 def _find_key(lines: list[str], start: int, end: int, key: str) -> int | None:
-    pattern = re.compile(rf"^\s*[\"']?{re.escape(key)}[\"']?\s*[.=]")
+    """The index of the line in ``lines[start:end]`` that sets ``key``.
+
+    A key the message shortened (``'kkkk…'``) matches by its beginning.
+    """
+    name = re.escape(key[:-1]) + r"[^\s=.\]]*" if key.endswith("…") else re.escape(key)
+    pattern = re.compile(rf"^\s*[\"']?{name}[\"']?\s*[.=]")
     for k in range(start, end):
         if pattern.match(lines[k]):
             return k
@@ -115,12 +123,21 @@ def locate(text: str, message: str, fallback: str | None = None) -> int | None:
     keys = _candidates(message, after)
     if start is None:
         first = headers[0][0] if headers else len(lines)
-        if "top level" in message:
-            line = next((found for key in keys if (found := _find_key(lines, 0, first, key)) is not None), None)
-            return None if line is None else line + 1
+        # a key without a table is a top-level key ("key 'title'"), or the message says "top level"
+        line = next((found for key in keys if (found := _find_key(lines, 0, first, key)) is not None), None)
+        if line is None:  # a top-level key that opens a table: "unknown key 'operating_points'" → [operating_points]
+            line = next((k for key in keys for k, h in headers if h.lstrip("[") == key), None)
+        if line is not None:
+            return line + 1
         if fallback:
             return next((k + 1 for k, h in headers if h == f"[{fallback}"), None)
         return None
+    if table:  # a dotted key may live in a sub-table: [transmission], key 'schedule.2' → [transmission.schedule] "2"
+        for key in keys:
+            head, _, rest = key.partition(".")
+            sub = next((k for k, h in headers if h == f"[{table.group(1)}.{head}"), None) if rest else None
+            if sub is not None and (found := _find_key(lines, sub + 1, _section_end(lines, sub), rest)) is not None:
+                return found + 1
     end = _section_end(lines, start)
     line = next((found for key in keys if (found := _find_key(lines, start + 1, end, key)) is not None), None)
     return (start if line is None else line) + 1

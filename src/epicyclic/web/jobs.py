@@ -20,7 +20,7 @@ from collections.abc import Callable
 from concurrent.futures import TimeoutError as FutureTimeout
 from typing import Any
 
-from .views import Reply, render
+from .render import Reply, render
 
 __all__ = ["Jobs", "failure"]
 
@@ -32,6 +32,7 @@ def _start_worker() -> None:
         import matplotlib
 
         matplotlib.use("Agg")
+        matplotlib.rcParams["text.parse_math"] = False  # a '$' in a title or name is text, as in `epicyclic plot`
         import matplotlib.pyplot as plt
 
         from ..plotting import figure_svg

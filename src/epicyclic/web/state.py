@@ -38,12 +38,13 @@ from __future__ import annotations
 
 import math
 import tomllib
-import unicodedata
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 from ..errors import EpicyclicError
+from ..limits import MAX_SHAFTS
+from ..text import terminal_text
 
 __all__ = ["FormError", "PageState", "ShaftRow", "UNIT_CHOICES", "LANGUAGES", "MOMENTS", "ROLES",
            "clean_text", "operating_rows", "default_operating_rows", "write_operating_point"]
@@ -56,8 +57,9 @@ LANGUAGES = ("en", "de")
 ROLES = ("", "drive", "load")
 #: What the second value of a row is.
 MOMENTS = ("torque", "power")
-#: At most this many shaft rows, characters per value and characters of a name.
-MAX_ROWS, MAX_VALUE, MAX_NAME = 200, 1000, 200
+#: At most this many shaft rows (a train's shafts, :data:`epicyclic.limits.MAX_SHAFTS`), characters per
+#: value (longer than any value the loader accepts, so that it gives its own message) and of a name.
+MAX_ROWS, MAX_VALUE, MAX_NAME = MAX_SHAFTS, 1000, 200
 
 
 class FormError(EpicyclicError, ValueError):
@@ -78,8 +80,8 @@ def clean_text(value: object, field_name: str, limit: int, *, single_line: bool 
         raise FormError(f"form field {field_name!r}: expected text, got a file or other data.")
     if len(value) > limit:
         raise FormError(f"form field {field_name!r}: {len(value)} characters, at most {limit} allowed.")
-    if single_line:
-        value = "".join(ch for ch in value if unicodedata.category(ch)[0] != "C").strip()
+    if single_line:  # one rule for control characters: the command line's (epicyclic.text)
+        value = terminal_text(value.replace("\t", " ").replace("\n", " ")).strip()
     return value
 
 
@@ -123,6 +125,9 @@ class PageState:
         The gear of a transmission ("" for none).
     units : {"file", "si"}
     lang : {"en", "de"}
+    extra : mapping of str to str
+        The fields of the geometry forms (``tool_<tool>_<field>``) and of the
+        pictures (``fig_<kind>_<setting>``).
     """
 
     text: str
@@ -160,7 +165,7 @@ class PageState:
             raise FormError("operating point form: every shaft row needs shaft, role, speed, moment and value.")
         rows = tuple(ShaftRow(*values) for values in zip(*columns.values()))
         extra = {k: clean_text(v, k, MAX_VALUE) for k, v in form.multi_items()
-                 if k.startswith("tool_")}
+                 if k.startswith(("tool_", "fig_"))}
         return cls(
             text=clean_text(form.get("toml", ""), "toml", max_text, single_line=False),
             source=one("source", "editor", MAX_NAME),
@@ -207,9 +212,10 @@ def operating_rows(data: Mapping[str, Any], shafts: Sequence[str]) -> tuple[Shaf
 
 
 def default_operating_rows(shafts: Sequence[str], input: str, output: str) -> tuple[ShaftRow, ...]:
-    """A proposed operating point for a transmission: input driven at 1000 1/min with 100 N·m."""
+    """The operating point of a transmission without one: unit input (1 of the file's speed and torque unit
+    at the input, the output loaded), as :func:`epicyclic.plotting.figure_subject` solves it."""
     return tuple(
-        ShaftRow(s, "drive", "1000 1/min", "torque", "100 N*m") if s == input
+        ShaftRow(s, "drive", "1", "torque", "1") if s == input
         else ShaftRow(s, "load") if s == output else ShaftRow(s)
         for s in shafts
     )

@@ -1,16 +1,19 @@
 """The page's answers, computed in a worker process: read the text, solve, render HTML.
 
 Every function takes plain data (a :class:`~epicyclic.web.state.PageState` or
-strings) and returns a :class:`Reply` (status, body, media type), so that it
-can run in a separate process with a time limit (:mod:`epicyclic.web.jobs`).
-The work itself is the library's: :func:`epicyclic.io.loads_train_file`,
-:meth:`TrainFile.solve`, :mod:`epicyclic.io` reports and tables,
-:func:`epicyclic.explain.explain`, :mod:`epicyclic.transmission`,
-:mod:`epicyclic.plotting` and :mod:`epicyclic.geometry`; this module only
-arranges their results in templates (Jinja2, every value escaped).
+strings) and returns a :class:`~epicyclic.web.render.Reply` (status, body,
+media type), so that it can run in a separate process with a time limit
+(:mod:`epicyclic.web.jobs`).  The work itself is the library's:
+:func:`epicyclic.io.loads_train_file`, :func:`epicyclic.plotting.figure_subject`
+(the state the page shows, as ``epicyclic plot`` draws it), :mod:`epicyclic.io`
+reports and tables, :func:`epicyclic.explain.explain`,
+:mod:`epicyclic.transmission`, :mod:`epicyclic.plotting` and
+:mod:`epicyclic.geometry`; this module only arranges their results in
+templates (:mod:`epicyclic.web.render`).
 
 Bad input gives status 422 and the loader's or solver's message (the same
-text the command line prints), with the line of the text it points at.
+text the command line prints, naming the file and the key), with the line of
+the text it points at.
 """
 
 from __future__ import annotations
@@ -20,52 +23,20 @@ import re
 import sys
 import tomllib
 import traceback
-from dataclasses import dataclass, replace
-from functools import lru_cache
-from typing import Any
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any
 
 from ..errors import EpicyclicError
 from ..io import TrainFile, loads_train_file
 from ..units import Units
 from .editor import Problem, problem
+from .render import Reply, Verbatim, render
 from .state import PageState, default_operating_rows, operating_rows, write_operating_point
 
-__all__ = ["Reply", "open_text", "apply", "figure", "tool", "download", "render"]
+if TYPE_CHECKING:  # pragma: no cover
+    from ..plotting import Subject
 
-HTML = "text/html; charset=utf-8"
-
-
-@dataclass(frozen=True)
-class Reply:
-    """An answer for the browser: body, HTTP status, media type and, for downloads, a file name."""
-
-    body: str | bytes
-    status: int = 200
-    media_type: str = HTML
-    filename: str | None = None
-
-
-@lru_cache(maxsize=1)
-def environment() -> Any:
-    """The Jinja2 environment of the page's templates (autoescaping on)."""
-    import jinja2
-
-    env = jinja2.Environment(loader=jinja2.PackageLoader("epicyclic.web", "templates"),
-                             autoescape=True, undefined=jinja2.StrictUndefined, trim_blocks=True,
-                             lstrip_blocks=True)
-    env.globals["fmt"] = _fmt
-    return env
-
-
-def render(template: str, **context: Any) -> str:
-    """Render a template of ``epicyclic/web/templates``."""
-    return environment().get_template(template).render(**context)
-
-
-def _fmt(value: float | None, digits: int = 4) -> str:
-    from ..io.tables import fmt
-
-    return fmt(value, digits)
+__all__ = ["open_text", "open_file", "apply", "figure", "save_figure", "tool", "download"]
 
 
 # ---------------------------------------------------------------------- reading
@@ -78,32 +49,13 @@ class _Bad(Exception):
 
 
 def _load(text: str, source: str) -> TrainFile:
+    """The train file of the editor's text, read as the command line reads a file (its size limit too)."""
+    from ..io.source import decode_source
+
     try:
-        return loads_train_file(text, source=source)
+        return loads_train_file(decode_source(text.encode("utf-8", "replace"), source), source=source)
     except EpicyclicError as exc:
         raise _Bad(problem(text, str(exc)), text) from None
-    except RecursionError:  # the TOML parser recurses once per level of nested arrays or inline tables
-        raise _Bad(Problem(f"{source}: the text nests arrays or tables too deeply to be read; a train description "
-                           "needs at most a few levels."), text) from None
-
-
-def _proposed(text: str, source: str) -> tuple[str, list[str]]:
-    """``text`` with a proposed operating point if it describes a transmission without one."""
-    try:
-        data = tomllib.loads(text)
-    except (tomllib.TOMLDecodeError, RecursionError):
-        return text, []
-    spec = data.get("transmission")
-    if "operating_point" in data or not isinstance(spec, dict):
-        return text, []
-    train_file = _load(text, source)
-    if train_file.transmission is None:
-        return text, []
-    t = train_file.transmission
-    rows = default_operating_rows(train_file.train.moving_shafts, t.input, t.output)
-    notice = (f"The file has no [operating_point]; the page proposes one: input {t.input!r} driven at "
-              f"1000 1/min with 100 N·m, output {t.output!r} loaded, gear {t.gears[0]!r}. Change it in the form.")
-    return write_operating_point(text, rows, t.gears[0]), [notice]
 
 
 def _rewritten(state: PageState) -> str:
@@ -119,58 +71,110 @@ def _units(train_file: TrainFile, state: PageState) -> Units:
     return train_file.units if state.units == "file" else Units()
 
 
-# ---------------------------------------------------------------------- the results section
-def _transmission(train_file: TrainFile):
+def _subject(train_file: TrainFile, state: PageState) -> Subject:
+    """The solved state the page shows, as ``epicyclic plot`` draws it: the file's operating point, or a
+    transmission without one at unit input in its first gear; in the units the page shows.
+
+    Raises
+    ------
+    EpicyclicError
+        Located at the file's ``[operating_point]`` or ``[transmission]``; a result that is not a finite
+        number is a :class:`~epicyclic.errors.NonFiniteResultError` naming it.
+    """
+    from ..io.json_report import report_data
+    from ..io.located import check_finite, locate_error
+    from ..plotting import figure_subject
+
+    try:
+        subject = figure_subject(train_file)
+    except EpicyclicError as exc:
+        raise locate_error(exc, state.source, train_file.operating_point, f"[{_table(train_file)}]") from None
+    check_finite(report_data(subject.solution, train_file.units), state.source)
+    return replace(subject, context=replace(subject.context, units=_units(train_file, state)))
+
+
+def _shown(train_file: TrainFile, state: PageState) -> Subject:
+    """:func:`_subject` with its errors as :class:`_Bad` at their line (for pictures, forms and downloads)."""
+    try:
+        return _subject(train_file, state)
+    except EpicyclicError as exc:
+        raise _Bad(problem(state.text, str(exc), fallback=_table(train_file)), state.text) from None
+
+
+def _table(train_file: TrainFile) -> str:
+    """The table a solver error is about: ``[transmission]`` for a transmission without operating point."""
+    gearbox = train_file.operating_point is None and train_file.transmission is not None
+    return "transmission" if gearbox else "operating_point"
+
+
+def _transmission(train_file: TrainFile) -> Any:
     from ..transmission import Transmission
 
     spec = train_file.transmission
-    return Transmission(train_file.train, dict(spec.schedule), spec.input, spec.output, name=train_file.title)
+    return Transmission(train_file.train, dict(spec.schedule), spec.input, spec.output,
+                        name=train_file.title or train_file.train.name)
 
 
-def _gears(train_file: TrainFile) -> dict[str, Any] | None:
-    """The gear table of a transmission, or its error message."""
-    if train_file.transmission is None:
-        return None
-    try:
-        analysis = _transmission(train_file).analyze_all()
-    except EpicyclicError as exc:
-        return {"error": str(exc), "rows": [], "current": None}
-    # the transmission's own table (its header and formatted rows), one row per gear in schedule order
-    rows = [(g.gear, cells) for g, cells in zip(analysis.gears, analysis._rows())]
-    current = next((g for g in analysis.gears if g.gear == train_file.gear), None)
-    return {"error": None, "header": analysis.HEADER, "rows": rows, "footer": analysis._footer(),
-            "current": current, "current_name": train_file.gear}
+def _unit_input(train_file: TrainFile, gear: str) -> str:
+    """What the page says about a transmission without operating point."""
+    spec, units = train_file.transmission, train_file.units
+    return (f"The file has no [operating_point]: the page shows gear {gear} at unit input, as `epicyclic plot` "
+            f"draws it: {spec.input!r} driven at 1 {units.speed} with 1 {units.torque}, {spec.output!r} loaded. "
+            "Ratios, efficiencies and multiples of the input do not depend on it; give an operating point in the "
+            "form to see real speeds, torques and powers.")
 
 
-def _results(train_file: TrainFile, state: PageState, notices: list[str]) -> dict[str, Any]:
+# ---------------------------------------------------------------------- the results section
+def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
     from ..explain import explain
     from ..io.tables import report_tables, summary_lines
     from .figures import applicable
+    from .summary import circulation_view, gear_table, key_figures, other_warnings, power_state
     from .tools import TOOLS, Context, field_choices
 
     units = _units(train_file, state)
-    solution = None
-    solve_problem = None
-    if train_file.operating_point is not None:
+    subject = solve_problem = None
+    notices: list[str] = []
+    if train_file.operating_point is not None or train_file.transmission is not None:
         try:
-            solution = train_file.solve()
+            subject = _subject(train_file, state)
         except EpicyclicError as exc:
-            solve_problem = problem(state.text, str(exc), fallback="operating_point")
-    context = Context(train_file, solution)
+            solve_problem = problem(state.text, str(exc), fallback=_table(train_file))
+    solution = subject.solution if subject is not None else None
+    if subject is not None and train_file.operating_point is None:
+        notices.append(_unit_input(train_file, subject.gear))
+    transmission = subject.transmission if subject is not None else None
+    gear = subject.gear if subject is not None else train_file.gear
     result: dict[str, Any] = {
         "title": train_file.title, "description": train_file.description, "units": units,
         "notices": notices, "solution": solution, "solve_problem": solve_problem,
-        "gears": _gears(train_file), "tools": list(TOOLS.values()), "tool_context": context,
+        "gears": None, "tools": list(TOOLS.values()), "tool_context": Context(train_file, solution),
         "field_choices": field_choices, "figures": [], "lang": state.lang, "explanation": None,
     }
-    if solution is not None:
+    if train_file.transmission is not None:
+        gears = gear_table(transmission or (lambda: _transmission(train_file)), gear, state.source)
+        gears["problem"] = problem(state.text, gears["error"]) if gears["error"] else None
+        same = solve_problem is not None and gears["error"] == solve_problem.message  # said once, above
+        result["gears"] = None if same else gears
+    result["problem"] = solve_problem or (result["gears"] or {}).get("problem")  # marked in the editor
+    if subject is not None:
         shafts, elements = report_tables(solution, units)
+        lines = summary_lines(solution, units)
         result.update(
-            shafts=shafts, elements=elements, summary=summary_lines(solution, units),
-            figures=[(k, k.options(solution)) for k in applicable(solution)],
+            shafts=shafts, elements=elements, summary=lines,
+            key_figures=key_figures(solution, units, lines),
+            power_state=power_state(solution, units),
+            circulation=circulation_view(solution, units),
+            warnings=other_warnings(solution),
+            figures=[(k, k.options(subject)) for k in applicable(subject)],
             explanation=explain(solution, units, lang=state.lang, title=train_file.title).html(),
         )
     return result
+
+
+def _status(results: dict[str, Any]) -> int:
+    """422 when the state cannot be shown or a gear of the table fails, else 200."""
+    return 422 if results["problem"] is not None else 200
 
 
 # ---------------------------------------------------------------------- answers
@@ -193,27 +197,38 @@ def _guard(action):
     return wrapper
 
 
+def _form(train_file: TrainFile, text: str) -> dict[str, Any]:
+    """The operating-point form of a text: its ``[operating_point]``, or unit input for a transmission without."""
+    spec = train_file.transmission
+    shafts = train_file.train.moving_shafts
+    if train_file.operating_point is None and spec is not None:
+        rows = default_operating_rows(shafts, spec.input, spec.output)
+        gear = spec.gears[0]
+    else:
+        rows, gear = operating_rows(tomllib.loads(text), shafts), train_file.gear or ""
+    return {"rows": rows, "gear_names": spec.gears if spec else (), "gear": gear, "file_units": train_file.units}
+
+
+@_guard
+def open_file(data: bytes, source: str, units: str = "file", lang: str = "en") -> Reply:
+    """:func:`open_text` of an uploaded file, read as the command line reads one (size, NUL bytes, UTF-8)."""
+    from ..io.source import decode_source
+
+    return open_text(decode_source(data, source), source, units, lang)
+
+
 @_guard
 def open_text(text: str, source: str, units: str = "file", lang: str = "en") -> Reply:
     """The whole workspace (editor, operating-point form, results) for a newly opened text."""
     state = PageState(text, source, units=units, lang=lang)
-    notices: list[str] = []
     try:
-        text, notices = _proposed(text, source)
-        state = replace(state, text=text)
         train_file = _load(text, source)
     except _Bad as bad:
-        return Reply(render("workspace.html", text=text, source=source, rows=(), gear_names=(), gear="",
+        return Reply(render("workspace.html", text=Verbatim(text), source=source, rows=(), gear_names=(), gear="",
                             file_units=Units(), problem=bad.problem, results=None), 422)
-    return Reply(render("workspace.html", text=text, source=source, problem=None,
-                        results=_results(train_file, state, notices), **_form(train_file, text)))
-
-
-def _form(train_file: TrainFile, text: str) -> dict[str, Any]:
-    data = tomllib.loads(text)
-    spec = train_file.transmission
-    return {"rows": operating_rows(data, train_file.train.moving_shafts),
-            "gear_names": spec.gears if spec else (), "gear": train_file.gear or "", "file_units": train_file.units}
+    results = _results(train_file, state)
+    return Reply(render("workspace.html", text=Verbatim(text), source=source, problem=None, results=results,
+                        **_form(train_file, text)), _status(results))
 
 
 @_guard
@@ -224,35 +239,68 @@ def apply(state: PageState, origin: str) -> Reply:
     after a form change also the rewritten text (out-of-band swaps).
     """
     original = state.text
-    if origin == "form":
-        text, notices = _rewritten(state), []
-    else:
-        text, notices = _proposed(state.text, state.source)
+    text = _rewritten(state) if origin == "form" else state.text
     state = replace(state, text=text)
     swap_text = text != original
     try:
         train_file = _load(text, state.source)
     except _Bad as bad:
-        return Reply(render("apply.html", problem=bad.problem, results=None, text=text, swap_text=swap_text,
-                            swap_form=False), 422)
-    results = _results(train_file, state, notices)
-    status = 422 if results["solve_problem"] is not None else 200
-    return Reply(render("apply.html", problem=None, results=results, text=text, swap_text=swap_text,
-                        swap_form=origin == "text", **_form(train_file, text)), status)
+        return Reply(render("apply.html", problem=bad.problem, results=None, text=Verbatim(text),
+                            swap_text=swap_text, swap_form=False), 422)
+    results = _results(train_file, state)
+    return Reply(render("apply.html", problem=None, results=results, text=Verbatim(text), swap_text=swap_text,
+                        swap_form=origin == "text", **_form(train_file, text)), _status(results))
+
+
+def _picture(state: PageState, name: str):
+    """(kind, Picture) of picture ``name`` of the state the page shows."""
+    from .figures import FIGURES, Picture, read_settings
+
+    kind = FIGURES[name]
+    settings = read_settings(kind, state.extra)
+    return kind, Picture(_shown(_load(state.text, state.source), state), settings)
+
+
+def _drawn(state: PageState, draw: Any, *args: Any) -> Any:
+    """``draw(*args)`` with the library's errors (a chart without transmission, an unknown set) naming the file."""
+    from ..io.located import located
+
+    try:
+        return draw(*args)
+    except EpicyclicError as exc:
+        raise located(exc, state.source) from None
+
+
+def _no_such_picture(name: str) -> Reply:
+    from .figures import FIGURES
+
+    message = f"no picture {name!r}; pictures are {', '.join(FIGURES)}."
+    return Reply(render("problem.html", problem=Problem(message), text=None, oob=False), 404)
 
 
 @_guard
-def figure(state: PageState, kind: str, option: str | None = None) -> Reply:
-    """One picture (inline SVG in a figure element) of the solved text."""
-    from .figures import FIGURES, Picture, draw
+def figure(state: PageState, name: str) -> Reply:
+    """One picture (inline SVG in a figure element) of the state the page shows."""
+    from .figures import FIGURES, inline_svg
 
-    if kind not in FIGURES:
-        return Reply(render("problem.html", problem=Problem(f"no picture {kind!r}; pictures are "
-                                                            f"{', '.join(FIGURES)}."), text=None, oob=False), 404)
-    train_file = _load(state.text, state.source)
-    solution = train_file.solve()
-    svg = draw(kind, Picture(solution, train_file, option or None))
-    return Reply(render("figure.html", kind=FIGURES[kind], svg=svg))
+    if name not in FIGURES:
+        return _no_such_picture(name)
+    kind, picture = _picture(state, name)
+    return Reply(render("figure.html", kind=kind, svg=_drawn(state, inline_svg, kind, picture)))
+
+
+@_guard
+def save_figure(state: PageState, name: str) -> Reply:
+    """One picture as a file (SVG, PNG or PDF; the animation as HTML, SVG or GIF)."""
+    from .figures import FIGURES, MEDIA_TYPES, save
+
+    if name not in FIGURES:
+        return _no_such_picture(name)
+    kind, picture = _picture(state, name)
+    suffix = picture.settings.format
+    title = picture.subject.context.title
+    return Reply(_drawn(state, save, kind, picture), media_type=MEDIA_TYPES[suffix],
+                 filename=_file_name(title, state.source, f"-{name}.{suffix}"))
 
 
 @_guard
@@ -262,24 +310,38 @@ def tool(state: PageState, name: str) -> Reply:
 
     train_file = _load(state.text, state.source)
     solution = None
-    if train_file.operating_point is not None:
-        solution = train_file.solve()
+    if train_file.operating_point is not None or train_file.transmission is not None:
+        solution = _shown(train_file, state).solution
     body = run_tool(name, state.extra, Context(train_file, solution))
     return Reply(render("tool_result.html", body=body))
 
 
-_DOWNLOADS = {"json": "application/json", "html": "text/html; charset=utf-8", "toml": "application/toml"}
+_DOWNLOADS = {"json": "application/json", "html": "text/html; charset=utf-8", "toml": "application/toml",
+              "gears": "text/html; charset=utf-8"}
 
 
-def _file_name(train_file_title: str, source: str, suffix: str) -> str:
-    base = source[:-5] if source.endswith(".toml") else train_file_title
+def _file_name(title: str, source: str, suffix: str) -> str:
+    base = source[:-5] if source.endswith(".toml") else title
     slug = re.sub(r"[^A-Za-z0-9_-]+", "_", base).strip("_")[:60] or "epicyclic"
     return f"{slug}{suffix}"
 
 
+def _gears_report(train_file: TrainFile, state: PageState) -> str:
+    from ..io.gears_report import gears_html
+    from .summary import gear_table
+
+    if train_file.transmission is None:
+        raise EpicyclicError(f"{state.source}: the gears report needs a [transmission] table with a schedule.")
+    table = gear_table(lambda: _transmission(train_file), None, state.source)
+    if table["error"]:
+        raise _Bad(problem(state.text, table["error"]), state.text)
+    return gears_html(table["transmission"], table["analysis"], _units(train_file, state),
+                      title=train_file.title or None, source=state.source)
+
+
 @_guard
 def download(state: PageState, kind: str) -> Reply:
-    """The TOML text, the JSON report or the HTML report as a file."""
+    """The TOML text, the JSON report, the HTML report or the gears report as a file."""
     from ..io.html_report import html_report
     from ..io.json_report import json_report
 
@@ -294,12 +356,15 @@ def download(state: PageState, kind: str) -> Reply:
         return Reply(state.text, media_type=_DOWNLOADS[kind],
                      filename=_file_name(str(title), state.source, ".toml"))
     train_file = _load(state.text, state.source)
-    solution = train_file.solve()
-    units = _units(train_file, state)
+    name = _file_name(train_file.title, state.source, ".gears.html" if kind == "gears" else f".{kind}")
+    if kind == "gears":
+        return Reply(_gears_report(train_file, state), media_type=_DOWNLOADS[kind], filename=name)
+    subject = _shown(train_file, state)
+    units = subject.context.units
     if kind == "json":
-        body = json_report(solution, units, title=train_file.title, source=state.source)
+        body = json_report(subject.solution, units, title=train_file.title, source=state.source)
     else:
-        body = html_report(solution, units, title=train_file.title, source=state.source,
-                           description=train_file.description, lang=state.lang)
-    return Reply(body, media_type=_DOWNLOADS[kind], filename=_file_name(train_file.title, state.source, f".{kind}"))
-
+        description = " ".join(filter(None, (train_file.description, *subject.context.notes)))
+        body = html_report(subject.solution, units, title=train_file.title, source=state.source,
+                           description=description, lang=state.lang)
+    return Reply(body, media_type=_DOWNLOADS[kind], filename=name)

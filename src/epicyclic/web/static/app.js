@@ -1,5 +1,5 @@
 // epicyclic serve: the little the page does in the browser (everything else is htmx and the server).
-// Line numbers beside the editor and the error mark, Ctrl+Enter, clicking a gear, downloads.
+// Line numbers beside the editor and the error mark, Ctrl+Enter, clicking a gear, downloads, enlarged pictures.
 "use strict";
 
 (function () {
@@ -56,7 +56,9 @@
       chooseGear(event.target.getAttribute("data-gear"));
     }
   });
-  document.addEventListener("submit", function (event) { event.preventDefault(); });
+  document.addEventListener("submit", function (event) {
+    if (event.target.method !== "dialog") { event.preventDefault(); }  // a dialog's form only closes it
+  });
 
   // ---- clicks: a gear row solves in that gear; "line N" jumps there; downloads
   function chooseGear(gear) {
@@ -72,21 +74,24 @@
     return match ? match[1] : fallback;
   }
 
-  function download(kind) {
+  // a download is a POST of the page's form to `path` (/download/json, /save/speed, ...); the answer is
+  // saved under the server's file name, or, when the input is bad, its message is shown above the results
+  function download(path) {
     var status = document.getElementById("download-status");
-    status.textContent = "preparing " + kind + "…";
-    fetch("/download/" + kind, { method: "POST", body: new FormData(document.getElementById("ws")) })
+    var what = path.split("/").pop();
+    status.textContent = "preparing " + what + "…";
+    fetch(path, { method: "POST", body: new FormData(document.getElementById("ws")) })
       .then(function (response) {
         if (!response.ok) {
           return response.text().then(function (html) {
             htmx.swap("#results", html, { swapStyle: "afterbegin" });
-            status.textContent = kind + ": not possible, see the message";
+            status.textContent = what + ": not possible, see the message";
           });
         }
         return response.blob().then(function (blob) {
           var link = document.createElement("a");
           link.href = URL.createObjectURL(blob);
-          link.download = fileName(response, "epicyclic." + kind);
+          link.download = fileName(response, "epicyclic-" + what);
           document.body.appendChild(link);
           link.click();
           link.remove();
@@ -94,7 +99,16 @@
           status.textContent = "downloaded " + link.download;
         });
       })
-      .catch(function (error) { status.textContent = kind + ": " + error; });
+      .catch(function (error) { status.textContent = what + ": " + error; });
+  }
+
+  // ---- a picture at the full width of the window (a copy of its SVG in a dialog)
+  function enlarge(figureId) {
+    var dialog = document.getElementById("zoom"), svg = document.querySelector("#" + figureId + " .fig-body svg");
+    if (!dialog || !svg) { return; }
+    var body = dialog.querySelector(".zoom-body");
+    body.replaceChildren(svg.cloneNode(true));
+    dialog.showModal();
   }
 
   document.addEventListener("click", function (event) {
@@ -104,6 +118,9 @@
     var link = target.closest ? target.closest("a.goto") : null;
     if (link) { event.preventDefault(); goToLine(parseInt(link.getAttribute("data-line"), 10)); return; }
     var button = target.closest ? target.closest("[data-download]") : null;
-    if (button) { download(button.getAttribute("data-download")); }
+    if (button) { download(button.getAttribute("data-download")); return; }
+    var zoom = target.closest ? target.closest("[data-enlarge]") : null;
+    if (zoom) { enlarge(zoom.getAttribute("data-enlarge")); return; }
+    if (target.id === "zoom") { target.close(); }  // a click beside the picture closes it
   });
 })();

@@ -1,0 +1,88 @@
+"""The bad-input corpus of the command line through the page: the same clear message, and the server keeps serving.
+
+Every row of ``tests/cli/test_bad_input_corpus.py`` whose input is a file's
+text (read by ``analyze``, ``explain``, ``gears`` or ``explore`` without
+options) is sent as the editor's text (or uploaded, for raw bytes).  The page
+must answer 422 within the corpus's time limit with one message that names
+the file and contains the row's fragment, mark the line in the editor where
+the message names a key or a line, execute nothing, and go on serving.
+Options of other commands have no counterpart in the page, except those of
+the pictures (tests/web/test_pictures.py).
+"""
+
+from __future__ import annotations
+
+import html
+import re
+import time
+
+import pytest
+
+from ..cli.test_bad_input_corpus import CORPUS, TIME_LIMIT_S, Bad
+
+#: Rows the page answers differently, on purpose.
+DIFFERENT = {
+    # the page opens a train without operating point and asks for one in its form (no error)
+    "no operating point": "the form asks for an operating point",
+    "no operating point (explain)": "the form asks for an operating point",
+    # a train without [transmission] is shown without a gear table
+    "gears without a transmission": "no gear table",
+    "explore without a transmission": "no gear table",
+}
+
+
+def _page_rows() -> list[Bad]:
+    return [case for case in CORPUS
+            if isinstance(case.file, (str, bytes)) and case.args == ("{file}",) and not case.env
+            and case.command in ("analyze", "explain", "gears", "explore") and case.id not in DIFFERENT]
+
+
+ROWS = _page_rows()
+
+
+def test_the_page_takes_most_of_the_corpus():
+    assert len(ROWS) >= 120
+
+
+def _message(answer_text: str) -> str:
+    found = re.findall(r'<p class="message"><strong>error:</strong> (.*?)</p>', answer_text, re.S)
+    assert len(found) == 1, answer_text[:600]
+    return html.unescape(found[0])
+
+
+def _marked(answer_text: str) -> str:
+    match = re.search(r'id="editor-status" class="editor-status" data-line="(\d*)"', answer_text)
+    return match.group(1) if match else ""
+
+
+@pytest.mark.parametrize("case", ROWS, ids=[case.id for case in ROWS])
+def test_bad_input_through_the_page(client, page_form, case: Bad):
+    start = time.monotonic()
+    if isinstance(case.file, bytes):
+        answer = client.post("/upload", files={"file": ("bad.toml", case.file)})
+    else:
+        answer = client.post("/apply/text", data=page_form(case.file, source="bad.toml"))
+    elapsed = time.monotonic() - start
+    assert answer.status_code == 422, (case.id, answer.status_code, answer.text[:400])
+    message = _message(answer.text)
+    assert message.startswith("bad.toml: ") and case.says in message, (case.id, message)
+    assert "Traceback" not in answer.text and "\x1b" not in answer.text
+    if isinstance(case.file, str) and re.search(r"key '|\(at line \d|: line \d", message):
+        assert _marked(answer.text), (case.id, message)  # the editor marks the line the message names
+    assert elapsed < TIME_LIMIT_S, (case.id, elapsed)
+
+
+@pytest.mark.parametrize("case_id", sorted(DIFFERENT))
+def test_rows_the_page_answers_differently_are_still_clear(client, page_form, case_id):
+    case = next(c for c in CORPUS if c.id == case_id)
+    answer = client.post("/apply/text", data=page_form(case.file, source="bad.toml"))
+    assert answer.status_code == 200
+    if "operating point" in DIFFERENT[case_id]:
+        assert "The file has no operating point" in answer.text
+    else:
+        assert 'id="gears"' not in answer.text
+
+
+def test_the_server_keeps_serving_after_the_corpus(client):
+    assert client.get("/healthz").text == "ok"
+    assert client.post("/example", data={"example": "brandenberger_1952"}).status_code == 200
