@@ -151,6 +151,10 @@ class Layout:
     neighbours: np.ndarray  # (parts, most): the parts sharing a moving shaft with each (itself included),
     #                         padded with the index ``parts`` (no part)
     efficiencies: np.ndarray
+    part_ports: tuple[tuple[int, ...], ...]  # per part: its ports (indices into port_columns)
+    reacting_groups: tuple[tuple[int, ...], ...]  # per reacting row: its ports (indices into port_columns)
+    lever_numbers: np.ndarray  # (levers,): 0 … levers − 1, to pick a lever's entry of a table by w + 1
+    efficiency_factors: np.ndarray  # (levers, w + 1): η0^w = (1/η0, 1, η0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -381,6 +385,10 @@ class TrainMatrices:
         reacting = [rows[s] for s in self.train.shafts
                     if (s in self.external or s == HOUSING) and np.any(port_rows == rows[s])]
         groups = [np.flatnonzero(port_rows == r) for r in reacting]
+        parts_of_ports = np.array([part_index[name] for name, _, _ in ports], dtype=int)
+        efficiencies = np.array([lv.efficiency for lv in self.levers], dtype=float)
+        with np.errstate(all="ignore"):
+            inverse = 1.0 / efficiencies  # inf where 1/η0 overflows: never used, the solve would have said so
 
         def factors(lever: Lever) -> list[tuple[float, float]]:
             out = []
@@ -417,7 +425,11 @@ class TrainMatrices:
             reacting_ports=np.concatenate(groups).astype(int) if groups else np.zeros(0, dtype=int),
             reacting_starts=np.cumsum([0] + [len(g) for g in groups[:-1]]).astype(int),
             neighbours=neighbours,
-            efficiencies=np.array([lv.efficiency for lv in self.levers], dtype=float),
+            efficiencies=efficiencies,
+            part_ports=tuple(tuple(int(j) for j in np.flatnonzero(parts_of_ports == k)) for k in range(len(parts))),
+            reacting_groups=tuple(tuple(int(j) for j in g) for g in groups),
+            lever_numbers=np.arange(len(self.levers)),
+            efficiency_factors=np.stack([inverse, np.ones_like(efficiencies), efficiencies], axis=-1),
         )
 
     def external_column(self, shaft: str) -> int:

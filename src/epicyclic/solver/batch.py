@@ -20,7 +20,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import NonFiniteResultError, OperatingPointError
+from ..errors import EpicyclicError, NonFiniteResultError, OperatingPointError
 from ..model.elements import HOUSING
 from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
@@ -160,23 +160,78 @@ def solve_batch(
         connected=tuple(connected),
     )
     _validate(train, template)
-    mats = matrices(train, template.external_shafts)
-    points = int(np.prod(shape)) if shape else 1
+    problem = _Problem(train, matrices(train, template.external_shafts), speed_in, torque_in, power_in,
+                       tuple(drives), tuple(loads), efficiencies, loss_torques,
+                       int(np.prod(shape)) if shape else 1)
+    if problem.points <= BLOCK:
+        return _assembled(problem, [_solve_points(problem, slice(None))], shape)
+    try:
+        blocks = [_solve_points(problem, slice(k, k + BLOCK)) for k in range(0, problem.points, BLOCK)]
+    except EpicyclicError:
+        # the error as the whole batch in one block reports it (the first bad point, checks in the same order)
+        _solve_points(_Problem(*problem.inputs), slice(None))
+        raise
+    return _assembled(problem, blocks, shape)
+
+
+#: Operating points solved together: a block's arrays stay in the processor's cache instead of
+#: streaming every intermediate array of all points through memory (see docs/performance.md).
+#: Every result is computed point by point, so the blocks give the same numbers as one block.
+BLOCK = 16384
+
+
+class _Problem:
+    """What every block of points shares: the train's equations, the given arrays, the given losses."""
+
+    def __init__(self, train, mats, speed_in, torque_in, power_in, drives, loads, efficiencies, loss_torques,
+                 points):
+        self.inputs = (train, mats, speed_in, torque_in, power_in, drives, loads, efficiencies, loss_torques,
+                       points)
+        self.train, self.mats, self.points = train, mats, points
+        self.speed_in, self.torque_in, self.power_in = speed_in, torque_in, power_in
+        self.drives, self.loads = drives, loads
+        self.efficiencies, self.loss_torques = efficiencies, loss_torques
+        self.given_speed = [s for s in speed_in if s != HOUSING]
+        self.given = list(dict.fromkeys([*power_in, *torque_in]))
+        self.shaft_row = {s: k for k, s in enumerate(train.shafts)}
+        self._losses = None
+
+    def losses(self):
+        """(given losses, their train's equations, lever rows of the loss torques); for all points, once."""
+        if self._losses is None:
+            mats = self.mats
+            extra = given_losses(mats, self.efficiencies, self.loss_torques, self.points)
+            rows = None
+            if extra is not None:  # reference η0 per lever: the median over the points; the rest is a correction
+                mats = matrices(with_efficiencies(self.train, {lv.element.name: float(np.median(extra.efficiency[k]))
+                                                               for k, lv in enumerate(mats.levers)}), mats.external)
+                rows = extra.rows(mats) if extra.has_torques else None
+            self._losses = (extra, mats, rows)
+        return self._losses
+
+
+def _solve_points(problem: _Problem, points: slice) -> dict:
+    """Every result of the points ``points`` (a slice of all points): arrays with the points last."""
+    train, shaft_row, given = problem.train, problem.shaft_row, problem.given
+    drives, loads = problem.drives, problem.loads
+    mats = problem.mats
+    speed_in = {k: v[points] for k, v in problem.speed_in.items()}
+    torque_in = {k: v[points] for k, v in problem.torque_in.items()}
+    power_in = {k: v[points] for k, v in problem.power_in.items()}
+    count = len(range(*points.indices(problem.points)))
 
     # kinematics: one product for all points (held shafts exactly 0, givens exactly)
-    given_speed = [s for s in speed_in if s != HOUSING]
-    g = np.array([speed_in[s] for s in given_speed]).reshape(len(given_speed), points)
+    given_speed = problem.given_speed
+    g = np.array([speed_in[s] for s in given_speed]).reshape(len(given_speed), count)
     kin = speed_solver(mats, given_speed)
     with np.errstate(all="ignore"):
-        moving = kin.speeds(g) if given_speed else np.zeros((len(mats.speed_index), points))
+        moving = kin.speeds(g) if given_speed else np.zeros((len(mats.speed_index), count))
     check_speeds(mats, moving)
     kin.check(g, moving)
-    n = np.vstack([moving, np.zeros((1, points))])  # housing last
-    shaft_row = {s: k for k, s in enumerate(train.shafts)}
+    n = np.vstack([moving, np.zeros((1, count))])  # housing last
 
     # given external torques (powers → torques; roles set signs)
-    given = list(dict.fromkeys([*power_in, *torque_in]))
-    tau = np.empty((len(given), points))
+    tau = np.empty((len(given), count))
     for r, shaft in enumerate(given):
         omega = n[shaft_row[shaft]] * RPM_TO_RAD_S
         if shaft in power_in:
@@ -216,29 +271,23 @@ def solve_batch(
     first_pattern = pattern.copy()
     x = np.array(x_ideal)
     first_x = x
-    consistent = np.zeros(points, dtype=bool)
-    pending = np.arange(points)
+    consistent = np.zeros(count, dtype=bool)
+    pending = np.arange(count)
     solved: set[tuple[int, ...]] = set()
-    extra = given_losses(mats, efficiencies, loss_torques, points)
+    extra, mats, all_rows = problem.losses()
     rows = effs = dragged = None
-    if extra is not None:  # reference η0 per lever: the median over the points; the rest is a correction
-        mats = matrices(with_efficiencies(train, {lv.element.name: float(np.median(extra.efficiency[k]))
-                                                  for k, lv in enumerate(mats.levers)}), template.external_shafts)
-        effs, dragged = extra.efficiency, (extra.torques if extra.has_torques else None)
-        rows = extra.rows(mats) if dragged is not None else None
+    if extra is not None:
+        effs = extra.efficiency[:, points]
+        dragged = extra.torques[:, points] if all_rows is not None else None
+        rows = None if all_rows is None else all_rows[:, points]
     lossy = any(lever.efficiency != 1.0 for lever in mats.levers) or (
-        extra is not None and (dragged is not None or bool(np.any(effs != 1.0))))
+        extra is not None and (dragged is not None or bool(np.any(extra.efficiency != 1.0))))
     ev = ideal_eval  # lossless: the ideal evaluation is the result
     retried = False
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
-        # one integer code per pattern (base 3) is much faster to group than rows
-        codes = ((pattern[:, pending] + 1) * (3 ** np.arange(pattern.shape[0]))[:, None]).sum(axis=0)
-        unique_codes, first_index, inverse = np.unique(codes, return_index=True, return_inverse=True)
-        for k in range(unique_codes.size):
-            row = pattern[:, pending[first_index[k]]]
-            members = pending[inverse.ravel() == k]
+        for row, members in _groups(pattern, pending):
             solver = torque_solver(mats, given, row)
             solved.add(tuple(int(w) for w in row))
             with np.errstate(all="ignore"):
@@ -263,42 +312,40 @@ def solve_batch(
             pattern[:, pending] = np.where(observed[:, ~ok] == 0, column[:, ~ok], observed[:, ~ok])
     if not lossy:
         consistent[:] = True
-        solved.add(tuple(int(w) for w in first_pattern[:, 0]) if points else ())
+        solved.add(tuple(int(w) for w in first_pattern[:, 0]) if count else ())
     elif retried or not consistent.all():
         # points with no consistent pattern keep the formal solution of the ideal pattern
         x[:, ~consistent] = first_x[:, ~consistent]
         pattern[:, ~consistent] = first_pattern[:, ~consistent]
         ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
 
-    # assemble results
-    port_torques = {(e, p): ev.x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
+    # the results of these points
     lever_index = {lever.element.name: k for k, lever in enumerate(mats.levers)}
     losses, sources = {}, {}
     for e in train.elements:
         k = lever_index.get(e.name)
-        rolling = ev.loss[k] if k is not None else np.zeros(points)
-        parts = ({"mesh": rolling} if extra is None else extra.split(k, rolling)) if k is not None else {}
+        rolling = ev.loss[k] if k is not None else np.zeros(count)
+        parts = ({"mesh": rolling} if extra is None else extra.split(k, rolling, points)) if k is not None else {}
         if extra is not None and e.name in extra.element_torques:
-            parts[DRAG] = extra.drag_loss(e.name, ev.speeds)
+            parts[DRAG] = extra.drag_loss(e.name, ev.speeds, points)
         losses[e.name] = rolling + parts.get(DRAG, 0.0)
         sources[e.name] = parts
-    drive_power = np.zeros(points)
-    load_power = np.zeros(points)
+    drive_power = np.zeros(count)
+    load_power = np.zeros(count)
     for s in mats.external:
         power = ev.powers[shaft_row[s]]
         if s in drives:
-            is_drive, is_load = np.ones(points, dtype=bool), np.zeros(points, dtype=bool)
+            drive_power += power
         elif s in loads:
-            is_drive, is_load = np.zeros(points, dtype=bool), np.ones(points, dtype=bool)
+            load_power -= power
         else:  # role from the ideal solution's sign
             ideal_power = ideal_eval.powers[shaft_row[s]]
-            is_drive, is_load = ideal_power > 0, ideal_power < 0
-        drive_power += np.where(is_drive, power, 0.0)
-        load_power -= np.where(is_load, power, 0.0)
+            drive_power += np.where(ideal_power > 0, power, 0.0)
+            load_power -= np.where(ideal_power < 0, power, 0.0)
     drive_power, load_power = drive_power + 0.0, load_power + 0.0
     scale = np.maximum(drive_power, load_power)
     flowing = (drive_power != 0) | (load_power != 0)
-    loss = sum(losses.values(), np.zeros(points)) + 0.0
+    loss = sum(losses.values(), np.zeros(count)) + 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
         wrong = _wrong_way(ev.powers, mats, drives, loads, ideal_eval, shaft_row, scale)
         at_limit = load_power <= SELF_LOCKING_MARGIN * drive_power
@@ -306,25 +353,61 @@ def solve_batch(
         efficiency = np.where((drive_power > 0) & ~self_locking, load_power / drive_power, np.nan)
     exact = (loss == 0) & (np.abs(efficiency - 1.0) <= 1e-9)
     efficiency = np.where(exact, 1.0, np.minimum(efficiency, 1.0))
+    return {
+        "speeds": ev.speeds, "torques": ev.torques, "powers": ev.powers,
+        "x": ev.x, "losses": losses, "sources": sources,
+        "input_power": drive_power, "output_power": load_power, "loss": loss, "efficiency": efficiency,
+        "self_locking": self_locking, "solved": solved,
+    }
+
+
+def _groups(pattern: np.ndarray, pending: np.ndarray):
+    """(pattern, its points) for every distinct loss-direction pattern among the ``pending`` points."""
+    column = pattern[:, pending]
+    if not column.size or (column == column[:, :1]).all():
+        yield column[:, 0], pending
+        return
+    # one integer code per pattern (base 3) is much faster to group than rows
+    codes = ((column + 1) * (3 ** np.arange(pattern.shape[0]))[:, None]).sum(axis=0)
+    unique_codes, first_index, inverse = np.unique(codes, return_index=True, return_inverse=True)
+    for k in range(unique_codes.size):
+        yield column[:, first_index[k]], pending[inverse.ravel() == k]
+
+
+def _assembled(problem: _Problem, blocks: list[dict], shape: tuple[int, ...]) -> BatchSolution:
+    """The BatchSolution of all points from the results of their blocks (in order)."""
+    train, mats = problem.train, problem.mats
+
+    def joined(get) -> np.ndarray:
+        """One result of all points: an array per quantity (not rows of a larger one), like a user's own."""
+        parts = [get(block) for block in blocks]
+        return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
     def shaped(a: np.ndarray) -> np.ndarray:
         return a.reshape(shape)
 
+    def rows(key: str, row: int) -> np.ndarray:
+        return shaped(joined(lambda b: b[key][row]))
+
+    row = problem.shaft_row
+    ports = {(e, p): c for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
+    first = blocks[0]
     return BatchSolution(
         train=train,
-        speeds=MappingProxyType({s: shaped(ev.speeds[shaft_row[s]]) for s in train.shafts}),
-        torques=MappingProxyType({s: shaped(ev.torques[shaft_row[s]]) for s in train.shafts}),
-        powers=MappingProxyType({s: shaped(ev.powers[shaft_row[s]]) for s in train.shafts}),
-        port_torques=MappingProxyType({k: shaped(v) for k, v in port_torques.items()}),
-        losses=MappingProxyType({k: shaped(v) for k, v in losses.items()}),
-        input_power=shaped(drive_power),
-        output_power=shaped(load_power),
-        loss=shaped(loss),
-        efficiency=shaped(efficiency),
-        self_locking=shaped(self_locking),
-        patterns=len(solved),
-        loss_sources=MappingProxyType({e: MappingProxyType({k: shaped(v) for k, v in parts.items()})
-                                       for e, parts in sources.items()}),
+        speeds=MappingProxyType({s: rows("speeds", row[s]) for s in train.shafts}),
+        torques=MappingProxyType({s: rows("torques", row[s]) for s in train.shafts}),
+        powers=MappingProxyType({s: rows("powers", row[s]) for s in train.shafts}),
+        port_torques=MappingProxyType({k: rows("x", c) for k, c in ports.items()}),
+        losses=MappingProxyType({e: shaped(joined(lambda b, e=e: b["losses"][e])) for e in first["losses"]}),
+        input_power=shaped(joined(lambda b: b["input_power"])),
+        output_power=shaped(joined(lambda b: b["output_power"])),
+        loss=shaped(joined(lambda b: b["loss"])),
+        efficiency=shaped(joined(lambda b: b["efficiency"])),
+        self_locking=shaped(joined(lambda b: b["self_locking"])),
+        patterns=len(set().union(*(b["solved"] for b in blocks))),
+        loss_sources=MappingProxyType({e: MappingProxyType({k: shaped(joined(lambda b, e=e, k=k: b["sources"][e][k]))
+                                                           for k in parts})
+                                       for e, parts in first["sources"].items()}),
     )
 
 

@@ -42,6 +42,8 @@ __all__ = ["Evaluation", "evaluate", "check_finite"]
 
 #: The smallest normal float: below it a result has lost its precision (underflow).
 _TINY = np.finfo(float).tiny
+#: The largest finite float.
+_HUGE = np.finfo(float).max
 
 
 @dataclass(frozen=True, eq=False)
@@ -115,18 +117,20 @@ def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np
 def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
               given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
               shaft_torques: np.ndarray | None = None) -> Evaluation:
+    # Reductions over the few rows of a part or a shaft are written row by row (_rows): numpy's
+    # reductions along axis 0 of a (rows, points) array are many times slower than whole-row operations.
     lay = mats.layout
     points = speeds.shape[1:]
     x = np.array(x, dtype=float)
 
     used = np.zeros((len(mats.levers),) + points, dtype=int) if pattern is None else np.asarray(pattern, dtype=int)
+    levers = lay.lever_numbers[(...,) + (None,) * len(points)]
 
     # every element's torques exactly in its own ratios: T_b = −k_b·T_a, T_c = −k_c·T_a, link T_2 = −T_1
     if len(mats.levers):
         if efficiencies is None:
-            f = lay.lever_factors[(...,) + (None,) * len(points)]  # (levers, w + 1, 2, 1…)
-            k_b = np.where(used > 0, f[:, 2, 0], np.where(used < 0, f[:, 0, 0], f[:, 1, 0]))
-            k_c = np.where(used > 0, f[:, 2, 1], np.where(used < 0, f[:, 0, 1], f[:, 1, 1]))
+            k_b = lay.lever_factors[levers, used + 1, 0]
+            k_c = lay.lever_factors[levers, used + 1, 1]
         else:  # η0 per point (given losses): k_b = i0·η0^w, k_c = 1 − k_b
             i0 = np.array([lv.ratio for lv in mats.levers]).reshape((-1,) + (1,) * len(points))
             k_b = np.where(used > 0, i0 * efficiencies, np.where(used < 0, i0 / efficiencies, i0))
@@ -139,10 +143,11 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     # idle elements: torques that are round-off of the torques of the elements they share a shaft with
     port = x[lay.port_columns]
     size = np.abs(port)
-    own = np.maximum.reduceat(size, lay.part_starts, axis=0) if lay.parts else np.zeros((0,) + points)
     padded = np.zeros((lay.parts + 1,) + points)  # the last row: no neighbour
-    padded[:-1] = own
-    scale = np.max(padded[lay.neighbours], axis=1) if lay.parts else own
+    own = padded[:-1]
+    _rows(np.maximum, size, lay.part_ports, own)
+    own = own.copy()
+    scale = _neighbours(padded, lay.neighbours) if lay.parts else own.copy()
     for shaft, value in given.items():  # a given torque at one of its shafts
         for k in lay.parts_at[lay.rows[shaft]]:
             scale[k] = np.maximum(scale[k], np.abs(value))
@@ -155,21 +160,23 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     # elements that only a now-idle element joined to the rest is round-off of the same scale)
     for _ in range(lay.parts if idle.any() else 0):
         padded[:-1] = np.where(idle, scale, 0.0)
-        reach = np.max(padded[lay.neighbours], axis=1)
+        reach = _neighbours(padded, lay.neighbours)
         grown = np.where(idle | (own <= ZERO_TOLERANCE * reach), np.maximum(scale, reach), scale)
         more = own <= ZERO_TOLERANCE * grown
         if (more == idle).all() and (grown == scale).all():
             break
         scale, idle = grown, idle | more
-    port = np.where(idle[lay.port_parts], 0.0, clean_array(port, own[lay.port_parts])) + 0.0
+    # a port torque that is round-off of its element's largest is 0 (the zero rule of clean_array)
+    with np.errstate(invalid="ignore", over="ignore"):
+        zero = idle[lay.port_parts] | ((size <= ZERO_TOLERANCE * own[lay.port_parts]) & np.isfinite(port))
+    port = np.where(zero, 0.0, port) + 0.0
     x[lay.port_columns] = port
 
     # external torques: given exactly, else the balance of the port torques on the shaft
     torques = np.zeros((len(lay.rows),) + points)
     if len(lay.reacting_rows):
-        ordered = port[lay.reacting_ports]
-        total = np.add.reduceat(ordered, lay.reacting_starts, axis=0)
-        terms = np.maximum.reduceat(np.abs(ordered), lay.reacting_starts, axis=0)
+        total = _rows(np.add, port, lay.reacting_groups)
+        terms = _rows(np.maximum, np.abs(port), lay.reacting_groups)
         if shaft_torques is not None:  # M_s = Σ T_port − T_loss
             total = total - shaft_torques[lay.reacting_rows]
             terms = np.maximum(terms, np.abs(shaft_torques[lay.reacting_rows]))
@@ -189,16 +196,46 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     t_a = x[lay.lever_a_columns]
     rolling = t_a * relative * RPM_TO_RAD_S + 0.0
     coupling = t_a * c * RPM_TO_RAD_S + 0.0
-    eta = lay.efficiencies[(slice(None),) + (None,) * len(points)] if efficiencies is None else efficiencies
-    factor = np.where(used > 0, eta, np.where(used < 0, 1.0 / eta, 1.0))  # η0^w (1/η0 only where solved with it)
+    if efficiencies is None:
+        factor = lay.efficiency_factors[levers, used + 1]  # η0^w (1/η0 only where solved with it)
+    else:
+        factor = np.where(used > 0, efficiencies, np.where(used < 0, 1.0 / efficiencies, 1.0))
     loss = rolling * (1.0 - factor) + 0.0
-    if any(((np.abs(a) < _TINY) & (a != 0)).any() for a in (powers, rolling, coupling, loss)):
+    if any(_subnormal(a) for a in (powers, rolling, coupling, loss)):
         # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
         # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
         powers, rolling, coupling, loss = (_flush(a) for a in (powers, rolling, coupling, loss))
     observed = np.sign(rolling).astype(int)
     direction = observed if pattern is None else np.where(observed == 0, 0, used)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction)
+
+
+def _rows(ufunc, array: np.ndarray, groups, out: np.ndarray | None = None) -> np.ndarray:
+    """``ufunc`` reduced over each group of rows of ``array``, in order (one output row per group)."""
+    if out is None:
+        out = np.empty((len(groups),) + array.shape[1:])
+    for k, rows in enumerate(groups):
+        if len(rows) == 1:
+            out[k] = array[rows[0]]
+            continue
+        ufunc(array[rows[0]], array[rows[1]], out=out[k])
+        for r in rows[2:]:
+            ufunc(out[k], array[r], out=out[k])
+    return out
+
+
+def _neighbours(padded: np.ndarray, neighbours: np.ndarray) -> np.ndarray:
+    """Per part: the largest value of ``padded`` among its neighbours (its own row included)."""
+    out = padded[neighbours[:, 0]]
+    for j in range(1, neighbours.shape[1]):
+        np.maximum(out, padded[neighbours[:, j]], out=out)
+    return out
+
+
+def _subnormal(values: np.ndarray) -> bool:
+    """Whether some value is below the smallest normal float but not 0 (a NaN is not)."""
+    size = np.abs(values)
+    return bool(np.count_nonzero(size < _TINY) != np.count_nonzero(size == 0))
 
 
 def _flush(values: np.ndarray) -> np.ndarray:
@@ -213,11 +250,18 @@ def _flush(values: np.ndarray) -> np.ndarray:
     return np.where((size < _TINY) & (size <= ZERO_TOLERANCE * scale), 0.0, values) + 0.0
 
 
+def _normal(values: np.ndarray) -> bool:
+    """Whether every value is finite and either 0 or at least the smallest normal float."""
+    size = np.abs(values)
+    return bool(size.max(initial=0.0) <= _HUGE) and np.count_nonzero(size < _TINY) == np.count_nonzero(size == 0)
+
+
 def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
     """Raise :class:`~epicyclic.errors.NonFiniteResultError` naming the first quantity that over- or underflows."""
-    arrays = (ev.speeds, ev.x[mats.layout.port_columns], ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)
-    if all(np.isfinite(a).all() and not ((np.abs(a) < _TINY) & (a != 0)).any() for a in arrays):
+    # the external columns of x are copies of the torques: checking all of x decides as its ports would
+    if all(_normal(a) for a in (ev.speeds, ev.x, ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)):
         return
+    arrays = (ev.speeds, ev.x[mats.layout.port_columns], ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)
     shafts = [f"shaft {s!r}" for s in mats.train.shafts]
     ports = [f"{element!r} at shaft {shaft!r}" for element, shaft, _ in mats.port_shaft_columns]
     levers = [repr(lever.element.name) for lever in mats.levers]

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from functools import cached_property
 from types import MappingProxyType
 
 import numpy as np
@@ -81,16 +82,29 @@ class GivenLosses:
             out[first + k] = -self.torques[mats.layout.rows[shaft]]
         return out
 
-    def drag_loss(self, name: str, speeds: np.ndarray) -> np.ndarray:
-        """Power lost by the given torques of element ``name``, W: −Σ T ω (≥ 0 for opposing torques)."""
+    def drag_loss(self, name: str, speeds: np.ndarray, points: slice = slice(None)) -> np.ndarray:
+        """Power lost by the given torques of element ``name``, W: −Σ T ω (≥ 0 for opposing torques).
+
+        ``speeds`` are those of the points ``points`` (a slice of all points).
+        """
         torques = self.element_torques.get(name)
         if torques is None:
             return np.zeros(speeds.shape[1:])
-        return -(torques * speeds).sum(axis=0) * RPM_TO_RAD_S + 0.0
+        return -(torques[:, points] * speeds).sum(axis=0) * RPM_TO_RAD_S + 0.0
 
-    def split(self, k: int, rolling_loss: np.ndarray) -> dict[str, np.ndarray]:
-        """The rolling loss of lever ``k`` by source (log shares of its factors)."""
-        logs = {s: np.log(f[k]) for s, f in self.factors.items() if np.any(f[k] != 1.0)}
+    @cached_property
+    def _sources(self) -> tuple[tuple[str, ...], ...]:
+        """Per lever: the sources with a factor other than 1 at some point."""
+        return tuple(tuple(s for s, f in self.factors.items() if np.any(f[k] != 1.0))
+                     for k in range(self.efficiency.shape[0]))
+
+    def split(self, k: int, rolling_loss: np.ndarray, points: slice = slice(None)) -> dict[str, np.ndarray]:
+        """The rolling loss of lever ``k`` by source (log shares of its factors).
+
+        ``rolling_loss`` is that of the points ``points`` (a slice of all points); every slice
+        reports the same sources.
+        """
+        logs = {s: np.log(self.factors[s][k, points]) for s in self._sources[k]}
         if not logs:
             return {OWN: rolling_loss}
         total = sum(logs.values())
