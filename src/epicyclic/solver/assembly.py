@@ -153,8 +153,7 @@ class Layout:
     efficiencies: np.ndarray
     part_ports: tuple[tuple[int, ...], ...]  # per part: its ports (indices into port_columns)
     reacting_groups: tuple[tuple[int, ...], ...]  # per reacting row: its ports (indices into port_columns)
-    lever_numbers: np.ndarray  # (levers,): 0 … levers − 1, to pick a lever's entry of a table by w + 1
-    efficiency_factors: np.ndarray  # (levers, w + 1): η0^w = (1/η0, 1, η0)
+    lever_tables: np.ndarray  # (3, levers · 3): k_b = i0·η0^w, k_c = 1 − k_b and η0^w, at 3·lever + w + 1
 
 
 @dataclass(frozen=True, eq=False)
@@ -402,6 +401,7 @@ class TrainMatrices:
         def columns(names, port) -> np.ndarray:
             return np.array([idx[("port", part.element.name, part.ports[port])] for part in names], dtype=int)
 
+        lever_factors = np.array([factors(lv) for lv in self.levers], dtype=float).reshape(len(self.levers), 3, 2)
         return Layout(
             rows=rows,
             parts=len(part_names),
@@ -415,7 +415,7 @@ class TrainMatrices:
             lever_a_columns=columns(self.levers, 0),
             lever_b_columns=columns(self.levers, 1),
             lever_c_columns=columns(self.levers, 2),
-            lever_factors=np.array([factors(lv) for lv in self.levers], dtype=float).reshape(len(self.levers), 3, 2),
+            lever_factors=lever_factors,
             link_first_columns=columns(self.links, 0),
             link_second_columns=columns(self.links, 1),
             part_starts=np.cumsum([0] + [len(part.ports) for part in parts[:-1]]).astype(int),
@@ -428,8 +428,8 @@ class TrainMatrices:
             efficiencies=efficiencies,
             part_ports=tuple(tuple(int(j) for j in np.flatnonzero(parts_of_ports == k)) for k in range(len(parts))),
             reacting_groups=tuple(tuple(int(j) for j in g) for g in groups),
-            lever_numbers=np.arange(len(self.levers)),
-            efficiency_factors=np.stack([inverse, np.ones_like(efficiencies), efficiencies], axis=-1),
+            lever_tables=np.stack([lever_factors[:, :, 0].ravel(), lever_factors[:, :, 1].ravel(),
+                                   np.stack([inverse, np.ones_like(efficiencies), efficiencies], axis=-1).ravel()]),
         )
 
     def external_column(self, shaft: str) -> int:

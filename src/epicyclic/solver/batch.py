@@ -26,7 +26,7 @@ from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
 from .assembly import matrices
-from .evaluate import evaluate
+from .evaluate import evaluate, relative_speeds
 from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
 from .self_locking import SELF_LOCKING_MARGIN
@@ -164,14 +164,23 @@ def solve_batch(
                        tuple(drives), tuple(loads), efficiencies, loss_torques,
                        int(np.prod(shape)) if shape else 1)
     if problem.points <= BLOCK:
-        return _assembled(problem, [_solve_points(problem, slice(None))], shape)
+        results, solved = _solve_points(problem, slice(None))
+        return _assembled(problem, results, solved, shape)
+    results, solved = {}, set()
     try:
-        blocks = [_solve_points(problem, slice(k, k + BLOCK)) for k in range(0, problem.points, BLOCK)]
+        for start in range(0, problem.points, BLOCK):
+            block = slice(start, start + BLOCK)
+            values, patterns = _solve_points(problem, block)
+            for key, value in values.items():  # each block's results go to their place while in cache
+                if key not in results:
+                    results[key] = np.empty(problem.points, dtype=value.dtype)
+                results[key][block] = value
+            solved |= patterns
     except EpicyclicError:
         # the error as the whole batch in one block reports it (the first bad point, checks in the same order)
         _solve_points(_Problem(*problem.inputs), slice(None))
         raise
-    return _assembled(problem, blocks, shape)
+    return _assembled(problem, results, solved, shape)
 
 
 #: Operating points solved together: a block's arrays stay in the processor's cache instead of
@@ -263,7 +272,8 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     with np.errstate(all="ignore"):
         x_ideal = ideal.operator @ tau
     ideal.check(tau, x_ideal)
-    ideal_eval = evaluate(mats, n, x_ideal, None, given_map)
+    relative = relative_speeds(mats, n)
+    ideal_eval = evaluate(mats, n, x_ideal, None, given_map, relative=relative)
 
     # loss directions: group points by pattern, one solve per pattern; then all points are evaluated
     # at once, and only the (rare) points whose re-read pattern differs are tried again
@@ -287,17 +297,20 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
-        for row, members in _groups(pattern, pending):
+        for row, members, mask in _groups(pattern, pending, attempt == 0):
             solver = torque_solver(mats, given, row)
             solved.add(tuple(int(w) for w in row))
             with np.errstate(all="ignore"):
+                if mask is not None and effs is None and rows is None:  # all points: no gathering
+                    np.copyto(x, solver.torques(tau), where=mask)
+                    continue
                 x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
                                            None if rows is None else rows[:, members],
                                            None if effs is None else effs[:, members])
-        column = pattern[:, pending]
+        column = pattern if attempt == 0 else pattern[:, pending]
         if attempt == 0:  # every point (pending is all of them): this evaluation is kept where consistent
             first_x = x.copy()
-            ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
+            ev = evaluate(mats, n, x, pattern, given_map, effs, dragged, relative)
             observed = ev.pattern
         else:
             retried = True
@@ -353,61 +366,61 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         efficiency = np.where((drive_power > 0) & ~self_locking, load_power / drive_power, np.nan)
     exact = (loss == 0) & (np.abs(efficiency - 1.0) <= 1e-9)
     efficiency = np.where(exact, 1.0, np.minimum(efficiency, 1.0))
-    return {
-        "speeds": ev.speeds, "torques": ev.torques, "powers": ev.powers,
-        "x": ev.x, "losses": losses, "sources": sources,
-        "input_power": drive_power, "output_power": load_power, "loss": loss, "efficiency": efficiency,
-        "self_locking": self_locking, "solved": solved,
-    }
+    results = {("speeds", s): ev.speeds[k] for s, k in shaft_row.items()}
+    results |= {("torques", s): ev.torques[k] for s, k in shaft_row.items()}
+    results |= {("powers", s): ev.powers[k] for s, k in shaft_row.items()}
+    results |= {("port_torques", (e, p)): ev.x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
+    results |= {("losses", e): value for e, value in losses.items()}
+    results |= {("sources", e, k): value for e, parts in sources.items() for k, value in parts.items()}
+    results |= {"input_power": drive_power, "output_power": load_power, "loss": loss, "efficiency": efficiency,
+                "self_locking": self_locking}
+    return results, solved
 
 
-def _groups(pattern: np.ndarray, pending: np.ndarray):
-    """(pattern, its points) for every distinct loss-direction pattern among the ``pending`` points."""
-    column = pattern[:, pending]
-    if not column.size or (column == column[:, :1]).all():
-        yield column[:, 0], pending
+def _groups(pattern: np.ndarray, pending: np.ndarray, everything: bool = False):
+    """(pattern, its points, their mask or None) for every distinct loss-direction pattern among the
+    ``pending`` points, in the order of their codes (w + 1 as base-3 digits, lever 0 first).
+
+    ``everything``: pending is every point, in order; then the mask (over all points) comes too.
+    """
+    column = pattern if everything else pattern[:, pending]
+    levers = column.shape[0]
+    if not column.size or levers == 0:
+        yield column[:, 0], pending, (True if everything else None)
         return
-    # one integer code per pattern (base 3) is much faster to group than rows
-    codes = ((column + 1) * (3 ** np.arange(pattern.shape[0]))[:, None]).sum(axis=0)
-    unique_codes, first_index, inverse = np.unique(codes, return_index=True, return_inverse=True)
-    for k in range(unique_codes.size):
-        yield column[:, first_index[k]], pending[inverse.ravel() == k]
+    codes = column[0] + 1  # one integer code per pattern is much faster to group than rows
+    for k in range(1, levers):
+        codes += (column[k] + 1) * 3 ** k
+    if levers > 12:  # too many codes to count
+        unique_codes, first_index, inverse = np.unique(codes, return_index=True, return_inverse=True)
+        for k in range(unique_codes.size):
+            yield column[:, first_index[k]], pending[inverse.ravel() == k], None
+        return
+    present = np.flatnonzero(np.bincount(codes, minlength=3 ** levers))
+    if present.size == 1:
+        yield column[:, 0], pending, (True if everything else None)
+        return
+    for code in present:
+        members = codes == code
+        yield column[:, int(np.argmax(members))], pending[members], (members if everything else None)
 
 
-def _assembled(problem: _Problem, blocks: list[dict], shape: tuple[int, ...]) -> BatchSolution:
-    """The BatchSolution of all points from the results of their blocks (in order)."""
-    train, mats = problem.train, problem.mats
-
-    def joined(get) -> np.ndarray:
-        """One result of all points: an array per quantity (not rows of a larger one), like a user's own."""
-        parts = [get(block) for block in blocks]
-        return parts[0] if len(parts) == 1 else np.concatenate(parts)
-
-    def shaped(a: np.ndarray) -> np.ndarray:
-        return a.reshape(shape)
-
-    def rows(key: str, row: int) -> np.ndarray:
-        return shaped(joined(lambda b: b[key][row]))
-
-    row = problem.shaft_row
-    ports = {(e, p): c for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
-    first = blocks[0]
+def _assembled(problem: _Problem, results: dict, solved: set, shape: tuple[int, ...]) -> BatchSolution:
+    """The BatchSolution of the results of all points (keyed as :func:`_solve_points` returns them)."""
+    group: dict[str, dict] = {"speeds": {}, "torques": {}, "powers": {}, "port_torques": {}, "losses": {},
+                              "sources": {e.name: {} for e in problem.train.elements}}
+    for key, value in results.items():
+        if isinstance(key, tuple) and key[0] == "sources":
+            group["sources"].setdefault(key[1], {})[key[2]] = value.reshape(shape)
+        elif isinstance(key, tuple):
+            group[key[0]][key[1]] = value.reshape(shape)
     return BatchSolution(
-        train=train,
-        speeds=MappingProxyType({s: rows("speeds", row[s]) for s in train.shafts}),
-        torques=MappingProxyType({s: rows("torques", row[s]) for s in train.shafts}),
-        powers=MappingProxyType({s: rows("powers", row[s]) for s in train.shafts}),
-        port_torques=MappingProxyType({k: rows("x", c) for k, c in ports.items()}),
-        losses=MappingProxyType({e: shaped(joined(lambda b, e=e: b["losses"][e])) for e in first["losses"]}),
-        input_power=shaped(joined(lambda b: b["input_power"])),
-        output_power=shaped(joined(lambda b: b["output_power"])),
-        loss=shaped(joined(lambda b: b["loss"])),
-        efficiency=shaped(joined(lambda b: b["efficiency"])),
-        self_locking=shaped(joined(lambda b: b["self_locking"])),
-        patterns=len(set().union(*(b["solved"] for b in blocks))),
-        loss_sources=MappingProxyType({e: MappingProxyType({k: shaped(joined(lambda b, e=e, k=k: b["sources"][e][k]))
-                                                           for k in parts})
-                                       for e, parts in first["sources"].items()}),
+        train=problem.train,
+        **{name: MappingProxyType(values) for name, values in group.items() if name != "sources"},
+        **{name: results[name].reshape(shape) for name in
+           ("input_power", "output_power", "loss", "efficiency", "self_locking")},
+        patterns=len(solved),
+        loss_sources=MappingProxyType({e: MappingProxyType(parts) for e, parts in group["sources"].items()}),
     )
 
 

@@ -38,7 +38,7 @@ from ..results.zero import ZERO_TOLERANCE, clean_array
 from ..model.elements import HOUSING
 from .assembly import TrainMatrices
 
-__all__ = ["Evaluation", "evaluate", "check_finite"]
+__all__ = ["Evaluation", "evaluate", "check_finite", "relative_speeds"]
 
 #: The smallest normal float: below it a result has lost its precision (underflow).
 _TINY = np.finfo(float).tiny
@@ -80,11 +80,12 @@ class Evaluation:
     loss: np.ndarray
     pattern: np.ndarray
     direction: np.ndarray
+    block: np.ndarray | None = None  # x, torques, powers, rolling, coupling, loss, relative: rows of one array
 
 
 def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
              given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
-             shaft_torques: np.ndarray | None = None) -> Evaluation:
+             shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None) -> Evaluation:
     """Clean the solved torques and derive torques, powers, rolling powers and losses.
 
     Parameters
@@ -103,34 +104,56 @@ def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np
     shaft_torques : ndarray (shafts, P), optional
         Given loss torques acting on the shafts (:mod:`~epicyclic.solver.given_losses`),
         N·m: a shaft's external torque balances them too (M_s + T_loss − Σ T_port = 0).
+    relative : ndarray (levers, P), optional
+        :func:`relative_speeds` of ``speeds``, where already known.
 
     Returns
     -------
     Evaluation
     """
     with np.errstate(all="ignore"):  # overflow is reported by check_finite, by name
-        result = _evaluate(mats, speeds, x, pattern, given, efficiencies, shaft_torques)
+        result = _evaluate(mats, speeds, x, pattern, given, efficiencies, shaft_torques, relative)
     check_finite(mats, result)
     return result
 
 
+def relative_speeds(mats: TrainMatrices, speeds: np.ndarray) -> np.ndarray:
+    """n_a − n_c of every lever (1/min), exactly 0 where it is round-off of its port speeds (locked)."""
+    lay = mats.layout
+    with np.errstate(all="ignore"):
+        a, c = speeds[lay.lever_a_rows], speeds[lay.lever_c_rows]
+        return clean_array(a - c, np.maximum(np.abs(a), np.abs(c)))
+
+
 def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
               given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
-              shaft_torques: np.ndarray | None = None) -> Evaluation:
+              shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None) -> Evaluation:
     # Reductions over the few rows of a part or a shaft are written row by row (_rows): numpy's
     # reductions along axis 0 of a (rows, points) array are many times slower than whole-row operations.
+    # The results are rows of one array (``block``), so that one pass checks them all (check_finite).
     lay = mats.layout
     points = speeds.shape[1:]
-    x = np.array(x, dtype=float)
+    levers, shafts, columns = len(mats.levers), len(lay.rows), len(mats.torque_columns)
+    block = np.empty((columns + 2 * shafts + 4 * levers,) + points)
+    x_in, x = x, block[:columns]
+    x[...] = x_in
+    torques = block[columns:columns + shafts]
+    powers = block[columns + shafts:columns + 2 * shafts]
+    rolling, coupling, loss, relative_out = (block[columns + 2 * shafts + k * levers:columns + 2 * shafts
+                                                   + (k + 1) * levers] for k in range(4))
 
-    used = np.zeros((len(mats.levers),) + points, dtype=int) if pattern is None else np.asarray(pattern, dtype=int)
-    levers = lay.lever_numbers[(...,) + (None,) * len(points)]
+    # the lever's entries of k_b, k_c and η0^w: index 3·lever + w + 1 of lay.lever_tables
+    table = (3 * np.arange(levers) + 1).reshape((-1,) + (1,) * len(points))
+    used = None if pattern is None else np.asarray(pattern, dtype=int)
+    if used is not None:
+        table = table + used
+    elif efficiencies is not None:
+        used = np.zeros((levers,) + points, dtype=int)
 
     # every element's torques exactly in its own ratios: T_b = −k_b·T_a, T_c = −k_c·T_a, link T_2 = −T_1
-    if len(mats.levers):
+    if levers:
         if efficiencies is None:
-            k_b = lay.lever_factors[levers, used + 1, 0]
-            k_c = lay.lever_factors[levers, used + 1, 1]
+            k_b, k_c = lay.lever_tables[0].take(table), lay.lever_tables[1].take(table)
         else:  # η0 per point (given losses): k_b = i0·η0^w, k_c = 1 − k_b
             i0 = np.array([lv.ratio for lv in mats.levers]).reshape((-1,) + (1,) * len(points))
             k_b = np.where(used > 0, i0 * efficiencies, np.where(used < 0, i0 / efficiencies, i0))
@@ -167,13 +190,12 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
             break
         scale, idle = grown, idle | more
     # a port torque that is round-off of its element's largest is 0 (the zero rule of clean_array)
-    with np.errstate(invalid="ignore", over="ignore"):
-        zero = idle[lay.port_parts] | ((size <= ZERO_TOLERANCE * own[lay.port_parts]) & np.isfinite(port))
+    zero = idle[lay.port_parts] | ((size <= ZERO_TOLERANCE * own[lay.port_parts]) & np.isfinite(port))
     port = np.where(zero, 0.0, port) + 0.0
     x[lay.port_columns] = port
 
     # external torques: given exactly, else the balance of the port torques on the shaft
-    torques = np.zeros((len(lay.rows),) + points)
+    torques[...] = 0.0
     if len(lay.reacting_rows):
         total = _rows(np.add, port, lay.reacting_groups)
         terms = _rows(np.maximum, np.abs(port), lay.reacting_groups)
@@ -188,26 +210,33 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     for shaft, value in given.items():
         torques[lay.rows[shaft]] = value
     x[lay.external_columns] = torques[lay.external_rows]
-    powers = torques * speeds * RPM_TO_RAD_S + 0.0
+    np.multiply(torques, speeds, out=powers)
+    powers *= RPM_TO_RAD_S
+    powers += 0.0  # P = M·ω, never −0
 
     # levers: relative speed, rolling and coupling power, loss
-    a, c = speeds[lay.lever_a_rows], speeds[lay.lever_c_rows]
-    relative = clean_array(a - c, np.maximum(np.abs(a), np.abs(c)))
+    relative_out[...] = relative_speeds(mats, speeds) if relative is None else relative
+    relative = relative_out
+    c = speeds[lay.lever_c_rows]
     t_a = x[lay.lever_a_columns]
-    rolling = t_a * relative * RPM_TO_RAD_S + 0.0
-    coupling = t_a * c * RPM_TO_RAD_S + 0.0
+    for out, other in ((rolling, relative), (coupling, c)):  # T_a·(n_a − n_c)·π/30 and T_a·n_c·π/30
+        np.multiply(t_a, other, out=out)
+        out *= RPM_TO_RAD_S
+        out += 0.0
     if efficiencies is None:
-        factor = lay.efficiency_factors[levers, used + 1]  # η0^w (1/η0 only where solved with it)
+        factor = lay.lever_tables[2].take(table)  # η0^w (1/η0 only where solved with it)
     else:
         factor = np.where(used > 0, efficiencies, np.where(used < 0, 1.0 / efficiencies, 1.0))
-    loss = rolling * (1.0 - factor) + 0.0
-    if any(_subnormal(a) for a in (powers, rolling, coupling, loss)):
+    np.multiply(rolling, 1.0 - factor, out=loss)
+    loss += 0.0
+    if _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
         # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
         # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
-        powers, rolling, coupling, loss = (_flush(a) for a in (powers, rolling, coupling, loss))
+        for array in (powers, rolling, coupling, loss):
+            array[...] = _flush(array)
     observed = np.sign(rolling).astype(int)
     direction = observed if pattern is None else np.where(observed == 0, 0, used)
-    return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction)
+    return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block)
 
 
 def _rows(ufunc, array: np.ndarray, groups, out: np.ndarray | None = None) -> np.ndarray:
@@ -258,8 +287,10 @@ def _normal(values: np.ndarray) -> bool:
 
 def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
     """Raise :class:`~epicyclic.errors.NonFiniteResultError` naming the first quantity that over- or underflows."""
-    # the external columns of x are copies of the torques: checking all of x decides as its ports would
-    if all(_normal(a) for a in (ev.speeds, ev.x, ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)):
+    # first all at once: the block holds every checked array (and x's external columns, copies of the
+    # torques, and the relative speeds, which never decide alone); where it is not all normal, the
+    # arrays one by one say whether one of them over- or underflows, and which
+    if ev.block is not None and _normal(ev.speeds) and _normal(ev.block):
         return
     arrays = (ev.speeds, ev.x[mats.layout.port_columns], ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)
     shafts = [f"shaft {s!r}" for s in mats.train.shafts]
