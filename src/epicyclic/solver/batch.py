@@ -270,7 +270,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
 
     ideal = torque_solver(mats, given, None)
     with np.errstate(all="ignore"):
-        x_ideal = ideal.operator @ tau
+        x_ideal = ideal.torques(tau)
     ideal.check(tau, x_ideal)
     relative = relative_speeds(mats, n)
     ideal_eval = evaluate(mats, n, x_ideal, None, given_map, relative=relative)
@@ -297,16 +297,25 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
-        for row, members, mask in _groups(pattern, pending, attempt == 0):
-            solver = torque_solver(mats, given, row)
-            solved.add(tuple(int(w) for w in row))
-            with np.errstate(all="ignore"):
-                if mask is not None and effs is None and rows is None:  # all points: no gathering
-                    np.copyto(x, solver.torques(tau), where=mask)
-                    continue
-                x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
-                                           None if rows is None else rows[:, members],
-                                           None if effs is None else effs[:, members])
+        groups = list(_groups(pattern, pending, attempt == 0))
+        solved |= {tuple(int(w) for w in row) for row, _, _ in groups}
+        with np.errstate(all="ignore"):
+            if attempt == 0 and len(given) == 1 and effs is None and rows is None:
+                # one given torque: each point's torques are its pattern's column times the torque
+                # (Statics.torques point by point, without gathering the points of each pattern)
+                columns = np.stack([torque_solver(mats, given, row).operator[:, 0] for row, _, _ in groups], axis=1)
+                which = np.zeros(count, dtype=int)
+                for k, (_, _, mask) in enumerate(groups[1:], 1):
+                    which[mask] = k
+                x = columns.take(which, axis=1)
+                x *= tau
+                x += 0.0  # as linear.apply
+            else:
+                for row, members, _ in groups:
+                    solver = torque_solver(mats, given, row)
+                    x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
+                                               None if rows is None else rows[:, members],
+                                               None if effs is None else effs[:, members])
         column = pattern if attempt == 0 else pattern[:, pending]
         if attempt == 0:  # every point (pending is all of them): this evaluation is kept where consistent
             first_x = x.copy()

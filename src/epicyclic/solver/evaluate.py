@@ -81,6 +81,7 @@ class Evaluation:
     pattern: np.ndarray
     direction: np.ndarray
     block: np.ndarray | None = None  # x, torques, powers, rolling, coupling, loss, relative: rows of one array
+    normal: bool | None = None  # every value of ``block`` finite and 0 or normal (None: not known)
 
 
 def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
@@ -229,14 +230,19 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         factor = np.where(used > 0, efficiencies, np.where(used < 0, 1.0 / efficiencies, 1.0))
     np.multiply(rolling, 1.0 - factor, out=loss)
     loss += 0.0
-    if _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
+    size = np.abs(block)
+    normal = None  # whether every value of the block is finite and 0 or normal (None: not known)
+    if np.count_nonzero(size < _TINY) == np.count_nonzero(size == 0):  # no subnormal value
+        normal = bool(size.max(initial=0.0) <= _HUGE)
+    elif _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
         # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
         # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
         for array in (powers, rolling, coupling, loss):
             array[...] = _flush(array)
     observed = np.sign(rolling).astype(int)
     direction = observed if pattern is None else np.where(observed == 0, 0, used)
-    return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block)
+    return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block,
+                      normal)
 
 
 def _rows(ufunc, array: np.ndarray, groups, out: np.ndarray | None = None) -> np.ndarray:
@@ -290,7 +296,7 @@ def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
     # first all at once: the block holds every checked array (and x's external columns, copies of the
     # torques, and the relative speeds, which never decide alone); where it is not all normal, the
     # arrays one by one say whether one of them over- or underflows, and which
-    if ev.block is not None and _normal(ev.speeds) and _normal(ev.block):
+    if ev.block is not None and _normal(ev.speeds) and (ev.normal or (ev.normal is None and _normal(ev.block))):
         return
     arrays = (ev.speeds, ev.x[mats.layout.port_columns], ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)
     shafts = [f"shaft {s!r}" for s in mats.train.shafts]

@@ -28,7 +28,10 @@ from ..errors import ContradictionError, NearSingularError, NonFiniteResultError
 from ..model.elements import HOUSING
 from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, pseudoinverse, unreached_columns
+from .linear import Pseudoinverse, apply, pseudoinverse, unreached_columns
+
+#: The smallest normal and the largest finite float.
+_TINY, _HUGE = np.finfo(float).tiny, np.finfo(float).max
 
 __all__ = ["SpeedSolver", "speed_solver", "degrees_of_freedom", "free_speed_shafts", "solve_speeds", "check_speeds"]
 
@@ -99,7 +102,7 @@ class SpeedSolver:
         g = np.asarray(values, dtype=float)
         g = np.where(np.abs(g) < np.finfo(float).tiny, 0.0, g)  # a given speed below 2.2e-308 1/min is 0
         shape = (-1,) + (1,) * (g.ndim - 1)
-        n = self.operator @ g
+        n = apply(self.operator, g)
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
         size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
@@ -113,6 +116,8 @@ class SpeedSolver:
 
     def check(self, values: Sequence[float] | np.ndarray, speeds: np.ndarray) -> None:
         """Raise ContradictionError if the given speeds violate the constraints."""
+        if self.system.rank == self.system.matrix.shape[0]:
+            return  # full row rank: every right-hand side is reached (Pseudoinverse.is_consistent)
         g = np.asarray(values, dtype=float)
         rhs = np.concatenate([np.zeros((self.mats.kinematics.shape[0],) + g.shape[1:]), g])
         scale = np.max(np.abs(g), axis=0) if g.size else 1.0
@@ -211,9 +216,9 @@ def _near_singular(mats: TrainMatrices, given: Sequence[str], system: Pseudoinve
 def check_speeds(mats: TrainMatrices, speeds: np.ndarray) -> None:
     """Raise NonFiniteResultError if a speed over- or underflows (``speeds``: moving shafts, points trailing)."""
     size = np.abs(speeds)
-    bad = ~np.isfinite(speeds) | ((size < np.finfo(float).tiny) & (size > 0))
-    if not bad.any():
-        return
+    if size.max(initial=0.0) <= _HUGE and np.count_nonzero(size < _TINY) == np.count_nonzero(size == 0):
+        return  # all finite, each 0 or a normal float
+    bad = ~np.isfinite(speeds) | ((size < _TINY) & (size > 0))
     where = np.argwhere(bad)[0]
     shaft = mats.train.moving_shafts[where[0]]
     point = f" at operating point {int(where[1])}" if speeds.ndim > 1 and speeds.shape[1] > 1 else ""

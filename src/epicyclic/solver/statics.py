@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import ContradictionError, NearSingularError, UnderdeterminedError
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, pseudoinverse, unreached_columns
+from .linear import Pseudoinverse, apply, pseudoinverse, unreached_columns
 
 __all__ = ["TorqueSolver", "torque_solver"]
 
@@ -79,11 +79,13 @@ class TorqueSolver:
 
     def torques(self, values: Sequence[float] | np.ndarray, rows: np.ndarray | None = None) -> np.ndarray:
         """All torques for given external torques and, optionally, a right-hand side of the static rows."""
-        x = self.operator @ np.asarray(values, dtype=float)
+        x = apply(self.operator, np.asarray(values, dtype=float))
         return x if rows is None else x + self.row_operator @ rows
 
     def check(self, values: Sequence[float] | np.ndarray, x: np.ndarray, loss_rows: np.ndarray | None = None) -> None:
         """Raise ContradictionError if the given torques (and loss torques) cannot all hold."""
+        if self.system.rank == self.system.matrix.shape[0]:
+            return  # full row rank: every right-hand side is reached (Pseudoinverse.is_consistent)
         g = np.asarray(values, dtype=float)
         rows = self.system.matrix.shape[0] - len(self.given)
         rhs = np.concatenate([np.zeros((rows,) + g.shape[1:]) if loss_rows is None else loss_rows, g])
