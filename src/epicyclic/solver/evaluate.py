@@ -123,7 +123,7 @@ def relative_speeds(mats: TrainMatrices, speeds: np.ndarray) -> np.ndarray:
     lay = mats.layout
     with np.errstate(all="ignore"):
         a, c = speeds[lay.lever_a_rows], speeds[lay.lever_c_rows]
-        return clean_array(a - c, np.maximum(np.abs(a), np.abs(c)))
+        return _clean(a - c, np.maximum(np.abs(a), np.abs(c)))
 
 
 def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
@@ -203,7 +203,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         if shaft_torques is not None:  # M_s = Σ T_port − T_loss
             total = total - shaft_torques[lay.reacting_rows]
             terms = np.maximum(terms, np.abs(shaft_torques[lay.reacting_rows]))
-        torques[lay.reacting_rows] = clean_array(total, terms)
+        torques[lay.reacting_rows] = _clean(total, terms)
     if shaft_torques is not None:  # reactions of loss torques where no port is (the housing, say)
         reacting = set(lay.reacting_rows.tolist())
         bare = [row for row in (lay.rows[s] for s in (*mats.external, HOUSING)) if row not in reacting]
@@ -232,7 +232,8 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     loss += 0.0
     size = np.abs(block)
     normal = None  # whether every value of the block is finite and 0 or normal (None: not known)
-    if np.count_nonzero(size < _TINY) == np.count_nonzero(size == 0):  # no subnormal value
+    small = size < _TINY
+    if not np.count_nonzero(small) or not np.count_nonzero(size[small]):  # no subnormal value
         normal = bool(size.max(initial=0.0) <= _HUGE)
     elif _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
         # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
@@ -243,6 +244,15 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     direction = observed if pattern is None else np.where(observed == 0, 0, used)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block,
                       normal)
+
+
+def _clean(values: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """:func:`~epicyclic.results.zero.clean_array` for a float array and a scale ≥ 0 of its shape."""
+    zero = np.abs(values) <= ZERO_TOLERANCE * scale
+    zero &= np.isfinite(values)
+    out = np.where(zero, 0.0, values)
+    out += 0.0
+    return out
 
 
 def _rows(ufunc, array: np.ndarray, groups, out: np.ndarray | None = None) -> np.ndarray:
