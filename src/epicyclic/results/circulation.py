@@ -181,7 +181,7 @@ def circulation(port_powers: Sequence[tuple[str, str, float]], input_power: floa
         flow[source][target] = flow[source].get(target, 0.0) + abs(power)
     floor = CIRCULATION_FLOOR * largest
     loops: dict[tuple[str, ...], float] = {}
-    while True:
+    while _has_cycle(flow, floor):
         cycles = _simple_cycles(flow, floor)
         if not cycles:
             break
@@ -195,6 +195,28 @@ def circulation(port_powers: Sequence[tuple[str, str, float]], input_power: floa
                     sorted(loops.items(), key=lambda item: -item[1]))
     total = sum(loop.power for loop in ordered)
     return Circulation(ordered, total, ratio_of(total), largest, ratio_of(largest))
+
+
+def _has_cycle(flow: Mapping[Node, Mapping[Node, float]], floor: float) -> bool:
+    """Whether some directed cycle runs through edges carrying more than ``floor`` (Kahn's algorithm:
+    a graph is acyclic exactly when repeatedly taking out nodes without incoming edges empties it)."""
+    incoming: dict[Node, int] = {}
+    for u, targets in flow.items():
+        incoming.setdefault(u, 0)
+        for v, f in targets.items():
+            if f > floor:
+                incoming[v] = incoming.get(v, 0) + 1
+    free = [u for u, count in incoming.items() if count == 0]
+    left = len(incoming)
+    while free:
+        u = free.pop()
+        left -= 1
+        for v, f in flow.get(u, {}).items():
+            if f > floor:
+                incoming[v] -= 1
+                if incoming[v] == 0:
+                    free.append(v)
+    return left > 0
 
 
 def _bottleneck(flow: Mapping[Node, Mapping[Node, float]], cycle: Sequence[Node]) -> float:

@@ -81,7 +81,8 @@ class Evaluation:
     pattern: np.ndarray
     direction: np.ndarray
     block: np.ndarray | None = None  # x, torques, powers, rolling, coupling, loss, relative: rows of one array
-    normal: bool | None = None  # every value of ``block`` finite and 0 or normal (None: not known)
+    normal: bool | None = None  # every value (speeds included) finite and 0 or normal (None: not known)
+    floats: dict | None = None  # one point's quantities as lists of floats (solver.point), where known
 
 
 def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
@@ -234,7 +235,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     normal = None  # whether every value of the block is finite and 0 or normal (None: not known)
     small = size < _TINY
     if not np.count_nonzero(small) or not np.count_nonzero(size[small]):  # no subnormal value
-        normal = bool(size.max(initial=0.0) <= _HUGE)
+        normal = bool(size.max(initial=0.0) <= _HUGE) and _normal(speeds)
     elif _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
         # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
         # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
@@ -306,7 +307,7 @@ def check_finite(mats: TrainMatrices, ev: Evaluation) -> None:
     # first all at once: the block holds every checked array (and x's external columns, copies of the
     # torques, and the relative speeds, which never decide alone); where it is not all normal, the
     # arrays one by one say whether one of them over- or underflows, and which
-    if ev.block is not None and _normal(ev.speeds) and (ev.normal or (ev.normal is None and _normal(ev.block))):
+    if ev.normal or (ev.block is not None and _normal(ev.block) and _normal(ev.speeds)):
         return
     arrays = (ev.speeds, ev.x[mats.layout.port_columns], ev.torques, ev.powers, ev.rolling, ev.coupling, ev.loss)
     shafts = [f"shaft {s!r}" for s in mats.train.shafts]

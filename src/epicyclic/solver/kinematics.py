@@ -18,6 +18,7 @@ Brandenberger 1952, eq. 1; Queitsch, eq. 12; tec-science, "Willis-Gleichung" (Gr
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
@@ -106,13 +107,39 @@ class SpeedSolver:
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
         size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
-        terms = np.abs(self.system.inverse) @ (np.abs(self.system.matrix) @ size)
+        terms = self._magnitudes[1] @ (self._magnitudes[0] @ size)
         zero = size <= ZERO_TOLERANCE * terms
         zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given
         n = np.where(zero & np.isfinite(n), 0.0, n)
         follow = self._representatives  # shafts turning together: bit for bit the same speed
         n = np.where((follow >= 0).reshape(shape), n[np.maximum(follow, 0)], 0.0) + 0.0
         return n + 0.0
+
+    @cached_property
+    def _magnitudes(self) -> tuple[np.ndarray, np.ndarray]:
+        """|A| and |A⁺| (see :meth:`speeds`)."""
+        return np.abs(self.system.matrix), np.abs(self.system.inverse)
+
+    @cached_property
+    def _plain(self) -> tuple[list[int], list[int]]:
+        """Columns of the given speeds, and :attr:`_representatives`, as lists."""
+        return [self.mats.speed_index[g] for g in self.given], self._representatives.tolist()
+
+    def point(self, values: Sequence[float]) -> list[float] | None:
+        """:meth:`speeds` of one point in Python floats (the same numbers); None where one is not finite."""
+        g = [0.0 if abs(v) < _TINY else float(v) for v in values]
+        n = apply(self.operator, np.array(g)).tolist()
+        columns, follow = self._plain
+        for column, value in zip(columns, g):
+            n[column] = value
+        if not all(map(math.isfinite, n)):
+            return None
+        terms = (self._magnitudes[1] @ (self._magnitudes[0] @ np.abs(n))).tolist()
+        zero = [size <= ZERO_TOLERANCE * term for size, term in zip(map(abs, n), terms)]
+        for column in columns:
+            zero[column] = False
+        n = [0.0 if z else v for z, v in zip(zero, n)]
+        return [n[f] + 0.0 if f >= 0 else 0.0 for f in follow]
 
     def check(self, values: Sequence[float] | np.ndarray, speeds: np.ndarray) -> None:
         """Raise ContradictionError if the given speeds violate the constraints."""
@@ -236,12 +263,17 @@ def check_speeds(mats: TrainMatrices, speeds: np.ndarray) -> None:
 def solve_speeds(mats: TrainMatrices, speeds: Mapping[str, float]) -> dict[str, float]:
     """All shaft speeds (1/min) from the given ones, the housing at 0."""
     given = [s for s in speeds if s != HOUSING]
-    values = np.array([speeds[s] for s in given], dtype=float)
     solver = speed_solver(mats, given)
     with np.errstate(all="ignore"):
-        n = solver.speeds(values)
-    check_speeds(mats, n)
-    solver.check(values, n)
-    result = {s: float(n[c]) for s, c in mats.speed_index.items()}
+        point = solver.point([speeds[s] for s in given])
+    if point is None or not all(v == 0.0 or _TINY <= abs(v) for v in point) or solver.system.rank < len(given) + \
+            mats.kinematics.shape[0]:  # the array code names what over- or underflows, or contradicts
+        values = np.array([speeds[s] for s in given], dtype=float)
+        with np.errstate(all="ignore"):
+            n = solver.speeds(values)
+        check_speeds(mats, n)
+        solver.check(values, n)
+        point = n.tolist()
+    result = dict(zip(mats.speed_index, point))
     result[HOUSING] = 0.0
     return result

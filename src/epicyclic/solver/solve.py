@@ -25,7 +25,8 @@ Brandenberger 1952, eqs. 1–10 and Bild 8–9 (the sign of the rolling power de
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import replace
+from dataclasses import dataclass, replace
+from functools import lru_cache
 from types import MappingProxyType
 
 import numpy as np
@@ -39,9 +40,10 @@ from ..results.circulation import circulation, indeterminate_circulation
 from ..results.solution import RPM_TO_RAD_S, ElementState, ShaftState, Solution
 from ..results.zero import clean, scale_of
 from .assembly import TrainMatrices, matrices
-from .evaluate import Evaluation, evaluate
+from .evaluate import Evaluation
 from .given_losses import DRAG, GivenLosses, given_losses, with_efficiencies
 from .kinematics import degrees_of_freedom, solve_speeds
+from .point import evaluate_point
 from .self_locking import self_locking
 from .statics import TorqueSolver, torque_solver
 
@@ -121,7 +123,7 @@ def _with_role(op: OperatingPoint, shaft: str, torque: float, omega: float) -> f
 
 def _consistent(pattern: np.ndarray, observed: np.ndarray) -> bool:
     """w agrees with the re-read sign (observed 0, or w 0 with observed 0, agree)."""
-    return bool(np.all((pattern == observed) | (observed == 0)))
+    return all(w == o or o == 0 for w, o in zip(pattern.tolist(), observed.tolist()))
 
 
 def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool = False,
@@ -183,12 +185,12 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     torques = given_torques(op, speeds)
     given = list(torques)
     values = np.array([torques[s] for s in given])
-    given_map = {s: np.array([v]) for s, v in torques.items()}
+    given_values = {s: float(v) for s, v in torques.items()}
 
     ideal_solver = torque_solver(mats, given, None)
     x_ideal = ideal_solver.torques(values)
     ideal_solver.check(values, x_ideal)
-    ideal_eval = evaluate(mats, n, x_ideal[:, None], None, given_map)
+    ideal_eval = evaluate_point(mats, n, x_ideal[:, None], None, given_values)
     roles = _roles(train, op, mats, ideal_eval)
     ideal = _build(train, op, mats, ideal_eval, ideal_solver, roles, None, lossless=True)
     if extra is not None:  # the given factors are the levers' η0
@@ -209,7 +211,7 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
         solver = torque_solver(mats, given, pattern)
         x = solver.torques(values, rows)
         solver.check(values, x, rows)
-        ev = evaluate(mats, n, x[:, None], pattern[:, None], given_map, shaft_torques=dragged)
+        ev = evaluate_point(mats, n, x[:, None], pattern[:, None], given_values, shaft_torques=dragged)
         if first is None:
             first = (solver, ev)
         observed = ev.pattern[:, 0]
@@ -257,14 +259,11 @@ def _efficiency(drive_power: float, load_power: float, loss: float) -> float | N
 
 def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, lossless=False,
            extra: GivenLosses | None = None) -> Solution:
-    shafts = {}
-    for k, shaft in enumerate(train.shafts):
-        shafts[shaft] = ShaftState(shaft, float(ev.speeds[k, 0]), float(ev.torques[k, 0]),
-                                   float(ev.powers[k, 0]), roles[shaft])
-    elements = {}
-    lever_index = {lever.element.name: k for k, lever in enumerate(mats.levers)}
-    for element in train.elements:
-        elements[element.name] = _element_state(element, mats, ev, lever_index, lossless, extra)
+    col = _Column(ev)
+    shafts = {shaft: ShaftState(shaft, speed, torque, power, roles[shaft])
+              for shaft, speed, torque, power in zip(train.shafts, col.speeds, col.torques, col.powers)}
+    elements = {element.name: _element_state(element, layout, ev, col, lossless, extra)
+                for element, layout in zip(train.elements, _element_layouts(mats))}
 
     drive_power = sum(s.power for s in shafts.values() if s.role == "drive") + 0.0
     load_power = -sum(s.power for s in shafts.values() if s.role == "load") + 0.0
@@ -292,6 +291,51 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
     )
 
 
+class _Column:
+    """The one point of an Evaluation as Python floats (read once, not entry by entry)."""
+
+    def __init__(self, ev: Evaluation):
+        floats = ev.floats or {name: getattr(ev, name)[:, 0].tolist() for name in (
+            "speeds", "torques", "powers", "x", "relative", "rolling", "coupling", "loss", "direction")}
+        self.speeds, self.torques, self.powers, self.x = (floats[k] for k in ("speeds", "torques", "powers", "x"))
+        self.relative, self.rolling, self.coupling, self.loss = (floats[k] for k in (
+            "relative", "rolling", "coupling", "loss"))
+        self.direction = floats["direction"]
+
+
+@dataclass(frozen=True)
+class _ElementLayout:
+    """Where an element's numbers sit in an Evaluation."""
+
+    lever: int | None  # index among the levers (sets and stages), None for clutches and brakes
+    ports: tuple[str, ...]
+    shafts: tuple[str, ...]
+    columns: tuple[int, ...]  # torque column of each port (engaged elements)
+    rows: tuple[int, ...]  # speed row of each port's shaft
+    efficiency: float  # the lever's η0 in these equations (given factors included)
+
+
+@lru_cache(maxsize=64)
+def _element_layouts(mats: TrainMatrices) -> tuple[_ElementLayout, ...]:
+    idx = mats.torque_index
+    row = {s: k for k, s in enumerate(mats.train.shafts)}
+    lever_index = {lever.element.name: k for k, lever in enumerate(mats.levers)}
+    out = []
+    for element in mats.train.elements:
+        k = lever_index.get(element.name)
+        if k is not None:
+            ports, shafts = mats.levers[k].ports, mats.levers[k].shafts
+        else:
+            ports = ("first", "second") if isinstance(element, Clutch) else ("shaft", "housing")
+            shafts = element.shafts
+        engaged = k is not None or element.engaged
+        out.append(_ElementLayout(k, ports, shafts,
+                                  tuple(idx[("port", element.name, p)] for p in ports) if engaged else (),
+                                  tuple(row[s] for s in shafts),
+                                  mats.levers[k].efficiency if k is not None else 1.0))
+    return tuple(out)
+
+
 def _warnings(shafts, solver, circ, drive_power, load_power) -> list[str]:
     warnings = []
     for s in shafts.values():
@@ -311,9 +355,8 @@ def _warnings(shafts, solver, circ, drive_power, load_power) -> list[str]:
     return warnings
 
 
-def _sources(element, extra: GivenLosses | None, ev: Evaluation, k: int | None, lossless: bool):
+def _sources(element, extra: GivenLosses | None, ev: Evaluation, k: int | None, rolling: float, lossless: bool):
     """(loss, loss by source) of an element: its rolling loss split by source, plus its loss torques' loss."""
-    rolling = float(ev.loss[k, 0]) if k is not None else 0.0
     if lossless:
         return rolling, {}
     parts = {"mesh": rolling} if k is not None else {}
@@ -326,23 +369,20 @@ def _sources(element, extra: GivenLosses | None, ev: Evaluation, k: int | None, 
     return rolling + parts.get(DRAG, 0.0), parts
 
 
-def _element_state(element, mats: TrainMatrices, ev: Evaluation, lever_index, lossless,
+def _element_state(element, layout: _ElementLayout, ev: Evaluation, col: _Column, lossless,
                    extra: GivenLosses | None = None) -> ElementState:
-    idx = mats.torque_index
-    row = {s: k for k, s in enumerate(mats.train.shafts)}
-    if isinstance(element, (PlanetarySet, GearStage)):
-        k = lever_index[element.name]
-        lever = mats.levers[k]
-        loss, sources = _sources(element, extra, ev, k, lossless)
-        ports = dict(zip(lever.ports, lever.shafts))
-        torques = {p: float(ev.x[idx[("port", element.name, p)], 0]) for p in lever.ports}
-        port_speeds = {p: float(ev.speeds[row[s], 0]) for p, s in ports.items()}
-        w = int(ev.direction[k, 0])
-        relative_speed = float(ev.relative[k, 0])
+    k = layout.lever
+    ports = dict(zip(layout.ports, layout.shafts))
+    port_speeds = {p: col.speeds[r] for p, r in zip(layout.ports, layout.rows)}
+    if k is not None:
+        loss, sources = _sources(element, extra, ev, k, col.loss[k], lossless)
+        torques = {p: col.x[c] for p, c in zip(layout.ports, layout.columns)}
+        w = col.direction[k]
+        relative_speed = col.relative[k]
         planets: tuple[float, ...] = ()
         relative: tuple[float, ...] = ()
         if isinstance(element, PlanetarySet) and element.teeth is not None:
-            carrier = port_speeds[lever.ports[2]]
+            carrier = port_speeds[layout.ports[2]]
             relative = tuple(f * relative_speed + 0.0 for f in element.teeth.planet_factors)
             planets = tuple(clean(carrier + r, scale_of(carrier, r)) for r in relative)
         return ElementState(
@@ -351,25 +391,22 @@ def _element_state(element, mats: TrainMatrices, ev: Evaluation, lever_index, lo
             MappingProxyType(ports),
             MappingProxyType(torques),
             MappingProxyType(port_speeds),
-            rolling_power=float(ev.rolling[k, 0]),
-            coupling_power=float(ev.coupling[k, 0]),
+            rolling_power=col.rolling[k],
+            coupling_power=col.coupling[k],
             loss=loss,
             loss_sources=MappingProxyType(sources),
             loss_direction=w,
-            efficiency_factor=1.0 if lossless or w == 0 else lever.efficiency ** w,
+            efficiency_factor=1.0 if lossless or w == 0 else layout.efficiency ** w,
             planet_speeds=planets,
             planet_speeds_relative=relative,
         )
     # clutch or brake
-    port_names = ("first", "second") if isinstance(element, Clutch) else ("shaft", "housing")
-    ports = dict(zip(port_names, element.shafts))
-    port_speeds = {p: float(ev.speeds[row[s], 0]) for p, s in ports.items()}
     if element.engaged:
-        torques = {p: float(ev.x[idx[("port", element.name, p)], 0]) for p in port_names}
+        torques = {p: col.x[c] for p, c in zip(layout.ports, layout.columns)}
     else:
-        torques = {p: 0.0 for p in port_names}
-    first, second = (port_speeds[p] for p in port_names)
-    loss, sources = _sources(element, extra, ev, None, lossless)
+        torques = {p: 0.0 for p in layout.ports}
+    first, second = (port_speeds[p] for p in layout.ports)
+    loss, sources = _sources(element, extra, ev, None, 0.0, lossless)
     return ElementState(
         element.name,
         "clutch" if isinstance(element, Clutch) else "brake",

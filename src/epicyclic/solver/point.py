@@ -1,0 +1,217 @@
+"""One operating point evaluated in plain Python floats: the scalar solver's :func:`evaluate`.
+
+:func:`~epicyclic.solver.evaluate.evaluate` is written for arrays of points; on one point its hundred
+small numpy operations cost far more than the arithmetic.  :func:`evaluate_point` does the same
+operations, in the same order, on Python floats (IEEE double, like numpy's float64), so that it gives
+the same numbers bit for bit, and returns the same :class:`~epicyclic.solver.evaluate.Evaluation`.
+Where a value is not finite or below the normal float range (overflow, underflow: the rare cases
+that the zero rule's flush and :func:`~epicyclic.solver.evaluate.check_finite` handle) it hands the
+point to the array code, which names the quantity.  The batch solver always uses the array code, and
+the tests compare the two over 10^4 random trains (``tests/solver/test_edges_hypothesis.py``).
+
+References
+----------
+Brandenberger 1952, eqs. 3' and 7; Queitsch, Wälz- und Kupplungsleistung (as
+:mod:`epicyclic.solver.evaluate`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from ..model.elements import HOUSING
+from ..results.solution import RPM_TO_RAD_S
+from ..results.zero import ZERO_TOLERANCE
+from .assembly import TrainMatrices
+from .evaluate import Evaluation, evaluate
+
+__all__ = ["evaluate_point"]
+
+_TINY, _HUGE = float(np.finfo(float).tiny), float(np.finfo(float).max)
+
+
+@dataclass(frozen=True)
+class _Plain:
+    """The index arrays of a :class:`~epicyclic.solver.assembly.Layout` as tuples of ints."""
+
+    rows: dict
+    parts: int
+    port_columns: tuple
+    port_parts: tuple
+    part_ports: tuple
+    neighbours: tuple  # per part: its neighbours, without the padding
+    parts_at: tuple
+    reacting: tuple  # (row, its ports)
+    bare: tuple  # rows that take a loss torque's reaction without a port
+    external: tuple  # (column, row)
+    levers: tuple  # (a column, b column, c column, a row, c row, ratio, 3·lever + 1)
+    links: tuple  # (first column, second column)
+    tables: tuple  # k_b, k_c, η0^w at 3·lever + w + 1
+
+
+@lru_cache(maxsize=64)
+def _plain(mats: TrainMatrices) -> _Plain:
+    lay = mats.layout
+    ints = lambda a: tuple(int(v) for v in a)  # noqa: E731
+    reacting = set(lay.reacting_rows.tolist())
+    return _Plain(
+        rows=dict(lay.rows),
+        parts=lay.parts,
+        port_columns=ints(lay.port_columns),
+        port_parts=ints(lay.port_parts),
+        part_ports=lay.part_ports,
+        neighbours=tuple(tuple(int(j) for j in row if j < lay.parts) for row in lay.neighbours),
+        parts_at=lay.parts_at,
+        reacting=tuple(zip(ints(lay.reacting_rows), lay.reacting_groups)),
+        bare=tuple(row for row in (lay.rows[s] for s in (*mats.external, HOUSING)) if row not in reacting),
+        external=tuple(zip(ints(lay.external_columns), ints(lay.external_rows))),
+        levers=tuple(zip(ints(lay.lever_a_columns), ints(lay.lever_b_columns), ints(lay.lever_c_columns),
+                         ints(lay.lever_a_rows), ints(lay.lever_c_rows), [lv.ratio for lv in mats.levers],
+                         [3 * k + 1 for k in range(len(mats.levers))])),
+        links=tuple(zip(ints(lay.link_first_columns), ints(lay.link_second_columns))),
+        tables=tuple(tuple(float(v) for v in table) for table in lay.lever_tables),
+    )
+
+
+class _Unusual(Exception):
+    """A value is not finite or not normal: the array code decides."""
+
+
+def evaluate_point(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
+                   given: Mapping[str, float], efficiencies: np.ndarray | None = None,
+                   shaft_torques: np.ndarray | None = None) -> Evaluation:
+    """:func:`~epicyclic.solver.evaluate.evaluate` of one point (arrays with one column; ``given``: floats).
+
+    Returns
+    -------
+    Evaluation
+        The same numbers as the array code's.
+
+    Raises
+    ------
+    NonFiniteResultError
+        A quantity over- or underflows (from the array code).
+    """
+    n = speeds[:, 0].tolist()
+    w = None if pattern is None else [int(v) for v in pattern[:, 0]]
+    eta = None if efficiencies is None else efficiencies[:, 0].tolist()
+    loss_torques = None if shaft_torques is None else shaft_torques[:, 0].tolist()
+    try:
+        values = _evaluate(_plain(mats), n, x[:, 0].tolist(), w, given, eta, loss_torques)
+    except _Unusual:
+        return evaluate(mats, speeds, x, pattern, {s: np.array([v]) for s, v in given.items()},
+                        efficiencies, shaft_torques)
+    x_out, torques, powers, relative, rolling, coupling, loss, observed, direction = values
+    column = np.array
+    floats = {"speeds": n, "x": x_out, "torques": torques, "powers": powers, "relative": relative,
+              "rolling": rolling, "coupling": coupling, "loss": loss, "direction": direction}
+    return Evaluation(speeds, column(x_out)[:, None], column(torques)[:, None], column(powers)[:, None],
+                      column(relative).reshape(-1, 1), column(rolling).reshape(-1, 1),
+                      column(coupling).reshape(-1, 1), column(loss).reshape(-1, 1),
+                      column(observed, dtype=int).reshape(-1, 1), column(direction, dtype=int).reshape(-1, 1),
+                      normal=True, floats=floats)
+
+
+def _normal(values) -> bool:
+    """Whether every value is finite and 0 or at least the smallest normal float."""
+    for v in values:
+        if not (_TINY <= abs(v) <= _HUGE or v == 0.0):
+            return False
+    return True
+
+
+def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str, float], eta: list | None,
+              loss_torques: list | None):
+    """The steps of evaluate._evaluate, in its order, on floats."""
+    tol = ZERO_TOLERANCE
+    if not (_normal(n) and _normal(x) and _normal(given.values())
+            and (eta is None or _normal(eta)) and (loss_torques is None or _normal(loss_torques))):
+        raise _Unusual
+    # every element's torques exactly in its own ratios
+    for k, (a, b, c, _, _, ratio, entry) in enumerate(lay.levers):
+        wk = 0 if w is None else w[k]
+        if eta is None:
+            k_b, k_c = lay.tables[0][entry + wk], lay.tables[1][entry + wk]
+        else:
+            k_b = ratio * eta[k] if wk > 0 else ratio / eta[k] if wk < 0 else ratio
+            k_c = 1.0 - k_b
+        t_a = x[a]
+        x[b] = -k_b * t_a + 0.0
+        x[c] = -k_c * t_a + 0.0
+    for first, second in lay.links:
+        x[second] = -x[first] + 0.0
+    port = [x[c] for c in lay.port_columns]
+    if not _normal(port):
+        raise _Unusual
+    size = [abs(v) for v in port]
+
+    # idle elements
+    own = [max(size[j] for j in ports) for ports in lay.part_ports]
+    scale = [max(own[j] for j in near) for near in lay.neighbours]
+    for shaft, value in given.items():
+        for k in lay.parts_at[lay.rows[shaft]]:
+            scale[k] = max(scale[k], abs(value))
+    if loss_torques is not None:
+        for row in range(len(lay.rows) - 1):
+            for k in lay.parts_at[row]:
+                scale[k] = max(scale[k], abs(loss_torques[row]))
+    idle = [o <= tol * s for o, s in zip(own, scale)]
+    for _ in range(lay.parts if any(idle) else 0):
+        padded = [s if i else 0.0 for s, i in zip(scale, idle)]
+        reach = [max(padded[j] for j in near) for near in lay.neighbours]
+        grown = [max(s, r) if (i or o <= tol * r) else s for s, r, i, o in zip(scale, reach, idle, own)]
+        more = [o <= tol * g for o, g in zip(own, grown)]
+        if more == idle and grown == scale:
+            break
+        scale, idle = grown, [i or m for i, m in zip(idle, more)]
+    for j, (column, part) in enumerate(zip(lay.port_columns, lay.port_parts)):
+        value = 0.0 if idle[part] or size[j] <= tol * own[part] else port[j] + 0.0
+        port[j] = x[column] = value
+
+    # external torques
+    torques = [0.0] * len(lay.rows)
+    for row, ports in lay.reacting:
+        total = port[ports[0]]
+        for j in ports[1:]:
+            total = total + port[j]
+        terms = max(abs(port[j]) for j in ports)
+        if loss_torques is not None:
+            total = total - loss_torques[row]
+            terms = max(terms, abs(loss_torques[row]))
+        torques[row] = 0.0 if abs(total) <= tol * terms else total + 0.0
+    if loss_torques is not None:
+        for row in lay.bare:
+            torques[row] = -loss_torques[row] + 0.0
+    for shaft, value in given.items():
+        torques[lay.rows[shaft]] = value
+    for column, row in lay.external:
+        x[column] = torques[row]
+    powers = [t * s * RPM_TO_RAD_S + 0.0 for t, s in zip(torques, n)]
+
+    # levers
+    relative, rolling, coupling, loss, observed, direction = [], [], [], [], [], []
+    for k, (a, _, _, row_a, row_c, _, entry) in enumerate(lay.levers):
+        speed_a, speed_c = n[row_a], n[row_c]
+        difference = speed_a - speed_c
+        rel = 0.0 if abs(difference) <= tol * max(abs(speed_a), abs(speed_c)) else difference + 0.0
+        t_a = x[a]
+        roll = t_a * rel * RPM_TO_RAD_S + 0.0
+        wk = 0 if w is None else w[k]
+        if eta is None:
+            factor = lay.tables[2][entry + wk]
+        else:
+            factor = eta[k] if wk > 0 else 1.0 / eta[k] if wk < 0 else 1.0
+        sign = (roll > 0.0) - (roll < 0.0)
+        relative.append(rel)
+        rolling.append(roll)
+        coupling.append(t_a * speed_c * RPM_TO_RAD_S + 0.0)
+        loss.append(roll * (1.0 - factor) + 0.0)
+        observed.append(sign)
+        direction.append(sign if w is None else (0 if sign == 0 else wk))
+    if not _normal(x + torques + powers + relative + rolling + coupling + loss):
+        raise _Unusual
+    return x, torques, powers, relative, rolling, coupling, loss, observed, direction
