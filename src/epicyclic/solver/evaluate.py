@@ -199,7 +199,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     # external torques: given exactly, else the balance of the port torques on the shaft
     torques[...] = 0.0
     if len(lay.reacting_rows):
-        total = _rows(np.add, port, lay.reacting_groups)
+        total = _sums(port, lay.reacting_groups)
         terms = _rows(np.maximum, np.abs(port), lay.reacting_groups)
         if shaft_torques is not None:  # M_s = Σ T_port − T_loss
             total = total - shaft_torques[lay.reacting_rows]
@@ -267,6 +267,26 @@ def _rows(ufunc, array: np.ndarray, groups, out: np.ndarray | None = None) -> np
         ufunc(array[rows[0]], array[rows[1]], out=out[k])
         for r in rows[2:]:
             ufunc(out[k], array[r], out=out[k])
+    return out
+
+
+def _sums(array: np.ndarray, groups) -> np.ndarray:
+    """Per group of rows of ``array``: their sum, added in the order of ``np.add.reduceat`` along axis 0.
+
+    That is the first row plus the sum of the rest, row after row (the whole group through
+    ``reduceat`` where the rest has 8 rows or more, or the points are one: numpy then sums pairwise).
+    """
+    out = np.empty((len(groups),) + array.shape[1:])
+    for k, rows in enumerate(groups):
+        if len(rows) == 1:
+            out[k] = array[rows[0]]
+        elif len(rows) > 8 or array.shape[1:] == (1,):
+            out[k] = np.add.reduceat(array[list(rows)], [0], axis=0)[0]
+        else:
+            rest = array[rows[1]].copy()
+            for r in rows[2:]:
+                rest += array[r]
+            np.add(array[rows[0]], rest, out=out[k])
     return out
 
 

@@ -116,6 +116,30 @@ def evaluate_point(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, patte
                       normal=True, floats=floats)
 
 
+def _pairwise(values: list) -> float:
+    """numpy's pairwise sum of a contiguous run (what ``np.add.reduceat`` adds to a group's first value)."""
+    n = len(values)
+    if n < 8:
+        total = 0.0
+        for v in values:
+            total += v
+        return total
+    if n > 128:
+        half = n // 2
+        half -= half % 8
+        return _pairwise(values[:half]) + _pairwise(values[half:])
+    r = values[:8]
+    i = 8
+    while i < n - n % 8:
+        for j in range(8):
+            r[j] += values[i + j]
+        i += 8
+    total = ((r[0] + r[1]) + (r[2] + r[3])) + ((r[4] + r[5]) + (r[6] + r[7]))
+    for v in values[i:]:
+        total += v
+    return total
+
+
 def _normal(values) -> bool:
     """Whether every value is finite and 0 or at least the smallest normal float."""
     for v in values:
@@ -175,9 +199,7 @@ def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str,
     # external torques
     torques = [0.0] * len(lay.rows)
     for row, ports in lay.reacting:
-        total = port[ports[0]]
-        for j in ports[1:]:
-            total = total + port[j]
+        total = port[ports[0]] + _pairwise([port[j] for j in ports[1:]]) if len(ports) > 1 else port[ports[0]]
         terms = max(abs(port[j]) for j in ports)
         if loss_torques is not None:
             total = total - loss_torques[row]
