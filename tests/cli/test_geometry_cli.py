@@ -76,7 +76,7 @@ def test_search_matches_the_library_in_every_format(tmp_path):
         (["--tolerance", "150%"], "0 <= tolerance < 100 %"),
         (["--planets", "6..3"], "expected a range LOW..HIGH"),
         (["--sun", "a..b"], "--sun: expected a whole number or a range"),
-        (["--held", "sun", "--driver", "sun"], "held, driver and driven must be"),
+        (["--held", "sun", "--driver", "sun"], "--held sun, --driver sun, --driven carrier: give three different members"),
     ],
 )
 def test_search_bad_input_exit_2(args, match):
@@ -100,3 +100,20 @@ def test_analyze_reports_geometry_in_every_format(tmp_path):
     # files without geometry keep the schema-1 keys
     plain = json.loads(runner.invoke(app, ["analyze", str(EXAMPLES / "brandenberger_1952.toml"), "-f", "json"]).output)
     assert "geometry" not in plain
+
+
+@pytest.mark.parametrize("args, says", [
+    # a minus set with the carrier held turns backwards: +3 is out of reach (the table was just empty)
+    (["--ratio", "3", "--held", "carrier", "--driver", "sun", "--driven", "ring"],
+     "no tooth counts of these ranges come within ± 1 % of 3; with the carrier held, sun -> ring ranges over "
+     "-14.33 … -1.3"),
+    # 20/32/84 gives 5.2 exactly (1 + 84/20), but (20 + 84)/7 is not whole: seven planets cannot be equally spaced
+    (["--ratio", "5.2", "--tolerance", "0", "--planets", "7", "--sun", "20", "--planet", "32"],
+     "1 tooth-count set meets the ratio, but none passes assembly"),
+])
+def test_search_says_why_it_found_nothing(args, says):
+    result = runner.invoke(app, ["search", *args])
+    assert result.exit_code == 0, result.output
+    assert result.output.startswith("0 tooth-count sets") and says in result.output
+    found = runner.invoke(app, ["search", "--ratio", "5.2"])
+    assert "none found" not in found.output

@@ -187,6 +187,9 @@ def search(
     if not RATIO_RANGE[0] <= abs(ratio) <= RATIO_RANGE[1]:  # also NaN
         raise ModelError(f"search: --ratio: expected a ratio n_driver/n_driven with {RATIO_RANGE[0]:g} <= |ratio| "
                          f"<= {RATIO_RANGE[1]:g}, got {ratio!r}.")
+    if len({held, driver, driven}) < 3:
+        raise ModelError(f"search: --held {held.value}, --driver {driver.value}, --driven {driven.value}: give three "
+                         "different members (sun, ring, carrier), e.g. --held ring --driver sun --driven carrier.")
     low, high = parse_range(planets, "search: --planets", 1, MAX_PLANETS)
     result = search_teeth(
         ratio, held=held.value, driver=driver.value, driven=driven.value, tolerance=parse_tolerance(tolerance),
