@@ -13,7 +13,6 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..io.geometry_report import geometry_dict, geometry_html, geometry_markdown, geometry_results, geometry_text
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
@@ -36,14 +35,26 @@ def analyze(
     train_file = load(file, gear, set_)
     solution = solved(train_file, file)
     units, title, source = train_file.units, report_title(train_file), str(file)
-    shapes = geometry_results(train_file.geometry, solution)
+    sections = _geometry_sections(train_file, solution)
     if format is OutputFormat.json:
-        text = json_report(solution, units, title=title, source=source, geometry=geometry_dict(shapes))
+        text = json_report(solution, units, title=title, source=source, geometry=sections["json"])
     elif format is OutputFormat.markdown:
-        text = markdown_report(solution, units, title=title) + ("\n" + geometry_markdown(shapes) if shapes else "")
+        text = markdown_report(solution, units, title=title) + sections["markdown"]
     elif format is OutputFormat.html:
         text = html_report(solution, units, title=title, source=source, description=train_file.description,
-                           lang=lang, sections=geometry_html(shapes))
+                           lang=lang, sections=sections["html"])
     else:
-        text = text_report(solution, units, title=title) + ("\n\n" + geometry_text(shapes) if shapes else "")
+        text = text_report(solution, units, title=title) + sections["text"]
     emit(text, out)
+
+
+def _geometry_sections(train_file, solution) -> dict:
+    """Gears, fitting and forces of the elements with a geometry table, per format (empty without one; the
+    geometry package is imported only then)."""
+    if not train_file.geometry:
+        return {"json": None, "markdown": "", "html": "", "text": ""}
+    from ..io.geometry_report import geometry_dict, geometry_html, geometry_markdown, geometry_results, geometry_text
+
+    shapes = geometry_results(train_file.geometry, solution)
+    return {"json": geometry_dict(shapes), "markdown": "\n" + geometry_markdown(shapes), "html": geometry_html(shapes),
+            "text": "\n\n" + geometry_text(shapes)}

@@ -108,7 +108,7 @@ class ToothSearch:
     def best(self) -> Candidate | None:
         return self.candidates[0] if self.candidates else None
 
-    _HEAD = ["z_sun", "z_planet", "z_ring", "N", "ratio", "error %", "hunting", "clearance mm"]
+    _HEAD = ["z_sun", "z_planet", "z_ring", "N", "ratio", "error [%]", "hunting", "clearance [mm]"]
 
     def _rows(self, limit: int) -> list[list[object]]:
         return [[c.z_sun, c.z_planet, c.z_ring, c.planets, c.ratio, 100 * c.error, c.hunting, c.clearance]

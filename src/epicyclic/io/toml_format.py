@@ -52,7 +52,6 @@ from ..model import HOUSING, Brake, Clutch, GearStage, GearTrain, OperatingPoint
 from ..model.planetary import check_planets
 from ..text import short, terminal_text
 from ..units import Units, to_core
-from . import geometry_format
 from .located import locate_error, operating_point_where
 from .overrides import OverrideError, apply_overrides
 from .reader import TableReader, at_key, kind_of
@@ -76,6 +75,13 @@ _UNIT_KEYS = {"speed", "torque", "power"}
 _OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
 _TRANSMISSION_KEYS = {"input", "output", "schedule"}
 
+
+
+def _geometry_format():
+    """The geometry and loss tables' reader: imported only for files that have such tables (fast start)."""
+    from . import geometry_format
+
+    return geometry_format
 
 @dataclass(frozen=True)
 class Transmission:
@@ -289,12 +295,14 @@ class _Reader(TableReader):
                                           "[[gear]], [[clutch]] or [[brake]] table.")
         read = {"planetary": self.read_planetary, "gear": self.read_gear,
                 "clutch": self.read_shift, "brake": self.read_shift}
-        lubricant = geometry_format.read_lubricant(self, data)
+        lubricant = _geometry_format().read_lubricant(self, data) if "lubricant" in data else None
         elements, geometry, losses = [], {}, {}
         for kind, group in tables.items():
             for k, table in enumerate(group):
-                element, shape, model = geometry_format.read_extras(
-                    self, kind, table, read[kind](table, k, kind), self.element_where(kind, k, table), lubricant)
+                element, shape, model = read[kind](table, k, kind), None, None
+                if "geometry" in table or "losses" in table:
+                    element, shape, model = _geometry_format().read_extras(
+                        self, kind, table, element, self.element_where(kind, k, table), lubricant)
                 elements.append(element)
                 if shape is not None:
                     geometry[element.name] = shape
@@ -368,7 +376,8 @@ class _Reader(TableReader):
                                 stationary_efficiency=1.0 if eta is None else eta, planets=planets, **shafts)
         teeth = self.table(table["teeth"], at_key(where, "teeth"))
         return self.planetary_from_teeth(teeth, name, shafts, eta, meshes, planets, where,
-                                         geometry_format.module_ratio(self, table, where))
+                                         _geometry_format().module_ratio(self, table, where)
+                                         if "geometry" in table else 1.0)
 
     def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where, ratio=None) -> PlanetarySet:
         kind = teeth.get("kind", "simple")
