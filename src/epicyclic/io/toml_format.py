@@ -76,13 +76,6 @@ _OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
 _TRANSMISSION_KEYS = {"input", "output", "schedule"}
 
 
-
-def _geometry_format():
-    """The geometry and loss tables' reader: imported only for files that have such tables (fast start)."""
-    from . import geometry_format
-
-    return geometry_format
-
 @dataclass(frozen=True)
 class Transmission:
     """A multi-speed transmission: input and output shaft and the shift schedule.
@@ -295,13 +288,20 @@ class _Reader(TableReader):
                                           "[[gear]], [[clutch]] or [[brake]] table.")
         read = {"planetary": self.read_planetary, "gear": self.read_gear,
                 "clutch": self.read_shift, "brake": self.read_shift}
-        lubricant = _geometry_format().read_lubricant(self, data) if "lubricant" in data else None
+        # geometry and loss tables are optional: their reader (and the geometry and loss packages) is
+        # imported only for a file that has them, so that a plain file starts fast
+        extras = None
+        if "lubricant" in data or any("geometry" in t or "losses" in t for g in tables.values() for t in g
+                                       if isinstance(t, dict)):
+            from . import geometry_format as extras
+        lubricant = extras.read_lubricant(self, data) if extras else None
         elements, geometry, losses = [], {}, {}
         for kind, group in tables.items():
             for k, table in enumerate(group):
-                element, shape, model = read[kind](table, k, kind), None, None
-                if "geometry" in table or "losses" in table:
-                    element, shape, model = _geometry_format().read_extras(
+                element = read[kind](table, k, kind)
+                shape = model = None
+                if extras:
+                    element, shape, model = extras.read_extras(
                         self, kind, table, element, self.element_where(kind, k, table), lubricant)
                 elements.append(element)
                 if shape is not None:
@@ -375,9 +375,12 @@ class _Reader(TableReader):
             return self.checked(key, owner, PlanetarySet, name, stationary_ratio=ratio,
                                 stationary_efficiency=1.0 if eta is None else eta, planets=planets, **shafts)
         teeth = self.table(table["teeth"], at_key(where, "teeth"))
-        return self.planetary_from_teeth(teeth, name, shafts, eta, meshes, planets, where,
-                                         _geometry_format().module_ratio(self, table, where)
-                                         if "geometry" in table else 1.0)
+        ratio = 1.0
+        if "geometry" in table:  # a stepped set's module ratio m2/m1 from its geometry table
+            from .geometry_format import module_ratio
+
+            ratio = module_ratio(self, table, where)
+        return self.planetary_from_teeth(teeth, name, shafts, eta, meshes, planets, where, ratio)
 
     def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where, ratio=None) -> PlanetarySet:
         kind = teeth.get("kind", "simple")
