@@ -82,7 +82,6 @@ class Evaluation:
     direction: np.ndarray
     block: np.ndarray | None = None  # x, torques, powers, rolling, coupling, loss, relative: rows of one array
     normal: bool | None = None  # every value (speeds included) finite and 0 or normal (None: not known)
-    floats: dict | None = None  # one point's quantities as lists of floats (solver.point), where known
 
 
 def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -29,7 +29,7 @@ from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
 from .evaluate import Evaluation, evaluate
 
-__all__ = ["evaluate_point"]
+__all__ = ["evaluate_point", "PointEvaluation"]
 
 _TINY, _HUGE = float(np.finfo(float).tiny), float(np.finfo(float).max)
 
@@ -83,13 +83,13 @@ class _Unusual(Exception):
 
 def evaluate_point(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
                    given: Mapping[str, float], efficiencies: np.ndarray | None = None,
-                   shaft_torques: np.ndarray | None = None) -> Evaluation:
+                   shaft_torques: np.ndarray | None = None) -> Evaluation | PointEvaluation:
     """:func:`~epicyclic.solver.evaluate.evaluate` of one point (arrays with one column; ``given``: floats).
 
     Returns
     -------
-    Evaluation
-        The same numbers as the array code's.
+    PointEvaluation or Evaluation
+        The same numbers as the array code's (an Evaluation where the array code took over).
 
     Raises
     ------
@@ -105,15 +105,36 @@ def evaluate_point(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, patte
     except _Unusual:
         return evaluate(mats, speeds, x, pattern, {s: np.array([v]) for s, v in given.items()},
                         efficiencies, shaft_torques)
-    x_out, torques, powers, relative, rolling, coupling, loss, observed, direction = values
-    column = np.array
-    floats = {"speeds": n, "x": x_out, "torques": torques, "powers": powers, "relative": relative,
-              "rolling": rolling, "coupling": coupling, "loss": loss, "direction": direction}
-    return Evaluation(speeds, column(x_out)[:, None], column(torques)[:, None], column(powers)[:, None],
-                      column(relative).reshape(-1, 1), column(rolling).reshape(-1, 1),
-                      column(coupling).reshape(-1, 1), column(loss).reshape(-1, 1),
-                      column(observed, dtype=int).reshape(-1, 1), column(direction, dtype=int).reshape(-1, 1),
-                      normal=True, floats=floats)
+    names = ("x", "torques", "powers", "relative", "rolling", "coupling", "loss", "pattern", "direction")
+    return PointEvaluation(speeds, dict(zip(names, values), speeds=n))
+
+
+class PointEvaluation:
+    """An :class:`~epicyclic.solver.evaluate.Evaluation` of one point, kept as lists of floats.
+
+    ``floats`` maps each quantity's name to its list; the arrays of an Evaluation (one column) are
+    made from them on first use.
+    """
+
+    normal = True  # every value finite and 0 or normal: checked before it was made
+    block = None
+
+    def __init__(self, speeds: np.ndarray, floats: dict):
+        self.speeds = speeds
+        self.floats = floats
+
+    def _column(self, name: str) -> np.ndarray:
+        return np.array(self.floats[name], dtype=int if name in ("pattern", "direction") else float).reshape(-1, 1)
+
+    x = cached_property(lambda self: self._column("x"))
+    torques = cached_property(lambda self: self._column("torques"))
+    powers = cached_property(lambda self: self._column("powers"))
+    relative = cached_property(lambda self: self._column("relative"))
+    rolling = cached_property(lambda self: self._column("rolling"))
+    coupling = cached_property(lambda self: self._column("coupling"))
+    loss = cached_property(lambda self: self._column("loss"))
+    pattern = cached_property(lambda self: self._column("pattern"))
+    direction = cached_property(lambda self: self._column("direction"))
 
 
 def _pairwise(values: list) -> float:

@@ -295,7 +295,7 @@ class _Column:
     """The one point of an Evaluation as Python floats (read once, not entry by entry)."""
 
     def __init__(self, ev: Evaluation):
-        floats = ev.floats or {name: getattr(ev, name)[:, 0].tolist() for name in (
+        floats = getattr(ev, "floats", None) or {name: getattr(ev, name)[:, 0].tolist() for name in (
             "speeds", "torques", "powers", "x", "relative", "rolling", "coupling", "loss", "direction")}
         self.speeds, self.torques, self.powers, self.x = (floats[k] for k in ("speeds", "torques", "powers", "x"))
         self.relative, self.rolling, self.coupling, self.loss = (floats[k] for k in (
