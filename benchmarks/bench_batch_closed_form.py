@@ -9,8 +9,7 @@ shaft III — and returns the same arrays as `solve_batch`: every speed, externa
 every port torque, the loss per element, input and output power, loss, efficiency, self-locking.
 The run checks that the arrays agree to round-off, then times both.
 
-Target (issue 11): `solve_batch` within 3× of the closed form.  For comparison the run also times
-`solve_batch` with all points in one block (`solver.batch.BLOCK`), as it worked before the blocks.
+Target (issue 11): `solve_batch` within 3× of the closed form.
 
 Run:  .venv/bin/python benchmarks/bench_batch_closed_form.py [points]
 """
@@ -23,7 +22,6 @@ import time
 import numpy as np
 
 from epicyclic.demo import brandenberger_1952
-from epicyclic.solver import batch as batch_module
 from epicyclic.solver.batch import solve_batch
 
 I0 = (24 * 42) / (50 * 30)  # stationary ratio of the set, (n_I − n_III)/(n_II − n_III): bd/ac
@@ -110,10 +108,6 @@ def main(points: int = 1_000_000, repeats: int = 5) -> None:
     batch(speed[:1000], torque[:1000])  # warm-up (imports, caches)
     closed_time, closed = best_of(repeats, closed_form, speed, torque)
     batch_time, result = best_of(repeats, batch, speed, torque)
-    block = batch_module.BLOCK
-    batch_module.BLOCK = points  # all points in one block: every array streams through memory
-    whole_time, _ = best_of(max(1, repeats // 2), batch, speed, torque)
-    batch_module.BLOCK = block
     solved = from_batch(result)
     worst = 0.0
     for key, expected in closed.items():
@@ -129,8 +123,6 @@ def main(points: int = 1_000_000, repeats: int = 5) -> None:
     print(f"closed form (numpy, by hand)    {closed_time * 1e3:>12.1f} ms  ({closed_time / points * 1e9:.0f} ns/point)")
     print(f"solve_batch                     {batch_time * 1e3:>12.1f} ms  ({batch_time / points * 1e9:.0f} ns/point)")
     print(f"ratio solve_batch / closed form {batch_time / closed_time:>12.2f}   (target ≤ 3)")
-    print(f"solve_batch in one block        {whole_time * 1e3:>12.1f} ms  (blocks of {block} points: "
-          f"{whole_time / batch_time:.1f}× faster)")
     print(f"arrays agree: {len(closed)} arrays, largest difference {worst:.1e} of the array's scale")
     if worst > 1e-9:
         raise SystemExit("batch and closed form disagree")
