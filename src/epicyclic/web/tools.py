@@ -153,7 +153,9 @@ def _defaults(tool: Tool, context: Context, chosen_set: str | None) -> dict[str,
             values[f.name] = options[0] if options else ""
     if context.gear and "gear" in values:
         values["gear"] = context.gear
-    chosen = chosen_set if chosen_set is not None else values.get("set")
+    if chosen_set and "set" in values:
+        values["set"] = chosen_set
+    chosen = values.get("set")
     if chosen and chosen != ALL:
         values.update({k: v for k, v in _set_defaults(context, chosen).items() if k in values})
     first = _first_geometry(context)
@@ -173,6 +175,16 @@ def form_rows(tool: Tool, context: Context, chosen_set: str | None = None) -> li
             continue
         rows.append((f, values[f.name], _choices(f, context) if f.kind == "choice" else ()))
     return rows
+
+
+def _parsed(field: Field, text: str, tool: str) -> Any:
+    """A text field through its parser (the command line's range grammar); its error is the field's."""
+    if field.parse is None:
+        return text
+    try:
+        return field.parse(text, f"{tool}: {field.label}")
+    except EpicyclicError as exc:
+        raise ToolError(str(exc)) from None
 
 
 def _read(tool: Tool, given: Mapping[str, str], context: Context) -> dict[str, Any]:
@@ -200,7 +212,7 @@ def _read(tool: Tool, given: Mapping[str, str], context: Context) -> dict[str, A
                 raise ToolError(f"{tool.name}: {f.label}: a value is needed.")
             values[f.name] = None
         elif f.kind == "text":
-            values[f.name] = f.parse(text, f"{tool.name}: {f.label}") if f.parse is not None else text
+            values[f.name] = _parsed(f, text, tool.name)
         elif f.kind == "numbers":
             parts = [p for p in text.replace(";", ",").split(",") if p.strip()]
             if not 1 <= len(parts) <= 12:
@@ -259,9 +271,9 @@ def _ratio(text: str, name: str) -> float:
         ratio = float(text)
     except ValueError:
         raise ToolError(f"{name}: expected a number, got {text!r}.") from None
-    if not RATIO_RANGE[0] <= abs(ratio) <= RATIO_RANGE[1]:  # also NaN
+    if not RATIO_RANGE[0] <= abs(ratio) <= RATIO_RANGE[1]:  # also NaN; as `epicyclic search --ratio`
         raise ToolError(f"{name}: expected a ratio n_driver/n_driven with {RATIO_RANGE[0]:g} <= |ratio| "
-                        f"<= {RATIO_RANGE[1]:g}, got {text!r}.")
+                        f"<= {RATIO_RANGE[1]:g}, got {ratio!r}.")
     return ratio
 
 
@@ -374,7 +386,7 @@ _GEOMETRY = (
 
 TOOLS: dict[str, Tool] = {t.name: t for t in (
     Tool("fit", "Fit checks", _GEOMETRY + (
-        Field("planets", "planets (default: the file's)", kind="integer", low=1, high=MAX_PLANETS, optional=True),
+        Field("planets", "planets (empty = the file's)", kind="integer", low=1, high=MAX_PLANETS, optional=True),
         Field("unequal", "accept unequal spacing", "no", kind="choice", choices=_YES_NO),
         Field("min_clearance", "least tip clearance [mm]", "0", low=0, high=1000),
         Field("undercut", "undercut limit", "theoretical", kind="choice", choices=_UNDERCUT),
@@ -396,7 +408,7 @@ TOOLS: dict[str, Tool] = {t.name: t for t in (
         Field("driven", "driven member", "carrier", kind="choice", choices=_MEMBERS),
         Field("sun", "sun teeth (12..80)", "12..80", kind="text", parse=_range(3, 400)),
         Field("planet", "planet teeth", "12..80", kind="text", parse=_range(3, 400)),
-        Field("ring", "ring teeth (default: any)", "", kind="text", optional=True, parse=_range(3, 400)),
+        Field("ring", "ring teeth (empty = any)", "", kind="text", optional=True, parse=_range(3, 400)),
         Field("pressure_angle", "pressure angle [°]", "20", low=1, high=44),
         Field("min_clearance", "least tip clearance [mm]", "0", low=0, high=1000),
         Field("undercut", "undercut limit", "theoretical", kind="choice", choices=_UNDERCUT),

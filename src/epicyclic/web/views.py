@@ -320,11 +320,15 @@ def _tool_context(state: PageState, name: str) -> Any:
 
 def _run(state: PageState, work: Any, *args: Any) -> Any:
     """``work(*args)`` with the library's errors located in the file as the command line locates them
-    (``error: FILE: [where]: message``) and marked at their line in the editor."""
+    (``error: FILE: [where]: message``) and marked at their line in the editor; a bad field of the form
+    (:class:`~epicyclic.web.tools.ToolError`) is said as it is."""
     from ..io.located import locate_error
+    from .tools import ToolError
 
     try:
         return work(*args)
+    except ToolError:
+        raise  # a field of the form, not the file
     except EpicyclicError as exc:
         message = str(locate_error(exc, state.source))
         raise _Bad(problem(state.text, message), state.text) from None
