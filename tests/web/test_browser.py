@@ -273,7 +273,7 @@ def test_geometry_form_and_german_explanation(browser, server):
     open_example(browser, server, "simple_set_ring_held_sun_drives")
     open_details(browser, "#tool-fit")
     click(browser, "#tool-fit button")
-    shows(browser, "#tool-fit-result table", "coaxiality")
+    shows(browser, "#tool-fit-result", "coaxiality")
     settled(browser)
     Select(browser.find_element(By.ID, "lang")).select_by_value("de")  # replaces the results, pictures included
     shows(browser, "#explain summary", "Deutsch")
@@ -292,3 +292,37 @@ def test_open_a_file_from_disk(browser, server, tmp_path):
     wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#results .title"), "Uploaded: "))
     assert browser.find_element(By.CSS_SELECTOR, ".editor .source").text == "my_train.toml"
     assert browser.find_element(By.ID, "toml").get_attribute("value") == text
+
+
+def test_efficiency_map_form_and_loss_split(browser, server, downloads):
+    open_example(browser, server, "geometry_simple_set")
+    split = shows(browser, "#loss-split", "bearing")  # the loss by source of each element and in all
+    expected = loads_train_file(bundled_examples()["geometry_simple_set"].text).solve().elements["P"].loss_sources
+    assert f"P {fmt(expected['mesh'], 6)} {fmt(expected['bearing'], 6)} {fmt(expected['drag'], 6)}" in split
+    open_details(browser, "#tool-fit")  # the set's fields start from the file's geometry table
+    Select(browser.find_element(By.NAME, "tool_fit_set")).select_by_value("P")
+    wait(browser, lambda b: b.find_element(By.NAME, "tool_fit_module").get_attribute("value") == "1.75")
+    assert browser.find_element(By.NAME, "tool_fit_x_sun").get_attribute("value") == "0.438"
+    click(browser, "#tool-fit > button")
+    shows(browser, "#tool-fit-result", "a_w = 56.7999 mm")  # lecad test run: a = 56.8 mm
+    open_details(browser, "#tool-map")
+    speed = browser.find_element(By.NAME, "tool_map_speed")
+    speed.clear()
+    speed.send_keys("1000..5000:21")
+    click(browser, "#tool-map > button")
+    summary = shows(browser, "#tool-map-result pre", "input speed 1000..5000 1/min (21 values)")
+    assert "losses by source" in summary
+    wait(browser, lambda b: b.find_element(By.CSS_SELECTOR, "#tool-map-result svg").size["height"] > 200)
+    shot(browser, "7-efficiency-map")
+    click(browser, '#tool-map-result button[data-download="/download/map.csv"]')
+    target = downloads / "geometry_simple_set-map.csv"
+    wait(browser, lambda _: target.exists() and target.stat().st_size > 0)
+    lines = target.read_text().splitlines()
+    assert lines[0].startswith("speed_rpm,torque_Nm,efficiency") and len(lines) == 1 + 21 * 50
+    # a load beyond the friction correlation: the command line's message, at the form
+    torque = browser.find_element(By.NAME, "tool_map_torque")
+    torque.clear()
+    torque.send_keys("1e300")
+    click(browser, "#tool-map > button")
+    assert "leaves no efficiency" in shows(browser, "#tool-map-result .problem .message", "μ·H_V >= 1")
+    assert no_alert(browser)
