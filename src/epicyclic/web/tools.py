@@ -256,7 +256,8 @@ def _forces(context: Context, v: Mapping[str, Any]) -> str:
     from ..io.located import check_finite
 
     if context.solution is None:
-        raise ToolError("forces: the file has no operating point to take the torques from; give one in the form.")
+        raise ToolError(f"{context.train_file.source}: [operating_point]: the file has no [operating_point] table, "
+                        "so there are no torques for the forces; give an operating point in the form.")
     chosen = dict(_chosen(context, v))
     if v["set"] != ALL and v["load_sharing"] is not None:
         chosen[v["set"]] = replace(chosen[v["set"]], load_sharing=v["load_sharing"])
