@@ -13,7 +13,6 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..io.geometry_report import geometry_dict, geometry_html, geometry_markdown, geometry_results, geometry_text
 from ..io.html_report import html_report
 from ..io.json_report import json_report
 from ..io.tables import markdown_report, text_report
@@ -36,14 +35,41 @@ def analyze(
     train_file = load(file, gear, set_)
     solution = solved(train_file, file)
     units, title, source = train_file.units, report_title(train_file), str(file)
-    shapes = geometry_results(train_file.geometry, solution)
+    sections = _GeometrySections(train_file.geometry, solution)
     if format is OutputFormat.json:
-        text = json_report(solution, units, title=title, source=source, geometry=geometry_dict(shapes))
+        text = json_report(solution, units, title=title, source=source, geometry=sections.json())
     elif format is OutputFormat.markdown:
-        text = markdown_report(solution, units, title=title) + ("\n" + geometry_markdown(shapes) if shapes else "")
+        text = markdown_report(solution, units, title=title) + sections.markdown()
     elif format is OutputFormat.html:
         text = html_report(solution, units, title=title, source=source, description=train_file.description,
-                           lang=lang, sections=geometry_html(shapes))
+                           lang=lang, sections=sections.html())
     else:
-        text = text_report(solution, units, title=title) + ("\n\n" + geometry_text(shapes) if shapes else "")
+        text = text_report(solution, units, title=title) + sections.text()
     emit(text, out)
+
+
+class _GeometrySections:
+    """The geometry part of the report (fitting and forces), empty for a file without geometry tables.
+
+    The geometry package is imported only for a file that has geometry, so that a plain file starts fast.
+    """
+
+    def __init__(self, geometry, solution):
+        self.results = None
+        if geometry:
+            from ..io import geometry_report
+
+            self.report = geometry_report
+            self.results = geometry_report.geometry_results(geometry, solution)
+
+    def json(self):
+        return self.report.geometry_dict(self.results) if self.results else None
+
+    def markdown(self) -> str:
+        return "\n" + self.report.geometry_markdown(self.results) if self.results else ""
+
+    def html(self):
+        return self.report.geometry_html(self.results) if self.results else ""
+
+    def text(self) -> str:
+        return "\n\n" + self.report.geometry_text(self.results) if self.results else ""

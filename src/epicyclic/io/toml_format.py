@@ -52,7 +52,6 @@ from ..model import HOUSING, Brake, Clutch, GearStage, GearTrain, OperatingPoint
 from ..model.planetary import check_planets
 from ..text import short, terminal_text
 from ..units import Units, to_core
-from . import geometry_format
 from .located import locate_error, operating_point_where
 from .overrides import OverrideError, apply_overrides
 from .reader import TableReader, at_key, kind_of
@@ -289,12 +288,21 @@ class _Reader(TableReader):
                                           "[[gear]], [[clutch]] or [[brake]] table.")
         read = {"planetary": self.read_planetary, "gear": self.read_gear,
                 "clutch": self.read_shift, "brake": self.read_shift}
-        lubricant = geometry_format.read_lubricant(self, data)
+        # geometry and loss tables are optional: their reader (and the geometry and loss packages) is
+        # imported only for a file that has them, so that a plain file starts fast
+        extras = None
+        if "lubricant" in data or any("geometry" in t or "losses" in t for g in tables.values() for t in g
+                                       if isinstance(t, dict)):
+            from . import geometry_format as extras
+        lubricant = extras.read_lubricant(self, data) if extras else None
         elements, geometry, losses = [], {}, {}
         for kind, group in tables.items():
             for k, table in enumerate(group):
-                element, shape, model = geometry_format.read_extras(
-                    self, kind, table, read[kind](table, k, kind), self.element_where(kind, k, table), lubricant)
+                element = read[kind](table, k, kind)
+                shape = model = None
+                if extras:
+                    element, shape, model = extras.read_extras(
+                        self, kind, table, element, self.element_where(kind, k, table), lubricant)
                 elements.append(element)
                 if shape is not None:
                     geometry[element.name] = shape
@@ -367,8 +375,12 @@ class _Reader(TableReader):
             return self.checked(key, owner, PlanetarySet, name, stationary_ratio=ratio,
                                 stationary_efficiency=1.0 if eta is None else eta, planets=planets, **shafts)
         teeth = self.table(table["teeth"], at_key(where, "teeth"))
-        return self.planetary_from_teeth(teeth, name, shafts, eta, meshes, planets, where,
-                                         geometry_format.module_ratio(self, table, where))
+        ratio = 1.0
+        if "geometry" in table:  # a stepped set's module ratio m2/m1 from its geometry table
+            from .geometry_format import module_ratio
+
+            ratio = module_ratio(self, table, where)
+        return self.planetary_from_teeth(teeth, name, shafts, eta, meshes, planets, where, ratio)
 
     def planetary_from_teeth(self, teeth, name, shafts, eta, meshes, planets, where, ratio=None) -> PlanetarySet:
         kind = teeth.get("kind", "simple")
