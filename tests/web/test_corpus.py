@@ -101,6 +101,7 @@ OPTION_FIELDS = {
 FORM_DIFFERENT = {
     "fit without geometry": "the form's fields give the geometry of a set with tooth counts",
     "search without --ratio": "the form starts with a ratio",
+    "map a transmission without a gear": "the form's gear field starts at the gear the page shows",
 }
 
 #: A file the search form is sent with (the search reads no file).

@@ -248,7 +248,7 @@ def _fit(context: Context, v: Mapping[str, Any]) -> str:
 
     results = geometry_results(_chosen(context, v), None, planets=v["planets"], allow_unequal=v["unequal"] == "yes",
                                min_clearance=v["min_clearance"], undercut=v["undercut"])
-    return geometry_html(results)
+    return geometry_html(results, heading="Geometry and fitting")  # as `epicyclic fit -f html`
 
 
 def _forces(context: Context, v: Mapping[str, Any]) -> str:
@@ -263,7 +263,8 @@ def _forces(context: Context, v: Mapping[str, Any]) -> str:
         chosen[v["set"]] = replace(chosen[v["set"]], load_sharing=v["load_sharing"])
     results = geometry_results(chosen, context.solution)
     check_finite(geometry_dict(results), context.train_file.source, "forces")
-    return geometry_html(results)
+    results = tuple(replace(r, fitting=None) for r in results)  # the forces only, as `epicyclic forces -f html`
+    return geometry_html(results, heading="Forces", show_geometry=False)
 
 
 # ---------------------------------------------------------------------- search
@@ -297,6 +298,9 @@ def search_of(context: Context, v: Mapping[str, Any]):
     """The :class:`~epicyclic.geometry.ToothSearch` of the form's values (as ``epicyclic search``)."""
     from ..geometry import search_teeth
 
+    if len({v["held"], v["driver"], v["driven"]}) < 3:  # as `epicyclic search`
+        raise ToolError(f"search: held member {v['held']}, driving member {v['driver']}, driven member "
+                        f"{v['driven']}: give three different members (sun, ring, carrier).")
     low, high = v["planets"]
     return search_teeth(
         v["ratio"], held=v["held"], driver=v["driver"], driven=v["driven"], tolerance=v["tolerance"],
