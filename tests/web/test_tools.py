@@ -263,3 +263,10 @@ def test_the_loss_split_of_a_transmission_gear(client, page_form):
 def test_no_loss_split_without_loss_models(client, examples, page_form):
     page = client.post("/apply/text", data=page_form(examples["brandenberger_1952"].text)).text
     assert 'id="loss-split"' not in page and "loss by source" not in page
+
+
+def test_search_needs_three_different_members(client, examples, page_form):
+    data = page_form(examples["brandenberger_1952"].text, tool_search_held="sun", tool_search_driver="sun")
+    said = message(client.post("/tool/search", data=data))
+    assert "give three different members" in said
+    assert "give three different members" in command_error("search", "--ratio", "4", "--held", "sun", "--driver", "sun")
