@@ -58,6 +58,8 @@ __all__ = [
     "FRAMES_RANGE",
     "FPS_RANGE",
     "SIZE_RANGE",
+    "MAX_MAP_POINTS",
+    "MAX_MAP_VALUES",
     "check_range",
     "check_count",
 ]
@@ -121,6 +123,12 @@ FRAMES_RANGE = (2, 240)
 FPS_RANGE = (1, 60)
 #: ``animate --size``: width of the SVG or GIF in pixels.
 SIZE_RANGE = (120, 2000)
+
+# ---------------------------------------------------------------- efficiency maps
+#: Most grid points (speed values × torque values) of one efficiency map (``map``, the page's form).
+MAX_MAP_POINTS = 1_000_000
+#: Most values along one axis of an efficiency map (``A..B:N``).
+MAX_MAP_VALUES = 10_000
 
 # ---------------------------------------------------------------- synthesis
 #: Most planetary sets of a synthesis (five sets have ~10^7 tie patterns before any placement).
