@@ -103,6 +103,10 @@ class SpeedSolver:
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
         size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
+        # measured against the largest speed (per point), so that |A⁺|·|A|·|n| cannot overflow near 1e308
+        # (an infinite bound made every speed "round-off": a carrier at 2.8e307 1/min came out as 0)
+        peak = np.max(size, axis=0, keepdims=True) if size.size else np.ones((1,) + size.shape[1:])
+        size = size / np.where(peak > 0.0, peak, 1.0)
         terms = np.abs(self.system.inverse) @ (np.abs(self.system.matrix) @ size)
         zero = size <= ZERO_TOLERANCE * terms
         zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given
