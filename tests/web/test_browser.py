@@ -248,6 +248,9 @@ def test_geometry_form_and_german_explanation(browser, server):
     wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#explain summary"), "Deutsch"))
     browser.find_element(By.CSS_SELECTOR, "#explain summary").click()
     assert "Wirkungsgrad" in text_of(browser, "#explain .epicyclic-explanation")
+    # the worked solution's long lines scroll inside the results column; the page itself does not get wider
+    # than the window (it did: the grid column grew to the widest line, cutting the tables off at the right)
+    assert browser.execute_script("return document.documentElement.scrollWidth <= window.innerWidth")
     shot(browser, "6-geometry-german")
 
 
