@@ -661,6 +661,11 @@ CORPUS: list[Bad] = [
     Bad("synthesize: |i0| below 1", "synthesize", SYNTH + "[bounds]\nstationary_ratio = [0.5, 3]\n", "must exceed 1"),
     Bad("synthesize: efficiency above 1", "synthesize", SYNTH + "[search]\nstationary_efficiency = 1.2\n", "(0, 1]"),
     Bad("synthesize: unknown search key", "synthesize", SYNTH + "[search]\nspeed = 3\n", "unknown constraint"),
+    # accepted before: 100 planets searched to "0 candidates"; 100,000 sun teeth searched (and could write files
+    # that gears refuses past 1000 teeth)
+    Bad("synthesize: 100 planets", "synthesize", SYNTH + "[bounds]\nplanets = [100]\n", "bounds.planets must be at most 24"),
+    Bad("synthesize: sun teeth past the limit", "synthesize", SYNTH + "[bounds]\nsun = [3, 100000]\n",
+        "bounds.sun must be at most 1000"),
     Bad("synthesize: --out is the input", "synthesize", SYNTH, "is the input file", ("{file}", "--out", "{file}")),
     Bad("synthesize: --csv is the input", "synthesize", SYNTH, "is the input file", ("{file}", "--csv", "{file}")),
     Bad("synthesize: --plot with a wrong suffix", "synthesize", SYNTH, "--plot", ("{file}", "--plot", "{tmp}/a.txt"),
