@@ -22,6 +22,9 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "src" / "epicyclic"
 #: Modules that are no public API: the command line has its own reference; ``demo`` is a script.
 NOT_API = {"cli", "demo", "__main__"}
+#: Public modules inside a sub-package that its ``__init__`` does not re-export, documented on its page
+#: (``from epicyclic.solver.batch import solve_batch``).
+PUBLIC_SUBMODULES = {"epicyclic.solver": ("epicyclic.solver.batch", "epicyclic.solver.given_losses")}
 
 
 # ---------------------------------------------------------------------- command line
@@ -107,6 +110,9 @@ def api_pages() -> None:
             if path.name == "__init__.py":
                 for name in _shadowed(path):
                     out.write(f"\n::: {dotted}.{name}\n")
+            for module in PUBLIC_SUBMODULES.get(dotted, ()):
+                out.write(f"\n::: {module}\n    options:\n      show_root_heading: true\n"
+                          "      show_root_full_path: true\n      show_submodules: false\n")
         mkdocs_gen_files.set_edit_path(f"reference/api/{page}", path.relative_to(ROOT))
     with mkdocs_gen_files.open("reference/api/index.md", "w") as out:
         out.write("# API reference\n\nGenerated from the docstrings (numpydoc) when this site is built. "

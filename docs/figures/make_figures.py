@@ -1,4 +1,5 @@
-"""Regenerate the pictures of docs/plotting.md: ``.venv/bin/python docs/figures/make_figures.py``.
+"""Regenerate the pictures of docs/plotting.md and the efficiency-map how-to:
+``.venv/bin/python docs/figures/make_figures.py``.
 
 Brandenberger 1952, Bild 10 example (the Bild 8 situation: system I drives
 relative to the carrier; in the paper's units U/min, kp·cm, PS) and a simple
@@ -20,6 +21,19 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 
 
+def efficiency_map_figure() -> Path:
+    """docs/how-to/efficiency-map.md: the ZF 8HP 70 with geometry and losses, gear 3, 100 × 100 points."""
+    import numpy as np
+
+    from epicyclic.losses import efficiency_map
+
+    emap = efficiency_map(load_train_file(ROOT / "examples" / "zf_8hp70_geometry.toml"),
+                          np.linspace(500, 6000, 100), np.linspace(10, 500, 100), gear="3")
+    path = HERE / "zf_8hp70_gear3_map.png"
+    emap.plot().savefig(path, dpi=80)
+    return path
+
+
 def main() -> None:
     cases = {name: figure_subject(load_train_file(ROOT / "examples" / f"{stem}.toml"))
              for name, stem in (("brandenberger", "brandenberger_1952"), ("simple", "simple_set_ring_held_sun_drives"))}
@@ -33,6 +47,7 @@ def main() -> None:
           .gif(HERE / "simple_animation.gif", dpi=60))
     print(planetary_animation(brandenberger.solution, frames=32, fps=12, size=300, context=brandenberger.context)
           .gif(HERE / "brandenberger_animation.gif", dpi=60))
+    print(efficiency_map_figure())
 
 
 if __name__ == "__main__":

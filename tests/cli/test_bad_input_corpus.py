@@ -611,6 +611,9 @@ CORPUS: list[Bad] = [
     Bad("search --module 0", "search", None, "--module", ("--ratio", "5", "--module", "0"), usage=True),
     Bad("search --format unknown", "search", None, "--format", ("--ratio", "5", "--format", "xml"), usage=True),
     Bad("search --out is a folder", "search", None, "is a folder", ("--ratio", "5", "--out", "{tmp}")),
+    Bad("search driver is the driven", "search", None, "--driven", ("--ratio", "5", "--driver", "sun", "--driven",
+                                                                     "sun")),
+    Bad("search held is the driver", "search", None, "three different members", ("--ratio", "5", "--held", "sun")),
     # ---- map
     Bad("map --speed a word", "map", LOSS, "--speed", ("{file}", "--speed", "fast")),
     Bad("map --speed 0", "map", LOSS, "--speed", ("{file}", "--speed", "0..100:5")),
@@ -629,6 +632,9 @@ CORPUS: list[Bad] = [
     Bad("analyze at a torque no teeth carry", "analyze", sub(TORQUES, "torques = { in = 1e300 }", SCHLENK),
         "leaves no efficiency"),
     Bad("map a broken file", "map", sub("friction = 0.05", "friction = 2", LOSS), "key 'losses.friction'"),
+    Bad("map a transmission without a gear", "map", TRANS, "pick one (--gear"),
+    Bad("map a train with two degrees of freedom", "map", sub("[[brake]]\nname = \"B\"\nshaft = \"ring\"\n", "", GOOD),
+        "needs a train with one"),
     # serve: a row that wrongly passed would start a server, so those that reach the command run in a process
     Bad("serve --port 0", "serve", None, "--port", ("--port", "0")),
     Bad("serve --port 70000", "serve", None, "--port", ("--port", "70000")),

@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -76,7 +77,7 @@ def test_search_matches_the_library_in_every_format(tmp_path):
         (["--tolerance", "150%"], "0 <= tolerance < 100 %"),
         (["--planets", "6..3"], "expected a range LOW..HIGH"),
         (["--sun", "a..b"], "--sun: expected a whole number or a range"),
-        (["--held", "sun", "--driver", "sun"], "held, driver and driven must be"),
+        (["--held", "sun", "--driver", "sun"], "--held sun, --driver sun, --driven carrier: give three different members"),
     ],
 )
 def test_search_bad_input_exit_2(args, match):
@@ -100,3 +101,74 @@ def test_analyze_reports_geometry_in_every_format(tmp_path):
     # files without geometry keep the schema-1 keys
     plain = json.loads(runner.invoke(app, ["analyze", str(EXAMPLES / "brandenberger_1952.toml"), "-f", "json"]).output)
     assert "geometry" not in plain
+
+
+@pytest.mark.parametrize("args, says", [
+    # a minus set with the carrier held turns backwards: +3 is out of reach (the table was just empty)
+    (["--ratio", "3", "--held", "carrier", "--driver", "sun", "--driven", "ring"],
+     "no tooth counts of these ranges come within ± 1 % of 3; with the carrier held, sun -> ring ranges over "
+     "-14.33 … -1.3"),
+    # 20/32/84 gives 5.2 exactly (1 + 84/20), but (20 + 84)/7 is not whole: seven planets cannot be equally spaced
+    (["--ratio", "5.2", "--tolerance", "0", "--planets", "7", "--sun", "20", "--planet", "32"],
+     "1 tooth-count set meets the ratio, but none passes assembly"),
+])
+def test_search_says_why_it_found_nothing(args, says):
+    result = runner.invoke(app, ["search", *args])
+    assert result.exit_code == 0, result.output
+    assert result.output.startswith("0 tooth-count sets") and says in result.output
+    found = runner.invoke(app, ["search", "--ratio", "5.2"])
+    assert "none found" not in found.output
+
+
+def test_forces_reads_as_a_report():
+    # A user's reading of `forces` on a transmission: which gear (it did not say), units on every column (they
+    # were in the title only, `angle` had none), planets counted from 1 (were 0, 1, 2), angles to 0.01° (were
+    # 120.0000), small torques with their digits (a drag-loaded set showed "sun -0.01 N*m"), and the forces
+    # only: the gear tables and the fitting report are `fit`'s.
+    result = runner.invoke(app, ["forces", str(EXAMPLES / "zf_8hp70_geometry.toml")])
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    assert lines[0] == "forces of ZF 8HP 70 with illustrative gear geometry and losses, gear 1"
+    assert set(lines[1]) == {"="}
+    assert "planet  gear    angle [deg]  mesh         F_t [N]    F_r [N]   F_a [N]  bearing [N]" in lines
+    # 4 planets of set P1 at 0, 90, 180, 270°; K_γ = 1.2; F_t = 1.2 · 243.03 N·m / (4 · 36 mm) (FVA K_γ table)
+    rows = [line.split() for line in lines if line.startswith(("1 ", "2 ", "3 ", "4 "))][:8]
+    assert [r[0] for r in rows] == ["1", "1", "2", "2", "3", "3", "4", "4"]
+    assert [r[2] for r in rows[::2]] == ["0.00", "90.00", "180.00", "270.00"]
+    assert float(rows[0][4]) == pytest.approx(1.2 * 243.03e3 / (4 * 36.0), rel=1e-4)
+    assert "sun -0.0067796 N*m" in result.output  # P2 carries only drag in gear 1
+    assert "fitting of" not in result.output and "d_b" not in result.output
+    fit = runner.invoke(app, ["fit", str(EXAMPLES / "zf_8hp70_geometry.toml")]).output
+    assert fit.startswith("fitting of ZF 8HP 70") and "d_b [mm]" in fit and "a_w [mm]" in fit
+    assert "alpha_wt [deg]" in fit and "forces of" not in fit
+
+
+def test_forces_of_a_simple_set_by_hand():
+    # geometry_simple_set: sun 60 N·m, 3 planets (K_γ = 1), sun operating pitch diameter d_w1 = 37.2750 mm:
+    # F_t = 60 000 N·mm / (3 · 18.6375 mm) = 1073.11 N; F_r = F_t tan α_wt (22.1106°) = 435.98 N.
+    result = runner.invoke(app, ["forces", str(EXAMPLES / "geometry_simple_set.toml"), "-f", "json"])
+    body = json.loads(result.output)["forces"]["P"]
+    assert body["fitting"] is None
+    mesh = body["forces"]["bodies"][0]["meshes"][0]
+    assert mesh["tangential"] == pytest.approx(60e3 / (3 * 37.2750 / 2), rel=1e-5)
+    assert mesh["radial"] == pytest.approx(mesh["tangential"] * math.tan(math.radians(22.1106)), rel=1e-5)
+
+
+GEOMETRY_EXAMPLES = sorted(p.name for p in EXAMPLES.glob("*.toml") if ".geometry]" in p.read_text(encoding="utf-8"))
+
+
+@pytest.mark.parametrize("example", GEOMETRY_EXAMPLES)
+def test_every_bundled_design_fits(example):
+    # A bundled example is a design to copy: it must pass its own fit, warnings included. The stepped-set
+    # example said "coaxial with the sun mesh" but failed coaxiality (sun shift 0.2 moved a_w to 50.389 mm)
+    # and equal spacing ((20·18 + 86·30)/6 = 490 is not a multiple of 3), with an interference warning.
+    result = runner.invoke(app, ["fit", str(EXAMPLES / example), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    for name, body in json.loads(result.output)["fitting"].items():
+        failed = [c["message"] for c in body["fitting"]["checks"] if not c["passed"]]
+        assert not failed, (example, name, failed)
+
+
+def test_geometry_examples_are_found():
+    assert {"geometry_simple_set.toml", "geometry_stepped_set.toml", "wolfrom_drive.toml",
+            "zf_8hp70_geometry.toml"} <= set(GEOMETRY_EXAMPLES)

@@ -7,7 +7,9 @@ line and every line must succeed (``epicyclic serve``, which runs until stopped,
 which starts a Dask cluster, are parsed with their options, not started): a plain ``epicyclic …`` command runs in-process through typer's
 test runner (the same app as the installed command, without a new interpreter per line — the
 installed command itself is tested in tests/test_package.py), anything else (other programs, pipes,
-redirections, ``||``) in bash with the installed ``epicyclic`` on the PATH; ``toml`` blocks must parse.  Each page
+redirections, ``||``) in bash with the installed ``epicyclic`` on the PATH; ``toml`` blocks must parse, and a
+``toml`` block preceded by ``<!-- docs-test: file NAME -->`` is also saved as NAME for the blocks after it (the
+page tells the reader to save it so).  Each page
 runs in a fresh folder that holds ``examples/`` (a link), so outputs never land in the repository.
 A block preceded by ``<!-- docs-test: skip (reason) -->`` is not run; the reason is required.
 """
@@ -31,6 +33,7 @@ PAGES = sorted(p for p in DOCS.rglob("*.md"))
 SHELLS = {"sh", "bash", "console", "shell"}
 _FENCE = re.compile(r"^(\s*)(`{3,})\s*([\w+-]*)")
 _SKIP = re.compile(r"<!--\s*docs-test:\s*skip\s*\((.+)\)\s*-->")
+_FILE = re.compile(r"<!--\s*docs-test:\s*file\s+([\w.-]+)\s*-->")
 
 
 def code_blocks(path: Path) -> list[tuple[str, str, int, bool]]:
@@ -129,8 +132,10 @@ def test_page_examples_run(page, tmp_path, monkeypatch):
     namespace: dict = {"__name__": "__docs__"}
     env = {**os.environ, "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}",
            "MPLBACKEND": "Agg", "COLUMNS": "100"}
+    lines = page.read_text(encoding="utf-8").splitlines()
     for lang, code, line, skipped in code_blocks(page):
         where = f"{page.relative_to(ROOT)}:{line}"
+        save_as = _FILE.search(lines[line - 2]) if line >= 2 else None  # the line before the opening fence
         if skipped:
             continue
         if lang == "python":
@@ -152,6 +157,8 @@ def test_page_examples_run(page, tmp_path, monkeypatch):
                 tomllib.loads(code)
             except tomllib.TOMLDecodeError as exc:
                 pytest.fail(f"{where}: the TOML example does not parse: {exc}")
+            if save_as:
+                (work / save_as.group(1)).write_text(code, encoding="utf-8")
 
 
 def test_skips_give_a_reason_and_pages_have_examples():

@@ -87,8 +87,11 @@ def efficiency_map(
         raise ModelError(f"--out {str(out)!r}: give a file ending in {', '.join(MAP_SUFFIXES)}.")
     train_file = load(file, gear, set_)
     emap = compute(train_file, speeds, torques, direction="coast" if coast else "drive")
+    note = "" if train_file.losses else (
+        "note: the file has no loss tables ([planetary.losses], [gear.losses]): every efficiency comes from the "
+        "typed-in stationary efficiencies and is the same at every point (see docs/losses.md).")
     if out is None:
-        emit(emap.table() + "\n", None)
+        emit(emap.table() + ("\n" + note if note else "") + "\n", None)
         return
     if out.suffix.lower() in (".png", ".svg", ".pdf"):
         import matplotlib
@@ -97,3 +100,5 @@ def efficiency_map(
     with atomic_path(out) as temporary:  # the map appears whole or not at all
         emap.save(temporary)
     say(f"wrote {out.resolve()}")
+    if note:
+        say(note)

@@ -20,7 +20,8 @@ import typer
 
 from ..limits import MAX_PLANETS, MODULE_RANGE
 from ..text import short
-from ._common import FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded, load, solved
+from ._common import (FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded, load,
+                      report_title, solved)
 
 __all__ = ["fit", "forces", "search", "parse_range", "parse_tolerance"]
 
@@ -39,19 +40,27 @@ def _load(file: Path, gear: str | None, overrides: list[str] | None):
 
 
 def _render(results, format: OutputFormat, title: str, what: str) -> str:
+    """``fit``: gears, meshes and fitting; ``forces``: the forces only (the gears are what ``fit`` shows)."""
+    from dataclasses import replace
+
     from ..io.geometry_report import geometry_dict, geometry_html, geometry_markdown, geometry_text
 
+    show = {"show_geometry": what == "fitting"}
+    heading = {"fitting": "Geometry and fitting", "forces": "Forces"}[what]
+    if what == "forces":
+        results = tuple(replace(r, fitting=None) for r in results)
     if format is OutputFormat.json:
         return json.dumps({"title": title, what: geometry_dict(results)}, indent=2, ensure_ascii=False,
                           allow_nan=False, default=str) + "\n"
     if format is OutputFormat.markdown:
-        return f"# {title}\n\n" + geometry_markdown(results)
+        return f"# {title}\n\n" + geometry_markdown(results, heading=heading, **show)
     if format is OutputFormat.html:
         import html
 
         return ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>" + html.escape(title)
-                + "</title></head><body>" + geometry_html(results) + "</body></html>\n")
-    return geometry_text(results) + "\n"
+                + f"</title></head><body><h1>{html.escape(title)}</h1>"
+                + geometry_html(results, heading=heading, **show) + "</body></html>\n")
+    return f"{title}\n{'=' * len(title)}\n\n" + geometry_text(results, **show) + "\n"
 
 
 class Undercut(str, Enum):
@@ -79,7 +88,7 @@ def fit(
     train_file = _load(file, None, set_)
     results = geometry_results(train_file.geometry, None, planets=planets, allow_unequal=allow_unequal,
                                min_clearance=min_clearance, undercut=undercut.value)
-    emit(_render(results, format, f"fitting of {train_file.title}", "fitting"), out)
+    emit(_render(results, format, f"fitting of {train_file.title or train_file.train.name}", "fitting"), out)
 
 
 @guarded
@@ -97,7 +106,7 @@ def forces(
     train_file = _load(file, gear, set_)
     results = geometry_results(train_file.geometry, solved(train_file, file))
     check_finite(geometry_dict(results), file, "forces")
-    emit(_render(results, format, f"forces of {train_file.title}", "forces"), out)
+    emit(_render(results, format, f"forces of {report_title(train_file)}", "forces"), out)
 
 
 # ---------------------------------------------------------------------- search
@@ -188,6 +197,9 @@ def search(
     if not RATIO_RANGE[0] <= abs(ratio) <= RATIO_RANGE[1]:  # also NaN
         raise ModelError(f"search: --ratio: expected a ratio n_driver/n_driven with {RATIO_RANGE[0]:g} <= |ratio| "
                          f"<= {RATIO_RANGE[1]:g}, got {ratio!r}.")
+    if len({held, driver, driven}) < 3:
+        raise ModelError(f"search: --held {held.value}, --driver {driver.value}, --driven {driven.value}: give three "
+                         "different members (sun, ring, carrier), e.g. --held ring --driver sun --driven carrier.")
     low, high = parse_range(planets, "search: --planets", 1, MAX_PLANETS)
     result = search_teeth(
         ratio, held=held.value, driver=driver.value, driven=driven.value, tolerance=parse_tolerance(tolerance),

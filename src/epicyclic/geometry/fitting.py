@@ -468,6 +468,14 @@ def _interference_margins(mesh: MeshGeometry) -> tuple[float, float, float]:
     return involute, trochoid, trimming
 
 
+#: What each kind of internal-gear interference means (SDP/SI D785 section 5.2).
+_WHY_INTERFERENCE = {
+    "involute": "the ring's tips reach inside the planet's base circle, too few planet teeth for this ring",
+    "trochoid": "the planet's tips touch the ring's tips as they leave the mesh, z_ring - z_planet too small",
+    "trimming": "the planet cannot be moved in radially to assemble, z_ring - z_planet too small",
+}
+
+
 def check_interference(geometry: SetGeometry) -> tuple[InterferenceCheck, ...]:
     """Involute, trochoid and trimming interference of each internal mesh (warnings).
 
@@ -487,10 +495,12 @@ def check_interference(geometry: SetGeometry) -> tuple[InterferenceCheck, ...]:
         if not bad:
             message = f"{mesh.name}: no involute, trochoid or trimming interference (z2 - z1 = {z2 - z1})"
         else:
+            fixes = ["more planet teeth"] if "involute" in bad else []
+            fixes += ["increase z_ring - z_planet"] if {"trochoid", "trimming"} & set(bad) else []
             message = (
                 f"{mesh.name}: {', '.join(bad)} interference (margins: involute {inv_m:+.4f}, trochoid "
-                f"{tro_m:+.4f} rad, trimming {trim_m:+.4f} rad); the planet ({z1} teeth) is too close in size "
-                f"to the ring ({z2} teeth): increase z_ring - z_planet, raise x_ring or shorten the tips"
+                f"{tro_m:+.4f} rad, trimming {trim_m:+.4f} rad); {'; '.join(_WHY_INTERFERENCE[b] for b in bad)} "
+                f"(planet {z1}, ring {z2} teeth): {', '.join(fixes)}, raise x_ring or shorten the ring's addendum"
             )
         out.append(InterferenceCheck("interference", not bad, message, "warning", mesh.name, inv_m, tro_m, trim_m))
     return tuple(out)

@@ -247,16 +247,17 @@ class PlanetaryForces:
     def _rows(self) -> list[list[object]]:
         k = self.load_sharing_factor
         return [
-            [b.index, b.gear, round(b.angle, 3), m.mesh, m.tangential * k, m.radial * k, m.axial * k, b.bearing_load * k]
+            [b.index + 1, b.gear, f"{b.angle:.2f}", m.mesh, m.tangential * k, m.radial * k, m.axial * k,
+             b.bearing_load * k]
             for b in self.bodies for m in b.meshes
         ]
 
-    _HEAD = ["planet", "gear", "angle", "mesh", "F_t", "F_r", "F_a", "bearing"]
+    _HEAD = ["planet", "gear", "angle [deg]", "mesh", "F_t [N]", "F_r [N]", "F_a [N]", "bearing [N]"]
 
     def table(self) -> str:
         """Design forces (× K_γ) per planet and mesh, N."""
         title = (f"forces of {self.set_name!r}: {self.planets} planets, K_gamma = {self.load_sharing_factor:g} "
-                 f"(N; torques {', '.join(f'{p} {t:.2f} N*m' for p, t in self.torques.items())})")
+                 f"(torques {', '.join(f'{p} {t:.5g} N*m' for p, t in self.torques.items())})")
         return text_table(self._HEAD, self._rows(), title=title)
 
     def _repr_html_(self) -> str:

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Literal
 
 import numpy as np
@@ -96,6 +96,10 @@ class ToothSearch:
     tolerance: float
     module: float
     candidates: tuple[Candidate, ...]
+    #: Smallest and largest ratio of the tooth ranges in this mode, before the fitting checks (None: not known).
+    reachable: tuple[float, float] | None = field(default=None, compare=False)
+    #: How many (z_sun, z_planet, N) of the ranges meet the ratio before the fitting checks (None: not known).
+    matched: int | None = field(default=None, compare=False)
 
     def __len__(self) -> int:
         return len(self.candidates)
@@ -104,7 +108,7 @@ class ToothSearch:
     def best(self) -> Candidate | None:
         return self.candidates[0] if self.candidates else None
 
-    _HEAD = ["z_sun", "z_planet", "z_ring", "N", "ratio", "error %", "hunting", "clearance mm"]
+    _HEAD = ["z_sun", "z_planet", "z_ring", "N", "ratio", "error [%]", "hunting", "clearance [mm]"]
 
     def _rows(self, limit: int) -> list[list[object]]:
         return [[c.z_sun, c.z_planet, c.z_ring, c.planets, c.ratio, 100 * c.error, c.hunting, c.clearance]
@@ -114,7 +118,22 @@ class ToothSearch:
         held, driver, driven = self.mode
         title = (f"{len(self)} tooth-count sets for {driver} -> {driven} ({held} held) = {self.target:g} "
                  f"± {100 * self.tolerance:g} %, m = {self.module:g} mm (first {min(limit, len(self))})")
-        return text_table(self._HEAD, self._rows(limit), title=title)
+        return text_table(self._HEAD, self._rows(limit), title=title) + self._why_none()
+
+    def _why_none(self) -> str:
+        """For an empty result: whether the ratio is out of reach of the tooth ranges or no set fits."""
+        if self.candidates or self.reachable is None:
+            return ""
+        if self.matched:
+            sets = "1 tooth-count set meets" if self.matched == 1 else f"{self.matched} tooth-count sets meet"
+            return (f"\nnone found: {sets} the ratio, but none passes assembly at equal "
+                    "spacing, neighbour clearance, undercut and interference; widen the tolerance or the tooth "
+                    "ranges, or try other numbers of planets.")
+        held, driver, driven = self.mode
+        low, high = self.reachable
+        return (f"\nnone found: no tooth counts of these ranges come within ± {100 * self.tolerance:g} % of "
+                f"{self.target:g}; with the {held} held, {driver} -> {driven} ranges over {low:.4g} … {high:.4g} "
+                "here; change the target, the tolerance, the mode or the ranges.")
 
     def _repr_html_(self) -> str:
         return html_table(self._HEAD, self._rows(50), title=f"tooth-count search, target {self.target:g}")
@@ -242,8 +261,10 @@ def search_teeth(
     ratio = two_shaft_ratio(-zr / zs, held, driver, driven)
     error = np.abs(ratio / target_ratio - 1.0)
     keep = error <= tolerance + 1e-12
-    if z_ring:
-        keep &= (zr >= z_ring[0]) & (zr <= z_ring[1])
+    in_range = np.ones_like(keep) if not z_ring else (zr >= z_ring[0]) & (zr <= z_ring[1])
+    keep &= in_range
+    reachable = (float(ratio[in_range].min()), float(ratio[in_range].max())) if in_range.any() else None
+    matched = int(np.count_nonzero(keep))
     keep &= (zs + zr) % n == 0
     a = module * (zs + zp) / 2.0
     da = module * (zp + 2 * addendum)
@@ -257,7 +278,8 @@ def search_teeth(
     hunting = (np.gcd(zs[idx], zp[idx]) == 1) & (np.gcd(zp[idx], zr[idx]) == 1)
     cands = [Candidate(int(zs[i]), int(zp[i]), int(zr[i]), int(n[i]), float(ratio[i]), float(error[i]), bool(h),
                        float(clearance[i])) for i, h in zip(idx, hunting)]
-    return ToothSearch(float(target_ratio), (held, driver, driven), float(tolerance), float(module), _rank(cands))
+    return ToothSearch(float(target_ratio), (held, driver, driven), float(tolerance), float(module), _rank(cands),
+                       reachable, matched)
 
 
 def search_teeth_loops(

@@ -270,7 +270,7 @@ class SetGeometry:
         return name
 
     def _rows(self) -> tuple[list[str], list[list[object]]]:
-        headers = ["gear", "z", "x", "d", "d_b", "d_a", "d_f"]
+        headers = ["gear", "z", "x", "d [mm]", "d_b [mm]", "d_a [mm]", "d_f [mm]"]
         rows = [
             [self.gear_label(n) + (" (internal)" if g.internal else ""), g.teeth, g.profile_shift, g.reference_diameter,
              g.base_diameter, g.tip_diameter, g.root_diameter]
@@ -279,7 +279,7 @@ class SetGeometry:
         return headers, rows
 
     def _mesh_rows(self) -> tuple[list[str], list[list[object]]]:
-        headers = ["mesh", "a", "a_w", "alpha_wt", "d_w1", "d_w2", "eps_alpha"]
+        headers = ["mesh", "a [mm]", "a_w [mm]", "alpha_wt [deg]", "d_w1 [mm]", "d_w2 [mm]", "eps_alpha"]
         rows = [
             [m.name, m.reference_center_distance, m.center_distance, m.operating_pressure_angle,
              *m.operating_pitch_diameters, m.contact_ratio]

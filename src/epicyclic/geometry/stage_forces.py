@@ -31,7 +31,7 @@ class StageForces:
     stage_name: str
     rows: tuple[tuple[str, float, float, float, float, float], ...]  # mesh, torque, d_w, F_t, F_r, F_a
 
-    _HEAD = ["mesh", "torque N*m", "d_w mm", "F_t N", "F_r N", "F_a N"]
+    _HEAD = ["mesh", "torque [N*m]", "d_w [mm]", "F_t [N]", "F_r [N]", "F_a [N]"]
 
     def to_dict(self) -> dict[str, Any]:
         return {"stage": self.stage_name, "units": {"force": "N", "length": "mm", "torque": "N*m"},

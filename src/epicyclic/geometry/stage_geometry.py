@@ -135,7 +135,7 @@ class StageGeometry:
         return [[m.name, m.gear1.teeth, m.gear2.teeth, m.rack.module, m.center_distance, m.operating_pressure_angle,
                  m.contact_ratio] for m in self.meshes]
 
-    _HEAD = ["mesh", "z1", "z2", "m_n", "a_w", "alpha_wt", "eps_alpha"]
+    _HEAD = ["mesh", "z1", "z2", "m_n [mm]", "a_w [mm]", "alpha_wt [deg]", "eps_alpha"]
 
     def table(self) -> str:
         return text_table(self._HEAD, self._rows(), title=f"stage {self.stage.name!r}")

@@ -83,11 +83,13 @@ def geometry_dict(results: tuple[GeometryResult, ...]) -> dict[str, Any] | None:
                      "forces": None if r.forces is None else r.forces.to_dict()} for r in results}
 
 
-def geometry_text(results: tuple[GeometryResult, ...]) -> str:
-    """Gears, meshes, fitting and forces as text tables (mm, degrees, N)."""
+def geometry_text(results: tuple[GeometryResult, ...], *, show_geometry: bool = True) -> str:
+    """Gears, meshes, fitting and forces as text tables (mm, degrees, N); ``show_geometry=False``: no gear and
+    mesh tables (``epicyclic forces``)."""
     blocks = []
     for r in results:
-        blocks.append(r.geometry.table())
+        if show_geometry:
+            blocks.append(r.geometry.table())
         if r.fitting is not None:
             blocks.append(r.fitting.table())
         if r.forces is not None:
@@ -100,14 +102,16 @@ def _markdown_table(text: str) -> str:
     return "```text\n" + text + "\n```"
 
 
-def geometry_markdown(results: tuple[GeometryResult, ...]) -> str:
-    """A ``## Geometry, fitting and forces`` section."""
+def geometry_markdown(results: tuple[GeometryResult, ...], *, show_geometry: bool = True,
+                      heading: str = "Geometry, fitting and forces") -> str:
+    """A ``## Geometry, fitting and forces`` section (``heading``)."""
     if not results:
         return ""
-    parts = ["## Geometry, fitting and forces"]
+    parts = [f"## {heading}"]
     for r in results:
         parts.append(f"### {r.kind} {r.name}".replace("<", "&lt;"))
-        parts.append(_markdown_table(r.geometry.table()))
+        if show_geometry:
+            parts.append(_markdown_table(r.geometry.table()))
         if r.fitting is not None:
             parts.append(_markdown_table(r.fitting.table()))
         if r.forces is not None:
@@ -115,14 +119,16 @@ def geometry_markdown(results: tuple[GeometryResult, ...]) -> str:
     return "\n\n".join(parts) + "\n"
 
 
-def geometry_html(results: tuple[GeometryResult, ...]) -> str:
+def geometry_html(results: tuple[GeometryResult, ...], *, show_geometry: bool = True,
+                  heading: str = "Geometry, fitting and forces") -> str:
     """The same as an HTML section (escaped tables)."""
     if not results:
         return ""
-    parts = ["<h2>Geometry, fitting and forces</h2>"]
+    parts = [f"<h2>{html.escape(heading)}</h2>"]
     for r in results:
         parts.append(f"<h3>{html.escape(r.kind)} {html.escape(r.name)}</h3>")
-        parts.append(r.geometry._repr_html_())
+        if show_geometry:
+            parts.append(r.geometry._repr_html_())
         if r.fitting is not None:
             parts.append(r.fitting._repr_html_())
         if r.forces is not None:

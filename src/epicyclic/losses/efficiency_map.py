@@ -205,6 +205,22 @@ def _axis(values, name: str) -> np.ndarray:
     return arr
 
 
+def _check_one_freedom(train: GearTrain, input: str, output: str) -> None:
+    """A map over the input speed needs a train whose speeds that one speed fixes."""
+    from ..solver.assembly import matrices
+    from ..solver.kinematics import free_speed_shafts
+
+    mats = matrices(train, (input, output))
+    free = free_speed_shafts(mats, [input])
+    if free:
+        raise ModelError(
+            f"efficiency_map: with the input speed {input!r} given, the speed of "
+            f"{', '.join(repr(s) for s in free)} is still free (the train has "
+            f"{mats.degrees_of_freedom} degrees of freedom); a map over input speed × torque needs a "
+            "train with one: hold a shaft with a brake or engage a clutch (or pick a gear)."
+        )
+
+
 def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequence[float] | np.ndarray, *,
                    gear: str | None = None, losses: Mapping[str, ElementLosses] | None = None,
                    direction: str = "drive", input: str | None = None, output: str | None = None) -> EfficiencyMap:
@@ -248,6 +264,9 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
         name = file.title
         losses = dict(file.losses) if losses is None else losses
         gear = gear if gear is not None else file.gear
+        if gear is None and file.transmission is not None:
+            raise ModelError(f"{file.source}: a map is drawn in one gear of the [transmission] schedule; pick one "
+                             f"(--gear on the command line, gear= in Python): {', '.join(repr(g) for g in file.transmission.schedule)}.")
         if gear is not None:
             if file.transmission is None:
                 raise ModelError(f"{file.source}: gear {gear!r} needs a [transmission] table with a schedule.")
@@ -278,6 +297,7 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
                          "or an [operating_point] with drives and loads).")
     for shaft in (input, output):
         base.check_shaft(shaft, "efficiency_map")
+    _check_one_freedom(base, input, output)
     n = _axis(speeds, "speeds")
     t = _axis(torques, "torques")
     speed_grid, torque_grid = np.meshgrid(n, t)

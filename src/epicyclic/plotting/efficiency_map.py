@@ -33,7 +33,12 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
         else:  # levels at quantiles of η: the bulk of the map, not only its low-torque corner, gets contours
             levels = np.unique(np.round(np.quantile(eta.compressed(), np.linspace(0.0, 1.0, 13)), 6))
             levels[0], levels[-1] = low - 1e-9, high + 1e-9
-        filled = left.contourf(n, t, eta, levels=levels, cmap="viridis")
+        from matplotlib.colors import BoundaryNorm
+
+        # one colour per band (the quantile bands are unequal in η: a linear colour scale would paint the
+        # narrow bands of the bulk of the map in nearly one colour)
+        cmap = plt.get_cmap("viridis")
+        filled = left.contourf(n, t, eta, levels=levels, cmap=cmap, norm=BoundaryNorm(levels, cmap.N))
         lines = left.contour(n, t, eta, levels=levels[2:-1:2], colors="white", linewidths=0.7)
         left.clabel(lines, fmt="%.4f", fontsize=7)
         fig.colorbar(filled, ax=left, label="efficiency η", spacing="uniform", format="%.4f")
