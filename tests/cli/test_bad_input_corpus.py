@@ -669,7 +669,8 @@ CORPUS: list[Bad] = [
     Bad("synthesize: unknown search key", "synthesize", SYNTH + "[search]\nspeed = 3\n", "unknown constraint"),
     # accepted before: 100 planets searched to "0 candidates"; 100,000 sun teeth searched (and could write files
     # that gears refuses past 1000 teeth)
-    Bad("synthesize: 100 planets", "synthesize", SYNTH + "[bounds]\nplanets = [100]\n", "bounds.planets must be at most 24"),
+    Bad("synthesize: 100 planets", "synthesize", SYNTH + "[bounds]\nplanets = [100]\n",
+        "bounds.planets must be at most 24"),
     Bad("synthesize: sun teeth past the limit", "synthesize", SYNTH + "[bounds]\nsun = [3, 100000]\n",
         "bounds.sun must be at most 1000"),
     Bad("synthesize: --out is the input", "synthesize", SYNTH, "is the input file", ("{file}", "--out", "{file}")),

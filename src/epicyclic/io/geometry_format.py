@@ -149,7 +149,8 @@ def _rack(reader, table, where: str, index: int | None = None) -> BasicRack:
     module = pick("module", reader.require(table, "module", where))
     if not MODULE_RANGE[0] <= module <= MODULE_RANGE[1]:
         raise reader.error(at_key(where, "geometry.module"),
-                           f"expected a normal module in mm within {MODULE_RANGE[0]:g} … {MODULE_RANGE[1]:g} "
+                           f"expected a positive normal module in mm within {MODULE_RANGE[0]:g} … "
+                           f"{MODULE_RANGE[1]:g} "
                            f"(see docs/limits.md), got {short(module)}.")
     return BasicRack(module, pick("pressure_angle", 20.0), pick("helix_angle", 0.0), pick("addendum", 1.0),
                      pick("dedendum", 1.25))
