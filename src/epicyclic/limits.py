@@ -63,6 +63,8 @@ __all__ = [
     "MAX_SYNTHESIS_SETS",
     "MAX_SYNTHESIS_ELEMENTS",
     "MAX_SYNTHESIS_GEARS",
+    "MAX_MAP_POINTS",
+    "MAX_MAP_VALUES",
     "check_range",
     "check_count",
 ]
@@ -133,6 +135,12 @@ SIZE_RANGE = (120, 2000)
 MODULE_RANGE = (1e-3, 100.0)
 #: Addendum and dedendum of the basic rack, multiples of the module (ISO 53: 1 and 1.25).
 MAX_TOOTH_HEIGHT_FACTOR = 5.0
+
+# ---------------------------------------------------------------- efficiency maps
+#: Most grid points (speed values × torque values) of one efficiency map (``map``, the page's form).
+MAX_MAP_POINTS = 1_000_000
+#: Most values along one axis of an efficiency map (``A..B:N``).
+MAX_MAP_VALUES = 10_000
 
 # ---------------------------------------------------------------- synthesis
 #: Most planetary sets of a synthesis (five sets have ~10^7 tie patterns before any placement).

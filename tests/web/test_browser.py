@@ -105,6 +105,30 @@ def wait(browser, condition, timeout: float = WAIT):
                          ignored_exceptions=(StaleElementReferenceException,)).until(condition)
 
 
+#: True while the page is still changing: an htmx request in flight (htmx marks the requesting element or
+#: its indicator with ``htmx-request``), a swap settling, or a picture still being drawn.  Content below the
+#: pictures moves while they arrive, so a click is only sent to a settled page.
+_BUSY = ("return !!document.querySelector('.htmx-request, .htmx-swapping, .htmx-settling, .htmx-added, "
+         ".fig-body .loading');")
+
+
+def settled(browser) -> None:
+    """Wait until no request is in flight and every picture is drawn (nothing moves any more)."""
+    wait(browser, lambda b: not b.execute_script(_BUSY))
+
+
+def click(browser, css: str) -> None:
+    """Click the element ``css`` of the settled page once it is visible and enabled."""
+    settled(browser)
+    wait(browser, ec.element_to_be_clickable((By.CSS_SELECTOR, css))).click()
+
+
+def open_details(browser, css: str) -> None:
+    """Open the ``<details>`` element ``css`` (click its summary) and wait until it is open."""
+    click(browser, f"{css} > summary")
+    wait(browser, lambda b: b.find_element(By.CSS_SELECTOR, css).get_attribute("open") is not None)
+
+
 def text_of(browser, css: str) -> str:
     """The text of the first visible element matching ``css``, once it is there and not empty."""
     def read(driver):
@@ -112,6 +136,12 @@ def text_of(browser, css: str) -> str:
         return element.text if element.is_displayed() else ""
 
     return wait(browser, read)
+
+
+def shows(browser, css: str, text: str) -> str:
+    """Wait until the element ``css`` contains ``text`` (an answer that has arrived); its whole text."""
+    wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, css), text))
+    return text_of(browser, css)
 
 
 def open_example(browser, server: str, key: str) -> None:
@@ -136,9 +166,9 @@ def test_page_loads_with_an_example_and_its_pictures(browser, server):
     wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#results .title"),
                                                   bundled_examples()["plus_set_reduction"].title))
     wait(browser, lambda b: b.find_elements(By.CSS_SELECTOR, "#fig-power svg"))
-    wait(browser, lambda b: not b.find_elements(By.CSS_SELECTOR, ".fig-body .loading"))
+    settled(browser)
     assert len(browser.find_elements(By.CSS_SELECTOR, ".fig-body svg")) >= 5
-    assert browser.find_elements(By.CSS_SELECTOR, "#gutter") and "22" in browser.find_element(By.ID, "gutter").text
+    shows(browser, "#gutter", "22")  # line numbers, drawn once the swap has settled
     shot(browser, "1-plus-set")
     errors = [e for e in browser.get_log("browser") if e["level"] == "SEVERE"]
     assert not errors, errors  # no script errors, no CSP violations, no missing files
@@ -161,7 +191,7 @@ def test_change_a_speed_and_see_the_efficiency_change(browser, server):
 def test_switch_a_gear(browser, server):
     open_example(browser, server, "simpson_c4_3speed")
     assert text_of(browser, "tr.current td") == "1"
-    browser.find_element(By.CSS_SELECTOR, 'tr[data-gear="2"]').click()
+    click(browser, 'tr[data-gear="2"]')
     wait(browser, ec.presence_of_element_located((By.CSS_SELECTOR, 'tr.current[data-gear="2"]')))
     assert abs(float(text_of(browser, "#ratio")) - 1.46) < 0.01  # Ford C4 second gear, published 1.46
     assert Select(browser.find_element(By.ID, "gear")).first_selected_option.text == "2"
@@ -181,18 +211,18 @@ def test_the_animation_runs(browser, server):
     size.clear()
     size.send_keys("300", Keys.TAB)
     wait(browser, lambda b: b.find_element(By.CSS_SELECTOR, "#fig-animation svg").get_attribute("width") == "300")
-    browser.find_element(By.CSS_SELECTOR, '#fig-animation [data-enlarge]').click()  # at full width
+    click(browser, "#fig-animation [data-enlarge]")  # at full width
     wait(browser, lambda b: b.find_element(By.ID, "zoom").get_attribute("open") is not None)
     assert browser.find_element(By.CSS_SELECTOR, "#zoom svg").size["width"] > 1000
     shot(browser, "4-animation")
-    browser.find_element(By.CSS_SELECTOR, "#zoom button").click()
+    click(browser, "#zoom button")
     wait(browser, lambda b: b.find_element(By.ID, "zoom").get_attribute("open") is None)
 
 
 def test_download_reports(browser, server, downloads):
     open_example(browser, server, "brandenberger_1952")
     for kind in ("json", "html", "toml"):
-        browser.find_element(By.CSS_SELECTOR, f'button[data-download="/download/{kind}"]').click()
+        click(browser, f'button[data-download="/download/{kind}"]')
         target = downloads / f"brandenberger_1952.{kind}"
         wait(browser, lambda _: target.exists() and target.stat().st_size > 0)
         wait(browser, ec.text_to_be_present_in_element((By.ID, "download-status"), f"downloaded brandenberger_1952.{kind}"))
@@ -201,12 +231,12 @@ def test_download_reports(browser, server, downloads):
     assert (downloads / "brandenberger_1952.html").read_text().startswith("<!DOCTYPE html>")
     assert (downloads / "brandenberger_1952.toml").read_text() == bundled_examples()["brandenberger_1952"].text
     # a picture as PNG at the resolution asked for
-    browser.find_element(By.CSS_SELECTOR, "#fig-flow details.save summary").click()
+    open_details(browser, "#fig-flow details.save")
     Select(browser.find_element(By.NAME, "fig_flow_format")).select_by_value("png")
     dpi = browser.find_element(By.NAME, "fig_flow_dpi")
     dpi.clear()
     dpi.send_keys("60")
-    browser.find_element(By.CSS_SELECTOR, '#fig-flow button[data-download="/save/flow"]').click()
+    click(browser, '#fig-flow button[data-download="/save/flow"]')
     target = downloads / "brandenberger_1952-flow.png"
     wait(browser, lambda _: target.exists() and target.stat().st_size > 0)
     assert target.read_bytes().startswith(b"\x89PNG")
@@ -223,7 +253,7 @@ def test_an_error_is_shown_at_its_line(browser, server):
     assert "key 'stationary_efficiency': expected an efficiency in (0, 1]" in message
     line = text.splitlines().index(next(l for l in text.splitlines() if l.startswith("stationary_efficiency"))) + 1
     assert text_of(browser, "#gutter b.err") == str(line)
-    assert browser.find_element(By.ID, "editor-status").text == f"error at line {line}"
+    assert shows(browser, "#editor-status", "error at line") == f"error at line {line}"
     shot(browser, "5-error")
 
 
@@ -233,7 +263,7 @@ def test_script_in_a_name_stays_text(browser, server):
     payload = '<img src=x onerror=alert(1)><script>alert(2)</script>'
     text = editor.get_attribute("value").replace('title = "', f'title = "{payload} ', 1)
     browser.execute_script("arguments[0].value = arguments[1];", editor, text)
-    browser.find_element(By.ID, "solve").click()
+    click(browser, "#solve")
     wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#results .title"), payload))
     assert not browser.find_elements(By.CSS_SELECTOR, "#results img, #results script")
     assert no_alert(browser)
@@ -241,13 +271,14 @@ def test_script_in_a_name_stays_text(browser, server):
 
 def test_geometry_form_and_german_explanation(browser, server):
     open_example(browser, server, "simple_set_ring_held_sun_drives")
-    browser.find_element(By.CSS_SELECTOR, "#tool-fit summary").click()
-    browser.find_element(By.CSS_SELECTOR, "#tool-fit button").click()
-    assert "coaxiality" in text_of(browser, "#tool-fit-result table")
-    Select(browser.find_element(By.ID, "lang")).select_by_value("de")
-    wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#explain summary"), "Deutsch"))
-    browser.find_element(By.CSS_SELECTOR, "#explain summary").click()
-    assert "Wirkungsgrad" in text_of(browser, "#explain .epicyclic-explanation")
+    open_details(browser, "#tool-fit")
+    click(browser, "#tool-fit button")
+    shows(browser, "#tool-fit-result", "coaxiality")
+    settled(browser)
+    Select(browser.find_element(By.ID, "lang")).select_by_value("de")  # replaces the results, pictures included
+    shows(browser, "#explain summary", "Deutsch")
+    open_details(browser, "#explain details")  # once the new pictures are drawn: nothing moves under the click
+    shows(browser, "#explain .epicyclic-explanation", "Wirkungsgrad")
     # the worked solution's long lines scroll inside the results column; the page itself does not get wider
     # than the window (it did: the grid column grew to the widest line, cutting the tables off at the right)
     assert browser.execute_script("return document.documentElement.scrollWidth <= window.innerWidth")
@@ -264,3 +295,37 @@ def test_open_a_file_from_disk(browser, server, tmp_path):
     wait(browser, ec.text_to_be_present_in_element((By.CSS_SELECTOR, "#results .title"), "Uploaded: "))
     assert browser.find_element(By.CSS_SELECTOR, ".editor .source").text == "my_train.toml"
     assert browser.find_element(By.ID, "toml").get_attribute("value") == text
+
+
+def test_efficiency_map_form_and_loss_split(browser, server, downloads):
+    open_example(browser, server, "geometry_simple_set")
+    split = shows(browser, "#loss-split", "bearing")  # the loss by source of each element and in all
+    expected = loads_train_file(bundled_examples()["geometry_simple_set"].text).solve().elements["P"].loss_sources
+    assert f"P {fmt(expected['mesh'], 6)} {fmt(expected['bearing'], 6)} {fmt(expected['drag'], 6)}" in split
+    open_details(browser, "#tool-fit")  # the set's fields start from the file's geometry table
+    Select(browser.find_element(By.NAME, "tool_fit_set")).select_by_value("P")
+    wait(browser, lambda b: b.find_element(By.NAME, "tool_fit_module").get_attribute("value") == "1.75")
+    assert browser.find_element(By.NAME, "tool_fit_x_sun").get_attribute("value") == "0.438"
+    click(browser, "#tool-fit > button")
+    shows(browser, "#tool-fit-result", "a_w = 56.7999 mm")  # lecad test run: a = 56.8 mm
+    open_details(browser, "#tool-map")
+    speed = browser.find_element(By.NAME, "tool_map_speed")
+    speed.clear()
+    speed.send_keys("1000..5000:21")
+    click(browser, "#tool-map > button")
+    summary = shows(browser, "#tool-map-result pre", "input speed 1000..5000 1/min (21 values)")
+    assert "losses by source" in summary
+    wait(browser, lambda b: b.find_element(By.CSS_SELECTOR, "#tool-map-result svg").size["height"] > 200)
+    shot(browser, "7-efficiency-map")
+    click(browser, '#tool-map-result button[data-download="/download/map.csv"]')
+    target = downloads / "geometry_simple_set-map.csv"
+    wait(browser, lambda _: target.exists() and target.stat().st_size > 0)
+    lines = target.read_text().splitlines()
+    assert lines[0].startswith("speed_rpm,torque_Nm,efficiency") and len(lines) == 1 + 21 * 50
+    # a load beyond the friction correlation: the command line's message, at the form
+    torque = browser.find_element(By.NAME, "tool_map_torque")
+    torque.clear()
+    torque.send_keys("1e300")
+    click(browser, "#tool-map > button")
+    assert "leaves no efficiency" in shows(browser, "#tool-map-result .problem .message", "μ·H_V >= 1")
+    assert no_alert(browser)

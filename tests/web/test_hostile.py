@@ -195,8 +195,7 @@ def test_time_limit_stops_the_work_and_the_server_keeps_serving(page_form):
     from starlette.testclient import TestClient
 
     search = {f"tool_search_{k}": v for k, v in dict(
-        ratio="4", tolerance="20", z_sun_min="3", z_sun_max="300", z_planet_min="3", z_planet_max="300",
-        planets="1,2,3,4,5,6,7,8,9,10,11,12").items()}
+        ratio="4", tolerance="20%", sun="3..300", planet="3..300", planets="1..12").items()}
     text = SIMPLE.replace('"TITLE"', '"t"')
     with TestClient(create_app(Limits(workers=1, solve_timeout=0.2, report_timeout=60))) as client:
         slow = client.post("/tool/search", data=page_form(text, **search))

@@ -16,50 +16,25 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..text import short
+from ..limits import MAX_MAP_POINTS
 from ._common import SetOption, emit, guarded, load, say
 
 __all__ = ["efficiency_map", "parse_axis", "MAX_POINTS"]
 
 #: Largest number of grid points (speed values × torque values) one map may have.
-MAX_POINTS = 1_000_000
+MAX_POINTS = MAX_MAP_POINTS
 
 
 def parse_axis(text: str, name: str, unit: str):
-    """``"500..6000:50"`` → 50 values from 500 to 6000; ``"1500"`` → one value.
+    """``"500..6000:50"`` → 50 values from 500 to 6000 (:func:`epicyclic.io.ranges.parse_axis`, shared with
+    the page).
 
     >>> parse_axis("10..50:5", "--torque", "N*m").tolist()
     [10.0, 20.0, 30.0, 40.0, 50.0]
     """
-    import numpy as np
+    from ..io.ranges import parse_axis as parse
 
-    from ..errors import ModelError
-
-    raw = text.strip()
-    count = None
-    if ":" in raw:
-        raw, _, tail = raw.partition(":")
-        try:
-            count = int(tail)
-        except ValueError:
-            raise ModelError(f"{name}: the count after ':' must be a whole number, got {short(text)} "
-                             f"(e.g. 500..6000:50 for 50 values).") from None
-    parts = raw.split("..")
-    try:
-        values = [float(p) for p in parts]
-    except ValueError:
-        raise ModelError(f"{name}: expected a value or a range A..B:N in {unit}, e.g. 500..6000:50, got "
-                         f"{short(text)}.") from None
-    if len(values) == 1:
-        if count not in (None, 1):
-            raise ModelError(f"{name}: a single value takes no count, got {short(text)}.")
-        values, count = values * 2, 1
-    if len(values) != 2 or not all(np.isfinite(values)) or values[0] <= 0 or values[1] < values[0]:
-        raise ModelError(f"{name}: expected 0 < A <= B in A..B:N ({unit}), got {short(text)}.")
-    count = 20 if count is None else count
-    if not 1 <= count <= 10_000 or (count == 1 and values[0] != values[1]):
-        raise ModelError(f"{name}: the number of values N must lie in 2..10000 for a range, got {short(text)}.")
-    return np.linspace(values[0], values[1], count)
+    return parse(text, name, unit)
 
 
 @guarded
@@ -78,11 +53,9 @@ def efficiency_map(
     from ..io.output import atomic_path
     from ..losses.efficiency_map import MAP_SUFFIXES, efficiency_map as compute
 
-    speeds = parse_axis(speed, "--speed", "1/min")
-    torques = parse_axis(torque, "--torque", "N*m")
-    if speeds.size * torques.size > MAX_POINTS:
-        raise ModelError(f"--speed/--torque: {speeds.size} × {torques.size} points exceed the limit of "
-                         f"{MAX_POINTS:,}; use fewer values.")
+    from ..io.ranges import map_grid
+
+    speeds, torques = map_grid(speed, torque)
     if out is not None and out.suffix.lower() not in MAP_SUFFIXES:
         raise ModelError(f"--out {str(out)!r}: give a file ending in {', '.join(MAP_SUFFIXES)}.")
     train_file = load(file, gear, set_)

@@ -19,7 +19,6 @@ from typing import Annotated, Optional
 import typer
 
 from ..limits import MAX_PLANETS, MODULE_RANGE
-from ..text import short
 from ._common import (FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded, load,
                       report_title, solved)
 
@@ -111,44 +110,25 @@ def forces(
 
 # ---------------------------------------------------------------------- search
 def parse_range(text: str, name: str, low: int = 3, high: int = 400) -> tuple[int, int]:
-    """``"12..80"`` → (12, 80); ``"20"`` → (20, 20).
+    """``"12..80"`` → (12, 80) (:func:`epicyclic.io.ranges.parse_range`, shared with the page).
 
     >>> parse_range("3..6", "--planets")
     (3, 6)
     """
-    from ..errors import ModelError
+    from ..io.ranges import parse_range as parse
 
-    parts = text.split("..")
-    try:
-        values = [int(p.strip()) for p in parts]
-    except ValueError:
-        raise ModelError(f"{name}: expected a whole number or a range such as 12..80, got {short(text)}.") from None
-    if len(values) == 1:
-        values *= 2
-    if len(values) != 2 or values[0] > values[1] or values[0] < low or values[1] > high:
-        raise ModelError(f"{name}: expected a range LOW..HIGH with {low} <= LOW <= HIGH <= {high}, got {short(text)}.")
-    return values[0], values[1]
+    return parse(text, name, low, high)
 
 
 def parse_tolerance(text: str) -> float:
-    """``"3%"`` → 0.03, ``"0.03"`` → 0.03.
+    """``"3%"`` → 0.03 (:func:`epicyclic.io.ranges.parse_tolerance`, shared with the page).
 
     >>> parse_tolerance("3%"), parse_tolerance("0.5 %")
     (0.03, 0.005)
     """
-    from ..errors import ModelError
+    from ..io.ranges import parse_tolerance as parse
 
-    raw = text.strip()
-    percent = raw.endswith("%")
-    try:
-        value = float(raw.rstrip("%").strip())
-    except ValueError:
-        raise ModelError(f"search: --tolerance: expected a relative deviation such as 3% or 0.03, got "
-                         f"{short(text)}.") from None
-    value = value / 100.0 if percent else value
-    if not 0.0 <= value < 1.0:
-        raise ModelError(f"search: --tolerance: expected 0 <= tolerance < 100 %, got {short(text)}.")
-    return round(value, 12)
+    return parse(text)
 
 
 class Member(str, Enum):

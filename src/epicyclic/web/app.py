@@ -43,7 +43,7 @@ from .examples import DEFAULT_EXAMPLE, bundled_examples
 from .jobs import Jobs, failure
 from .render import Reply, render
 from .state import FormError, PageState, clean_text
-from .views import apply, download, figure, open_file, open_text, save_figure, tool
+from .views import apply, download, figure, open_file, open_text, save_figure, tool, tool_fields
 
 __all__ = ["Limits", "create_app", "LOOPBACK_HOSTS"]
 
@@ -238,6 +238,9 @@ def create_app(limits: Limits | None = None) -> Starlette:
     async def geometry(request: Request) -> Response:
         return await with_state(request, tool, request.path_params["name"])
 
+    async def geometry_fields(request: Request) -> Response:
+        return await with_state(request, tool_fields, request.path_params["name"])
+
     async def report(request: Request) -> Response:
         return await with_state(request, download, request.path_params["kind"], timeout=limits.report_timeout)
 
@@ -261,6 +264,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
         Route("/figure/{kind}", picture, methods=["POST"]),
         Route("/save/{kind}", save_picture, methods=["POST"]),
         Route("/tool/{name}", geometry, methods=["POST"]),
+        Route("/tool/{name}/fields", geometry_fields, methods=["POST"]),
         Route("/download/{kind}", report, methods=["POST"]),
         Mount("/static", StaticFiles(packages=[("epicyclic.web", "static")]), name="static"),
     ]

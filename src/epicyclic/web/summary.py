@@ -32,7 +32,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..results import Solution
 
 __all__ = ["PowerState", "Loop", "CirculationView", "power_state", "circulation_view", "key_figures",
-           "other_warnings", "gear_table"]
+           "other_warnings", "gear_table", "loss_split"]
 
 
 @dataclass(frozen=True)
@@ -136,6 +136,31 @@ def key_figures(solution: Solution, units: Units, summary: Sequence[tuple[str, s
              ("circulating", "circulating power", circulation_view(solution, units).short),
              ("ratio", "ratio n_drive/n_load", values.get("speed ratio n_drive/n_load"))]
     return [(key, label, value) for key, label, value in shown if value is not None]
+
+
+def loss_split(solution: Solution, units: Units) -> Any:
+    """The loss of each element by source (mesh, bearing, drag) and in all, as a report table.
+
+    Only for a train whose file has loss models (``[planetary.losses]``, ``[gear.losses]``): with a
+    typed-in stationary efficiency every loss is mesh loss and the elements table says it already.
+    The numbers are the solver's (:attr:`~epicyclic.results.ElementState.loss_sources`, ISO/TR 14179-2:
+    load-dependent mesh losses and load-independent losses add up).
+    """
+    from ..io.tables import ReportTable
+    from ..losses.element import SOURCES
+
+    def power(value: float) -> str:
+        return fmt(units.power_from_core(value), 6)
+
+    elements = [e for e in solution.elements.values() if e.loss_sources]
+    sources = [s for s in SOURCES if any(s in e.loss_sources for e in elements)]
+    sources += sorted({s for e in elements for s in e.loss_sources} - set(sources))
+    rows = [(e.name, *(power(e.loss_sources.get(s, 0.0)) for s in sources), power(sum(e.loss_sources.values())))
+            for e in elements]
+    totals = solution.loss_sources
+    rows.append(("all", *(power(totals.get(s, 0.0)) for s in sources), power(sum(totals.values()))))
+    return ReportTable("Losses by source", ("element", *(f"{s} [{units.power}]" for s in sources),
+                                            f"total [{units.power}]"), tuple(rows))
 
 
 #: Parts of the solver's warnings that the page shows in its own words (power state, circulation).

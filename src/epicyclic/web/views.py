@@ -36,7 +36,7 @@ from .state import PageState, default_operating_rows, operating_rows, write_oper
 if TYPE_CHECKING:  # pragma: no cover
     from ..plotting import Subject
 
-__all__ = ["open_text", "open_file", "apply", "figure", "save_figure", "tool", "download"]
+__all__ = ["open_text", "open_file", "apply", "figure", "save_figure", "tool", "tool_fields", "download"]
 
 
 # ---------------------------------------------------------------------- reading
@@ -129,8 +129,8 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
     from ..explain import explain
     from ..io.tables import report_tables, summary_lines
     from .figures import applicable
-    from .summary import circulation_view, gear_table, key_figures, other_warnings, power_state
-    from .tools import TOOLS, Context, field_choices
+    from .summary import circulation_view, gear_table, key_figures, loss_split, other_warnings, power_state
+    from .tools import TOOLS, Context, form_rows
 
     units = _units(train_file, state)
     subject = solve_problem = None
@@ -148,8 +148,8 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
     result: dict[str, Any] = {
         "title": train_file.title, "description": train_file.description, "units": units,
         "notices": notices, "solution": solution, "solve_problem": solve_problem,
-        "gears": None, "tools": list(TOOLS.values()), "tool_context": Context(train_file, solution),
-        "field_choices": field_choices, "figures": [], "lang": state.lang, "explanation": None,
+        "gears": None, "tools": list(TOOLS.values()), "tool_context": Context(train_file, solution, gear),
+        "form_rows": form_rows, "figures": [], "lang": state.lang, "explanation": None, "loss_split": None,
     }
     if train_file.transmission is not None:
         gears = gear_table(transmission or (lambda: _transmission(train_file)), gear, state.source)
@@ -168,6 +168,7 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
             warnings=other_warnings(solution),
             figures=[(k, k.options(subject)) for k in applicable(subject)],
             explanation=explain(solution, units, lang=state.lang, title=train_file.title).html(),
+            loss_split=loss_split(solution, units) if train_file.losses else None,
         )
     return result
 
@@ -303,17 +304,53 @@ def save_figure(state: PageState, name: str) -> Reply:
                  filename=_file_name(title, state.source, f"-{name}.{suffix}"))
 
 
+def _tool_context(state: PageState, name: str) -> Any:
+    """The file (and, for a tool that needs it, the solved state the page shows) a tool runs on."""
+    from .tools import TOOLS, Context, ToolError
+
+    if name not in TOOLS:
+        raise ToolError(f"unknown tool {name!r}; tools are {', '.join(TOOLS)}.")
+    train_file = _load(state.text, state.source)
+    solution = gear = None
+    if TOOLS[name].needs_solution and (train_file.operating_point is not None or train_file.transmission is not None):
+        subject = _shown(train_file, state)
+        solution, gear = subject.solution, subject.gear
+    return Context(train_file, solution, gear or state.gear or train_file.gear)
+
+
+def _run(state: PageState, work: Any, *args: Any) -> Any:
+    """``work(*args)`` with the library's errors located in the file as the command line locates them
+    (``error: FILE: [where]: message``) and marked at their line in the editor; a bad field of the form
+    (:class:`~epicyclic.web.tools.ToolError`) is said as it is."""
+    from ..io.located import locate_error
+    from .tools import ToolError
+
+    try:
+        return work(*args)
+    except ToolError:
+        raise  # a field of the form, not the file
+    except EpicyclicError as exc:
+        message = str(locate_error(exc, state.source))
+        raise _Bad(problem(state.text, message), state.text) from None
+
+
 @_guard
 def tool(state: PageState, name: str) -> Reply:
-    """The result of a geometry form."""
-    from .tools import Context, run_tool
+    """The result of a tool's form (fit, forces, search, map)."""
+    from .tools import run_tool
 
-    train_file = _load(state.text, state.source)
-    solution = None
-    if train_file.operating_point is not None or train_file.transmission is not None:
-        solution = _shown(train_file, state).solution
-    body = run_tool(name, state.extra, Context(train_file, solution))
-    return Reply(render("tool_result.html", body=body))
+    context = _tool_context(state, name)
+    return Reply(render("tool_result.html", body=_run(state, run_tool, name, state.extra, context)))
+
+
+@_guard
+def tool_fields(state: PageState, name: str) -> Reply:
+    """A tool's fields again, starting from the geometry of the set chosen in the form."""
+    from .tools import TOOLS, form_rows
+
+    context = _tool_context(state, name)
+    chosen = state.extra.get(f"tool_{name}_set")
+    return Reply(render("tool_fields.html", tool=TOOLS[name], rows=form_rows(TOOLS[name], context, chosen)))
 
 
 _DOWNLOADS = {"json": "application/json", "html": "text/html; charset=utf-8", "toml": "application/toml",
@@ -345,8 +382,15 @@ def download(state: PageState, kind: str) -> Reply:
     from ..io.html_report import html_report
     from ..io.json_report import json_report
 
+    from .tools import TOOL_FILES, tool_file
+
+    if kind in TOOL_FILES:  # a tool's result as a file: search.csv, map.json, ...
+        train_file = _load(state.text, state.source)
+        body, media_type = _run(state, tool_file, kind, state.extra, _tool_context(state, kind.split(".")[0]))
+        return Reply(body, media_type=media_type, filename=_file_name(train_file.title, state.source,
+                                                                      "-" + kind))
     if kind not in _DOWNLOADS:
-        raise EpicyclicError(f"download: kind must be one of {', '.join(_DOWNLOADS)}, got {kind!r}.")
+        raise EpicyclicError(f"download: kind must be one of {', '.join((*_DOWNLOADS, *TOOL_FILES))}, got {kind!r}.")
     if kind == "toml":
         title = "epicyclic"
         try:
