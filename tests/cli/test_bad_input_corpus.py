@@ -20,6 +20,7 @@ rows for it: one per class of input it reads, with the same base files.
 
 from __future__ import annotations
 
+import functools
 import os
 import subprocess
 import sys
@@ -717,6 +718,18 @@ def test_the_corpus_is_large_and_its_classes_distinct():
             "forces", "search", "map"} <= commands
 
 
+@functools.cache
+def _start_up_s() -> float:
+    """Wall time of starting the CLI in a fresh interpreter (no command run), on this machine now.
+
+    Rows run in a process pay it on top of the command's own work; the 5 s limit is for the work, so a
+    loaded machine's slower start does not count against a row.
+    """
+    start = time.monotonic()
+    subprocess.run([sys.executable, "-c", "from epicyclic.cli.main import main"], check=True, timeout=60)
+    return time.monotonic() - start
+
+
 @pytest.mark.parametrize("case", CORPUS, ids=IDS)
 def test_bad_input_gives_one_clear_line_and_exit_2(case: Bad, tmp_path: Path):
     path = _materialise(case, tmp_path)
@@ -733,7 +746,8 @@ def test_bad_input_gives_one_clear_line_and_exit_2(case: Bad, tmp_path: Path):
     if path is not None and "{file}" in case.args and not case.usage:
         assert str(path) in message, (case.id, message)
     assert case.says in message, (case.id, message)
-    assert elapsed < TIME_LIMIT_S, (case.id, elapsed)
+    limit = TIME_LIMIT_S + (_start_up_s() if case.process else 0.0)
+    assert elapsed < limit, (case.id, elapsed, limit)
 
 
 def test_serve_on_a_busy_port_exits_2():
