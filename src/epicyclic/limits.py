@@ -58,6 +58,11 @@ __all__ = [
     "FRAMES_RANGE",
     "FPS_RANGE",
     "SIZE_RANGE",
+    "MODULE_RANGE",
+    "MAX_TOOTH_HEIGHT_FACTOR",
+    "MAX_SYNTHESIS_SETS",
+    "MAX_SYNTHESIS_ELEMENTS",
+    "MAX_SYNTHESIS_GEARS",
     "MAX_MAP_POINTS",
     "MAX_MAP_VALUES",
     "check_range",
@@ -123,6 +128,13 @@ FRAMES_RANGE = (2, 240)
 FPS_RANGE = (1, 60)
 #: ``animate --size``: width of the SVG or GIF in pixels.
 SIZE_RANGE = (120, 2000)
+
+# ---------------------------------------------------------------- gear geometry
+#: Normal module of a geometry table and of ``search --module``, mm (watch gears have about 0.05 mm,
+#: the largest industrial gears about 50 mm); past 1e154 mm the squared radii overflow.
+MODULE_RANGE = (1e-3, 100.0)
+#: Addendum and dedendum of the basic rack, multiples of the module (ISO 53: 1 and 1.25).
+MAX_TOOTH_HEIGHT_FACTOR = 5.0
 
 # ---------------------------------------------------------------- efficiency maps
 #: Most grid points (speed values × torque values) of one efficiency map (``map``, the page's form).

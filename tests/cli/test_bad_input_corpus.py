@@ -20,6 +20,7 @@ rows for it: one per class of input it reads, with the same base files.
 
 from __future__ import annotations
 
+import functools
 import os
 import subprocess
 import sys
@@ -532,6 +533,14 @@ CORPUS: list[Bad] = [
     Bad("geometry module negative", "fit", sub("module = 2", "module = -2", GEO), "key 'geometry.module'"),
     Bad("geometry module nan", "fit", sub("module = 2", "module = nan", GEO), "key 'geometry.module'"),
     Bad("geometry module a string", "fit", sub("module = 2", "module = 'two'", GEO), "key 'geometry.module'"),
+    # a module of 1e300 mm overflowed the squared radii (OverflowError, exit 1); 1e-300 mm gave a wrong contact error
+    Bad("geometry module 1e300", "fit", sub("module = 2", "module = 1e300", GEO), "key 'geometry.module'"),
+    Bad("geometry module 1e300 (analyze)", "analyze", sub("module = 2", "module = 1e300", GEO), "within 0.001 … 100"),
+    Bad("geometry module 1e-300", "forces", sub("module = 2", "module = 1e-300", GEO), "key 'geometry.module'"),
+    Bad("geometry addendum 1e300", "fit", sub("module = 2", "module = 2\naddendum = 1e300", GEO), "addendum"),
+    Bad("geometry dedendum 1e300 (analyze)", "analyze", sub("module = 2", "module = 2\ndedendum = 1e300", GEO),
+        "dedendum"),
+    Bad("search module 1e300", "search", None, "--module", ("--ratio", "4", "--module", "1e300"), usage=True),
     Bad("geometry helix angle 90", "fit", sub("module = 2", "module = 2\nhelix_angle = 90", GEO), "helix"),
     Bad("geometry pressure angle 0", "fit", sub("module = 2", "module = 2\npressure_angle = 0", GEO), "pressure"),
     Bad("geometry profile shift unknown gear", "fit",
@@ -659,6 +668,12 @@ CORPUS: list[Bad] = [
     Bad("synthesize: |i0| below 1", "synthesize", SYNTH + "[bounds]\nstationary_ratio = [0.5, 3]\n", "must exceed 1"),
     Bad("synthesize: efficiency above 1", "synthesize", SYNTH + "[search]\nstationary_efficiency = 1.2\n", "(0, 1]"),
     Bad("synthesize: unknown search key", "synthesize", SYNTH + "[search]\nspeed = 3\n", "unknown constraint"),
+    # accepted before: 100 planets searched to "0 candidates"; 100,000 sun teeth searched (and could write files
+    # that gears refuses past 1000 teeth)
+    Bad("synthesize: 100 planets", "synthesize", SYNTH + "[bounds]\nplanets = [100]\n",
+        "bounds.planets must be at most 24"),
+    Bad("synthesize: sun teeth past the limit", "synthesize", SYNTH + "[bounds]\nsun = [3, 100000]\n",
+        "bounds.sun must be at most 1000"),
     Bad("synthesize: --out is the input", "synthesize", SYNTH, "is the input file", ("{file}", "--out", "{file}")),
     Bad("synthesize: --csv is the input", "synthesize", SYNTH, "is the input file", ("{file}", "--csv", "{file}")),
     Bad("synthesize: --plot with a wrong suffix", "synthesize", SYNTH, "--plot", ("{file}", "--plot", "{tmp}/a.txt"),
@@ -703,6 +718,18 @@ def test_the_corpus_is_large_and_its_classes_distinct():
             "forces", "search", "map"} <= commands
 
 
+@functools.cache
+def _start_up_s() -> float:
+    """Wall time of starting the CLI in a fresh interpreter (no command run), on this machine now.
+
+    Rows run in a process pay it on top of the command's own work; the 5 s limit is for the work, so a
+    loaded machine's slower start does not count against a row.
+    """
+    start = time.monotonic()
+    subprocess.run([sys.executable, "-c", "from epicyclic.cli.main import main"], check=True, timeout=60)
+    return time.monotonic() - start
+
+
 @pytest.mark.parametrize("case", CORPUS, ids=IDS)
 def test_bad_input_gives_one_clear_line_and_exit_2(case: Bad, tmp_path: Path):
     path = _materialise(case, tmp_path)
@@ -719,7 +746,8 @@ def test_bad_input_gives_one_clear_line_and_exit_2(case: Bad, tmp_path: Path):
     if path is not None and "{file}" in case.args and not case.usage:
         assert str(path) in message, (case.id, message)
     assert case.says in message, (case.id, message)
-    assert elapsed < TIME_LIMIT_S, (case.id, elapsed)
+    limit = TIME_LIMIT_S + (_start_up_s() if case.process else 0.0)
+    assert elapsed < limit, (case.id, elapsed, limit)
 
 
 def test_serve_on_a_busy_port_exits_2():

@@ -157,6 +157,36 @@ def test_speeds_out_of_float_range_name_the_quantity(speed, how):
     assert all(math.isfinite(s.power) for s in big.shafts.values())
 
 
+@pytest.mark.parametrize("speed", [1e300, 1e305, 1e307, 1e308, 1.7e308])
+def test_speeds_near_the_float_limit_are_not_taken_for_round_off(speed):
+    # Ring held, sun drives carrier at a given power: every result is finite, but the round-off bound
+    # |A⁺|·|A|·|n| of the speeds overflowed near 1e308, every speed counted as round-off and the carrier
+    # stood still (0 1/min): false self-locking at exit 0.  Closed form as above: n_c = n_s/(1 − i0),
+    # η = (1 − i0·η0)/(1 − i0) for i0 = −2, η0 = 0.97 (1e-12: the same products).
+    train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", -2.0, 0.97), Brake("B", "ring")])
+    sol = solve(train, OperatingPoint(speeds={"sun": speed}, powers={"sun": 1e4}, drives=["sun"], loads=["carrier"]))
+    assert sol.speed("carrier") == pytest.approx(speed / 3, rel=1e-12)
+    assert sol.self_locking is None and sol.efficiency == pytest.approx((1 + 2 * 0.97) / 3, rel=1e-12)
+    batch = solve_batch(train, speeds={"sun": np.array([speed, 1000.0])}, powers={"sun": 1e4}, drives=["sun"],
+                        loads=["carrier"])
+    assert batch.speeds["carrier"] == pytest.approx([speed / 3, 1000.0 / 3], rel=1e-12)
+    assert batch.efficiency == pytest.approx([(1 + 2 * 0.97) / 3] * 2, rel=1e-12)
+
+
+@pytest.mark.filterwarnings("ignore::RuntimeWarning")  # numpy's overflow warning; the error is ours
+def test_an_overflowing_torque_is_named_not_taken_for_an_idle_set():
+    # T_sun = 1.5e308 N·m, ring held: the ring and carrier torques (2× and 3×) overflow.  The idle rule
+    # judged the set by |T| <= 1e-12·scale with both infinite (inf <= inf) and made it idle: zero torques,
+    # a false self-locking with formal efficiency NaN, no error in the Python API.
+    train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", -2.0, 0.97), Brake("B", "ring")])
+    with pytest.raises(NonFiniteResultError, match="overflows") as info:
+        solve(train, OperatingPoint(speeds={"sun": 1.0}, torques={"sun": 1.5e308}, drives=["sun"], loads=["carrier"]))
+    assert info.value.quantity == "torque" and info.value.where.startswith("'P'")
+    with pytest.raises(NonFiniteResultError, match="overflows"):
+        solve_batch(train, speeds={"sun": np.array([1.0, 2.0])}, torques={"sun": 1.5e308}, drives=["sun"],
+                    loads=["carrier"])
+
+
 def test_tiny_efficiency_is_computed_or_named():
     # η0 = 5e-324 is inside (0, 1]: forward (w = +1) it is just a poor set; backward 1/η0 overflows.
     train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", -2.0, 5e-324), Brake("B", "ring")])

@@ -279,6 +279,9 @@ def test_geometry_form_and_german_explanation(browser, server):
     shows(browser, "#explain summary", "Deutsch")
     open_details(browser, "#explain details")  # once the new pictures are drawn: nothing moves under the click
     shows(browser, "#explain .epicyclic-explanation", "Wirkungsgrad")
+    # the worked solution's long lines scroll inside the results column; the page itself does not get wider
+    # than the window (it did: the grid column grew to the widest line, cutting the tables off at the right)
+    assert browser.execute_script("return document.documentElement.scrollWidth <= window.innerWidth")
     shot(browser, "6-geometry-german")
 
 

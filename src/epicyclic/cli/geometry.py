@@ -18,7 +18,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..limits import MAX_PLANETS
+from ..limits import MAX_PLANETS, MODULE_RANGE
 from ._common import (FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded, load,
                       report_title, solved)
 
@@ -152,7 +152,8 @@ def search(
     ratio: Annotated[float, typer.Option("--ratio", "-r", help="Target ratio n_driver/n_driven.")],
     tolerance: Annotated[str, typer.Option(help="Allowed deviation: 3% or 0.03.")] = "1%",
     planets: Annotated[str, typer.Option(help="Numbers of planets: 3..6 or 4.")] = "3..5",
-    module: Annotated[float, typer.Option(help="Module, mm (scales the clearance).", min=1e-3, max=100.0)] = 1.0,
+    module: Annotated[float, typer.Option(help="Module, mm (scales the clearance).", min=MODULE_RANGE[0],
+                                       max=MODULE_RANGE[1])] = 1.0,
     held: Annotated[Member, typer.Option(help="The held member.")] = Member.ring,
     driver: Annotated[Member, typer.Option(help="The driving member.")] = Member.sun,
     driven: Annotated[Member, typer.Option(help="The driven member.")] = Member.carrier,

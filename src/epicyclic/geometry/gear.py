@@ -31,6 +31,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
+from ..limits import MAX_TOOTH_HEIGHT_FACTOR, MODULE_RANGE
 from .errors import GeometryError
 from .involute import (
     center_distance_from_angle,
@@ -85,9 +86,17 @@ class BasicRack:
 
     def __post_init__(self) -> None:
         owner = "BasicRack"
-        object.__setattr__(self, "module", _positive(self.module, "module", owner))
+        module = _positive(self.module, "module", owner)
+        if not MODULE_RANGE[0] <= module <= MODULE_RANGE[1]:
+            raise GeometryError(f"{owner}: module must lie within {MODULE_RANGE[0]:g} … {MODULE_RANGE[1]:g} mm, "
+                                f"got {module!r} (see docs/limits.md).")
+        object.__setattr__(self, "module", module)
         for name in ("addendum", "dedendum"):
-            object.__setattr__(self, name, _positive(getattr(self, name), name, owner))
+            factor = _positive(getattr(self, name), name, owner)
+            if factor > MAX_TOOTH_HEIGHT_FACTOR:
+                raise GeometryError(f"{owner}: {name} must be at most {MAX_TOOTH_HEIGHT_FACTOR:g} × the module "
+                                    f"(ISO 53: addendum 1, dedendum 1.25), got {factor!r}.")
+            object.__setattr__(self, name, factor)
         alpha = self.pressure_angle
         if isinstance(alpha, bool) or not isinstance(alpha, (int, float)) or not 0.0 < alpha < 45.0:
             raise GeometryError(

@@ -42,6 +42,7 @@ from typing import Any
 from ..errors import EpicyclicError
 from ..geometry import BasicRack, SetGeometry, StageGeometry
 from ..geometry.set_geometry import TWO_CENTRAL_NAMES, planet_names
+from ..limits import MODULE_RANGE
 from ..losses import (
     ConstantFriction,
     DragTorque,
@@ -146,9 +147,11 @@ def _rack(reader, table, where: str, index: int | None = None) -> BasicRack:
         return reader.number(value, f"geometry.{key}", where)
 
     module = pick("module", reader.require(table, "module", where))
-    if module <= 0:
+    if not MODULE_RANGE[0] <= module <= MODULE_RANGE[1]:
         raise reader.error(at_key(where, "geometry.module"),
-                           f"expected a positive normal module in mm, got {short(module)}.")
+                           f"expected a positive normal module in mm within {MODULE_RANGE[0]:g} … "
+                           f"{MODULE_RANGE[1]:g} "
+                           f"(see docs/limits.md), got {short(module)}.")
     return BasicRack(module, pick("pressure_angle", 20.0), pick("helix_angle", 0.0), pick("addendum", 1.0),
                      pick("dedendum", 1.25))
 

@@ -179,14 +179,15 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         for row in range(len(lay.rows) - 1):
             for k in lay.parts_at[row]:
                 scale[k] = np.maximum(scale[k], np.abs(shaft_torques[row]))
-    idle = own <= ZERO_TOLERANCE * scale
+    finite = np.isfinite(own)  # an overflowed torque is never idle (inf <= 1e-12·inf): check_finite names it
+    idle = finite & (own <= ZERO_TOLERANCE * scale)
     # an idle element hands the scale it was judged by on to its neighbours (an isolated group of
     # elements that only a now-idle element joined to the rest is round-off of the same scale)
     for _ in range(lay.parts if idle.any() else 0):
         padded[:-1] = np.where(idle, scale, 0.0)
         reach = _neighbours(padded, lay.neighbours)
         grown = np.where(idle | (own <= ZERO_TOLERANCE * reach), np.maximum(scale, reach), scale)
-        more = own <= ZERO_TOLERANCE * grown
+        more = finite & (own <= ZERO_TOLERANCE * grown)
         if (more == idle).all() and (grown == scale).all():
             break
         scale, idle = grown, idle | more

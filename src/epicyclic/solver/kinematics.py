@@ -107,6 +107,10 @@ class SpeedSolver:
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
         size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
+        # measured against the largest speed (per point), so that |A⁺|·|A|·|n| cannot overflow near 1e308
+        # (an infinite bound made every speed "round-off": a carrier at 2.8e307 1/min came out as 0)
+        peak = np.max(size, axis=0, keepdims=True) if size.size else np.ones((1,) + size.shape[1:])
+        size = size / np.where(peak > 0.0, peak, 1.0)
         terms = self._magnitudes[1] @ (self._magnitudes[0] @ size)
         zero = size <= ZERO_TOLERANCE * terms
         zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given
@@ -134,8 +138,11 @@ class SpeedSolver:
             n[column] = value
         if not all(map(math.isfinite, n)):
             return None
-        terms = (self._magnitudes[1] @ (self._magnitudes[0] @ np.abs(n))).tolist()
-        zero = [size <= ZERO_TOLERANCE * term for size, term in zip(map(abs, n), terms)]
+        size = [abs(v) for v in n]
+        peak = max(size, default=1.0)  # relative to the largest speed, as speeds() does
+        size = [v / (peak if peak > 0.0 else 1.0) for v in size]
+        terms = (self._magnitudes[1] @ (self._magnitudes[0] @ np.array(size))).tolist()
+        zero = [v <= ZERO_TOLERANCE * term for v, term in zip(size, terms)]
         for column in columns:
             zero[column] = False
         n = [0.0 if z else v for z, v in zip(zero, n)]

@@ -49,7 +49,8 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ModelError
-from ..limits import MAX_SYNTHESIS_ELEMENTS, MAX_SYNTHESIS_GEARS, MAX_SYNTHESIS_SETS
+from ..limits import (MAX_PLANETS, MAX_SYNTHESIS_ELEMENTS, MAX_SYNTHESIS_GEARS, MAX_SYNTHESIS_SETS, MAX_TEETH,
+                      MIN_TEETH)
 
 __all__ = ["SynthesisError", "SynthesisSpec", "progressive_ratios"]
 
@@ -64,16 +65,18 @@ def _number(value: Any, key: str, where: str) -> float:
     return float(value)
 
 
-def _count(value: Any, key: str, where: str, minimum: int = 0) -> int:
+def _count(value: Any, key: str, where: str, minimum: int = 0, maximum: int | None = None) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
         raise SynthesisError(f"{where}: {key} must be a whole number >= {minimum}, got {value!r}.")
+    if maximum is not None and value > maximum:
+        raise SynthesisError(f"{where}: {key} must be at most {maximum}, got {value!r} (see docs/limits.md).")
     return value
 
 
 def _pair(value: Any, key: str, where: str, integer: bool = False) -> tuple[float, float]:
     if not isinstance(value, Sequence) or isinstance(value, str) or len(value) != 2:
         raise SynthesisError(f"{where}: {key} must be a pair [low, high], got {value!r}.")
-    lo, hi = (_count(v, key, where, 3) if integer else _number(v, key, where) for v in value)
+    lo, hi = (_count(v, key, where, MIN_TEETH, MAX_TEETH) if integer else _number(v, key, where) for v in value)
     if not lo <= hi:
         raise SynthesisError(f"{where}: {key} must have low <= high, got [{lo}, {hi}].")
     return lo, hi
@@ -285,7 +288,7 @@ class SynthesisSpec:
             p = (p,) if isinstance(p, int) else p
             if not isinstance(p, Sequence) or not p:
                 raise SynthesisError(f"{where}: bounds.planets must be a list of planet numbers, got {p!r}.")
-            kw["planets"] = tuple(_count(v, "bounds.planets", where, 1) for v in p)
+            kw["planets"] = tuple(_count(v, "bounds.planets", where, 1, MAX_PLANETS) for v in p)
         if cons.get("max_members_per_shaft") is not None:
             kw["max_members_per_shaft"] = _count(cons["max_members_per_shaft"], "search.max_members_per_shaft", where, 2)
         if "free_input" in cons:
