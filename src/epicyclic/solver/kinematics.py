@@ -109,7 +109,7 @@ class SpeedSolver:
         size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
         # measured against the largest speed (per point), so that |A⁺|·|A|·|n| cannot overflow near 1e308
         # (an infinite bound made every speed "round-off": a carrier at 2.8e307 1/min came out as 0)
-        peak = np.max(size, axis=0, keepdims=True) if size.size else np.ones((1,) + size.shape[1:])
+        peak = _largest_row(size) if size.size else np.ones((1,) + size.shape[1:])
         size = size / np.where(peak > 0.0, peak, 1.0)
         terms = self._magnitudes[1] @ (self._magnitudes[0] @ size)
         zero = size <= ZERO_TOLERANCE * terms
@@ -162,6 +162,16 @@ class SpeedSolver:
             first = int(np.flatnonzero(~np.asarray(ok))[0])
             raise _contradiction(self.mats, self.given, g[:, first], prefix=f"operating point {first}: ")
         raise _contradiction(self.mats, self.given, g)
+
+
+def _largest_row(size: np.ndarray) -> np.ndarray:
+    """``np.max(size, axis=0, keepdims=True)``, row by row for points along axis 1 (many times faster)."""
+    if size.ndim == 1:
+        return np.max(size, axis=0, keepdims=True)
+    peak = size[0].copy()
+    for row in size[1:]:
+        np.maximum(peak, row, out=peak)
+    return peak[None]
 
 
 def _contradiction(mats: TrainMatrices, given: Sequence[str], values: np.ndarray, prefix: str = "") -> ContradictionError:
