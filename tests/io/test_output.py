@@ -144,7 +144,11 @@ def test_an_interrupted_command_exits_130_and_leaves_no_file(tmp_path):
     out = tmp_path / "movie.gif"
     process = subprocess.Popen([sys.executable, "-c", "from epicyclic.cli.main import main; main()", "animate",
                                 str(EXAMPLE), "--frames", "240", "--out", str(out)],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               # as from a terminal: Python installs its Ctrl-C handler only when SIGINT is not
+                               # ignored at start, and a test run before this one (a Dask or server test) may
+                               # leave SIGINT ignored in this process, which the child would inherit
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 20
     while not list(tmp_path.iterdir()) and time.monotonic() < deadline:  # the temporary file: drawing has begun
         time.sleep(0.05)
