@@ -44,6 +44,9 @@ __all__ = ["Evaluation", "evaluate", "check_finite", "relative_speeds"]
 _TINY = np.finfo(float).tiny
 #: The largest finite float.
 _HUGE = np.finfo(float).max
+#: Non-zero magnitudes of speeds, torques and factors in which no result of :func:`evaluate` (products
+#: of at most four of them, sums of such products) can over- or underflow: far inside the float range.
+_SAFE_LOW, _SAFE_HIGH = 1e-50, 1e50
 
 
 @dataclass(frozen=True, eq=False)
@@ -164,36 +167,13 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         x[lay.lever_c_columns] = -k_c * t_a + 0.0
     x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
 
-    # idle elements: torques that are round-off of the torques of the elements they share a shaft with
     port = x[lay.port_columns]
     size = np.abs(port)
-    padded = np.zeros((lay.parts + 1,) + points)  # the last row: no neighbour
-    own = padded[:-1]
-    _rows(np.maximum, size, lay.part_ports, own)
-    own = own.copy()
-    scale = _neighbours(padded, lay.neighbours) if lay.parts else own.copy()
-    for shaft, value in given.items():  # a given torque at one of its shafts
-        for k in lay.parts_at[lay.rows[shaft]]:
-            scale[k] = np.maximum(scale[k], np.abs(value))
-    if shaft_torques is not None:  # and a loss torque
-        for row in range(len(lay.rows) - 1):
-            for k in lay.parts_at[row]:
-                scale[k] = np.maximum(scale[k], np.abs(shaft_torques[row]))
-    finite = np.isfinite(own)  # an overflowed torque is never idle (inf <= 1e-12·inf): check_finite names it
-    idle = finite & (own <= ZERO_TOLERANCE * scale)
-    # an idle element hands the scale it was judged by on to its neighbours (an isolated group of
-    # elements that only a now-idle element joined to the rest is round-off of the same scale)
-    for _ in range(lay.parts if idle.any() else 0):
-        padded[:-1] = np.where(idle, scale, 0.0)
-        reach = _neighbours(padded, lay.neighbours)
-        grown = np.where(idle | (own <= ZERO_TOLERANCE * reach), np.maximum(scale, reach), scale)
-        more = finite & (own <= ZERO_TOLERANCE * grown)
-        if (more == idle).all() and (grown == scale).all():
-            break
-        scale, idle = grown, idle | more
-    # a port torque that is round-off of its element's largest is 0 (the zero rule of clean_array)
-    zero = idle[lay.port_parts] | ((size <= ZERO_TOLERANCE * own[lay.port_parts]) & np.isfinite(port))
-    port = np.where(zero, 0.0, port) + 0.0
+    settled = _settled(lay, size, speeds, given, efficiencies, shaft_torques)
+    if settled:  # no port torque is round-off of another: the zero rule changes nothing but −0
+        port += 0.0
+    else:
+        port = _idle_cleaned(lay, port, size, given, shaft_torques)
     x[lay.port_columns] = port
 
     # external torques: given exactly, else the balance of the port torques on the shaft
@@ -231,12 +211,8 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         factor = np.where(used > 0, efficiencies, np.where(used < 0, 1.0 / efficiencies, 1.0))
     np.multiply(rolling, 1.0 - factor, out=loss)
     loss += 0.0
-    size = np.abs(block)
-    normal = None  # whether every value of the block is finite and 0 or normal (None: not known)
-    small = size < _TINY
-    if not np.count_nonzero(small) or not np.count_nonzero(size[small]):  # no subnormal value
-        normal = bool(size.max(initial=0.0) <= _HUGE) and _normal(speeds)
-    elif _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
+    normal = _block_normal(block, speeds) if not settled else True  # settled: no value can leave the range
+    if normal is None and _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
         # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
         # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
         for array in (powers, rolling, coupling, loss):
@@ -245,6 +221,82 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     direction = observed if pattern is None else np.where(observed == 0, 0, used)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block,
                       normal)
+
+
+def _idle_cleaned(lay, port: np.ndarray, size: np.ndarray, given: Mapping[str, np.ndarray],
+                  shaft_torques: np.ndarray | None) -> np.ndarray:
+    """The port torques with the zero rule applied: idle elements and round-off ports exactly 0."""
+    points = port.shape[1:]
+    # idle elements: torques that are round-off of the torques of the elements they share a shaft with
+    padded = np.zeros((lay.parts + 1,) + points)  # the last row: no neighbour
+    own = padded[:-1]
+    _rows(np.maximum, size, lay.part_ports, own)
+    own = own.copy()
+    scale = _neighbours(padded, lay.neighbours) if lay.parts else own.copy()
+    for shaft, value in given.items():  # a given torque at one of its shafts
+        for k in lay.parts_at[lay.rows[shaft]]:
+            scale[k] = np.maximum(scale[k], np.abs(value))
+    if shaft_torques is not None:  # and a loss torque
+        for row in range(len(lay.rows) - 1):
+            for k in lay.parts_at[row]:
+                scale[k] = np.maximum(scale[k], np.abs(shaft_torques[row]))
+    finite = np.isfinite(own)  # an overflowed torque is never idle (inf <= 1e-12·inf): check_finite names it
+    idle = finite & (own <= ZERO_TOLERANCE * scale)
+    # an idle element hands the scale it was judged by on to its neighbours (an isolated group of
+    # elements that only a now-idle element joined to the rest is round-off of the same scale)
+    for _ in range(lay.parts if idle.any() else 0):
+        padded[:-1] = np.where(idle, scale, 0.0)
+        reach = _neighbours(padded, lay.neighbours)
+        grown = np.where(idle | (own <= ZERO_TOLERANCE * reach), np.maximum(scale, reach), scale)
+        more = finite & (own <= ZERO_TOLERANCE * grown)
+        if (more == idle).all() and (grown == scale).all():
+            break
+        scale, idle = grown, idle | more
+    # a port torque that is round-off of its element's largest is 0 (the zero rule of clean_array)
+    zero = idle[lay.port_parts] | ((size <= ZERO_TOLERANCE * own[lay.port_parts]) & np.isfinite(port))
+    port = np.where(zero, 0.0, port) + 0.0
+    return port
+
+
+def _block_normal(block: np.ndarray, speeds: np.ndarray) -> bool | None:
+    """Whether every value of ``block`` and ``speeds`` is finite and 0 or normal; None where some is subnormal."""
+    size = np.abs(block)
+    small = size < _TINY
+    if not np.count_nonzero(small) or not np.count_nonzero(size[small]):  # no subnormal value
+        return bool(size.max(initial=0.0) <= _HUGE) and _normal(speeds)
+    return None
+
+
+def _settled(lay, size: np.ndarray, speeds: np.ndarray, given: Mapping[str, np.ndarray],
+             efficiencies: np.ndarray | None, shaft_torques: np.ndarray | None) -> bool:
+    """Whether the zero rule leaves every port torque as it is and no result can leave the float range.
+
+    Both hold when every non-zero magnitude going in (port torques ``size``, speeds, given and loss
+    torques, the factors η0^w) lies within [``_SAFE_LOW``, ``_SAFE_HIGH``] — the few products and sums
+    of :func:`_evaluate` then stay far inside the range of normal floats — and the smallest non-zero
+    port torque is more than ``ZERO_TOLERANCE`` times the largest torque of all points (no element can
+    be idle and no port round-off of its element's largest: the scales they are judged by are never
+    larger).  Two reductions per array instead of the zero rule's and the range check's passes.
+    """
+    low, peak = _span(size)
+    torques = (*given.values(), *(() if shaft_torques is None else (shaft_torques,)))  # scales of the rule too
+    factors = (speeds, lay.lever_tables[2] if efficiencies is None else efficiencies)
+    for values in (*torques, *factors):
+        least, most = _span(np.abs(values))
+        if not (least >= _SAFE_LOW and most <= _SAFE_HIGH):
+            return False
+        if any(values is t for t in torques):
+            peak = max(peak, most)
+    return bool(_SAFE_LOW <= low and peak <= _SAFE_HIGH and low > ZERO_TOLERANCE * peak)  # NaN fails too
+
+
+def _span(size: np.ndarray) -> tuple[float, float]:
+    """The smallest non-zero and the largest value of ``size`` (≥ 0): (inf, 0) where all are 0."""
+    most = float(size.max(initial=0.0))
+    least = float(size.min(initial=np.inf))
+    if least == 0.0:
+        least = float(np.min(size, where=size > 0.0, initial=np.inf))
+    return least, most
 
 
 def _clean(values: np.ndarray, scale: np.ndarray) -> np.ndarray:
