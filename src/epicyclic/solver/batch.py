@@ -26,7 +26,7 @@ from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
 from .assembly import matrices
-from .evaluate import evaluate, relative_speeds
+from .evaluate import directions, evaluate, relative_speeds
 from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
 from .self_locking import SELF_LOCKING_MARGIN
@@ -273,26 +273,32 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         x_ideal = ideal.torques(tau)
     ideal.check(tau, x_ideal)
     relative = relative_speeds(mats, n)
-    ideal_eval = evaluate(mats, n, x_ideal, None, given_map, relative=relative)
+    extra, lossy_mats, all_rows = problem.losses()
+    rows = effs = dragged = None
+    if extra is not None:
+        effs = extra.efficiency[:, points]
+        dragged = extra.torques[:, points] if all_rows is not None else None
+        rows = None if all_rows is None else all_rows[:, points]
+    lossy = any(lever.efficiency != 1.0 for lever in lossy_mats.levers) or (
+        extra is not None and (dragged is not None or bool(np.any(extra.efficiency != 1.0))))
+    # the lossless solution: with losses only its loss directions and the roles of connected shafts count
+    role_rows = [shaft_row[s] for s in mats.external if s not in drives and s not in loads]
+    lean = directions(mats, n, x_ideal, given_map, relative, role_rows) if lossy else None
+    if lean is None:
+        ev = evaluate(mats, n, x_ideal, None, given_map, relative=relative)  # lossless: the result
+        lean = ev.pattern, {row: ev.powers[row] for row in role_rows}
+    ideal_pattern, ideal_powers = lean
+    mats = lossy_mats
 
     # loss directions: group points by pattern, one solve per pattern; then all points are evaluated
     # at once, and only the (rare) points whose re-read pattern differs are tried again
-    pattern = ideal_eval.pattern.copy()
+    pattern = ideal_pattern.copy()
     first_pattern = pattern.copy()
     x = np.array(x_ideal)
     first_x = x
     consistent = np.zeros(count, dtype=bool)
     pending = np.arange(count)
     solved: set[tuple[int, ...]] = set()
-    extra, mats, all_rows = problem.losses()
-    rows = effs = dragged = None
-    if extra is not None:
-        effs = extra.efficiency[:, points]
-        dragged = extra.torques[:, points] if all_rows is not None else None
-        rows = None if all_rows is None else all_rows[:, points]
-    lossy = any(lever.efficiency != 1.0 for lever in mats.levers) or (
-        extra is not None and (dragged is not None or bool(np.any(extra.efficiency != 1.0))))
-    ev = ideal_eval  # lossless: the ideal evaluation is the result
     retried = False
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
@@ -361,7 +367,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         elif s in loads:
             load_power -= power
         else:  # role from the ideal solution's sign
-            ideal_power = ideal_eval.powers[shaft_row[s]]
+            ideal_power = ideal_powers[shaft_row[s]]
             drive_power += np.where(ideal_power > 0, power, 0.0)
             load_power -= np.where(ideal_power < 0, power, 0.0)
     drive_power, load_power = drive_power + 0.0, load_power + 0.0
@@ -369,7 +375,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     flowing = (drive_power != 0) | (load_power != 0)
     loss = sum(losses.values(), np.zeros(count)) + 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
-        wrong = _wrong_way(ev.powers, mats, drives, loads, ideal_eval, shaft_row, scale)
+        wrong = _wrong_way(ev.powers, mats, drives, loads, ideal_powers, shaft_row, scale)
         at_limit = load_power <= SELF_LOCKING_MARGIN * drive_power
         self_locking = flowing & (wrong | ~consistent | at_limit)
         efficiency = np.where((drive_power > 0) & ~self_locking, load_power / drive_power, np.nan)
@@ -433,7 +439,7 @@ def _assembled(problem: _Problem, results: dict, solved: set, shape: tuple[int, 
     )
 
 
-def _wrong_way(powers, mats, drives, loads, ideal_eval, shaft_row, scale) -> np.ndarray:
+def _wrong_way(powers, mats, drives, loads, ideal_powers, shaft_row, scale) -> np.ndarray:
     """Points where a load delivers, or a drive absorbs, more than the margin of the input power."""
     wrong = np.zeros(scale.shape, dtype=bool)
     for s in mats.external:
@@ -443,7 +449,7 @@ def _wrong_way(powers, mats, drives, loads, ideal_eval, shaft_row, scale) -> np.
         elif s in loads:
             is_drive, is_load = False, True
         else:
-            ideal_power = ideal_eval.powers[shaft_row[s]]
+            ideal_power = ideal_powers[shaft_row[s]]
             is_drive, is_load = ideal_power > 0, ideal_power < 0
         wrong |= is_drive & (power < -SELF_LOCKING_MARGIN * scale)
         wrong |= is_load & (power > SELF_LOCKING_MARGIN * scale)

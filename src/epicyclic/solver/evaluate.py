@@ -38,7 +38,7 @@ from ..results.zero import ZERO_TOLERANCE, clean_array
 from ..model.elements import HOUSING
 from .assembly import TrainMatrices
 
-__all__ = ["Evaluation", "evaluate", "check_finite", "relative_speeds"]
+__all__ = ["Evaluation", "evaluate", "check_finite", "directions", "relative_speeds"]
 
 #: The smallest normal float: below it a result has lost its precision (underflow).
 _TINY = np.finfo(float).tiny
@@ -119,6 +119,54 @@ def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np
         result = _evaluate(mats, speeds, x, pattern, given, efficiencies, shaft_torques, relative)
     check_finite(mats, result)
     return result
+
+
+def directions(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, given: Mapping[str, np.ndarray],
+               relative: np.ndarray, rows) -> tuple[np.ndarray, dict[int, np.ndarray]] | None:
+    """Of the lossless evaluation, only what a lossy solution needs: the ``pattern`` (sign of every
+    lever's rolling power) and the ``powers`` of the shaft rows ``rows`` (the roles of connected shafts).
+
+    The same numbers as ``evaluate(mats, speeds, x, None, given, relative=relative)`` gives, where
+    :func:`_settled` shows that the zero rule leaves the port torques as they are and nothing can
+    leave the float range; None elsewhere (then call :func:`evaluate`).  A fraction of its operations.
+    """
+    lay = mats.layout
+    with np.errstate(all="ignore"):
+        x = x[:len(mats.torque_columns)].copy()
+        lever = 3 * np.arange(len(mats.levers)) + 1  # w = 0
+        t_a = x[lay.lever_a_columns]
+        x[lay.lever_b_columns] = -lay.lever_tables[0][lever][:, None] * t_a + 0.0
+        x[lay.lever_c_columns] = -lay.lever_tables[1][lever][:, None] * t_a + 0.0
+        x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
+        port = x[lay.port_columns]
+        size = np.abs(port)
+        if not _settled(lay, size, speeds, given, None, None):
+            return None
+        port += 0.0
+        given_rows = {lay.rows[s]: value for s, value in given.items()}
+        reacting = dict(zip(lay.reacting_rows.tolist(), lay.reacting_groups))
+        powers = {}
+        for row in rows:
+            if row in given_rows:
+                torque = given_rows[row]
+            elif row in reacting:
+                group = reacting[row]
+                torque = _clean(_sums(port, [group])[0], _rows(np.maximum, size, [group])[0])
+            else:
+                torque = np.zeros(speeds.shape[1:])
+            power = torque * speeds[row]
+            power *= RPM_TO_RAD_S
+            power += 0.0
+            powers[row] = power
+        rolling = t_a * relative
+        rolling *= RPM_TO_RAD_S
+        rolling += 0.0
+        return _signs(rolling), powers
+
+
+def _signs(values: np.ndarray) -> np.ndarray:
+    """``np.sign(values).astype(int)`` for values without NaN (−0 → 0)."""
+    return np.sign(values).astype(int)
 
 
 def relative_speeds(mats: TrainMatrices, speeds: np.ndarray) -> np.ndarray:
@@ -217,7 +265,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
         for array in (powers, rolling, coupling, loss):
             array[...] = _flush(array)
-    observed = np.sign(rolling).astype(int)
+    observed = _signs(rolling)
     direction = observed if pattern is None else np.where(observed == 0, 0, used)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block,
                       normal)
