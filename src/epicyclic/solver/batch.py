@@ -303,20 +303,21 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
-        groups = list(_groups(pattern, pending, attempt == 0))
-        solved |= {tuple(int(w) for w in row) for row, _, _ in groups}
         with np.errstate(all="ignore"):
             if attempt == 0 and len(given) == 1 and effs is None and rows is None:
                 # one given torque: each point's torques are its pattern's column times the torque
                 # (Statics.torques point by point, without gathering the points of each pattern)
-                columns = np.stack([torque_solver(mats, given, row).operator[:, 0] for row, _, _ in groups], axis=1)
-                which = np.zeros(count, dtype=int)
-                for k, (_, _, mask) in enumerate(groups[1:], 1):
-                    which[mask] = k
+                patterns, which = _pattern_index(pattern)
+                solved |= {tuple(int(w) for w in row) for row in patterns}
+                columns = np.stack([torque_solver(mats, given, row).operator[:, 0] for row in patterns], axis=1)
                 x = columns.take(which, axis=1)
                 x *= tau
                 x += 0.0  # as linear.apply
             else:
+                groups = list(_groups(pattern, pending, attempt == 0))
+                solved |= {tuple(int(w) for w in row) for row, _, _ in groups}
+                if x is first_x:  # the first solution stays as it is for the points that find no pattern
+                    x = x.copy()
                 for row, members, _ in groups:
                     solver = torque_solver(mats, given, row)
                     x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
@@ -324,7 +325,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                                                None if effs is None else effs[:, members])
         column = pattern if attempt == 0 else pattern[:, pending]
         if attempt == 0:  # every point (pending is all of them): this evaluation is kept where consistent
-            first_x = x.copy()
+            first_x = x
             ev = evaluate(mats, n, x, pattern, given_map, effs, dragged, relative)
             observed = ev.pattern
         else:
@@ -333,7 +334,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                                 {s: v[pending] for s, v in given_map.items()},
                                 None if effs is None else effs[:, pending],
                                 None if dragged is None else dragged[:, pending]).pattern
-        ok = np.all((column == observed) | (observed == 0), axis=0)
+        ok = _agrees(column, observed)
         consistent[pending[ok]] = True
         pending = pending[~ok]
         if pending.size:
@@ -368,8 +369,8 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
             load_power -= power
         else:  # role from the ideal solution's sign
             ideal_power = ideal_powers[shaft_row[s]]
-            drive_power += np.where(ideal_power > 0, power, 0.0)
-            load_power -= np.where(ideal_power < 0, power, 0.0)
+            drive_power += power * (ideal_power > 0)  # as np.where(…, power, 0.0): ±0 adds nothing
+            load_power -= power * (ideal_power < 0)
     drive_power, load_power = drive_power + 0.0, load_power + 0.0
     scale = np.maximum(drive_power, load_power)
     flowing = (drive_power != 0) | (load_power != 0)
@@ -392,6 +393,41 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     return results, solved
 
 
+def _agrees(column: np.ndarray, observed: np.ndarray) -> np.ndarray:
+    """Per point: every lever's observed direction is the one solved with, or 0 (row by row)."""
+    ok = np.ones(column.shape[1:], dtype=bool)
+    for solved_with, seen in zip(column, observed):
+        ok &= (solved_with == seen) | (seen == 0)
+    return ok
+
+
+def _pattern_index(pattern: np.ndarray) -> tuple[list[np.ndarray], np.ndarray]:
+    """The distinct loss-direction patterns (columns of ``pattern``, in the order of their codes) and,
+    per point, the index of its pattern among them."""
+    levers = pattern.shape[0]
+    if levers == 0 or pattern.shape[1] == 0:
+        return [pattern[:, 0] if pattern.shape[1] else pattern[:, :0].sum(axis=1)], np.zeros(pattern.shape[1], int)
+    if levers > 12:  # too many codes to count
+        unique, which = np.unique(pattern, axis=1, return_inverse=True)
+        return list(unique.T), which.ravel()
+    codes = _codes(pattern)
+    present = np.flatnonzero(np.bincount(codes, minlength=3 ** levers))
+    digits = (present[None, :] // 3 ** np.arange(levers)[:, None]) % 3 - 1
+    if present.size == 1:
+        return [digits[:, 0]], np.zeros(pattern.shape[1], dtype=int)
+    lookup = np.zeros(3 ** levers, dtype=int)
+    lookup[present] = np.arange(present.size)
+    return list(digits.T), lookup.take(codes)
+
+
+def _codes(column: np.ndarray) -> np.ndarray:
+    """One integer per point: the directions w + 1 as base-3 digits, lever 0 first."""
+    codes = column[0] + 1
+    for k in range(1, column.shape[0]):
+        codes += (column[k] + 1) * 3 ** k
+    return codes
+
+
 def _groups(pattern: np.ndarray, pending: np.ndarray, everything: bool = False):
     """(pattern, its points, their mask or None) for every distinct loss-direction pattern among the
     ``pending`` points, in the order of their codes (w + 1 as base-3 digits, lever 0 first).
@@ -403,9 +439,7 @@ def _groups(pattern: np.ndarray, pending: np.ndarray, everything: bool = False):
     if not column.size or levers == 0:
         yield column[:, 0], pending, (True if everything else None)
         return
-    codes = column[0] + 1  # one integer code per pattern is much faster to group than rows
-    for k in range(1, levers):
-        codes += (column[k] + 1) * 3 ** k
+    codes = _codes(column)  # one integer code per pattern is much faster to group than rows
     if levers > 12:  # too many codes to count
         unique_codes, first_index, inverse = np.unique(codes, return_index=True, return_inverse=True)
         for k in range(unique_codes.size):

@@ -37,6 +37,7 @@ from ..results.solution import RPM_TO_RAD_S
 from ..results.zero import ZERO_TOLERANCE, clean_array
 from ..model.elements import HOUSING
 from .assembly import TrainMatrices
+from .linear import span
 
 __all__ = ["Evaluation", "evaluate", "check_finite", "directions", "relative_speeds"]
 
@@ -228,7 +229,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     torques[...] = 0.0
     if len(lay.reacting_rows):
         total = _sums(port, lay.reacting_groups)
-        terms = _rows(np.maximum, np.abs(port), lay.reacting_groups)
+        terms = _rows(np.maximum, size if settled else np.abs(port), lay.reacting_groups)
         if shaft_torques is not None:  # M_s = Σ T_port − T_loss
             total = total - shaft_torques[lay.reacting_rows]
             terms = np.maximum(terms, np.abs(shaft_torques[lay.reacting_rows]))
@@ -326,11 +327,11 @@ def _settled(lay, size: np.ndarray, speeds: np.ndarray, given: Mapping[str, np.n
     be idle and no port round-off of its element's largest: the scales they are judged by are never
     larger).  Two reductions per array instead of the zero rule's and the range check's passes.
     """
-    low, peak = _span(size)
+    low, peak = span(size)
     torques = (*given.values(), *(() if shaft_torques is None else (shaft_torques,)))  # scales of the rule too
     factors = (speeds, lay.lever_tables[2] if efficiencies is None else efficiencies)
     for values in (*torques, *factors):
-        least, most = _span(np.abs(values))
+        least, most = span(np.abs(values))
         if not (least >= _SAFE_LOW and most <= _SAFE_HIGH):
             return False
         if any(values is t for t in torques):
@@ -338,18 +339,15 @@ def _settled(lay, size: np.ndarray, speeds: np.ndarray, given: Mapping[str, np.n
     return bool(_SAFE_LOW <= low and peak <= _SAFE_HIGH and low > ZERO_TOLERANCE * peak)  # NaN fails too
 
 
-def _span(size: np.ndarray) -> tuple[float, float]:
-    """The smallest non-zero and the largest value of ``size`` (≥ 0): (inf, 0) where all are 0."""
-    most = float(size.max(initial=0.0))
-    least = float(size.min(initial=np.inf))
-    if least == 0.0:
-        least = float(np.min(size, where=size > 0.0, initial=np.inf))
-    return least, most
-
-
 def _clean(values: np.ndarray, scale: np.ndarray) -> np.ndarray:
-    """:func:`~epicyclic.results.zero.clean_array` for a float array and a scale ≥ 0 of its shape."""
+    """:func:`~epicyclic.results.zero.clean_array` for a float array and a scale ≥ 0 of its shape.
+
+    ``values`` is a temporary: it is cleaned in place where nothing in it is round-off (the usual case).
+    """
     zero = np.abs(values) <= ZERO_TOLERANCE * scale
+    if not np.count_nonzero(zero):
+        values += 0.0
+        return values
     zero &= np.isfinite(values)
     out = np.where(zero, 0.0, values)
     out += 0.0
