@@ -29,6 +29,7 @@ from .assembly import matrices
 from .evaluate import directions, evaluate, relative_speeds
 from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
+from .linear import span
 from .self_locking import SELF_LOCKING_MARGIN
 from .solve import MAX_PATTERN_TRIES, _validate
 from .statics import TorqueSolver, torque_solver
@@ -36,6 +37,8 @@ from .statics import TorqueSolver, torque_solver
 __all__ = ["BatchSolution", "solve_batch"]
 
 ArrayMap = Mapping[str, np.ndarray]
+#: The smallest normal and the largest finite float.
+_TINY, _HUGE = np.finfo(float).tiny, np.finfo(float).max
 
 
 @dataclass(frozen=True, eq=False)
@@ -235,7 +238,9 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     kin = speed_solver(mats, given_speed)
     with np.errstate(all="ignore"):
         moving = kin.speeds(g) if given_speed else np.zeros((len(mats.speed_index), count))
-    check_speeds(mats, moving)
+    speed_span = span(np.abs(moving))  # also for evaluate's range check
+    if not (_TINY <= speed_span[0] and speed_span[1] <= _HUGE):  # else check_speeds passes
+        check_speeds(mats, moving)
     kin.check(g, moving)
     n = np.vstack([moving, np.zeros((1, count))])  # housing last
 
@@ -283,9 +288,9 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         extra is not None and (dragged is not None or bool(np.any(extra.efficiency != 1.0))))
     # the lossless solution: with losses only its loss directions and the roles of connected shafts count
     role_rows = [shaft_row[s] for s in mats.external if s not in drives and s not in loads]
-    lean = directions(mats, n, x_ideal, given_map, relative, role_rows) if lossy else None
+    lean = directions(mats, n, x_ideal, given_map, relative, role_rows, speed_span) if lossy else None
     if lean is None:
-        ev = evaluate(mats, n, x_ideal, None, given_map, relative=relative)  # lossless: the result
+        ev = evaluate(mats, n, x_ideal, None, given_map, relative=relative, speed_span=speed_span)  # lossless
         lean = ev.pattern, {row: ev.powers[row] for row in role_rows}
     ideal_pattern, ideal_powers = lean
     mats = lossy_mats
@@ -326,7 +331,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         column = pattern if attempt == 0 else pattern[:, pending]
         if attempt == 0:  # every point (pending is all of them): this evaluation is kept where consistent
             first_x = x
-            ev = evaluate(mats, n, x, pattern, given_map, effs, dragged, relative)
+            ev = evaluate(mats, n, x, pattern, given_map, effs, dragged, relative, speed_span)
             observed = ev.pattern
         else:
             retried = True

@@ -90,7 +90,8 @@ class Evaluation:
 
 def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
              given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
-             shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None) -> Evaluation:
+             shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None,
+             speed_span: tuple[float, float] | None = None) -> Evaluation:
     """Clean the solved torques and derive torques, powers, rolling powers and losses.
 
     Parameters
@@ -111,19 +112,22 @@ def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np
         N·m: a shaft's external torque balances them too (M_s + T_loss − Σ T_port = 0).
     relative : ndarray (levers, P), optional
         :func:`relative_speeds` of ``speeds``, where already known.
+    speed_span : (float, float), optional
+        :func:`~epicyclic.solver.linear.span` of ``|speeds|``, where already known.
 
     Returns
     -------
     Evaluation
     """
     with np.errstate(all="ignore"):  # overflow is reported by check_finite, by name
-        result = _evaluate(mats, speeds, x, pattern, given, efficiencies, shaft_torques, relative)
+        result = _evaluate(mats, speeds, x, pattern, given, efficiencies, shaft_torques, relative, speed_span)
     check_finite(mats, result)
     return result
 
 
 def directions(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, given: Mapping[str, np.ndarray],
-               relative: np.ndarray, rows) -> tuple[np.ndarray, dict[int, np.ndarray]] | None:
+               relative: np.ndarray, rows, speed_span: tuple[float, float] | None = None
+               ) -> tuple[np.ndarray, dict[int, np.ndarray]] | None:
     """Of the lossless evaluation, only what a lossy solution needs: the ``pattern`` (sign of every
     lever's rolling power) and the ``powers`` of the shaft rows ``rows`` (the roles of connected shafts).
 
@@ -139,9 +143,9 @@ def directions(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, given: Ma
         x[lay.lever_b_columns] = -lay.lever_tables[0][lever][:, None] * t_a + 0.0
         x[lay.lever_c_columns] = -lay.lever_tables[1][lever][:, None] * t_a + 0.0
         x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
-        port = x[lay.port_columns]
+        port = x[_ports(lay)]
         size = np.abs(port)
-        if not _settled(lay, size, speeds, given, None, None):
+        if not _settled(lay, size, speeds, given, None, None, speed_span):
             return None
         port += 0.0
         given_rows = {lay.rows[s]: value for s, value in given.items()}
@@ -180,7 +184,8 @@ def relative_speeds(mats: TrainMatrices, speeds: np.ndarray) -> np.ndarray:
 
 def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
               given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
-              shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None) -> Evaluation:
+              shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None,
+              speed_span: tuple[float, float] | None = None) -> Evaluation:
     # Reductions over the few rows of a part or a shaft are written row by row (_rows): numpy's
     # reductions along axis 0 of a (rows, points) array are many times slower than whole-row operations.
     # The results are rows of one array (``block``), so that one pass checks them all (check_finite).
@@ -216,14 +221,16 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         x[lay.lever_c_columns] = -k_c * t_a + 0.0
     x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
 
-    port = x[lay.port_columns]
+    ports = _ports(lay)
+    port = x[ports]
     size = np.abs(port)
-    settled = _settled(lay, size, speeds, given, efficiencies, shaft_torques)
+    settled = _settled(lay, size, speeds, given, efficiencies, shaft_torques, speed_span)
     if settled:  # no port torque is round-off of another: the zero rule changes nothing but −0
         port += 0.0
     else:
         port = _idle_cleaned(lay, port, size, given, shaft_torques)
-    x[lay.port_columns] = port
+    if not (settled and isinstance(ports, slice)):  # else port is a view of x
+        x[ports] = port
 
     # external torques: given exactly, else the balance of the port torques on the shaft
     torques[...] = 0.0
@@ -317,7 +324,8 @@ def _block_normal(block: np.ndarray, speeds: np.ndarray) -> bool | None:
 
 
 def _settled(lay, size: np.ndarray, speeds: np.ndarray, given: Mapping[str, np.ndarray],
-             efficiencies: np.ndarray | None, shaft_torques: np.ndarray | None) -> bool:
+             efficiencies: np.ndarray | None, shaft_torques: np.ndarray | None,
+             speed_span: tuple[float, float] | None = None) -> bool:
     """Whether the zero rule leaves every port torque as it is and no result can leave the float range.
 
     Both hold when every non-zero magnitude going in (port torques ``size``, speeds, given and loss
@@ -325,18 +333,29 @@ def _settled(lay, size: np.ndarray, speeds: np.ndarray, given: Mapping[str, np.n
     of :func:`_evaluate` then stay far inside the range of normal floats — and the smallest non-zero
     port torque is more than ``ZERO_TOLERANCE`` times the largest torque of all points (no element can
     be idle and no port round-off of its element's largest: the scales they are judged by are never
-    larger).  Two reductions per array instead of the zero rule's and the range check's passes.
+    larger).  Two reductions per array instead of the zero rule's and the range check's passes
+    (``speed_span``: :func:`~epicyclic.solver.linear.span` of ``|speeds|`` where already known).
     """
     low, peak = span(size)
     torques = (*given.values(), *(() if shaft_torques is None else (shaft_torques,)))  # scales of the rule too
-    factors = (speeds, lay.lever_tables[2] if efficiencies is None else efficiencies)
-    for values in (*torques, *factors):
+    factor = lay.lever_tables[2] if efficiencies is None else efficiencies
+    for values in (*torques, factor, *(() if speed_span else (speeds,))):
         least, most = span(np.abs(values))
         if not (least >= _SAFE_LOW and most <= _SAFE_HIGH):
             return False
         if any(values is t for t in torques):
             peak = max(peak, most)
+    if speed_span and not (speed_span[0] >= _SAFE_LOW and speed_span[1] <= _SAFE_HIGH):
+        return False
     return bool(_SAFE_LOW <= low and peak <= _SAFE_HIGH and low > ZERO_TOLERANCE * peak)  # NaN fails too
+
+
+def _ports(lay) -> slice | np.ndarray:
+    """The port columns of x: a slice where they are the first columns in order (a view, no copy)."""
+    columns = lay.port_columns
+    if np.array_equal(columns, np.arange(columns.size)):
+        return slice(0, int(columns.size))
+    return columns
 
 
 def _clean(values: np.ndarray, scale: np.ndarray) -> np.ndarray:
