@@ -278,7 +278,16 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         x_ideal = ideal.torques(tau)
     ideal.check(tau, x_ideal)
     relative = relative_speeds(mats, n)
-    extra, lossy_mats, all_rows = problem.losses()
+    # the lossless solution: with losses only its loss directions and the roles of connected shafts count
+    # (evaluate.directions); the full evaluation where it is the result or the zero rule could act
+    role_rows = [shaft_row[s] for s in mats.external if s not in drives and s not in loads]
+    maybe_lossy = any(lever.efficiency != 1.0 for lever in mats.levers) or problem.efficiencies or problem.loss_torques
+    lean = directions(mats, n, x_ideal, given_map, relative, role_rows, speed_span) if maybe_lossy else None
+    ev = None
+    if lean is None:
+        ev = evaluate(mats, n, x_ideal, None, given_map, relative=relative, speed_span=speed_span)
+        lean = ev.pattern, {row: ev.powers[row] for row in role_rows}
+    extra, lossy_mats, all_rows = problem.losses()  # after the lossless evaluation's errors, as ever
     rows = effs = dragged = None
     if extra is not None:
         effs = extra.efficiency[:, points]
@@ -286,12 +295,8 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         rows = None if all_rows is None else all_rows[:, points]
     lossy = any(lever.efficiency != 1.0 for lever in lossy_mats.levers) or (
         extra is not None and (dragged is not None or bool(np.any(extra.efficiency != 1.0))))
-    # the lossless solution: with losses only its loss directions and the roles of connected shafts count
-    role_rows = [shaft_row[s] for s in mats.external if s not in drives and s not in loads]
-    lean = directions(mats, n, x_ideal, given_map, relative, role_rows, speed_span) if lossy else None
-    if lean is None:
-        ev = evaluate(mats, n, x_ideal, None, given_map, relative=relative, speed_span=speed_span)  # lossless
-        lean = ev.pattern, {row: ev.powers[row] for row in role_rows}
+    if ev is None and (not lossy or not count):  # the lossless evaluation is the result (settled: no error)
+        ev = evaluate(mats, n, x_ideal, None, given_map, relative=relative, speed_span=speed_span)
     ideal_pattern, ideal_powers = lean
     mats = lossy_mats
 
