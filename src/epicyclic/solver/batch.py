@@ -264,11 +264,12 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                     f"batch: powers[{shaft!r}] at point {k} needs a torque beyond the floating-point range "
                     "(about 1.8e308 N·m); give a larger speed or a smaller power.", "torque", shaft)
         else:
-            value = torque_in[shaft].copy()
-        sign = np.sign(omega)
+            value = torque_in[shaft]
         if shaft in drives:
+            sign = np.sign(omega)
             value = np.where(sign != 0, np.abs(value) * sign, value)
         elif shaft in loads:
+            sign = np.sign(omega)
             value = np.where(sign != 0, -np.abs(value) * sign, value)
         tau[r] = value
     given_map = {s: tau[r] for r, s in enumerate(given)}
@@ -304,8 +305,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     # at once, and only the (rare) points whose re-read pattern differs are tried again
     pattern = ideal_pattern.copy()
     first_pattern = pattern.copy()
-    x = np.array(x_ideal)
-    first_x = x
+    x = first_x = x_ideal  # (copied before any change)
     consistent = np.zeros(count, dtype=bool)
     pending = np.arange(count)
     solved: set[tuple[int, ...]] = set()
@@ -390,8 +390,10 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         at_limit = load_power <= SELF_LOCKING_MARGIN * drive_power
         self_locking = flowing & (wrong | ~consistent | at_limit)
         efficiency = np.where((drive_power > 0) & ~self_locking, load_power / drive_power, np.nan)
-    exact = (loss == 0) & (np.abs(efficiency - 1.0) <= 1e-9)
-    efficiency = np.where(exact, 1.0, np.minimum(efficiency, 1.0))
+    efficiency = np.minimum(efficiency, 1.0)
+    lossless = loss == 0
+    if np.count_nonzero(lossless):
+        efficiency[lossless & (np.abs(efficiency - 1.0) <= 1e-9)] = 1.0  # no efficiency from round-off
     results = {("speeds", s): ev.speeds[k] for s, k in shaft_row.items()}
     results |= {("torques", s): ev.torques[k] for s, k in shaft_row.items()}
     results |= {("powers", s): ev.powers[k] for s, k in shaft_row.items()}
@@ -486,17 +488,17 @@ def _assembled(problem: _Problem, results: dict, solved: set, shape: tuple[int, 
 def _wrong_way(powers, mats, drives, loads, ideal_powers, shaft_row, scale) -> np.ndarray:
     """Points where a load delivers, or a drive absorbs, more than the margin of the input power."""
     wrong = np.zeros(scale.shape, dtype=bool)
+    limit = SELF_LOCKING_MARGIN * scale
     for s in mats.external:
         power = powers[shaft_row[s]]
         if s in drives:
-            is_drive, is_load = True, False
+            wrong |= power < -limit
         elif s in loads:
-            is_drive, is_load = False, True
+            wrong |= power > limit
         else:
             ideal_power = ideal_powers[shaft_row[s]]
-            is_drive, is_load = ideal_power > 0, ideal_power < 0
-        wrong |= is_drive & (power < -SELF_LOCKING_MARGIN * scale)
-        wrong |= is_load & (power > SELF_LOCKING_MARGIN * scale)
+            wrong |= (ideal_power > 0) & (power < -limit)
+            wrong |= (ideal_power < 0) & (power > limit)
     return wrong
 
 

@@ -133,21 +133,32 @@ def directions(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, given: Ma
 
     The same numbers as ``evaluate(mats, speeds, x, None, given, relative=relative)`` gives, where
     :func:`_settled` shows that the zero rule leaves the port torques as they are and nothing can
-    leave the float range; None elsewhere (then call :func:`evaluate`).  A fraction of its operations.
+    leave the float range; None elsewhere (then call :func:`evaluate`).  Only the ports a balance
+    needs are computed, and the span of the others follows from the lever ports a (T_b = −i0·T_a,
+    T_c = −(1 − i0)·T_a without losses, each rounded once): a fraction of the operations.
     """
     lay = mats.layout
     with np.errstate(all="ignore"):
-        x = x[:len(mats.torque_columns)].copy()
-        lever = 3 * np.arange(len(mats.levers)) + 1  # w = 0
         t_a = x[lay.lever_a_columns]
-        x[lay.lever_b_columns] = -lay.lever_tables[0][lever][:, None] * t_a + 0.0
-        x[lay.lever_c_columns] = -lay.lever_tables[1][lever][:, None] * t_a + 0.0
-        x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
-        port = x[_ports(lay)]
-        size = np.abs(port)
-        if not _settled(lay, size, speeds, given, None, None, speed_span):
+        first = x[lay.link_first_columns]
+        lever = 3 * np.arange(len(mats.levers)) + 1  # w = 0
+        k_b, k_c = lay.lever_tables[0][lever], lay.lever_tables[1][lever]
+        factors = np.abs(np.concatenate([k_b, k_c]))
+        if not np.isfinite(factors).all():
             return None
-        port += 0.0
+        factors = factors[factors > 0]
+        least_a, most_a = span(np.abs(t_a))
+        least_first, most_first = span(np.abs(first))
+        low = min(least_a, least_first, least_a * factors.min(initial=np.inf) * (1.0 - 1e-12))
+        peak = max(most_a, most_first, most_a * factors.max(initial=0.0) * (1.0 + 1e-12))
+        if not _settled(lay, (low, peak), speeds, given, None, None, speed_span):
+            return None
+        derived = {}  # port column → how evaluate computes it
+        for k, (a, b, c) in enumerate(zip(lay.lever_a_columns, lay.lever_b_columns, lay.lever_c_columns)):
+            derived |= {int(a): lambda k=k: t_a[k] + 0.0, int(b): lambda k=k: -k_b[k] * t_a[k] + 0.0,
+                        int(c): lambda k=k: -k_c[k] * t_a[k] + 0.0}
+        for k, (one, two) in enumerate(zip(lay.link_first_columns, lay.link_second_columns)):
+            derived |= {int(one): lambda k=k: first[k] + 0.0, int(two): lambda k=k: -first[k] + 0.0}
         given_rows = {lay.rows[s]: value for s, value in given.items()}
         reacting = dict(zip(lay.reacting_rows.tolist(), lay.reacting_groups))
         powers = {}
@@ -156,7 +167,12 @@ def directions(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, given: Ma
                 torque = given_rows[row]
             elif row in reacting:
                 group = reacting[row]
-                torque = _clean(_sums(port, [group])[0], _rows(np.maximum, size, [group])[0])
+                port = np.array([derived[int(lay.port_columns[j])]() for j in group])
+                if len(group) == 1:  # _clean(p, |p|) is p + 0.0
+                    torque = port[0]
+                else:
+                    whole = [tuple(range(len(group)))]
+                    torque = _clean(_sums(port, whole)[0], _rows(np.maximum, np.abs(port), whole)[0])
             else:
                 torque = np.zeros(speeds.shape[1:])
             power = torque * speeds[row]
@@ -194,7 +210,8 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     levers, shafts, columns = len(mats.levers), len(lay.rows), len(mats.torque_columns)
     block = np.empty((columns + 2 * shafts + 4 * levers,) + points)
     x_in, x = x, block[:columns]
-    x[...] = x_in
+    kept = _kept(mats)  # the columns not derived below (lever ports b, c, links' second ports, externals)
+    x[kept] = x_in[kept]
     torques = block[columns:columns + shafts]
     powers = block[columns + shafts:columns + 2 * shafts]
     rolling, coupling, loss, relative_out = (block[columns + 2 * shafts + k * levers:columns + 2 * shafts
@@ -224,7 +241,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     ports = _ports(lay)
     port = x[ports]
     size = np.abs(port)
-    settled = _settled(lay, size, speeds, given, efficiencies, shaft_torques, speed_span)
+    settled = _settled(lay, span(size), speeds, given, efficiencies, shaft_torques, speed_span)
     if settled:  # no port torque is round-off of another: the zero rule changes nothing but −0
         port += 0.0
     else:
@@ -234,13 +251,19 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
 
     # external torques: given exactly, else the balance of the port torques on the shaft
     torques[...] = 0.0
-    if len(lay.reacting_rows):
-        total = _sums(port, lay.reacting_groups)
-        terms = _rows(np.maximum, size if settled else np.abs(port), lay.reacting_groups)
+    reacting_rows, groups = _balanced(lay, given, shaft_torques is None)
+    if len(reacting_rows):
+        total = _sums(port, groups)
+        terms = _rows(np.maximum, size if settled else np.abs(port), groups)
         if shaft_torques is not None:  # M_s = Σ T_port − T_loss
-            total = total - shaft_torques[lay.reacting_rows]
-            terms = np.maximum(terms, np.abs(shaft_torques[lay.reacting_rows]))
-        torques[lay.reacting_rows] = _clean(total, terms)
+            total = total - shaft_torques[reacting_rows]
+            terms = np.maximum(terms, np.abs(shaft_torques[reacting_rows]))
+        torques[reacting_rows] = _clean(total, terms)
+    if shaft_torques is None:  # one port, no loss torque: the balance is the (cleaned) port torque itself
+        given_rows = {lay.rows[s] for s in given}
+        for row, group in zip(lay.reacting_rows.tolist(), lay.reacting_groups):
+            if len(group) == 1 and row not in given_rows:
+                torques[row] = port[group[0]]
     if shaft_torques is not None:  # reactions of loss torques where no port is (the housing, say)
         reacting = set(lay.reacting_rows.tolist())
         bare = [row for row in (lay.rows[s] for s in (*mats.external, HOUSING)) if row not in reacting]
@@ -262,10 +285,10 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         out *= RPM_TO_RAD_S
         out += 0.0
     if efficiencies is None:
-        factor = lay.lever_tables[2].take(table)  # η0^w (1/η0 only where solved with it)
+        lost = (1.0 - lay.lever_tables[2]).take(table)  # 1 − η0^w (1/η0 only where solved with it)
     else:
-        factor = np.where(used > 0, efficiencies, np.where(used < 0, 1.0 / efficiencies, 1.0))
-    np.multiply(rolling, 1.0 - factor, out=loss)
+        lost = 1.0 - np.where(used > 0, efficiencies, np.where(used < 0, 1.0 / efficiencies, 1.0))
+    np.multiply(rolling, lost, out=loss)
     loss += 0.0
     normal = _block_normal(block, speeds) if not settled else True  # settled: no value can leave the range
     if normal is None and _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
@@ -274,9 +297,28 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
         for array in (powers, rolling, coupling, loss):
             array[...] = _flush(array)
     observed = _signs(rolling)
-    direction = observed if pattern is None else np.where(observed == 0, 0, used)
+    direction = observed if pattern is None else used * (observed != 0)
     return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block,
                       normal)
+
+
+def _kept(mats: TrainMatrices) -> np.ndarray | slice:
+    """Columns of x that :func:`_evaluate` takes as given: lever ports a and links' first ports (all
+    columns where some column is neither a port nor an external torque)."""
+    lay = mats.layout
+    if len(lay.port_columns) + len(lay.external_columns) != len(mats.torque_columns):
+        return slice(None)
+    return np.concatenate([lay.lever_a_columns, lay.link_first_columns]).astype(int)
+
+
+def _balanced(lay, given: Mapping[str, np.ndarray], plain: bool) -> tuple[np.ndarray, tuple]:
+    """Reacting rows whose torque is a balance to compute, and their groups of ports: not the rows of
+    given torques (they are the given values), nor, where ``plain`` (no loss torques), single ports
+    (their balance is the port torque: ``_clean(p, |p|)`` is ``p + 0.0``, which the port already is)."""
+    rows = {lay.rows[s] for s in given}
+    keep = [k for k, (row, group) in enumerate(zip(lay.reacting_rows.tolist(), lay.reacting_groups))
+            if row not in rows and not (plain and len(group) == 1)]
+    return lay.reacting_rows[keep], tuple(lay.reacting_groups[k] for k in keep)
 
 
 def _idle_cleaned(lay, port: np.ndarray, size: np.ndarray, given: Mapping[str, np.ndarray],
@@ -323,12 +365,13 @@ def _block_normal(block: np.ndarray, speeds: np.ndarray) -> bool | None:
     return None
 
 
-def _settled(lay, size: np.ndarray, speeds: np.ndarray, given: Mapping[str, np.ndarray],
+def _settled(lay, port_span: tuple[float, float], speeds: np.ndarray, given: Mapping[str, np.ndarray],
              efficiencies: np.ndarray | None, shaft_torques: np.ndarray | None,
              speed_span: tuple[float, float] | None = None) -> bool:
     """Whether the zero rule leaves every port torque as it is and no result can leave the float range.
 
-    Both hold when every non-zero magnitude going in (port torques ``size``, speeds, given and loss
+    Both hold when every non-zero magnitude going in (port torques, ``port_span`` = their smallest non-zero
+    and largest magnitude or bounds of them, speeds, given and loss
     torques, the factors η0^w) lies within [``_SAFE_LOW``, ``_SAFE_HIGH``] — the few products and sums
     of :func:`_evaluate` then stay far inside the range of normal floats — and the smallest non-zero
     port torque is more than ``ZERO_TOLERANCE`` times the largest torque of all points (no element can
@@ -336,7 +379,7 @@ def _settled(lay, size: np.ndarray, speeds: np.ndarray, given: Mapping[str, np.n
     larger).  Two reductions per array instead of the zero rule's and the range check's passes
     (``speed_span``: :func:`~epicyclic.solver.linear.span` of ``|speeds|`` where already known).
     """
-    low, peak = span(size)
+    low, peak = port_span
     torques = (*given.values(), *(() if shaft_torques is None else (shaft_torques,)))  # scales of the rule too
     factor = lay.lever_tables[2] if efficiencies is None else efficiencies
     for values in (*torques, factor, *(() if speed_span else (speeds,))):
