@@ -26,7 +26,7 @@ from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
 from .assembly import matrices
-from .evaluate import directions, evaluate, relative_speeds
+from .evaluate import directions, evaluate, given_columns, relative_speeds
 from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
 from .linear import span
@@ -320,9 +320,9 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                 patterns, which = _pattern_index(pattern)
                 solved |= {tuple(int(w) for w in row) for row in patterns}
                 columns = np.stack([torque_solver(mats, given, row).operator[:, 0] for row in patterns], axis=1)
-                x = columns.take(which, axis=1)
-                x *= tau
-                x += 0.0  # as linear.apply
+                read = given_columns(mats)  # the only columns evaluate reads
+                x = np.zeros((columns.shape[0], count))
+                x[read] = columns[read].take(which, axis=1) * tau + 0.0  # + 0.0 as linear.apply
             else:
                 groups = list(_groups(pattern, pending, attempt == 0))
                 solved |= {tuple(int(w) for w in row) for row, _, _ in groups}
@@ -381,10 +381,14 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
             ideal_power = ideal_powers[shaft_row[s]]
             drive_power += power * (ideal_power > 0)  # as np.where(…, power, 0.0): ±0 adds nothing
             load_power -= power * (ideal_power < 0)
-    drive_power, load_power = drive_power + 0.0, load_power + 0.0
+    drive_power += 0.0
+    load_power += 0.0
     scale = np.maximum(drive_power, load_power)
     flowing = (drive_power != 0) | (load_power != 0)
-    loss = sum(losses.values(), np.zeros(count)) + 0.0
+    loss = np.zeros(count)
+    for value in losses.values():
+        loss += value
+    loss += 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
         wrong = _wrong_way(ev.powers, mats, drives, loads, ideal_powers, shaft_row, scale)
         at_limit = load_power <= SELF_LOCKING_MARGIN * drive_power

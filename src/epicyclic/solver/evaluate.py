@@ -39,7 +39,7 @@ from ..model.elements import HOUSING
 from .assembly import TrainMatrices
 from .linear import span
 
-__all__ = ["Evaluation", "evaluate", "check_finite", "directions", "relative_speeds"]
+__all__ = ["Evaluation", "evaluate", "check_finite", "directions", "given_columns", "relative_speeds"]
 
 #: The smallest normal float: below it a result has lost its precision (underflow).
 _TINY = np.finfo(float).tiny
@@ -210,7 +210,7 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     levers, shafts, columns = len(mats.levers), len(lay.rows), len(mats.torque_columns)
     block = np.empty((columns + 2 * shafts + 4 * levers,) + points)
     x_in, x = x, block[:columns]
-    kept = _kept(mats)  # the columns not derived below (lever ports b, c, links' second ports, externals)
+    kept = given_columns(mats)  # the columns not derived below (lever ports b, c, links' second, externals)
     x[kept] = x_in[kept]
     torques = block[columns:columns + shafts]
     powers = block[columns + shafts:columns + 2 * shafts]
@@ -302,9 +302,9 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
                       normal)
 
 
-def _kept(mats: TrainMatrices) -> np.ndarray | slice:
-    """Columns of x that :func:`_evaluate` takes as given: lever ports a and links' first ports (all
-    columns where some column is neither a port nor an external torque)."""
+def given_columns(mats: TrainMatrices) -> np.ndarray | slice:
+    """The columns of x that :func:`evaluate` reads: lever ports a and links' first ports (the others
+    follow from them exactly; all columns where some column is neither a port nor an external torque)."""
     lay = mats.layout
     if len(lay.port_columns) + len(lay.external_columns) != len(mats.torque_columns):
         return slice(None)

@@ -101,7 +101,9 @@ class SpeedSolver:
         what stands still by the ratios (sets sharing their shafts and a held member).
         """
         g = np.asarray(values, dtype=float)
-        g = np.where(np.abs(g) < np.finfo(float).tiny, 0.0, g)  # a given speed below 2.2e-308 1/min is 0
+        below = np.abs(g) < _TINY
+        if np.count_nonzero(below):  # a given speed below 2.2e-308 1/min is 0 (−0 too)
+            g = np.where(below, 0.0, g)
         n = apply(self.operator, g)
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
