@@ -227,15 +227,15 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
 
     # every element's torques exactly in its own ratios: T_b = −k_b·T_a, T_c = −k_c·T_a, link T_2 = −T_1
     if levers:
-        if efficiencies is None:
-            k_b, k_c = lay.lever_tables[0].take(table), lay.lever_tables[1].take(table)
+        if efficiencies is None:  # −k_b, −k_c from the negated tables (the same numbers as −(k·T))
+            minus_b, minus_c = (-lay.lever_tables[0]).take(table), (-lay.lever_tables[1]).take(table)
         else:  # η0 per point (given losses): k_b = i0·η0^w, k_c = 1 − k_b
             i0 = np.array([lv.ratio for lv in mats.levers]).reshape((-1,) + (1,) * len(points))
             k_b = np.where(used > 0, i0 * efficiencies, np.where(used < 0, i0 / efficiencies, i0))
-            k_c = 1.0 - k_b
+            minus_b, minus_c = -k_b, -(1.0 - k_b)
         t_a = x[lay.lever_a_columns]
-        x[lay.lever_b_columns] = -k_b * t_a + 0.0
-        x[lay.lever_c_columns] = -k_c * t_a + 0.0
+        x[lay.lever_b_columns] = minus_b * t_a + 0.0
+        x[lay.lever_c_columns] = minus_c * t_a + 0.0
     x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
 
     ports = _ports(lay)
