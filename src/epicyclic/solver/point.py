@@ -17,7 +17,7 @@ Brandenberger 1952, eqs. 3' and 7; Queitsch, Wälz- und Kupplungsleistung (as
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 
@@ -81,10 +81,12 @@ class _Unusual(Exception):
     """A value is not finite or not normal: the array code decides."""
 
 
-def evaluate_point(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
-                   given: Mapping[str, float], efficiencies: np.ndarray | None = None,
+def evaluate_point(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray,
+                   pattern: np.ndarray | Sequence[int] | None, given: Mapping[str, float],
+                   efficiencies: np.ndarray | None = None,
                    shaft_torques: np.ndarray | None = None) -> Evaluation | PointEvaluation:
-    """:func:`~epicyclic.solver.evaluate.evaluate` of one point (arrays with one column; ``given``: floats).
+    """:func:`~epicyclic.solver.evaluate.evaluate` of one point (arrays with one column, or the pattern
+    as a sequence of ints; ``given``: floats).
 
     Returns
     -------
@@ -97,13 +99,15 @@ def evaluate_point(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, patte
         A quantity over- or underflows (from the array code).
     """
     n = speeds[:, 0].tolist()
-    w = None if pattern is None else [int(v) for v in pattern[:, 0]]
+    w = None if pattern is None else list(pattern) if not isinstance(pattern, np.ndarray) else \
+        [int(v) for v in pattern[:, 0]]
     eta = None if efficiencies is None else efficiencies[:, 0].tolist()
     loss_torques = None if shaft_torques is None else shaft_torques[:, 0].tolist()
     try:
         values = _evaluate(_plain(mats), n, x[:, 0].tolist(), w, given, eta, loss_torques)
     except _Unusual:
-        return evaluate(mats, speeds, x, pattern, {s: np.array([v]) for s, v in given.items()},
+        return evaluate(mats, speeds, x, None if w is None else np.array(w)[:, None],
+                        {s: np.array([v]) for s, v in given.items()},
                         efficiencies, shaft_torques)
     names = ("x", "torques", "powers", "relative", "rolling", "coupling", "loss", "pattern", "direction")
     return PointEvaluation(speeds, dict(zip(names, values), speeds=n))
