@@ -29,7 +29,7 @@ from ..errors import ContradictionError, NearSingularError, NonFiniteResultError
 from ..model.elements import HOUSING
 from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, apply, pseudoinverse, unreached_columns
+from .linear import SMALL, Pseudoinverse, apply, pseudoinverse, row_products, unreached_columns
 
 #: The smallest normal and the largest finite float.
 _TINY, _HUGE = float(np.finfo(float).tiny), float(np.finfo(float).max)
@@ -128,7 +128,7 @@ class SpeedSolver:
     def _plain(self) -> tuple[list[int], list[int], list[list[float]] | None, list[list[float]] | None]:
         """For :meth:`point`: the columns of the given speeds, :attr:`_representatives`, and for a small
         system the operator and |A⁺|·|A| as lists of rows (Python loops beat numpy's call overhead there)."""
-        small = self.operator.size + self._magnitudes[0].size <= _SMALL
+        small = self.operator.size + self._magnitudes[0].size <= SMALL
         return ([self.mats.speed_index[g] for g in self.given], self._representatives.tolist(),
                 self.operator.tolist() if small else None,
                 (self._magnitudes[1] @ self._magnitudes[0]).tolist() if small else None)
@@ -145,7 +145,7 @@ class SpeedSolver:
             with np.errstate(all="ignore"):
                 n = apply(self.operator, np.array(g)).tolist()
         else:
-            n = [_dot(row, g) for row in operator]
+            n = row_products(operator, g)
         for column, value in zip(columns, g):
             n[column] = value
         if not all(map(math.isfinite, n)):
@@ -158,7 +158,7 @@ class SpeedSolver:
             with np.errstate(all="ignore"):
                 terms = (self._magnitudes[1] @ (self._magnitudes[0] @ np.array(size))).tolist()
         else:
-            terms = [_dot(row, size) for row in bound]
+            terms = row_products(bound, size)
         zero = [v <= ZERO_TOLERANCE * term for v, term in zip(size, terms)]
         for column in columns:
             zero[column] = False
@@ -179,18 +179,6 @@ class SpeedSolver:
             first = int(np.flatnonzero(~np.asarray(ok))[0])
             raise _contradiction(self.mats, self.given, g[:, first], prefix=f"operating point {first}: ")
         raise _contradiction(self.mats, self.given, g)
-
-
-#: Entries of the operator and |A| up to which :meth:`SpeedSolver.point` works in Python floats.
-_SMALL = 48
-
-
-def _dot(row: list[float], values: list[float]) -> float:
-    """Σ row·values from the left, from 0.0 (BLAS's numbers for one column: products + 0.0)."""
-    total = 0.0
-    for a, b in zip(row, values):
-        total += a * b
-    return total
 
 
 def _largest_row(size: np.ndarray) -> np.ndarray:

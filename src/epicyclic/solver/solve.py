@@ -24,9 +24,10 @@ Brandenberger 1952, eqs. 1–10 and Bild 8–9 (the sign of the rolling power de
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
-from functools import cache, lru_cache
+from functools import lru_cache
 from types import MappingProxyType
 
 import numpy as np
@@ -99,7 +100,7 @@ def given_torques(op: OperatingPoint, speeds: Mapping[str, float]) -> dict[str, 
                 group="powers", shafts=[shaft],
             )
         torque = power / omega
-        if not np.isfinite(torque):
+        if not math.isfinite(torque):
             raise NonFiniteResultError(
                 f"operating point: powers[{shaft!r}] = {power:g} W at {speeds[shaft]:g} 1/min needs a torque "
                 "beyond the floating-point range (about 1.8e308 N·m); give a larger speed or a smaller power.",
@@ -114,10 +115,11 @@ def given_torques(op: OperatingPoint, speeds: Mapping[str, float]) -> dict[str, 
 def _with_role(op: OperatingPoint, shaft: str, torque: float, omega: float) -> float:
     if omega == 0.0:
         return torque
+    sign = 1.0 if omega > 0.0 else -1.0
     if shaft in op.drives:
-        return abs(torque) * np.sign(omega)
+        return abs(torque) * sign
     if shaft in op.loads:
-        return -abs(torque) * np.sign(omega)
+        return -abs(torque) * sign
     return torque
 
 
@@ -181,20 +183,19 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     mats = matrices(train, op.external_shafts)
     extra = None if lossless else given_losses(mats, efficiencies, loss_torques, 1)
     speeds = solve_speeds(mats, op.speeds)
-    n = np.array([[speeds[s]] for s in train.shafts])
-    torques = given_torques(op, speeds)
-    given = list(torques)
-    values = np.array([torques[s] for s in given])
-    given_values = {s: float(v) for s, v in torques.items()}
+    n = [speeds[s] for s in train.shafts]
+    given_values = {s: float(v) for s, v in given_torques(op, speeds).items()}
+    given = list(given_values)
+    values = list(given_values.values())
 
     ideal_solver = torque_solver(mats, given, None)
-    x_ideal = ideal_solver.torques(values)
+    x_ideal = ideal_solver.point(values)
     ideal_solver.check(values, x_ideal)
-    ideal_eval = evaluate_point(mats, n, x_ideal[:, None], None, given_values)
+    ideal_eval = evaluate_point(mats, n, x_ideal, None, given_values)
     ideal_column = _Column(ideal_eval)
     roles = _roles(train, op, mats, ideal_column)
     ideal_mats = mats
-    ideal = cache(lambda: _build(train, op, ideal_mats, ideal_eval, ideal_solver, roles, None, lossless=True))
+    ideal = _once(lambda: _build(train, op, ideal_mats, ideal_eval, ideal_solver, roles, None, lossless=True))
     if extra is not None:  # the given factors are the levers' η0
         mats = matrices(with_efficiencies(train, {lv.element.name: float(extra.efficiency[k, 0])
                                                   for k, lv in enumerate(mats.levers)}), op.external_shafts)
@@ -211,9 +212,9 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     while len(tried) < MAX_PATTERN_TRIES and pattern not in tried:
         tried.append(pattern)
         solver = torque_solver(mats, given, pattern)
-        x = solver.torques(values, rows)
+        x = solver.point(values, rows)
         solver.check(values, x, rows)
-        ev = evaluate_point(mats, n, x[:, None], pattern, given_values, shaft_torques=dragged)
+        ev = evaluate_point(mats, n, x, pattern, given_values, shaft_torques=dragged)
         if first is None:
             first = (solver, ev)
         observed = _Column(ev).pattern
@@ -228,6 +229,17 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     if locked is not None:
         solution = solution.replace(self_locking=locked, efficiency=None)
     return solution
+
+
+def _once(make):
+    """``make`` called on the first call only (a lighter :func:`functools.cache` for one value)."""
+    made = []
+
+    def value():
+        if not made:
+            made.append(make())
+        return made[0]
+    return value
 
 
 def _roles(train: GearTrain, op: OperatingPoint, mats: TrainMatrices, ideal: _Column) -> dict[str, str]:
@@ -272,7 +284,7 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
     loss = sum(e.loss for e in elements.values()) + 0.0
     efficiency = _efficiency(drive_power, load_power, loss)
 
-    @cache
+    @_once
     def circ():  # made on first access, as are the warnings (they name the loops)
         if solver.indeterminate:
             return indeterminate_circulation(solver.indeterminate)
@@ -299,13 +311,21 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
 class _Column:
     """The one point of an Evaluation as Python floats (read once, not entry by entry)."""
 
+    speeds: list[float]
+    torques: list[float]
+    powers: list[float]
+    x: list[float]
+    relative: list[float]
+    rolling: list[float]
+    coupling: list[float]
+    loss: list[float]
+    pattern: list[int]
+    direction: list[int]
+
     def __init__(self, ev: Evaluation):
         floats = getattr(ev, "floats", None) or {name: getattr(ev, name)[:, 0].tolist() for name in (
             "speeds", "torques", "powers", "x", "relative", "rolling", "coupling", "loss", "pattern", "direction")}
-        self.speeds, self.torques, self.powers, self.x = (floats[k] for k in ("speeds", "torques", "powers", "x"))
-        self.relative, self.rolling, self.coupling, self.loss = (floats[k] for k in (
-            "relative", "rolling", "coupling", "loss"))
-        self.pattern, self.direction = floats["pattern"], floats["direction"]
+        self.__dict__.update(floats)  # speeds, torques, powers, x, relative, rolling, coupling, loss, pattern, direction
 
 
 @dataclass(frozen=True)
