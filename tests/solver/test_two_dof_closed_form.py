@@ -1,10 +1,10 @@
 """Two-degree-of-freedom operation of one set, with losses, against an independent closed form.
 
 No shaft is held: two speeds are given and one torque; the other two torques are reactions.  The
-closed form is the torque rule of the "gear pair entity" (Pennestrì & Freudenstein 1993, J. Mech.
-Des. 115, 645, eqs. 4–7; del Castillo 2002, Mech. Mach. Theory 37, 197, eq. 9; Müller 1998,
-"Die Umlaufgetriebe", ch. 4): with i0 = (n_s − n_c)/(n_r − n_c) and the sun's rolling power
-P_w = T_s·(n_s − n_c),
+closed form is the torque rule of the "gear pair entity" with the loss set by the direction of the
+rolling power (Brandenberger 1952, eq. 7; the same rule in Pennestrì & Freudenstein 1993, J. Mech.
+Des. 115, 645, and del Castillo 2002, Mech. Mach. Theory 37, 197): with
+i0 = (n_s − n_c)/(n_r − n_c) and the sun's rolling power P_w = T_s·(n_s − n_c),
 
     T_r = −i0 · η0^w · T_s,  w = sign(P_w)     (the ring gets η0 times the sun's rolling power
                                                 when the sun drives in the carrier frame, and
