@@ -106,3 +106,20 @@ def test_deferred_warnings_name_the_circulating_power():
         assert any("power circulates" in w for w in solution.warnings)
     else:
         assert not any("power circulates" in w for w in solution.warnings)
+
+
+def test_trains_points_and_solutions_pickle_without_their_process_bound_hash():
+    """Read-only mappings pickle as read-only copies; a train's cached hash (string hashes differ between
+    processes) is not pickled, so an unpickled train in another process hashes as that process's trains."""
+    import pickle
+    from types import MappingProxyType
+
+    train, op = brandenberger_1952()
+    hash(train)  # cached on the train
+    assert "_hash" in train.__dict__
+    copy = pickle.loads(pickle.dumps(train))
+    assert "_hash" not in copy.__dict__ and copy == train and hash(copy) == hash(train)
+    op_copy = pickle.loads(pickle.dumps(op))
+    assert op_copy == op and isinstance(op_copy.speeds, MappingProxyType)
+    solved = pickle.loads(pickle.dumps(solve(train, op)))
+    assert isinstance(solved.shafts, MappingProxyType) and solved.to_dict() == solve(copy, op_copy).to_dict()
