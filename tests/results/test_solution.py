@@ -67,3 +67,59 @@ def test_self_locking_renders_without_negative_efficiency():
     assert len({len(line) - len(line.split("  ", 1)[1].lstrip()) for line in summary}) == 1
     assert "self-locking" in repr(sol)
     assert sol.to_dict()["self_locking"]["thresholds"]["P"] == pytest.approx(1 / 1.02, rel=1e-6)
+
+
+def test_deferred_fields_are_made_on_first_access_and_equal_their_eager_values():
+    """circulation, warnings and ideal are made when read: the same as solving lossless, or the
+    circulation of the solution's own port powers; made once; a pickled copy carries them made."""
+    import dataclasses
+    import pickle
+
+    from epicyclic.results.circulation import circulation
+
+    train, op = brandenberger_1952()
+    solution = solve(train, op)
+    assert all(callable(solution.__dict__["_" + name]) for name in ("circulation", "warnings", "ideal"))
+    replaced = solution.replace(efficiency=None)  # replace keeps them unmade
+    assert replaced.efficiency is None and callable(replaced.__dict__["_ideal"])
+    copied = pickle.loads(pickle.dumps(solution))  # made for pickling
+    assert not any(callable(copied.__dict__["_" + name]) for name in ("circulation", "warnings", "ideal"))
+    lossless = solve(train, op, lossless=True)
+    for made in (solution, copied):
+        assert made.ideal.shafts == lossless.shafts and made.ideal.elements == lossless.elements
+        assert made.ideal.efficiency == 1.0 and made.ideal.ideal is None
+        flows = [(e.name, e.ports[p], power) for e in made.elements.values() for p, power in e.port_powers.items()]
+        assert made.circulation == circulation(flows, made.input_power, train.shafts)
+        assert made.warnings == ()
+    assert solution.ideal is solution.ideal  # made once
+    assert replaced.ideal is solution.ideal  # one maker, shared by the copy
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        solution.ideal = None
+
+
+def test_deferred_warnings_name_the_circulating_power():
+    """A plus set driven backwards circulates power; the warning is made from the deferred circulation."""
+    train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", 0.8, 0.97), Brake("B", "ring")])
+    op = OperatingPoint(speeds={"carrier": 1000}, torques={"carrier": 10}, drives=["carrier"], loads=["sun"])
+    solution = solve(train, op)
+    if solution.circulation.loops:
+        assert any("power circulates" in w for w in solution.warnings)
+    else:
+        assert not any("power circulates" in w for w in solution.warnings)
+
+
+def test_trains_points_and_solutions_pickle_without_their_process_bound_hash():
+    """Read-only mappings pickle as read-only copies; a train's cached hash (string hashes differ between
+    processes) is not pickled, so an unpickled train in another process hashes as that process's trains."""
+    import pickle
+    from types import MappingProxyType
+
+    train, op = brandenberger_1952()
+    hash(train)  # cached on the train
+    assert "_hash" in train.__dict__
+    copy = pickle.loads(pickle.dumps(train))
+    assert "_hash" not in copy.__dict__ and copy == train and hash(copy) == hash(train)
+    op_copy = pickle.loads(pickle.dumps(op))
+    assert op_copy == op and isinstance(op_copy.speeds, MappingProxyType)
+    solved = pickle.loads(pickle.dumps(solve(train, op)))
+    assert isinstance(solved.shafts, MappingProxyType) and solved.to_dict() == solve(copy, op_copy).to_dict()

@@ -87,9 +87,10 @@ def test_the_point_evaluation_equals_the_array_code(op):
     torques = solve_module.given_torques(op, speeds)
     solver = solve_module.torque_solver(mats, list(torques), None)
     x = solver.torques(np.array(list(torques.values())))[:, None]
-    for pattern in (None, np.array([[1], [1]]), np.array([[1], [-1]]), np.array([[-1], [0]])):
-        fast = point.evaluate_point(mats, n, x, pattern, torques)
-        slow = evaluate(mats, n, x, pattern, {s: np.array([v]) for s, v in torques.items()})
+    for pattern in (None, (1, 1), (1, -1), (-1, 0)):
+        fast = point.evaluate_point(mats, n[:, 0].tolist(), x[:, 0].tolist(), pattern, torques)
+        slow = evaluate(mats, n, x, None if pattern is None else np.array(pattern)[:, None],
+                        {s: np.array([v]) for s, v in torques.items()})
         for name in ("x", "torques", "powers", "relative", "rolling", "coupling", "loss", "pattern", "direction"):
             a, b = getattr(fast, name), getattr(slow, name)
             assert a.shape == b.shape and np.array_equal(a, b) and np.array_equal(np.signbit(a), np.signbit(b)), name

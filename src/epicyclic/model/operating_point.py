@@ -11,6 +11,7 @@ from __future__ import annotations
 import numbers
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from types import MappingProxyType
 
 from ..errors import OperatingPointError
@@ -124,7 +125,7 @@ class OperatingPoint:
                 group="powers", shafts=sorted(twice),
             )
 
-    @property
+    @cached_property
     def external_shafts(self) -> tuple[str, ...]:
         """Shafts that carry an external torque (drives, loads, given torques/powers)."""
         ordered: list[str] = []

@@ -56,6 +56,15 @@ class GearTrain:
     shafts: tuple[str, ...] = field(default=())
     name: str = "gear train"
 
+    def __hash__(self) -> int:  # the solver's caches are keyed by the train: hashed once, then kept
+        value = self.__dict__.get("_hash")
+        if value is None:
+            value = self.__dict__["_hash"] = hash((self.elements, self.shafts, self.name))
+        return value
+
+    def __getstate__(self) -> dict:  # string hashes differ between processes: not pickled
+        return {k: v for k, v in self.__dict__.items() if k != "_hash"}
+
     def __post_init__(self) -> None:
         elements = tuple(self.elements)
         if not elements:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+import dataclasses
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -145,6 +146,31 @@ class SelfLocking:
     thresholds: Mapping[str, float] = field(default_factory=dict)
 
 
+class _Deferred:
+    """A dataclass field that may be given a callable making its value; called once, on first access.
+
+    A data descriptor, so the dataclass's ``__init__`` hands it the value (see "descriptor-typed
+    fields" in the :mod:`dataclasses` documentation); the value lives in ``_<name>``.
+    """
+
+    def __init__(self, default: Any = None):
+        self.default = default
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self.attribute = "_" + name
+
+    def __get__(self, instance: Any, owner: type | None = None) -> Any:
+        if instance is None:
+            return self.default  # the field's default
+        value = instance.__dict__[self.attribute]
+        if callable(value):
+            value = instance.__dict__[self.attribute] = value()
+        return value
+
+    def __set__(self, instance: Any, value: Any) -> None:
+        instance.__dict__[self.attribute] = value.default if isinstance(value, _Deferred) else value
+
+
 @dataclass(frozen=True)
 class Solution:
     """Result of :func:`epicyclic.solve`: shafts, elements, efficiency, warnings.
@@ -167,6 +193,10 @@ class Solution:
     warnings : tuple of str
     ideal : Solution or None
         The lossless solution at the same operating point.
+
+    ``circulation``, ``warnings`` and ``ideal`` may be given as callables that make them: the solver
+    does so, and each is made on first access (many callers never read them).  A pickled or copied
+    solution carries them made; :meth:`replace` keeps them unmade.
     """
 
     train: GearTrain
@@ -178,10 +208,18 @@ class Solution:
     loss: float
     efficiency: float | None
     self_locking: SelfLocking | None
-    circulation: Circulation
     degrees_of_freedom: int
-    warnings: tuple[str, ...] = ()
-    ideal: Solution | None = None
+    circulation: Circulation = field(default=_Deferred())
+    warnings: tuple[str, ...] = field(default=_Deferred(()))
+    ideal: Solution | None = field(default=_Deferred(), compare=False, repr=False)
+
+    def __getstate__(self) -> dict[str, Any]:  # pickled and copied with the deferred fields built
+        return {**self.__dict__, **{"_" + name: getattr(self, name) for name in _DEFERRED}}
+
+    def replace(self, **changes: Any) -> Solution:
+        """A copy with ``changes`` (as :func:`dataclasses.replace`), deferred fields not built."""
+        kept = {name: self.__dict__["_" + name] for name in _DEFERRED if name not in changes}
+        return dataclasses.replace(self, **kept, **changes)
 
     # ------------------------------------------------------------------ shortcuts
     def speed(self, shaft: str) -> float:
@@ -257,3 +295,7 @@ class Solution:
             f"<Solution {self.train.name!r}: {state}, input {self.input_power:.6g} W, "
             f"loss {self.loss:.6g} W, {len(self.shafts)} shafts, {len(self.elements)} elements>"
         )
+
+
+#: The fields of a Solution that may be made on first access.
+_DEFERRED = ("circulation", "warnings", "ideal")

@@ -108,4 +108,4 @@ def clean_array(values: Iterable[float] | np.ndarray, scale: float | np.ndarray 
 
 def scale_of(*values: float) -> float:
     """The largest magnitude among ``values`` (0 for none): the scale of a combination of them."""
-    return max((abs(float(v)) for v in values), default=0.0)
+    return max([abs(float(v)) for v in values], default=0.0)

@@ -29,10 +29,10 @@ from ..errors import ContradictionError, NearSingularError, NonFiniteResultError
 from ..model.elements import HOUSING
 from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, apply, pseudoinverse, span, unreached_columns
+from .linear import SMALL, Pseudoinverse, apply, pseudoinverse, row_products, span, unreached_columns
 
 #: The smallest normal and the largest finite float.
-_TINY, _HUGE = np.finfo(float).tiny, np.finfo(float).max
+_TINY, _HUGE = float(np.finfo(float).tiny), float(np.finfo(float).max)
 
 __all__ = ["SpeedSolver", "speed_solver", "degrees_of_freedom", "free_speed_shafts", "solve_speeds", "check_speeds"]
 
@@ -145,23 +145,40 @@ class SpeedSolver:
         return (*moduli, float((moduli[1] @ (moduli[0] @ np.ones(moduli[0].shape[1]))).max(initial=0.0)))
 
     @cached_property
-    def _plain(self) -> tuple[list[int], list[int]]:
-        """Columns of the given speeds, and :attr:`_representatives`, as lists."""
-        return [self.mats.speed_index[g] for g in self.given], self._representatives.tolist()
+    def _plain(self) -> tuple[list[int], list[int], list[list[float]] | None, list[list[float]] | None]:
+        """For :meth:`point`: the columns of the given speeds, :attr:`_representatives`, and for a small
+        system the operator and |A⁺|·|A| as lists of rows (Python loops beat numpy's call overhead there)."""
+        small = self.operator.size + self._magnitudes[0].size <= SMALL
+        return ([self.mats.speed_index[g] for g in self.given], self._representatives.tolist(),
+                self.operator.tolist() if small else None,
+                (self._magnitudes[1] @ self._magnitudes[0]).tolist() if small else None)
 
     def point(self, values: Sequence[float]) -> list[float] | None:
-        """:meth:`speeds` of one point in Python floats (the same numbers); None where one is not finite."""
+        """:meth:`speeds` of one point in Python floats (the same numbers); None where one is not finite.
+
+        The round-off bound |A⁺|·|A|·|n| is formed as (|A⁺|·|A|)·|n| for a small system, which may differ
+        from the array code's in its last bit; it only decides what is round-off of zero.
+        """
         g = [0.0 if abs(v) < _TINY else float(v) for v in values]
-        n = apply(self.operator, np.array(g)).tolist()
-        columns, follow = self._plain
+        columns, follow, operator, bound = self._plain
+        if operator is None:
+            with np.errstate(all="ignore"):
+                n = apply(self.operator, np.array(g)).tolist()
+        else:
+            n = row_products(operator, g)
         for column, value in zip(columns, g):
             n[column] = value
         if not all(map(math.isfinite, n)):
             return None
         size = [abs(v) for v in n]
         peak = max(size, default=1.0)  # relative to the largest speed, as speeds() does
-        size = [v / (peak if peak > 0.0 else 1.0) for v in size]
-        terms = (self._magnitudes[1] @ (self._magnitudes[0] @ np.array(size))).tolist()
+        if peak > 0.0:
+            size = [v / peak for v in size]
+        if bound is None:
+            with np.errstate(all="ignore"):
+                terms = (self._magnitudes[1] @ (self._magnitudes[0] @ np.array(size))).tolist()
+        else:
+            terms = row_products(bound, size)
         zero = [v <= ZERO_TOLERANCE * term for v, term in zip(size, terms)]
         for column in columns:
             zero[column] = False
@@ -301,8 +318,7 @@ def solve_speeds(mats: TrainMatrices, speeds: Mapping[str, float]) -> dict[str, 
     """All shaft speeds (1/min) from the given ones, the housing at 0."""
     given = [s for s in speeds if s != HOUSING]
     solver = speed_solver(mats, given)
-    with np.errstate(all="ignore"):
-        point = solver.point([speeds[s] for s in given])
+    point = solver.point([speeds[s] for s in given])
     if point is None or not all(v == 0.0 or _TINY <= abs(v) for v in point) or solver.system.rank < len(given) + \
             mats.kinematics.shape[0]:  # the array code names what over- or underflows, or contradicts
         values = np.array([speeds[s] for s in given], dtype=float)

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["apply", "span", "Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "unreached_columns", "RANK_TOLERANCE",
+__all__ = ["apply", "row_products", "span", "SMALL", "Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "unreached_columns", "RANK_TOLERANCE",
            "NEAR_SINGULAR"]
 
 #: Relative singular values at or below this are exact zeros (round-off of an exact dependence).
@@ -58,6 +58,30 @@ def apply(matrix: np.ndarray, values: np.ndarray) -> np.ndarray:
         out += 0.0  # BLAS sums into 0.0: a product −0 is +0
         return out
     return matrix @ values
+
+
+#: Entries up to which a solver's one-point product works in Python floats (numpy's call overhead
+#: is larger than the arithmetic there).
+SMALL = 48
+
+
+def row_products(rows: list[list[float]], values: list[float]) -> list[float]:
+    """``matrix @ values`` for a matrix given as its rows, in Python floats: each entry summed from 0.0,
+    left to right (for one column, BLAS's numbers; for more, the same up to round-off).
+
+    >>> row_products([[2.0, 1.0], [-1.0, 0.5]], [3.0, 4.0])
+    [10.0, -1.0]
+    """
+    if len(values) == 1:  # one given value: a product per entry
+        value = values[0]
+        return [row[0] * value + 0.0 for row in rows]
+    out = []
+    for row in rows:
+        total = 0.0
+        for a, b in zip(row, values):
+            total += a * b
+        out.append(total)
+    return out
 
 
 def span(size: np.ndarray) -> tuple[float, float]:

@@ -17,7 +17,7 @@ Brandenberger 1952, eqs. 3' and 7; Queitsch, Wälz- und Kupplungsleistung (as
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 
@@ -81,32 +81,35 @@ class _Unusual(Exception):
     """A value is not finite or not normal: the array code decides."""
 
 
-def evaluate_point(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
-                   given: Mapping[str, float], efficiencies: np.ndarray | None = None,
+def evaluate_point(mats: TrainMatrices, speeds: Sequence[float], x: Sequence[float],
+                   pattern: Sequence[int] | None, given: Mapping[str, float],
+                   efficiencies: np.ndarray | None = None,
                    shaft_torques: np.ndarray | None = None) -> Evaluation | PointEvaluation:
-    """:func:`~epicyclic.solver.evaluate.evaluate` of one point (arrays with one column; ``given``: floats).
+    """:func:`~epicyclic.solver.evaluate.evaluate` of one point: ``speeds`` (train order), the unknowns
+    ``x`` and the ``pattern`` as lists, ``given`` as floats; ``efficiencies``, ``shaft_torques`` arrays
+    with one column, as for the array code.
 
     Returns
     -------
     PointEvaluation or Evaluation
-        The same numbers as the array code's (an Evaluation where the array code took over).
+        The same numbers as the array code's (an Evaluation, of one column, where the array code took over).
 
     Raises
     ------
     NonFiniteResultError
         A quantity over- or underflows (from the array code).
     """
-    n = speeds[:, 0].tolist()
-    w = None if pattern is None else [int(v) for v in pattern[:, 0]]
+    w = None if pattern is None else list(pattern)
     eta = None if efficiencies is None else efficiencies[:, 0].tolist()
     loss_torques = None if shaft_torques is None else shaft_torques[:, 0].tolist()
     try:
-        values = _evaluate(_plain(mats), n, x[:, 0].tolist(), w, given, eta, loss_torques)
+        values = _evaluate(_plain(mats), speeds, list(x), w, given, eta, loss_torques)
     except _Unusual:
-        return evaluate(mats, speeds, x, pattern, {s: np.array([v]) for s, v in given.items()},
-                        efficiencies, shaft_torques)
+        column = lambda values: np.array(values, dtype=float).reshape(-1, 1)  # noqa: E731
+        return evaluate(mats, column(speeds), column(x), None if w is None else np.array(w).reshape(-1, 1),
+                        {s: np.array([v]) for s, v in given.items()}, efficiencies, shaft_torques)
     names = ("x", "torques", "powers", "relative", "rolling", "coupling", "loss", "pattern", "direction")
-    return PointEvaluation(speeds, dict(zip(names, values), speeds=n))
+    return PointEvaluation(dict(zip(names, values), speeds=speeds))
 
 
 class PointEvaluation:
@@ -119,13 +122,13 @@ class PointEvaluation:
     normal = True  # every value finite and 0 or normal: checked before it was made
     block = None
 
-    def __init__(self, speeds: np.ndarray, floats: dict):
-        self.speeds = speeds
+    def __init__(self, floats: dict):
         self.floats = floats
 
     def _column(self, name: str) -> np.ndarray:
         return np.array(self.floats[name], dtype=int if name in ("pattern", "direction") else float).reshape(-1, 1)
 
+    speeds = cached_property(lambda self: self._column("speeds"))
     x = cached_property(lambda self: self._column("x"))
     torques = cached_property(lambda self: self._column("torques"))
     powers = cached_property(lambda self: self._column("powers"))
@@ -195,8 +198,8 @@ def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str,
     size = [abs(v) for v in port]
 
     # idle elements
-    own = [max(size[j] for j in ports) for ports in lay.part_ports]
-    scale = [max(own[j] for j in near) for near in lay.neighbours]
+    own = [max([size[j] for j in ports]) for ports in lay.part_ports]
+    scale = [max([own[j] for j in near]) for near in lay.neighbours]
     for shaft, value in given.items():
         for k in lay.parts_at[lay.rows[shaft]]:
             scale[k] = max(scale[k], abs(value))
@@ -207,7 +210,7 @@ def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str,
     idle = [o <= tol * s for o, s in zip(own, scale)]
     for _ in range(lay.parts if any(idle) else 0):
         padded = [s if i else 0.0 for s, i in zip(scale, idle)]
-        reach = [max(padded[j] for j in near) for near in lay.neighbours]
+        reach = [max([padded[j] for j in near]) for near in lay.neighbours]
         grown = [max(s, r) if (i or o <= tol * r) else s for s, r, i, o in zip(scale, reach, idle, own)]
         more = [o <= tol * g for o, g in zip(own, grown)]
         if more == idle and grown == scale:
@@ -221,7 +224,7 @@ def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str,
     torques = [0.0] * len(lay.rows)
     for row, ports in lay.reacting:
         total = port[ports[0]] + _pairwise([port[j] for j in ports[1:]]) if len(ports) > 1 else port[ports[0]]
-        terms = max(abs(port[j]) for j in ports)
+        terms = max([abs(port[j]) for j in ports])
         if loss_torques is not None:
             total = total - loss_torques[row]
             terms = max(terms, abs(loss_torques[row]))

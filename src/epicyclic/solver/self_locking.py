@@ -53,7 +53,7 @@ def self_locking(solution: Solution, consistent: bool, mats: TrainMatrices, give
     """Detect self-locking and find each lossy element's threshold η0 (None: the train moves).
 
     ``pattern`` is the loss-direction pattern of the ideal power flow, ``speeds``
-    all shaft speeds (train order, one column), ``given``/``values`` the given
+    all shaft speeds (train order), ``given``/``values`` the given
     external torques.
     """
     if solution.input_power == 0.0 and solution.output_power == 0.0:
@@ -99,7 +99,7 @@ def formal_efficiency(mats: TrainMatrices, given, values, speeds, pattern, solut
     system = pseudoinverse(np.vstack([matrix, rows]))
     x = system.solve(np.concatenate([np.zeros(matrix.shape[0]), np.asarray(values, dtype=float)]))
     shafts = mats.train.shafts
-    powers = {s: x[mats.external_column(s)] * speeds[k, 0] * RPM_TO_RAD_S
+    powers = {s: x[mats.external_column(s)] * speeds[k] * RPM_TO_RAD_S
               for k, s in enumerate(shafts) if s in mats.external}
     drive = sum(p for s, p in powers.items() if solution.shafts[s].role == "drive")
     load = -sum(p for s, p in powers.items() if solution.shafts[s].role == "load")

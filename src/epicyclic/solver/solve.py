@@ -24,6 +24,7 @@ Brandenberger 1952, eqs. 1–10 and Bild 8–9 (the sign of the rolling power de
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from functools import lru_cache
@@ -99,7 +100,7 @@ def given_torques(op: OperatingPoint, speeds: Mapping[str, float]) -> dict[str, 
                 group="powers", shafts=[shaft],
             )
         torque = power / omega
-        if not np.isfinite(torque):
+        if not math.isfinite(torque):
             raise NonFiniteResultError(
                 f"operating point: powers[{shaft!r}] = {power:g} W at {speeds[shaft]:g} 1/min needs a torque "
                 "beyond the floating-point range (about 1.8e308 N·m); give a larger speed or a smaller power.",
@@ -114,16 +115,17 @@ def given_torques(op: OperatingPoint, speeds: Mapping[str, float]) -> dict[str, 
 def _with_role(op: OperatingPoint, shaft: str, torque: float, omega: float) -> float:
     if omega == 0.0:
         return torque
+    sign = 1.0 if omega > 0.0 else -1.0
     if shaft in op.drives:
-        return abs(torque) * np.sign(omega)
+        return abs(torque) * sign
     if shaft in op.loads:
-        return -abs(torque) * np.sign(omega)
+        return -abs(torque) * sign
     return torque
 
 
-def _consistent(pattern: np.ndarray, observed: np.ndarray) -> bool:
+def _consistent(pattern: tuple[int, ...], observed: list[int]) -> bool:
     """w agrees with the re-read sign (observed 0, or w 0 with observed 0, agree)."""
-    return all(w == o or o == 0 for w, o in zip(pattern.tolist(), observed.tolist()))
+    return all(w == o or o == 0 for w, o in zip(pattern, observed))
 
 
 def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool = False,
@@ -149,8 +151,8 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     Returns
     -------
     Solution
-        With ``.ideal`` holding the lossless solution at the same point and
-        each element's loss by source in ``loss_sources``.
+        With ``.ideal`` holding the lossless solution at the same point (built on first
+        access) and each element's loss by source in ``loss_sources``.
 
     Raises
     ------
@@ -181,54 +183,66 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     mats = matrices(train, op.external_shafts)
     extra = None if lossless else given_losses(mats, efficiencies, loss_torques, 1)
     speeds = solve_speeds(mats, op.speeds)
-    n = np.array([[speeds[s]] for s in train.shafts])
-    torques = given_torques(op, speeds)
-    given = list(torques)
-    values = np.array([torques[s] for s in given])
-    given_values = {s: float(v) for s, v in torques.items()}
+    n = [speeds[s] for s in train.shafts]
+    given_values = {s: float(v) for s, v in given_torques(op, speeds).items()}
+    given = list(given_values)
+    values = list(given_values.values())
 
     ideal_solver = torque_solver(mats, given, None)
-    x_ideal = ideal_solver.torques(values)
+    x_ideal = ideal_solver.point(values)
     ideal_solver.check(values, x_ideal)
-    ideal_eval = evaluate_point(mats, n, x_ideal[:, None], None, given_values)
-    roles = _roles(train, op, mats, ideal_eval)
-    ideal = _build(train, op, mats, ideal_eval, ideal_solver, roles, None, lossless=True)
+    ideal_eval = evaluate_point(mats, n, x_ideal, None, given_values)
+    ideal_column = _Column(ideal_eval)
+    roles = _roles(train, op, mats, ideal_column)
+    ideal_mats = mats
+    ideal = _once(lambda: _build(train, op, ideal_mats, ideal_eval, ideal_solver, roles, None, lossless=True))
     if extra is not None:  # the given factors are the levers' η0
         mats = matrices(with_efficiencies(train, {lv.element.name: float(extra.efficiency[k, 0])
                                                   for k, lv in enumerate(mats.levers)}), op.external_shafts)
     dragged = extra.torques if extra is not None and extra.has_torques else None
     if lossless or (dragged is None and all(lever.efficiency == 1.0 for lever in mats.levers)):
-        return replace(ideal, ideal=None) if lossless else replace(ideal, ideal=ideal)
+        return replace(ideal(), ideal=None) if lossless else replace(ideal(), ideal=ideal())
     rows = None if dragged is None else extra.rows(mats)[:, 0]
 
-    ideal_pattern = ideal_eval.pattern[:, 0]
+    ideal_pattern = tuple(ideal_column.pattern)
     pattern = ideal_pattern
     tried: list[tuple[int, ...]] = []
     consistent: tuple[TorqueSolver, Evaluation] | None = None
     first: tuple[TorqueSolver, Evaluation] | None = None
-    while len(tried) < MAX_PATTERN_TRIES and tuple(pattern) not in tried:
-        tried.append(tuple(pattern))
+    while len(tried) < MAX_PATTERN_TRIES and pattern not in tried:
+        tried.append(pattern)
         solver = torque_solver(mats, given, pattern)
-        x = solver.torques(values, rows)
+        x = solver.point(values, rows)
         solver.check(values, x, rows)
-        ev = evaluate_point(mats, n, x[:, None], pattern[:, None], given_values, shaft_torques=dragged)
+        ev = evaluate_point(mats, n, x, pattern, given_values, shaft_torques=dragged)
         if first is None:
             first = (solver, ev)
-        observed = ev.pattern[:, 0]
+        observed = _Column(ev).pattern
         if _consistent(pattern, observed):
             consistent = (solver, ev)
             break
-        pattern = np.where(observed == 0, pattern, observed)
+        pattern = tuple(w if o == 0 else o for w, o in zip(pattern, observed))
 
     solver, ev = consistent if consistent is not None else first
     solution = _build(train, op, mats, ev, solver, roles, ideal, extra=extra)
     locked = self_locking(solution, consistent is not None, mats, given, values, n, ideal_pattern)
     if locked is not None:
-        solution = replace(solution, self_locking=locked, efficiency=None)
+        solution = solution.replace(self_locking=locked, efficiency=None)
     return solution
 
 
-def _roles(train: GearTrain, op: OperatingPoint, mats: TrainMatrices, ideal: Evaluation) -> dict[str, str]:
+def _once(make):
+    """``make`` called on the first call only (a lighter :func:`functools.cache` for one value)."""
+    made = []
+
+    def value():
+        if not made:
+            made.append(make())
+        return made[0]
+    return value
+
+
+def _roles(train: GearTrain, op: OperatingPoint, mats: TrainMatrices, ideal: _Column) -> dict[str, str]:
     """drive/load per shaft: as designated, else from the ideal power's sign."""
     roles: dict[str, str] = {}
     for k, shaft in enumerate(train.shafts):
@@ -239,9 +253,9 @@ def _roles(train: GearTrain, op: OperatingPoint, mats: TrainMatrices, ideal: Eva
         elif shaft in op.loads:
             roles[shaft] = "load"
         elif shaft in mats.external:
-            power = ideal.powers[k, 0]
+            power = ideal.powers[k]
             roles[shaft] = ("drive" if power > 0 else "load" if power < 0
-                            else "held" if ideal.speeds[k, 0] == 0 else "external")
+                            else "held" if ideal.speeds[k] == 0 else "external")
         else:
             roles[shaft] = "internal"
     return roles
@@ -269,11 +283,14 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
     load_power = -sum(s.power for s in shafts.values() if s.role == "load") + 0.0
     loss = sum(e.loss for e in elements.values()) + 0.0
     efficiency = _efficiency(drive_power, load_power, loss)
-    if solver.indeterminate:
-        circ = indeterminate_circulation(solver.indeterminate)
-    else:
+
+    @_once
+    def circ():  # made on first access, as are the warnings (they name the loops)
+        if solver.indeterminate:
+            return indeterminate_circulation(solver.indeterminate)
         flows = [(e.name, e.ports[p], power) for e in elements.values() for p, power in e.port_powers.items()]
-        circ = circulation(flows, drive_power, train.shafts)
+        return circulation(flows, drive_power, train.shafts)
+
     return Solution(
         train=train,
         operating_point=op,
@@ -286,7 +303,7 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
         self_locking=None,
         circulation=circ,
         degrees_of_freedom=degrees_of_freedom(mats),
-        warnings=tuple(_warnings(shafts, solver, circ, drive_power, load_power)),
+        warnings=lambda: tuple(_warnings(shafts, solver, circ(), drive_power, load_power)),
         ideal=ideal,
     )
 
@@ -294,13 +311,21 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
 class _Column:
     """The one point of an Evaluation as Python floats (read once, not entry by entry)."""
 
+    speeds: list[float]
+    torques: list[float]
+    powers: list[float]
+    x: list[float]
+    relative: list[float]
+    rolling: list[float]
+    coupling: list[float]
+    loss: list[float]
+    pattern: list[int]
+    direction: list[int]
+
     def __init__(self, ev: Evaluation):
         floats = getattr(ev, "floats", None) or {name: getattr(ev, name)[:, 0].tolist() for name in (
-            "speeds", "torques", "powers", "x", "relative", "rolling", "coupling", "loss", "direction")}
-        self.speeds, self.torques, self.powers, self.x = (floats[k] for k in ("speeds", "torques", "powers", "x"))
-        self.relative, self.rolling, self.coupling, self.loss = (floats[k] for k in (
-            "relative", "rolling", "coupling", "loss"))
-        self.direction = floats["direction"]
+            "speeds", "torques", "powers", "x", "relative", "rolling", "coupling", "loss", "pattern", "direction")}
+        self.__dict__.update(floats)  # speeds, torques, powers, x, relative, rolling, coupling, loss, pattern, direction
 
 
 @dataclass(frozen=True)
@@ -313,6 +338,9 @@ class _ElementLayout:
     columns: tuple[int, ...]  # torque column of each port (engaged elements)
     rows: tuple[int, ...]  # speed row of each port's shaft
     efficiency: float  # the lever's η0 in these equations (given factors included)
+    kind: str  # "planetary set", "gear stage", "clutch", "brake"
+    port_map: Mapping[str, str]  # port → shaft, read-only, shared by every solution
+    planet_factors: tuple[float, ...]  # of a set with tooth counts (Teeth.planet_factors)
 
 
 @lru_cache(maxsize=64)
@@ -329,10 +357,15 @@ def _element_layouts(mats: TrainMatrices) -> tuple[_ElementLayout, ...]:
             ports = ("first", "second") if isinstance(element, Clutch) else ("shaft", "housing")
             shafts = element.shafts
         engaged = k is not None or element.engaged
+        kind = ("planetary set" if isinstance(element, PlanetarySet) else "gear stage" if k is not None
+                else "clutch" if isinstance(element, Clutch) else "brake")
+        teeth = element.teeth if isinstance(element, PlanetarySet) else None
         out.append(_ElementLayout(k, ports, shafts,
                                   tuple(idx[("port", element.name, p)] for p in ports) if engaged else (),
                                   tuple(row[s] for s in shafts),
-                                  mats.levers[k].efficiency if k is not None else 1.0))
+                                  mats.levers[k].efficiency if k is not None else 1.0,
+                                  kind, MappingProxyType(dict(zip(ports, shafts))),
+                                  () if teeth is None else teeth.planet_factors))
     return tuple(out)
 
 
@@ -372,23 +405,23 @@ def _sources(element, extra: GivenLosses | None, ev: Evaluation, k: int | None, 
 def _element_state(element, layout: _ElementLayout, ev: Evaluation, col: _Column, lossless,
                    extra: GivenLosses | None = None) -> ElementState:
     k = layout.lever
-    ports = dict(zip(layout.ports, layout.shafts))
-    port_speeds = {p: col.speeds[r] for p, r in zip(layout.ports, layout.rows)}
+    ports = layout.port_map
+    speeds = col.speeds
+    port_speeds = dict(zip(layout.ports, [speeds[r] for r in layout.rows]))
     if k is not None:
         loss, sources = _sources(element, extra, ev, k, col.loss[k], lossless)
-        torques = {p: col.x[c] for p, c in zip(layout.ports, layout.columns)}
+        torques = dict(zip(layout.ports, [col.x[c] for c in layout.columns]))
         w = col.direction[k]
-        relative_speed = col.relative[k]
         planets: tuple[float, ...] = ()
         relative: tuple[float, ...] = ()
-        if isinstance(element, PlanetarySet) and element.teeth is not None:
-            carrier = port_speeds[layout.ports[2]]
-            relative = tuple(f * relative_speed + 0.0 for f in element.teeth.planet_factors)
-            planets = tuple(clean(carrier + r, scale_of(carrier, r)) for r in relative)
+        if layout.planet_factors:
+            relative_speed, carrier = col.relative[k], speeds[layout.rows[2]]
+            relative = tuple([f * relative_speed + 0.0 for f in layout.planet_factors])
+            planets = tuple([clean(carrier + r, scale_of(carrier, r)) for r in relative])
         return ElementState(
             element.name,
-            "planetary set" if isinstance(element, PlanetarySet) else "gear stage",
-            MappingProxyType(ports),
+            layout.kind,
+            ports,
             MappingProxyType(torques),
             MappingProxyType(port_speeds),
             rolling_power=col.rolling[k],
@@ -409,8 +442,8 @@ def _element_state(element, layout: _ElementLayout, ev: Evaluation, col: _Column
     loss, sources = _sources(element, extra, ev, None, 0.0, lossless)
     return ElementState(
         element.name,
-        "clutch" if isinstance(element, Clutch) else "brake",
-        MappingProxyType(ports),
+        layout.kind,
+        ports,
         MappingProxyType(torques),
         MappingProxyType(port_speeds),
         engaged=element.engaged,

@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import ContradictionError, NearSingularError, UnderdeterminedError
 from .assembly import TrainMatrices
-from .linear import Pseudoinverse, apply, pseudoinverse, unreached_columns
+from .linear import SMALL, Pseudoinverse, apply, pseudoinverse, row_products, unreached_columns
 
 __all__ = ["TorqueSolver", "torque_solver"]
 
@@ -82,6 +82,17 @@ class TorqueSolver:
         x = apply(self.operator, np.asarray(values, dtype=float))
         return x if rows is None else x + self.row_operator @ rows
 
+    @cached_property
+    def _rows(self) -> list[list[float]] | None:
+        """:attr:`operator` as lists of rows where it is small (see :meth:`point`)."""
+        return self.operator.tolist() if self.operator.size <= SMALL else None
+
+    def point(self, values: Sequence[float], rows: np.ndarray | None = None) -> list[float]:
+        """:meth:`torques` of one point in Python floats (a list; ``rows``, if given, one column)."""
+        if rows is None and self._rows is not None:
+            return row_products(self._rows, values)
+        return self.torques(values, rows).tolist()
+
     def check(self, values: Sequence[float] | np.ndarray, x: np.ndarray, loss_rows: np.ndarray | None = None) -> None:
         """Raise ContradictionError if the given torques (and loss torques) cannot all hold."""
         if self.system.rank == self.system.matrix.shape[0]:
@@ -90,7 +101,7 @@ class TorqueSolver:
         rows = self.system.matrix.shape[0] - len(self.given)
         rhs = np.concatenate([np.zeros((rows,) + g.shape[1:]) if loss_rows is None else loss_rows, g])
         scale = np.max(np.abs(g), axis=0) if g.size else 1.0
-        ok = self.system.is_consistent(x, rhs, scale)
+        ok = self.system.is_consistent(np.asarray(x, dtype=float), rhs, scale)
         if np.all(ok):
             return
         if g.ndim > 1:
