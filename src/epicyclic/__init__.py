@@ -17,6 +17,7 @@ Core units: speed 1/min, torque N·m, power W.
 (1000.0, 0.98556)
 """
 
+from . import pickling  # noqa: F401  (read-only mappings pickle: every result can go to another process)
 from .errors import (
     ContradictionError,
     EfficiencyError,
