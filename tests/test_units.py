@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
+import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -185,3 +187,10 @@ def test_reading_the_sources_units_does_not_import_pint():
                           cwd=__import__("pathlib").Path(__file__).resolve().parents[1])
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize("value", [np.int64(1500), np.float32(1500.0), Fraction(3000, 2)])
+def test_numpy_scalars_and_fractions_are_numbers(value):
+    # regression: np.int64 / np.float32 (np.arange, float32 arrays) were "expected a number"
+    assert to_core(value, "speed") == 1500.0
+    assert to_core(value, "speed", default_unit="rad/s") == pytest.approx(1500.0 * 30 / np.pi, rel=1e-6)

@@ -374,7 +374,7 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
     _check_quantity(quantity)
     if isinstance(value, bool):
         raise UnitError(f"{field}: expected a {quantity}, got the boolean {value!r}.", field, quantity, value)
-    if isinstance(value, (int, float)):
+    if isinstance(value, numbers.Real):  # also numpy scalars (np.int64, np.float32) and fractions
         try:
             number = float(value)
         except OverflowError:  # an integer beyond double precision
