@@ -164,3 +164,18 @@ def test_input_speed_and_torque_take_units_like_a_file():
 def test_a_wrong_unit_names_the_argument(kwargs, match):
     with pytest.raises(EpicyclicError, match=match):
         build("simpson_c4").analyze("1", **kwargs)
+
+
+def test_an_unknown_gear_is_named_with_the_gears_also_as_a_key_error():
+    # regression: analysis["9"] raised a bare KeyError('9'); a number for a gear name was "no gear 3"
+    from epicyclic.transmission import UnknownGearError
+
+    t = build("simpson_c4")
+    analysis = t.analyze_all()
+    with pytest.raises(UnknownGearError, match=r"no gear '9'; gears are '1', '2', '3', 'R'\.$") as info:
+        analysis["9"]
+    assert isinstance(info.value, KeyError) and isinstance(info.value, EpicyclicError)
+    with pytest.raises(KeyError, match=r"no gear 'r'.*Did you mean 'R'\?"):
+        analysis["r"]
+    with pytest.raises(ShiftScheduleError, match=r"no gear 3 \(gear names are strings\)"):
+        t.analyze(3)

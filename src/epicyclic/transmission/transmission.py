@@ -36,7 +36,7 @@ from ..solver import solve
 from ..solver.assembly import matrices
 from ..solver.kinematics import degrees_of_freedom, free_speed_shafts, solve_speeds
 from ..units import to_core
-from .errors import GearFreedomError, ShiftScheduleError
+from .errors import GearFreedomError, ShiftScheduleError, UnknownGearError
 from .explore import Exploration, explore
 from .results import GearResult, TransmissionAnalysis, gear_result
 
@@ -191,10 +191,8 @@ class Transmission:
         """The train in ``gear`` (its shift elements engaged, all others open)."""
         try:
             return self._trains[gear]
-        except KeyError:
-            raise ShiftScheduleError(
-                f"transmission: no gear {gear!r}; gears are {', '.join(repr(g) for g in self.schedule)}."
-            ) from None
+        except (KeyError, TypeError):  # TypeError: an unhashable gear
+            raise UnknownGearError(gear, self.schedule) from None
 
     def speeds(self, gear: str, input_speed: float | str = 1.0) -> dict[str, float]:
         """Every shaft speed (1/min) in ``gear`` at the given input speed (Willis, kinematics only).
