@@ -50,7 +50,7 @@ from .checks import (
     NeighbourCheck,
     UndercutCheck,
 )
-from .errors import GeometryError
+from .errors import GeometryError, expect_type
 from .gear import MeshGeometry
 from .involute import inv, profile_shift_sum
 from .set_geometry import SetGeometry
@@ -525,6 +525,7 @@ def check_fitting(
     >>> report.passed, [c.condition for c in report.checks][:3]
     (True, ['coaxiality', 'assembly', 'neighbours'])
     """
+    expect_type(geometry, SetGeometry, "check_fitting", "geometry", "make one with SetGeometry.create(set, module=...)")
     n = geometry.planetary_set.planets if planets is None else planets
     assembly = check_assembly(geometry, n, allow_unequal=allow_unequal)
     angles = assembly.angles if (assembly.passed and not assembly.equally_spaced) else None
