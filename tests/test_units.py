@@ -194,3 +194,13 @@ def test_numpy_scalars_and_fractions_are_numbers(value):
     # regression: np.int64 / np.float32 (np.arange, float32 arrays) were "expected a number"
     assert to_core(value, "speed") == 1500.0
     assert to_core(value, "speed", default_unit="rad/s") == pytest.approx(1500.0 * 30 / np.pi, rel=1e-6)
+
+
+def test_as_units_from_a_mapping():
+    from epicyclic.units import as_units
+
+    assert as_units(None) == Units() and as_units({"power": "PS"}) == Units(power="PS")
+    with pytest.raises(UnitError, match=r"report: unknown quantity 'force'"):
+        as_units({"force": "N"}, "report")
+    with pytest.raises(UnitError, match=r"expected Units\(speed=\.\.\., torque=\.\.\., power=\.\.\.\) or a mapping"):
+        as_units("rpm")

@@ -46,6 +46,7 @@ from __future__ import annotations
 import math
 import numbers
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING
@@ -61,6 +62,7 @@ __all__ = [
     "QUANTITIES",
     "UnitError",
     "Units",
+    "as_units",
     "from_core",
     "registry",
     "to_core",
@@ -489,3 +491,32 @@ class Units:
 
     def to_dict(self) -> dict[str, str]:
         return {"speed": self.speed, "torque": self.torque, "power": self.power}
+
+
+def as_units(value: object, field: str = "units") -> Units:
+    """``value`` as :class:`Units`: a Units, None (core units) or a mapping such as ``{"power": "PS"}``.
+
+    Raises
+    ------
+    UnitError
+        Anything else (a bare unit string cannot say which quantity it is for), or a unit that does
+        not fit its quantity.
+
+    Examples
+    --------
+    >>> as_units({"speed": "U/min", "power": "PS"})
+    Units(speed='U/min', torque='N*m', power='PS')
+    """
+    if value is None:
+        return Units()
+    if isinstance(value, Units):
+        return value
+    if isinstance(value, Mapping):
+        unknown = [k for k in value if k not in CORE_UNITS]
+        if unknown:
+            raise UnitError(f"{field}: unknown quantity {unknown[0]!r:.40}; give units for "
+                            f"{', '.join(CORE_UNITS)}, e.g. {{'power': 'PS'}}.", field, "", value)
+        return Units(**{k: str(v) for k, v in value.items()})
+    raise UnitError(f"{field}: expected Units(speed=..., torque=..., power=...) or a mapping such as "
+                    f"{{'speed': 'U/min', 'torque': 'kp*cm', 'power': 'PS'}}, got {type(value).__name__} "
+                    f"{value!r:.40}.", field, "", value)
