@@ -63,6 +63,7 @@ __all__ = [
     "UnitError",
     "Units",
     "as_units",
+    "to_core_array",
     "from_core",
     "registry",
     "to_core",
@@ -520,3 +521,44 @@ def as_units(value: object, field: str = "units") -> Units:
     raise UnitError(f"{field}: expected Units(speed=..., torque=..., power=...) or a mapping such as "
                     f"{{'speed': 'U/min', 'torque': 'kp*cm', 'power': 'PS'}}, got {type(value).__name__} "
                     f"{value!r:.40}.", field, "", value)
+
+
+def to_core_array(values: object, quantity: str, *, field: str = "values") -> list[float]:
+    """Convert a sequence of values, or one pint quantity holding an array, into core units.
+
+    Each value may be a number (core unit), a string with a unit or a pint quantity; a pint
+    quantity whose magnitude is an array is converted by the factor of its unit (read in this
+    module's registry, as :func:`to_core` does), never stripped of it.
+
+    Parameters
+    ----------
+    values : sequence, array or pint.Quantity
+        The values; a single value is one value.
+    quantity : {"speed", "torque", "power"}
+    field : str
+        Named in error messages, with the index of a bad value.
+
+    Returns
+    -------
+    list of float
+
+    Examples
+    --------
+    >>> to_core_array(["1500 U/min", 3000, "50 1/s"], "speed", field="speeds")
+    [1500.0, 3000.0, 3000.0]
+    """
+    import numpy as np
+
+    factor = 1.0
+    if _is_quantity(values) and not isinstance(getattr(values, "magnitude", None), numbers.Real):
+        factor = to_core(1.0 * values.units, quantity, field=field)  # type: ignore[attr-defined]
+        values = values.magnitude  # type: ignore[attr-defined]
+    elif isinstance(values, (str, numbers.Real)) or _is_quantity(values):
+        values = [values]
+    try:
+        array = np.asarray(values, dtype=object if factor == 1.0 else float).ravel()
+    except (TypeError, ValueError):  # ragged nesting, magnitudes that are no numbers
+        raise UnitError(f"{field}: expected a sequence of {quantity}s, got {type(values).__name__}.",
+                        field, quantity, values) from None
+    return [to_core(float(v) * factor if factor != 1.0 else v, quantity, field=f"{field}[{k}]")
+            for k, v in enumerate(array.tolist())]
