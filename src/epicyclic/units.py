@@ -55,6 +55,7 @@ from .errors import EpicyclicError
 from .limits import MAX_DECIMAL_EXPONENT, MAX_UNIT_CHARS, MAX_UNIT_POWER, UNIT_FACTOR_RANGE
 
 if TYPE_CHECKING:  # pragma: no cover
+    import numpy as np
     import pint
 
 __all__ = [
@@ -523,12 +524,13 @@ def as_units(value: object, field: str = "units") -> Units:
                     f"{value!r:.40}.", field, "", value)
 
 
-def to_core_array(values: object, quantity: str, *, field: str = "values") -> list[float]:
+def to_core_array(values: object, quantity: str, *, field: str = "values") -> np.ndarray:
     """Convert a sequence of values, or one pint quantity holding an array, into core units.
 
     Each value may be a number (core unit), a string with a unit or a pint quantity; a pint
     quantity whose magnitude is an array is converted by the factor of its unit (read in this
-    module's registry, as :func:`to_core` does), never stripped of it.
+    module's registry, as :func:`to_core` does), never stripped of it.  The shape is kept (a
+    single value gives a 0-d array); an error names the flat index of the bad value.
 
     Parameters
     ----------
@@ -540,11 +542,11 @@ def to_core_array(values: object, quantity: str, *, field: str = "values") -> li
 
     Returns
     -------
-    list of float
+    ndarray of float, the shape of ``values``
 
     Examples
     --------
-    >>> to_core_array(["1500 U/min", 3000, "50 1/s"], "speed", field="speeds")
+    >>> to_core_array(["1500 U/min", 3000, "50 1/s"], "speed", field="speeds").tolist()
     [1500.0, 3000.0, 3000.0]
     """
     import numpy as np
@@ -553,12 +555,21 @@ def to_core_array(values: object, quantity: str, *, field: str = "values") -> li
     if _is_quantity(values) and not isinstance(getattr(values, "magnitude", None), numbers.Real):
         factor = to_core(1.0 * values.units, quantity, field=field)  # type: ignore[attr-defined]
         values = values.magnitude  # type: ignore[attr-defined]
-    elif isinstance(values, (str, numbers.Real)) or _is_quantity(values):
-        values = [values]
     try:
-        array = np.asarray(values, dtype=object if factor == 1.0 else float).ravel()
-    except (TypeError, ValueError):  # ragged nesting, magnitudes that are no numbers
+        array = np.asarray(values)
+        if array.dtype.kind not in "iuf":  # strings, quantities, booleans: one by one below
+            array = np.asarray(values, dtype=object)
+    except (TypeError, ValueError):  # ragged nesting
         raise UnitError(f"{field}: expected a sequence of {quantity}s, got {type(values).__name__}.",
                         field, quantity, values) from None
-    return [to_core(float(v) * factor if factor != 1.0 else v, quantity, field=f"{field}[{k}]")
-            for k, v in enumerate(array.tolist())]
+    shape, array = array.shape, array.ravel()
+    if array.dtype.kind in "iuf":  # plain numbers (in the core unit, or in the quantity's unit): at once
+        core = array.astype(float) * factor
+        bad = np.flatnonzero(~np.isfinite(core))
+        if bad.size:
+            k = int(bad[0])
+            raise UnitError(f"{field}[{k}]: expected a finite {quantity}, got {float(array[k])!r}.", field, quantity,
+                            array[k])
+        return core.reshape(shape)
+    return np.array([to_core(v, quantity, field=f"{field}[{k}]") for k, v in enumerate(array.tolist())],
+                    dtype=float).reshape(shape)

@@ -210,7 +210,7 @@ def _read_only(values) -> np.ndarray:
 
 
 def _axis(values, name: str, quantity: str) -> np.ndarray:
-    arr = np.asarray(to_core_array(values, quantity, field=f"efficiency_map: {name}"), dtype=float)
+    arr = to_core_array(values, quantity, field=f"efficiency_map: {name}").ravel()
     if arr.size == 0 or not np.all(np.isfinite(arr)):
         raise ModelError(f"efficiency_map: {name} must be finite numbers, got {values!r}.")
     if np.any(arr <= 0):
