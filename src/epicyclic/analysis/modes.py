@@ -220,7 +220,25 @@ def two_shaft_modes(
 def three_shaft_speeds(planetary: PlanetarySet, **speeds: float | str) -> dict[str, float]:
     """Three-shaft operation: give two of ``sun``, ``ring``, ``carrier`` (1/min), get all.
 
-    A speed may carry a unit (``sun="1500 U/min"``, a pint quantity); the result is in 1/min.
+    Parameters
+    ----------
+    planetary : PlanetarySet
+        The set (its tooth counts give the planet speed).
+    **speeds : float, str or pint.Quantity
+        Exactly two of ``sun``, ``ring``, ``carrier`` (the members, not the shaft names), in
+        1/min or with a unit (``sun="1500 U/min"``).
+
+    Returns
+    -------
+    dict
+        ``sun``, ``ring``, ``carrier`` (and ``planet``, ``planet_relative``) in 1/min.
+
+    Raises
+    ------
+    ModelError
+        Not exactly two known members given.
+    UnitError
+        A speed that cannot be read or is no speed.
 
     The result also holds ``planet`` (absolute) and ``planet_relative`` (to
     the carrier) when the set has tooth counts (the first planet gear).

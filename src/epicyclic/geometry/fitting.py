@@ -517,6 +517,36 @@ def check_fitting(
 ) -> FittingReport:
     """Run every fitting condition (number of planets from the set unless given).
 
+    Parameters
+    ----------
+    geometry : SetGeometry
+        The set's gears (:meth:`SetGeometry.create`).
+    planets : int, optional
+        Number of planets; default the set's.
+    allow_unequal : bool, default False
+        Accept unequal planet spacing where equal spacing cannot be assembled.
+    min_clearance : float, default 0
+        Smallest tip clearance between neighbouring planets, mm.
+    undercut : {"theoretical", "practical"}
+        Undercut limit z_min = 2/sin²α (theoretical) or 5/6 of it (practical).
+    tolerance : float, default 1e-3
+        Allowed difference of the centre distances for coaxiality, mm.
+
+    Returns
+    -------
+    FittingReport
+        Every check with its numbers, ``passed``, ``table()``, ``raise_if_failed()``.
+
+    Raises
+    ------
+    GeometryError
+        ``geometry`` is no SetGeometry, or ``planets`` is no whole number ≥ 1.
+
+    References
+    ----------
+    SDP/SI, *Elements of Metric Gear Technology* (D785), section 13 (coaxial, assembly and
+    neighbouring conditions); ISO 21771 (undercut, interference).
+
     Examples
     --------
     >>> from epicyclic import PlanetarySet

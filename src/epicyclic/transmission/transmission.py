@@ -197,7 +197,24 @@ class Transmission:
     def speeds(self, gear: str, input_speed: float | str = 1.0) -> dict[str, float]:
         """Every shaft speed (1/min) in ``gear`` at the given input speed (Willis, kinematics only).
 
-        ``input_speed`` is in 1/min, or a string with a unit or a pint quantity (``"2000 U/min"``).
+        Parameters
+        ----------
+        gear : str
+            A gear of the schedule (``"1"``, ``"R"``).
+        input_speed : float, str or pint.Quantity, default 1
+            1/min, or with a unit (``"2000 U/min"``).
+
+        Returns
+        -------
+        dict shaft → float
+            Speeds in 1/min.
+
+        Raises
+        ------
+        UnknownGearError
+            A gear the schedule does not have.
+        UnitError
+            An input speed that is no speed.
         """
         train = self.gear_train(gear)
         speed = to_core(input_speed, "speed", field="input_speed")
