@@ -204,3 +204,17 @@ def test_as_units_from_a_mapping():
         as_units({"force": "N"}, "report")
     with pytest.raises(UnitError, match=r"expected Units\(speed=\.\.\., torque=\.\.\., power=\.\.\.\) or a mapping"):
         as_units("rpm")
+
+
+def test_pint_default_registry_misreadings_are_named():
+    # regression: 10 * ureg.PS (pint's default registry: petasiemens) gave "is not a power: its unit
+    # has the dimension [current] ** 2 ..." without saying why; the docs promised PS = metric horsepower
+    import pint
+
+    ureg = pint.UnitRegistry()
+    with pytest.raises(UnitError, match=r"pint's default registry reads 'PS' as petasiemens; give the power as a "
+                                        r"string \('10 PS'\) or in 'metric_horsepower'"):
+        to_core(ureg.Quantity(10, "PS"), "power")
+    with pytest.raises(UnitError, match=r"reads 'U' as enzyme_unit; give the speed as a string \('1500 U/min'\)"):
+        to_core(ureg.Quantity(1500, "U/min"), "speed")
+    assert to_core(ureg.Quantity(3, "metric_horsepower"), "power") == pytest.approx(2206.49625, rel=1e-12)

@@ -349,7 +349,8 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
         A number (read in ``default_unit``, or the core unit if that is None),
         a string with number and unit, e.g. ``"3 PS"``, ``"1500 U/min"``, or a
         pint quantity of any registry (its unit names are read in ours, so
-        ``rpm`` stays 1/min and ``PS`` is the metric horsepower).
+        ``rpm`` stays 1/min; pint's default registry has already read ``PS`` as
+        petasiemens and ``U`` as an enzyme unit, which is an error that says so).
     quantity : {"speed", "torque", "power"}
     field : str
         Where the value was given; named in error messages.
@@ -418,6 +419,13 @@ def _is_quantity(value: object) -> bool:
     return all(hasattr(value, name) for name in ("to_tuple", "magnitude", "units", "dimensionality"))
 
 
+#: Units that pint's default registry makes of the sources' names (the name is lost once pint has read it).
+_PINT_MISREADINGS = {
+    "petasiemens": ("PS", "give the power as a string ('10 PS') or in 'metric_horsepower'"),
+    "enzyme_unit": ("U", "give the speed as a string ('1500 U/min') or in 'rpm'"),
+}
+
+
 def _from_quantity(value: object, quantity: str, field: str) -> float:
     """A pint quantity of any registry in core units, read unit name by unit name in ours.
 
@@ -425,6 +433,11 @@ def _from_quantity(value: object, quantity: str, field: str) -> float:
     (not 1500·2π as pint's default turns revolutions into radians) and ``3 PS`` is metric horsepower.
     """
     magnitude, units = value.to_tuple()  # type: ignore[attr-defined]
+    for name, _ in units:
+        if name in _PINT_MISREADINGS:
+            written, fix = _PINT_MISREADINGS[name]
+            raise UnitError(f"{field}: {value!r} — pint's default registry reads {written!r} as {name}; {fix}.",
+                            field, quantity, value)
     if isinstance(magnitude, bool) or not isinstance(magnitude, numbers.Real):
         raise UnitError(f"{field}: expected one {quantity}, got the quantity {value!r} "
                         f"(its magnitude is {type(magnitude).__name__}, not a number).", field, quantity, value)
