@@ -270,3 +270,14 @@ def test_search_needs_three_different_members(client, examples, page_form):
     said = message(client.post("/tool/search", data=data))
     assert "give three different members" in said
     assert "give three different members" in command_error("search", "--ratio", "4", "--held", "sun", "--driver", "sun")
+
+
+def test_forces_of_one_wolfrom_set_share_the_planet_with_the_other(client, page_form):
+    """The form for set W alone still solves the planet it shares with set S as one body (its bearing
+    is the vector sum of the meshes of both sets, as `epicyclic forces` of the whole file says)."""
+    text, path = example("wolfrom_drive")
+    one = body(client.post("/tool/forces", data=page_form(text, tool_forces_set="W")))
+    assert "planets shared with set &#x27;S&#x27;" in one and "S: planet-ring = W: first-planet_first" in one
+    bearing = re.findall(r"<td>planet_first\+planet_second</td><td>0.00</td><td>first-planet_first</td>"
+                         r"(?:<td>[\d.]+</td>){3}<td>([\d.]+)</td>", one)
+    assert bearing and bearing[0] in command("forces", path)

@@ -261,7 +261,9 @@ def _forces(context: Context, v: Mapping[str, Any]) -> str:
     chosen = dict(_chosen(context, v))
     if v["set"] != ALL and v["load_sharing"] is not None:
         chosen[v["set"]] = replace(chosen[v["set"]], load_sharing=v["load_sharing"])
-    results = geometry_results(chosen, context.solution)
+    # solved with every set of the file, so that a planet the chosen set shares with another is one body
+    results = geometry_results({**_file_geometry(context), **chosen}, context.solution)
+    results = tuple(r for r in results if r.name in chosen)
     check_finite(geometry_dict(results), context.train_file.source, "forces")
     results = tuple(replace(r, fitting=None) for r in results)  # the forces only, as `epicyclic forces -f html`
     return geometry_html(results, heading="Forces", show_geometry=False)
