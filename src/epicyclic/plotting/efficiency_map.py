@@ -22,7 +22,9 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
     """A matplotlib Figure of :class:`~epicyclic.losses.efficiency_map.EfficiencyMap` ``emap``."""
     plt = pyplot()
     fig, (left, right) = plt.subplots(1, 2, figsize=figsize, constrained_layout=True)
-    n, t = np.meshgrid(emap.speeds, emap.torques)
+    (speeds, speed_unit), (torques, torque_unit) = emap.shown("speed"), emap.shown("torque")  # the file's units
+    speed_unit, torque_unit = speed_unit.replace("*", "·"), torque_unit.replace("*", "·")
+    n, t = np.meshgrid(speeds, torques)
     eta = np.ma.masked_invalid(emap.efficiency)
     fig.suptitle(f"Efficiency map — {emap.title()}", fontsize=11)
 
@@ -47,9 +49,9 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
                   transform=left.transAxes)
     if emap.self_locking.any():
         left.contourf(n, t, emap.self_locking.astype(float), levels=[0.5, 1.5], colors="none", hatches=["xx"])
-    left.set_xlabel(f"input speed n_{emap.input} in 1/min")
-    left.set_ylabel(f"input torque M_{emap.input} in N·m" if emap.direction == "drive"
-                    else f"output torque / |i| in N·m")
+    left.set_xlabel(f"input speed n_{emap.input} in {speed_unit}")
+    left.set_ylabel(f"input torque M_{emap.input} in {torque_unit}" if emap.direction == "drive"
+                    else f"output torque / |i| in {torque_unit}")
     left.set_title("efficiency η = P_out / P_in", fontsize=10)
 
     total = np.where(emap.loss > 0, emap.loss, np.nan)
@@ -65,7 +67,7 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
         filled = right.contourf(n, t, np.ma.masked_invalid(total), levels=12, cmap="magma_r")
         fig.colorbar(filled, ax=right, label="total loss in W")
         right.set_title("total loss (no drag model)", fontsize=10)
-    right.set_xlabel(f"input speed n_{emap.input} in 1/min")
+    right.set_xlabel(left.get_xlabel())
     right.set_ylabel(left.get_ylabel())
     right.set_title(right.get_title() + f"\nsum over the map: {text}", fontsize=10)
     return fig

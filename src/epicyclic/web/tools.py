@@ -158,11 +158,30 @@ def _defaults(tool: Tool, context: Context, chosen_set: str | None) -> dict[str,
     chosen = values.get("set")
     if chosen and chosen != ALL:
         values.update({k: v for k, v in _set_defaults(context, chosen).items() if k in values})
+    if tool.name == "map":  # the map's default axes in the file's [units], as `epicyclic map` reads them
+        from ..io.ranges import default_axis
+
+        units = _units(context)
+        values.update(speed=default_axis("speed", units.speed), torque=default_axis("torque", units.torque))
     first = _first_geometry(context)
     if tool.name == "search" and first is not None:  # search near the file's own design
         values.update(module=f"{first.rack.module:g}", pressure_angle=f"{first.rack.pressure_angle:g}",
                       planets=str(first.planetary_set.planets))
     return values
+
+
+def _units(context: Context):
+    from ..units import Units
+
+    return getattr(context.train_file, "units", None) or Units()
+
+
+def _labelled(tool: Tool, f: Field, context: Context) -> Field:
+    """The field with its unit: the map's axes are in the file's ``[units]``."""
+    if tool.name == "map" and f.name in ("speed", "torque"):
+        unit = _units(context).of(f.name).replace("*", "·")
+        return replace(f, label=f"input {f.name}s [{unit}] (A..B:N, or a unit after it)")
+    return f
 
 
 def form_rows(tool: Tool, context: Context, chosen_set: str | None = None) -> list[tuple[Field, str, tuple[str, ...]]]:
@@ -173,7 +192,7 @@ def form_rows(tool: Tool, context: Context, chosen_set: str | None = None) -> li
     for f in tool.fields:
         if (f.per_set and chosen == ALL) or (f.choices == ("gear",) and not _choices(f, context)):
             continue
-        rows.append((f, values[f.name], _choices(f, context) if f.kind == "choice" else ()))
+        rows.append((_labelled(tool, f, context), values[f.name], _choices(f, context) if f.kind == "choice" else ()))
     return rows
 
 
@@ -332,7 +351,8 @@ def map_of(context: Context, v: Mapping[str, Any]):
     from ..io.ranges import map_grid
     from ..losses.efficiency_map import efficiency_map
 
-    speeds, torques = map_grid(v["speed"], v["torque"], ("map: input speeds", "map: input torques"))
+    speeds, torques = map_grid(v["speed"], v["torque"], ("map: input speeds", "map: input torques"),
+                               units=_units(context))
     return efficiency_map(context.train_file, speeds, torques, gear=v["gear"], direction=v["direction"])
 
 
