@@ -19,12 +19,14 @@ import json
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
 from ..errors import ModelError
 from ..model.train import GearTrain
+from ..units import Units, to_core_array, unit_factor
 from .element import SOURCES, ElementLosses
 from .solve import solve_batch_with_losses
 
@@ -58,6 +60,10 @@ class EfficiencyMap:
     self_locking : ndarray of bool (T, S)
     ratio : float
         n_input/n_output.
+    units : Units, optional
+        The units the summary and the figure show speeds and torques in (a
+        train file's ``[units]``; default 1/min and N·m).  The arrays, CSV and
+        JSON stay in 1/min, N·m and W.
     """
 
     name: str
@@ -74,6 +80,19 @@ class EfficiencyMap:
     losses: Mapping[str, np.ndarray]
     self_locking: np.ndarray
     ratio: float
+    units: Units | None = None
+
+    def shown(self, quantity: str) -> tuple[np.ndarray, str]:
+        """The ``"speed"`` or ``"torque"`` axis in the units the map is shown in, and that unit."""
+        units = self.units or Units()
+        axis = self.speeds if quantity == "speed" else self.torques
+        return axis / unit_factor(units.of(quantity), quantity), units.of(quantity)
+
+    def __post_init__(self) -> None:
+        # a frozen result: read-only views of the arrays, a read-only mapping of the losses
+        for name in ("speeds", "torques", "efficiency", "input_power", "output_power", "loss", "self_locking"):
+            object.__setattr__(self, name, _read_only(getattr(self, name)))
+        object.__setattr__(self, "losses", MappingProxyType({k: _read_only(v) for k, v in self.losses.items()}))
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -103,10 +122,11 @@ class EfficiencyMap:
     def table(self) -> str:
         s = self.summary()
         split = ", ".join(f"{k} {100 * v:.1f} %" for k, v in s["loss_split"].items())
+        (n, n_unit), (t, t_unit) = self.shown("speed"), self.shown("torque")
         lines = [
             f"efficiency map of {self.title()}",
-            f"input speed {self.speeds.min():g}..{self.speeds.max():g} 1/min ({self.speeds.size} values), "
-            f"input torque {self.torques.min():g}..{self.torques.max():g} N*m ({self.torques.size} values)",
+            f"input speed {n.min():g}..{n.max():g} {n_unit} ({n.size} values), "
+            f"input torque {t.min():g}..{t.max():g} {t_unit} ({t.size} values)",
         ]
         if s["efficiency_min"] is not None:
             lines.append(f"efficiency {s['efficiency_min']:.4f} .. {s['efficiency_max']:.4f} "
@@ -195,8 +215,14 @@ class EfficiencyMap:
         return path
 
 
-def _axis(values, name: str) -> np.ndarray:
-    arr = np.asarray(values, dtype=float).ravel()
+def _read_only(values) -> np.ndarray:
+    view = np.asarray(values).view()
+    view.flags.writeable = False
+    return view
+
+
+def _axis(values, name: str, quantity: str) -> np.ndarray:
+    arr = to_core_array(values, quantity, field=f"efficiency_map: {name}").ravel()
     if arr.size == 0 or not np.all(np.isfinite(arr)):
         raise ModelError(f"efficiency_map: {name} must be finite numbers, got {values!r}.")
     if np.any(arr <= 0):
@@ -233,9 +259,12 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
         drive and load are used), a :class:`~epicyclic.transmission.Transmission`,
         or a train with ``input`` and ``output`` given.
     speeds : array_like
-        Input speeds, 1/min (> 0).
+        Input speeds, 1/min (> 0); values may carry units (``"1500 U/min"``), or give one pint
+        quantity holding an array (its unit is converted, never stripped).
     torques : array_like
-        Input torques, N·m (> 0; in coast the output is driven with torque × |ratio|).
+        Input torques, N·m (> 0; in coast the output is driven with torque × |ratio|); units as
+        for ``speeds`` (``"15 kp*m"``).  A train file's map shows both in its ``[units]``
+        (:func:`epicyclic.io.ranges.map_grid` reads them so).
     gear : str, optional
         Gear of the transmission's schedule (default: the file's operating-point gear).
     losses : mapping element → ElementLosses, optional
@@ -258,10 +287,10 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     """
     if direction not in ("drive", "coast"):
         raise ModelError(f"efficiency_map: direction must be 'drive' or 'coast', got {direction!r}.")
-    name, title_gear = "gear train", gear
+    name, title_gear, units = "gear train", gear, None
     if hasattr(train, "operating_train") and hasattr(train, "losses"):  # a TrainFile
         file = train
-        name = file.title
+        name, units = file.title, file.units
         losses = dict(file.losses) if losses is None else losses
         gear = gear if gear is not None else file.gear
         if gear is None and file.transmission is not None:
@@ -298,8 +327,8 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     for shaft in (input, output):
         base.check_shaft(shaft, "efficiency_map")
     _check_one_freedom(base, input, output)
-    n = _axis(speeds, "speeds")
-    t = _axis(torques, "torques")
+    n = _axis(speeds, "speeds", "speed")
+    t = _axis(torques, "torques", "torque")
     speed_grid, torque_grid = np.meshgrid(n, t)
     models = dict(losses or {})
     ratio_sol = solve_batch_with_losses(base, {}, speeds={input: np.array([1000.0])}, torques={input: np.array([1.0])},
@@ -317,4 +346,4 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
             sources[source] = sources.get(source, np.zeros(sol.shape)) + value
     sources = {k: v for k, v in sources.items() if np.any(v != 0) or k == "mesh"}
     return EfficiencyMap(name, title_gear, direction, input, output, n, t, sol.efficiency, sol.input_power,
-                         sol.output_power, sol.loss, sources, sol.self_locking, ratio)
+                         sol.output_power, sol.loss, sources, sol.self_locking, ratio, units)
