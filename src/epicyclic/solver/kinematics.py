@@ -146,12 +146,13 @@ class SpeedSolver:
 
     @cached_property
     def _plain(self) -> tuple[list[int], list[int], list[list[float]] | None, list[list[float]] | None]:
-        """For :meth:`point`: the columns of the given speeds, :attr:`_representatives`, and for a small
-        system the operator and |A⁺|·|A| as lists of rows (Python loops beat numpy's call overhead there)."""
-        small = self.operator.size + self._magnitudes[0].size <= SMALL
+        """For :meth:`point`: the columns of the given speeds, :attr:`_representatives`, the operator as
+        lists of rows where one speed is given (a product per entry: BLAS's numbers), and |A⁺|·|A| as
+        lists of rows where it is small (Python loops beat numpy's call overhead there)."""
+        bound = self._magnitudes[1] @ self._magnitudes[0]
         return ([self.mats.speed_index[g] for g in self.given], self._representatives.tolist(),
-                self.operator.tolist() if small else None,
-                (self._magnitudes[1] @ self._magnitudes[0]).tolist() if small else None)
+                self.operator.tolist() if self.operator.shape[1] == 1 else None,
+                bound.tolist() if bound.size <= SMALL else None)
 
     def point(self, values: Sequence[float]) -> list[float] | None:
         """:meth:`speeds` of one point in Python floats (the same numbers); None where one is not finite.

@@ -60,14 +60,15 @@ def apply(matrix: np.ndarray, values: np.ndarray) -> np.ndarray:
     return matrix @ values
 
 
-#: Entries up to which a solver's one-point product works in Python floats (numpy's call overhead
-#: is larger than the arithmetic there).
+#: Entries up to which a one-point product works in Python floats (numpy's call overhead is larger
+#: than the arithmetic there).
 SMALL = 48
 
 
 def row_products(rows: list[list[float]], values: list[float]) -> list[float]:
     """``matrix @ values`` for a matrix given as its rows, in Python floats: each entry summed from 0.0,
-    left to right (for one column, BLAS's numbers; for more, the same up to round-off).
+    left to right.  For one column these are BLAS's numbers (a product per entry); for more, BLAS may
+    fuse a multiply and an add (one rounding), so they are the same up to the last bit only.
 
     >>> row_products([[2.0, 1.0], [-1.0, 0.5]], [3.0, 4.0])
     [10.0, -1.0]
