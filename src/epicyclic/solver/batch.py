@@ -20,7 +20,8 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import EpicyclicError, NonFiniteResultError, OperatingPointError
+from ..errors import (EpicyclicError, NearSingularError, NonFiniteResultError, OperatingPointError,
+                      UnderdeterminedError)
 from ..model.elements import HOUSING
 from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
@@ -294,6 +295,8 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         extra is not None and (dragged is not None or bool(np.any(extra.efficiency != 1.0))))
     ev = ideal_eval  # lossless: the ideal evaluation is the result
     retried = False
+    singular: set[tuple[int, ...]] = set()  # loss patterns whose equations are singular (see _pattern_solver)
+    at_limit_points = np.zeros(count, dtype=bool)
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
@@ -303,7 +306,8 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
             if attempt == 0 and len(given) == 1 and effs is None and rows is None:
                 # one given torque: each point's torques are its pattern's column times the torque
                 # (Statics.torques point by point, without gathering the points of each pattern)
-                columns = np.stack([torque_solver(mats, given, row).operator[:, 0] for row, _, _ in groups], axis=1)
+                columns = np.stack([_pattern_solver(mats, given, row, ideal, singular).operator[:, 0]
+                                    for row, _, _ in groups], axis=1)
                 which = np.zeros(count, dtype=int)
                 for k, (_, _, mask) in enumerate(groups[1:], 1):
                     which[mask] = k
@@ -312,7 +316,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                 x += 0.0  # as linear.apply
             else:
                 for row, members, _ in groups:
-                    solver = torque_solver(mats, given, row)
+                    solver = _pattern_solver(mats, given, row, ideal, singular)
                     x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
                                                None if rows is None else rows[:, members],
                                                None if effs is None else effs[:, members])
@@ -328,10 +332,15 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                                 None if effs is None else effs[:, pending],
                                 None if dragged is None else dragged[:, pending]).pattern
         ok = np.all((column == observed) | (observed == 0), axis=0)
+        if singular:  # exactly at a self-locking limit: no finite state with this pattern, none tried after it
+            hit = _with_pattern(column, singular)
+            at_limit_points[pending[hit]] = True
+            ok |= hit  # settled (not consistent: see below)
         consistent[pending[ok]] = True
         pending = pending[~ok]
         if pending.size:
             pattern[:, pending] = np.where(observed[:, ~ok] == 0, column[:, ~ok], observed[:, ~ok])
+    consistent &= ~at_limit_points
     if not lossy:
         consistent[:] = True
         solved.add(tuple(int(w) for w in first_pattern[:, 0]) if count else ())
@@ -339,6 +348,9 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         # points with no consistent pattern keep the formal solution of the ideal pattern
         x[:, ~consistent] = first_x[:, ~consistent]
         pattern[:, ~consistent] = first_pattern[:, ~consistent]
+        if at_limit_points.any():  # no finite lossy state: the lossless numbers are shown, as solve does
+            x[:, at_limit_points] = x_ideal[:, at_limit_points]
+            pattern[:, at_limit_points] = 0
         ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
 
     # the results of these points
@@ -384,6 +396,28 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     results |= {"input_power": drive_power, "output_power": load_power, "loss": loss, "efficiency": efficiency,
                 "self_locking": self_locking}
     return results, solved
+
+
+def _pattern_solver(mats, given, row, ideal: TorqueSolver, singular: set) -> TorqueSolver:
+    """The torque solver of the loss pattern ``row``.
+
+    Where its equations are singular although the lossless ones are not, the set is exactly at its
+    self-locking limit (i0·η0^w = 1: unbounded torques, see :func:`~epicyclic.solver.solve.solve`);
+    ``row`` then goes into ``singular`` and the lossless solver stands in (its points self-lock).
+    """
+    try:
+        return torque_solver(mats, given, row)
+    except (UnderdeterminedError, NearSingularError):
+        singular.add(tuple(int(w) for w in row))
+        return ideal
+
+
+def _with_pattern(column: np.ndarray, rows: set[tuple[int, ...]]) -> np.ndarray:
+    """Points (columns of ``column``) whose loss pattern is one of ``rows``."""
+    hit = np.zeros(column.shape[1], dtype=bool)
+    for row in rows:
+        hit |= np.all(column == np.array(row, dtype=column.dtype)[:, None], axis=0)
+    return hit
 
 
 def _groups(pattern: np.ndarray, pending: np.ndarray, everything: bool = False):

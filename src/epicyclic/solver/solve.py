@@ -32,7 +32,8 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import ContradictionError, NonFiniteResultError, OperatingPointError
+from ..errors import (ContradictionError, NearSingularError, NonFiniteResultError, OperatingPointError,
+                      UnderdeterminedError)
 from ..model.elements import HOUSING, Clutch, GearStage
 from ..model.operating_point import OperatingPoint
 from ..model.planetary import PlanetarySet
@@ -209,11 +210,18 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     tried: list[tuple[int, ...]] = []
     consistent: tuple[TorqueSolver, Evaluation] | None = None
     first: tuple[TorqueSolver, Evaluation] | None = None
+    singular = False
     while len(tried) < MAX_PATTERN_TRIES and pattern not in tried:
         tried.append(pattern)
-        solver = torque_solver(mats, given, pattern)
-        x = solver.point(values, rows)
-        solver.check(values, x, rows)
+        try:
+            solver = torque_solver(mats, given, pattern)
+            x = solver.point(values, rows)
+            solver.check(values, x, rows)
+        except (UnderdeterminedError, NearSingularError, ContradictionError) as error:
+            if not _at_limit(error, ideal_solver, mats, given, pattern):
+                raise
+            singular = True  # exactly (or within round-off) at the self-locking limit of this pattern
+            break
         ev = evaluate_point(mats, n, x, pattern, given_values, shaft_torques=dragged)
         if first is None:
             first = (solver, ev)
@@ -223,12 +231,32 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
             break
         pattern = tuple(w if o == 0 else o for w, o in zip(pattern, observed))
 
-    solver, ev = consistent if consistent is not None else first
-    solution = _build(train, op, mats, ev, solver, roles, ideal, extra=extra)
-    locked = self_locking(solution, consistent is not None, mats, given, values, n, ideal_pattern)
+    if consistent is None and first is None:  # no lossy solution at all: the lossless numbers are shown
+        solution = replace(ideal(), ideal=ideal())
+    else:
+        solver, ev = consistent if consistent is not None else first
+        solution = _build(train, op, mats, ev, solver, roles, ideal, extra=extra)
+    locked = self_locking(solution, consistent is not None, mats, given, values, n, ideal_pattern,
+                          singular=singular)
     if locked is not None:
         solution = solution.replace(self_locking=locked, efficiency=None)
     return solution
+
+
+def _at_limit(error, ideal_solver: TorqueSolver, mats: TrainMatrices, given, pattern) -> bool:
+    """Whether ``error`` of a loss pattern's equations means "at the self-locking limit".
+
+    The lossless equations were determined; if those of a loss pattern leave a torque free
+    (``UnderdeterminedError``), are too close to singular (``NearSingularError``) or, having lost
+    rank, cannot take the given torques (``ContradictionError``), the losses alone made them
+    singular: i0·η0^w (or a loop's product of such ratios) is 1, the torques of that pattern are
+    unbounded, and no consistent solution with it exists (Brandenberger 1952, text to Bild 9:
+    self-locking where the carrier torque M3' = 0 for a finite drive torque).
+    """
+    if isinstance(error, ContradictionError):
+        lossy = mats.solvers.get(("torque", tuple(given), tuple(int(w) for w in pattern)))
+        return lossy is not None and lossy.system.rank < ideal_solver.system.rank
+    return True
 
 
 def _once(make):
