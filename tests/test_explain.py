@@ -75,3 +75,14 @@ def test_german_explanation_has_no_english_roles_or_self_locking_text():
     assert "SELBSTHEMMUNG: das Getriebe ist in dieser Leistungsflussrichtung selbsthemmend" in text
     assert f"plus: η0 < {1 / 1.02:.6g}" in text and "(formaler Wirkungsgrad -1.55)" in text
     assert explain(locked).text().count(locked.self_locking.message) == 1  # English: the solver's message
+
+
+def test_explain_takes_units_as_a_mapping_and_names_wrong_arguments():
+    # regression: explain(sol, units="PS") and explain(train_file) raised AttributeError from deep inside
+    f = load_train_file(Path(__file__).resolve().parents[1] / "examples" / "brandenberger_1952.toml")
+    sol = f.solve()
+    assert str(explain(sol, {"speed": "U/min", "torque": "kp*cm", "power": "PS"})) == str(explain(sol, f.units))
+    with pytest.raises(EpicyclicError, match=r"explain: units: expected Units\(.*got str 'PS'"):
+        explain(sol, units="PS")
+    with pytest.raises(EpicyclicError, match=r"got a TrainFile \(a train file: explain\(f\.solve\(\), f\.units\)\)"):
+        explain(f)

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
+import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -185,3 +187,34 @@ def test_reading_the_sources_units_does_not_import_pint():
                           cwd=__import__("pathlib").Path(__file__).resolve().parents[1])
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize("value", [np.int64(1500), np.float32(1500.0), Fraction(3000, 2)])
+def test_numpy_scalars_and_fractions_are_numbers(value):
+    # regression: np.int64 / np.float32 (np.arange, float32 arrays) were "expected a number"
+    assert to_core(value, "speed") == 1500.0
+    assert to_core(value, "speed", default_unit="rad/s") == pytest.approx(1500.0 * 30 / np.pi, rel=1e-6)
+
+
+def test_as_units_from_a_mapping():
+    from epicyclic.units import as_units
+
+    assert as_units(None) == Units() and as_units({"power": "PS"}) == Units(power="PS")
+    with pytest.raises(UnitError, match=r"report: unknown quantity 'force'"):
+        as_units({"force": "N"}, "report")
+    with pytest.raises(UnitError, match=r"expected Units\(speed=\.\.\., torque=\.\.\., power=\.\.\.\) or a mapping"):
+        as_units("rpm")
+
+
+def test_pint_default_registry_misreadings_are_named():
+    # regression: 10 * ureg.PS (pint's default registry: petasiemens) gave "is not a power: its unit
+    # has the dimension [current] ** 2 ..." without saying why; the docs promised PS = metric horsepower
+    import pint
+
+    ureg = pint.UnitRegistry()
+    with pytest.raises(UnitError, match=r"pint's default registry reads 'PS' as petasiemens; give the power as a "
+                                        r"string \('10 PS'\) or in 'metric_horsepower'"):
+        to_core(ureg.Quantity(10, "PS"), "power")
+    with pytest.raises(UnitError, match=r"reads 'U' as enzyme_unit; give the speed as a string \('1500 U/min'\)"):
+        to_core(ureg.Quantity(1500, "U/min"), "speed")
+    assert to_core(ureg.Quantity(3, "metric_horsepower"), "power") == pytest.approx(2206.49625, rel=1e-12)

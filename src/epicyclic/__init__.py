@@ -17,9 +17,7 @@ Core units: speed 1/min, torque N·m, power W.
 (1000.0, 0.98556)
 """
 
-import copyreg
-from types import MappingProxyType
-
+from . import pickling  # noqa: F401  (read-only mappings pickle: every result can go to another process)
 from .errors import (
     ContradictionError,
     EfficiencyError,
@@ -37,14 +35,6 @@ from .solver import solve
 
 __version__ = "0.1.0"
 
-
-def _read_only(mapping: dict) -> MappingProxyType:
-    return MappingProxyType(mapping)
-
-
-# Trains, operating points and results keep their mappings read-only (MappingProxyType), which
-# pickle cannot save by itself; they pickle (for Dask, multiprocessing, caches) as read-only copies.
-copyreg.pickle(MappingProxyType, lambda proxy: (_read_only, (dict(proxy),)))
 
 __all__ = [
     "HOUSING",

@@ -29,6 +29,7 @@ __all__ = [
     "NumericalError",
     "NearSingularError",
     "NonFiniteResultError",
+    "closest",
 ]
 
 
@@ -58,12 +59,31 @@ class UnknownShaftError(EpicyclicError, ValueError):
     def __init__(self, name: str, known: Sequence[str], where: str = "operating point"):
         self.name = name
         self.known = tuple(known)
-        close = [k for k in self.known if k.lower() == name.lower()]
-        hint = f" Did you mean {close[0]!r}?" if close else ""
+        close = closest(name, self.known)
+        hint = f" Did you mean {close!r}?" if close else ""
+        what = "unknown shaft" if isinstance(name, str) else f"a shaft is named by a string, got {type(name).__name__}"
         super().__init__(
-            (f"{where}: " if where else "") + f"unknown shaft {name!r:.70}; the train has shafts "
+            (f"{where}: " if where else "") + f"{what} {name!r:.70}; the train has shafts "
             f"{', '.join(repr(k) for k in self.known)}.{hint}"
         )
+
+
+def closest(name: object, known: Sequence[str]) -> str | None:
+    """The name in ``known`` that ``name`` most likely misspells (another case, a typo), or None.
+
+    >>> closest("sunn", ["sun", "ring", "carrier"]), closest("Ring", ["sun", "ring"]), closest("x", ["sun"])
+    ('sun', 'ring', None)
+    """
+    if not isinstance(name, str):
+        return None
+    same = [k for k in known if k.lower() == name.lower()]
+    if same:
+        return same[0]
+    import difflib
+
+    lowered = {k.lower(): k for k in known}
+    close = difflib.get_close_matches(name.lower(), list(lowered), n=1, cutoff=0.6)
+    return lowered[close[0]] if close else None
 
 
 class OperatingPointError(EpicyclicError, ValueError):

@@ -48,7 +48,7 @@ from .model import Brake, Clutch, GearStage, PlanetarySet
 from .results.solution import Solution
 from .results.zero import clean
 from .text import markdown_text
-from .units import Units
+from .units import Units, as_units
 
 __all__ = ["Step", "Explanation", "explain", "LANGUAGES"]
 
@@ -221,8 +221,9 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
     ----------
     solution : Solution
         From :func:`epicyclic.solve`.
-    units : Units, optional
-        Units of the substituted numbers (core units by default).  The
+    units : Units or mapping quantity → unit, optional
+        Units of the substituted numbers (core units by default), e.g. a
+        file's ``f.units`` or ``{"speed": "U/min", "torque": "kp*cm", "power": "PS"}``.  The
         equations of step 3 are homogeneous, so any consistent units serve.
     lang : {"en", "de"}
         Language of the text; ``"de"`` uses the sources' German terms.
@@ -243,9 +244,13 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
     Brandenberger 1952, eqs. (1), (2), (3'), (5), (7), (8), (9).
     """
     if lang not in _T:
-        raise _LanguageError(f"explain: lang must be one of {', '.join(LANGUAGES)}, got {lang!r}.")
+        raise _ArgumentError(f"explain: lang must be one of {', '.join(LANGUAGES)}, got {lang!r}.")
+    if not isinstance(solution, Solution):
+        hint = " (a train file: explain(f.solve(), f.units))" if hasattr(solution, "solve") else ""
+        raise _ArgumentError(f"explain: solution must be a Solution from epicyclic.solve, got a "
+                             f"{type(solution).__name__}{hint}.")
     t = _T[lang]
-    u = units or Units()
+    u = as_units(units, "explain: units")
     n = u.speed_from_core
     m = u.torque_from_core
     p = u.power_from_core
@@ -411,6 +416,6 @@ def _zero(value: float, scale: float) -> str:
     return fmt(clean(value, scale))
 
 
-class _LanguageError(EpicyclicError, ValueError):
-    """An unsupported language for :func:`explain`."""
+class _ArgumentError(EpicyclicError, ValueError):
+    """An argument :func:`explain` cannot use (an unsupported language, no solution)."""
 

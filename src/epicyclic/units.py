@@ -46,6 +46,7 @@ from __future__ import annotations
 import math
 import numbers
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING
@@ -54,6 +55,7 @@ from .errors import EpicyclicError
 from .limits import MAX_DECIMAL_EXPONENT, MAX_UNIT_CHARS, MAX_UNIT_POWER, UNIT_FACTOR_RANGE
 
 if TYPE_CHECKING:  # pragma: no cover
+    import numpy as np
     import pint
 
 __all__ = [
@@ -61,6 +63,8 @@ __all__ = [
     "QUANTITIES",
     "UnitError",
     "Units",
+    "as_units",
+    "to_core_array",
     "from_core",
     "registry",
     "to_core",
@@ -345,7 +349,8 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
         A number (read in ``default_unit``, or the core unit if that is None),
         a string with number and unit, e.g. ``"3 PS"``, ``"1500 U/min"``, or a
         pint quantity of any registry (its unit names are read in ours, so
-        ``rpm`` stays 1/min and ``PS`` is the metric horsepower).
+        ``rpm`` stays 1/min; pint's default registry has already read ``PS`` as
+        petasiemens and ``U`` as an enzyme unit, which is an error that says so).
     quantity : {"speed", "torque", "power"}
     field : str
         Where the value was given; named in error messages.
@@ -374,7 +379,7 @@ def to_core(value: object, quantity: str, *, field: str = "value", default_unit:
     _check_quantity(quantity)
     if isinstance(value, bool):
         raise UnitError(f"{field}: expected a {quantity}, got the boolean {value!r}.", field, quantity, value)
-    if isinstance(value, (int, float)):
+    if isinstance(value, numbers.Real):  # also numpy scalars (np.int64, np.float32) and fractions
         try:
             number = float(value)
         except OverflowError:  # an integer beyond double precision
@@ -414,6 +419,13 @@ def _is_quantity(value: object) -> bool:
     return all(hasattr(value, name) for name in ("to_tuple", "magnitude", "units", "dimensionality"))
 
 
+#: Units that pint's default registry makes of the sources' names (the name is lost once pint has read it).
+_PINT_MISREADINGS = {
+    "petasiemens": ("PS", "give the power as a string ('10 PS') or in 'metric_horsepower'"),
+    "enzyme_unit": ("U", "give the speed as a string ('1500 U/min') or in 'rpm'"),
+}
+
+
 def _from_quantity(value: object, quantity: str, field: str) -> float:
     """A pint quantity of any registry in core units, read unit name by unit name in ours.
 
@@ -421,6 +433,11 @@ def _from_quantity(value: object, quantity: str, field: str) -> float:
     (not 1500·2π as pint's default turns revolutions into radians) and ``3 PS`` is metric horsepower.
     """
     magnitude, units = value.to_tuple()  # type: ignore[attr-defined]
+    for name, _ in units:
+        if name in _PINT_MISREADINGS:
+            written, fix = _PINT_MISREADINGS[name]
+            raise UnitError(f"{field}: {value!r} — pint's default registry reads {written!r} as {name}; {fix}.",
+                            field, quantity, value)
     if isinstance(magnitude, bool) or not isinstance(magnitude, numbers.Real):
         raise UnitError(f"{field}: expected one {quantity}, got the quantity {value!r} "
                         f"(its magnitude is {type(magnitude).__name__}, not a number).", field, quantity, value)
@@ -489,3 +506,83 @@ class Units:
 
     def to_dict(self) -> dict[str, str]:
         return {"speed": self.speed, "torque": self.torque, "power": self.power}
+
+
+def as_units(value: object, field: str = "units") -> Units:
+    """``value`` as :class:`Units`: a Units, None (core units) or a mapping such as ``{"power": "PS"}``.
+
+    Raises
+    ------
+    UnitError
+        Anything else (a bare unit string cannot say which quantity it is for), or a unit that does
+        not fit its quantity.
+
+    Examples
+    --------
+    >>> as_units({"speed": "U/min", "power": "PS"})
+    Units(speed='U/min', torque='N*m', power='PS')
+    """
+    if value is None:
+        return Units()
+    if isinstance(value, Units):
+        return value
+    if isinstance(value, Mapping):
+        unknown = [k for k in value if k not in CORE_UNITS]
+        if unknown:
+            raise UnitError(f"{field}: unknown quantity {unknown[0]!r:.40}; give units for "
+                            f"{', '.join(CORE_UNITS)}, e.g. {{'power': 'PS'}}.", field, "", value)
+        return Units(**{k: str(v) for k, v in value.items()})
+    raise UnitError(f"{field}: expected Units(speed=..., torque=..., power=...) or a mapping such as "
+                    f"{{'speed': 'U/min', 'torque': 'kp*cm', 'power': 'PS'}}, got {type(value).__name__} "
+                    f"{value!r:.40}.", field, "", value)
+
+
+def to_core_array(values: object, quantity: str, *, field: str = "values") -> np.ndarray:
+    """Convert a sequence of values, or one pint quantity holding an array, into core units.
+
+    Each value may be a number (core unit), a string with a unit or a pint quantity; a pint
+    quantity whose magnitude is an array is converted by the factor of its unit (read in this
+    module's registry, as :func:`to_core` does), never stripped of it.  The shape is kept (a
+    single value gives a 0-d array); an error names the flat index of the bad value.
+
+    Parameters
+    ----------
+    values : sequence, array or pint.Quantity
+        The values; a single value is one value.
+    quantity : {"speed", "torque", "power"}
+    field : str
+        Named in error messages, with the index of a bad value.
+
+    Returns
+    -------
+    ndarray of float, the shape of ``values``
+
+    Examples
+    --------
+    >>> to_core_array(["1500 U/min", 3000, "50 1/s"], "speed", field="speeds").tolist()
+    [1500.0, 3000.0, 3000.0]
+    """
+    import numpy as np
+
+    factor = 1.0
+    if _is_quantity(values) and not isinstance(getattr(values, "magnitude", None), numbers.Real):
+        factor = to_core(1.0 * values.units, quantity, field=field)  # type: ignore[attr-defined]
+        values = values.magnitude  # type: ignore[attr-defined]
+    try:
+        array = np.asarray(values)
+        if array.dtype.kind not in "iuf":  # strings, quantities, booleans: one by one below
+            array = np.asarray(values, dtype=object)
+    except (TypeError, ValueError):  # ragged nesting
+        raise UnitError(f"{field}: expected a sequence of {quantity}s, got {type(values).__name__}.",
+                        field, quantity, values) from None
+    shape, array = array.shape, array.ravel()
+    if array.dtype.kind in "iuf":  # plain numbers (in the core unit, or in the quantity's unit): at once
+        core = array.astype(float) * factor
+        bad = np.flatnonzero(~np.isfinite(core))
+        if bad.size:
+            k = int(bad[0])
+            raise UnitError(f"{field}[{k}]: expected a finite {quantity}, got {float(array[k])!r}.", field, quantity,
+                            array[k])
+        return core.reshape(shape)
+    return np.array([to_core(v, quantity, field=f"{field}[{k}]") for k, v in enumerate(array.tolist())],
+                    dtype=float).reshape(shape)

@@ -1,5 +1,7 @@
 """Two-shaft and three-shaft operation of a single set, against closed forms and published formulas."""
 
+import math
+
 import pytest
 
 from epicyclic import Brake, Clutch, GearTrain, OperatingPoint, PlanetarySet, solve
@@ -166,3 +168,18 @@ def test_exactly_at_the_self_locking_limit_is_self_locking():
     sol = solve(train, OperatingPoint(speeds={"ring": 50}, torques={"ring": 1}, drives=["ring"], loads=["carrier"]))
     assert sol.efficiency is None and sol.is_self_locking
     assert "self-locking limit" in sol.self_locking.message
+
+
+def test_three_shaft_speeds_take_units():
+    # regression: sun="1000 U/min" was a bare ValueError (float('1000 U/min')); a file takes it
+    import pint
+
+    from epicyclic.units import UnitError
+
+    s = PlanetarySet.simple("P", sun="s", ring="r", carrier="c", z_sun=30, z_planet=24, z_ring=78)
+    plain = three_shaft_speeds(s, sun=1000, carrier=300)
+    assert three_shaft_speeds(s, sun="1000 U/min", carrier=pint.UnitRegistry().Quantity(300, "rpm")) == plain
+    in_rad_s = three_shaft_speeds(s, sun=f"{1000 * math.pi / 30!r} rad/s", carrier=300)
+    assert in_rad_s == pytest.approx(plain, rel=1e-12)
+    with pytest.raises(UnitError, match="three_shaft_speeds: sun: '3 kW' is not a speed"):
+        three_shaft_speeds(s, sun="3 kW", carrier=300)

@@ -182,3 +182,14 @@ def test_stepped_and_double_sets():
         SetGeometry.create(double, module=2, x_planet=(0.1,))
     with pytest.raises(GeometryError, match="has no tooth counts"):
         SetGeometry.create(PlanetarySet("R", "s", "r", "c", -2.0), module=2)
+
+
+def test_a_set_instead_of_its_geometry_is_named():
+    # regression: check_fitting(PlanetarySet) raised AttributeError 'planetary_set'
+    from epicyclic import PlanetarySet
+    from epicyclic.geometry import GeometryError, check_fitting
+
+    p = PlanetarySet.simple("P", sun="s", ring="r", carrier="c", z_sun=30, z_planet=24, z_ring=78)
+    with pytest.raises(GeometryError, match=r"check_fitting: geometry must be a SetGeometry, got a PlanetarySet; "
+                                            r"make one with SetGeometry\.create"):
+        check_fitting(p)

@@ -161,3 +161,20 @@ def test_default_load_sharing_and_errors():
         planetary_forces(solution, "P", other)
     with pytest.raises(GeometryError, match="pitch_diameter must be > 0"):
         mesh_forces(1.0, 0.0, geom.sun_mesh)
+
+
+def test_arguments_in_the_wrong_place_are_named():
+    # regression: planetary_forces(sol, geometry, "P") raised "unhashable type: 'mappingproxy'",
+    # planetary_forces(sol, "P", planetary_set) an AttributeError
+    from epicyclic import Brake, GearTrain, OperatingPoint, PlanetarySet, solve
+    from epicyclic.geometry import GeometryError, SetGeometry, planetary_forces
+
+    p = PlanetarySet.simple("P", sun="in", ring="ring", carrier="out", z_sun=30, z_planet=24, z_ring=78)
+    g = SetGeometry.create(p, module=2.0)
+    sol = solve(GearTrain([p, Brake("B", "ring")]),
+                OperatingPoint(speeds={"in": 3000}, torques={"in": 100}, drives=["in"], loads=["out"]))
+    for args, match in [((sol, g, "P"), "set_name must be a str, got a SetGeometry"),
+                        ((sol, "P", p), "geometry must be a SetGeometry, got a PlanetarySet"),
+                        ((g, "P", sol), "solution must be a Solution, got a SetGeometry")]:
+        with pytest.raises(GeometryError, match=f"planetary_forces: {match}"):
+            planetary_forces(*args)

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from epicyclic import Brake, GearStage, GearTrain, OperatingPoint, PlanetarySet, solve
+from epicyclic import Brake, EpicyclicError, GearStage, GearTrain, OperatingPoint, PlanetarySet, solve
 from epicyclic.demo import brandenberger_1952
 from epicyclic.geometry import BasicRack, SetGeometry, StageGeometry
 from epicyclic.io import load_train_file
@@ -184,3 +184,27 @@ def test_transmission_gears_use_the_files_loss_models():
     batch = solve_gears(t, input_speed=[2000.0], input_torque=[200.0], gears=["3"])
     assert batch.efficiency("3")[0] == pytest.approx(result.drive.efficiency, abs=1e-12)
     assert 0.98 < result.drive.efficiency < 1.0
+
+
+def test_efficiency_map_takes_units_and_is_read_only():
+    # regressions: a pint array in rad/s was stripped of its unit (UnitStrippedWarning) and read as
+    # 1/min, a silently wrong map; "1000 U/min" was a bare ValueError; map.efficiency[0, 0] = 5 and
+    # map.losses["mesh"] = ... changed a frozen result
+    import pint
+
+    ureg = pint.UnitRegistry()
+    f = load_train_file("examples/zf_8hp70_geometry.toml")
+    plain = efficiency_map(f, [1000.0, 2000.0], [98.0665, 200.0], gear="3")
+    rad_s = np.array([1000.0, 2000.0]) * np.pi / 30
+    for speeds, torques in ((["1000 U/min", "2000 rpm"], ["10 kp*m", "200 N*m"]),
+                            (rad_s * ureg("rad/s"), np.array([0.0980665, 0.2]) * ureg("kN*m"))):
+        emap = efficiency_map(f, speeds, torques, gear="3")
+        assert emap.speeds == pytest.approx(plain.speeds, rel=1e-12)
+        assert emap.torques == pytest.approx([98.0665, 200.0], rel=1e-12)
+        assert emap.efficiency == pytest.approx(plain.efficiency, rel=1e-12)
+    with pytest.raises(EpicyclicError, match=r"efficiency_map: speeds\[1\]: '2 kW' is not a speed"):
+        efficiency_map(f, ["1000 rpm", "2 kW"], [100.0], gear="3")
+    with pytest.raises(ValueError, match="read-only"):
+        plain.efficiency[0, 0] = 5.0
+    with pytest.raises(TypeError):
+        plain.losses["mesh"] = plain.loss

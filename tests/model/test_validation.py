@@ -59,6 +59,14 @@ def simple(**kw):
         (lambda: OperatingPoint(speeds={"a": [1500]}), UnitError, r"operating_point\.speeds\.a: expected a number"),
         (lambda: OperatingPoint(drives=["a"], loads=["a"]), OperatingPointError, r"both as drive and as load"),
         (lambda: OperatingPoint(torques={"a": 1}, powers={"a": 1}), OperatingPointError, r"not both"),
+        # regressions (Python API pass): each was a bare TypeError/ValueError from deep inside, or silent
+        (lambda: GearTrain(Brake("B", "a")), ModelError, r"elements must be a list of elements, got one Brake 'B'"),
+        (lambda: GearTrain(5), ModelError, r"elements must be a list, got int 5"),
+        (lambda: GearTrain([Brake("B", "a")], shafts=3), ModelError, r"shafts must be a list, got int 3"),
+        (lambda: OperatingPoint(speeds="sun"), OperatingPointError, r"speeds must be a mapping shaft → value, e\.g\."),
+        (lambda: OperatingPoint(speeds=["ab"]), OperatingPointError, r"speeds must be a mapping"),
+        (lambda: OperatingPoint(drives=["a", 3]), OperatingPointError, r"drives must be shaft names.*got 3"),
+        (lambda: OperatingPoint(loads=None), OperatingPointError, r"loads must be shaft names.*got None"),
     ],
 )
 def test_bad_model_input(make, error, match):
@@ -105,3 +113,36 @@ def test_mesh_efficiencies_combine_by_product():
     # Brandenberger 1952: the set's efficiency is the product η1·η2 of its two meshes.
     s = simple(mesh_efficiencies=(0.99, 0.98))
     assert s.stationary_efficiency == pytest.approx(0.99 * 0.98)
+
+
+def test_one_extra_shaft_is_a_name_not_its_letters():
+    assert GearTrain([Brake("B", "a")], shafts="spare").shafts == ("spare", "a", "housing")
+
+
+def test_an_operating_point_hashes_by_value():
+    # regression: hash() raised "unhashable type: 'mappingproxy'" (a frozen value as a cache key)
+    a = OperatingPoint(speeds={"in": 3000}, powers={"in": "10 kW"}, drives=["in"], loads="out")
+    b = OperatingPoint(speeds={"in": "3000 rpm"}, powers={"in": 10_000}, drives="in", loads=["out"])
+    assert a == b and hash(a) == hash(b) and len({a, b}) == 1
+    assert hash(a) != hash(OperatingPoint(speeds={"in": 3001}, powers={"in": 10_000}, drives="in", loads="out"))
+
+
+@pytest.mark.parametrize(("name", "hint"), [("sunn", "'sun'"), ("Ring", "'ring'"), ("carier", "'carrier'")])
+def test_an_unknown_shaft_suggests_the_close_name(name, hint):
+    from epicyclic import UnknownShaftError, solve
+
+    train = GearTrain([simple(sun="sun", ring="ring", carrier="carrier"), Brake("B", "ring")])
+    op = OperatingPoint(speeds={name: 3000}, torques={"sun": 10}, drives=["sun"], loads=["carrier"])
+    with pytest.raises(UnknownShaftError, match=f"unknown shaft '{name}'.*Did you mean {hint}"):
+        solve(train, op)
+
+
+def test_a_shaft_that_is_no_string_is_named_as_such():
+    from epicyclic import UnknownShaftError, solve
+
+    train = GearTrain([simple(sun="sun", ring="ring", carrier="carrier"), Brake("B", "ring")])
+    sol = solve(train, OperatingPoint(speeds={"sun": 3000}, torques={"sun": 10}, drives=["sun"], loads=["carrier"]))
+    with pytest.raises(UnknownShaftError, match="a shaft is named by a string, got int 1"):  # was AttributeError
+        sol.speed(1)
+    with pytest.raises(ModelError, match="no element named 'p1'.*Did you mean 'P1'"):
+        train.element("p1")

@@ -5,7 +5,7 @@ import re
 
 import pytest
 
-from epicyclic import Brake, Clutch, GearTrain, OperatingPoint, PlanetarySet, UnknownShaftError, solve
+from epicyclic import Brake, Clutch, EpicyclicError, GearTrain, OperatingPoint, PlanetarySet, UnknownShaftError, solve
 from epicyclic.demo import brandenberger_1952
 
 
@@ -123,3 +123,24 @@ def test_trains_points_and_solutions_pickle_without_their_process_bound_hash():
     assert op_copy == op and isinstance(op_copy.speeds, MappingProxyType)
     solved = pickle.loads(pickle.dumps(solve(train, op)))
     assert isinstance(solved.shafts, MappingProxyType) and solved.to_dict() == solve(copy, op_copy).to_dict()
+
+
+def test_table_in_the_sources_units():
+    # regression: Solution.table() printed only 1/min, N*m, W; Brandenberger's numbers (3 PS at 1500 U/min,
+    # M_An' = 143.24 cm kg, N1' = 2.55 PS; Brandenberger 1952, text to Bild 10) were out of reach in Python
+    from epicyclic import solve
+    from epicyclic.demo import brandenberger_1952
+    from epicyclic.units import Units
+
+    sol = solve(*brandenberger_1952())
+    text = sol.table({"speed": "U/min", "torque": "kp*cm", "power": "PS"})
+    assert "speed [U/min]" in text and "torque [kp*cm]" in text and "loss [PS]" in text
+    row = next(line.split() for line in text.splitlines() if line.startswith("II "))
+    assert row[1:4] == ["1500", "143.239", "3"]                       # U/min, kp*cm, PS
+    assert "output power           2.54813 PS" in text
+    assert sol.table(Units(power="PS")) == sol.table({"power": "PS"})
+    assert sol.table() == sol.table(Units())                            # the core units by default
+    with pytest.raises(EpicyclicError, match=r"units: unknown quantity 'speeds'"):
+        sol.table({"speeds": "rpm"})
+    with pytest.raises(EpicyclicError, match=r"units\.power: 'U/min' is not a power"):
+        sol.table({"power": "U/min"})

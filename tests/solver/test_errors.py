@@ -118,3 +118,21 @@ def test_redundant_locking_is_a_warning_not_an_error():
     assert sol.torque("ring") == pytest.approx(-10)
     assert sol.efficiency == pytest.approx(1.0)
     assert any("statically indeterminate" in w for w in sol.warnings)
+
+
+@pytest.mark.parametrize("train_arg, op_arg, error, words", [
+    ("dict", "op", "ModelError", "first argument must be a GearTrain, got dict"),
+    ("list", "op", "ModelError", "got list"),
+    ("train", "dict", "OperatingPointError", "must be an OperatingPoint, got dict"),
+    ("train", "None", "OperatingPointError", "got NoneType"),
+])
+def test_wrong_argument_types_are_named(train_arg, op_arg, error, words):
+    """solve(train, dict) and the like: an error naming the argument and how to build it, not an
+    AttributeError from inside the solver."""
+    import epicyclic
+
+    train = single_set()
+    op = OperatingPoint(speeds={"sun": 1000}, torques={"sun": 10}, drives=["sun"], loads=["carrier"])
+    args = {"train": train, "op": op, "dict": {"speeds": {"sun": 1000}}, "list": [train], "None": None}
+    with pytest.raises(getattr(epicyclic.errors, error), match=words):
+        solve(args[train_arg], args[op_arg])

@@ -90,7 +90,7 @@ def test_train_type_and_unknown_gear():
 ])
 def test_analyze_bad_levels(kwargs, match):
     t = Transmission(_two_speed(), {"1": ["B"]}, "in", "out")
-    with pytest.raises(ModelError, match=match):
+    with pytest.raises(EpicyclicError, match=match):  # nan: a UnitError from the unit converter
         t.analyze("1", **kwargs)
 
 
@@ -137,3 +137,45 @@ def test_results_are_level_independent(speed, torque):
     assert b.efficiency_drive == pytest.approx(a.efficiency_drive, rel=1e-9)
     for name, value in a.element_torques.items():
         assert b.element_torques[name] == pytest.approx(value, rel=1e-9, abs=1e-12)
+
+
+def test_input_speed_and_torque_take_units_like_a_file():
+    # regression: "2000 U/min" or "15 kp*m" raised a bare TypeError from numpy, a pint speed a
+    # DimensionalityError in speeds(); the file reader takes them, so the Python API does too
+    import pint
+
+    ureg = pint.UnitRegistry()
+    t = build("simpson_c4", stationary_efficiency=0.97)
+    plain = t.analyze("1", input_speed=2000.0, input_torque=9.80665 * 15)
+    for speed, torque in (("2000 U/min", "15 kp*m"), (2000 * ureg.rpm, 15 * ureg("kgf*m")),
+                          (f"{2000 * 3.141592653589793 / 30!r} rad/s", "147.09975 N*m")):
+        result = t.analyze("1", input_speed=speed, input_torque=torque)
+        assert result.drive.speed("in") == pytest.approx(2000.0, rel=1e-12)
+        assert result.drive.torque("in") == pytest.approx(plain.drive.torque("in"), rel=1e-12)
+        assert t.speeds("1", input_speed=speed)["in"] == pytest.approx(2000.0, rel=1e-12)
+    assert t.analyze_all(input_speed="1500 rpm")["2"].drive.speed("in") == 1500.0
+
+
+@pytest.mark.parametrize(("kwargs", "match"), [
+    ({"input_speed": "3000 N"}, r"input_speed: '3000 N' is not a speed"),
+    ({"input_torque": "10 kW"}, r"input_torque: '10 kW' is not a torque"),
+    ({"input_speed": "fast"}, r"input_speed: cannot read 'fast'"),
+])
+def test_a_wrong_unit_names_the_argument(kwargs, match):
+    with pytest.raises(EpicyclicError, match=match):
+        build("simpson_c4").analyze("1", **kwargs)
+
+
+def test_an_unknown_gear_is_named_with_the_gears_also_as_a_key_error():
+    # regression: analysis["9"] raised a bare KeyError('9'); a number for a gear name was "no gear 3"
+    from epicyclic.transmission import UnknownGearError
+
+    t = build("simpson_c4")
+    analysis = t.analyze_all()
+    with pytest.raises(UnknownGearError, match=r"no gear '9'; gears are '1', '2', '3', 'R'\.$") as info:
+        analysis["9"]
+    assert isinstance(info.value, KeyError) and isinstance(info.value, EpicyclicError)
+    with pytest.raises(KeyError, match=r"no gear 'r'.*Did you mean 'R'\?"):
+        analysis["r"]
+    with pytest.raises(ShiftScheduleError, match=r"no gear 3 \(gear names are strings\)"):
+        t.analyze(3)

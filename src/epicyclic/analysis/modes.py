@@ -26,6 +26,7 @@ from ..model.train import GearTrain
 from ..solver.assembly import matrices
 from ..solver.kinematics import solve_speeds
 from ..solver.solve import solve
+from ..units import to_core
 
 __all__ = ["TwoShaftMode", "ModeTable", "two_shaft_modes", "three_shaft_speeds", "QUEITSCH_TAFEL_1"]
 
@@ -216,8 +217,28 @@ def two_shaft_modes(
     return ModeTable(planetary.stationary_ratio, planetary.stationary_efficiency, tuple(modes))
 
 
-def three_shaft_speeds(planetary: PlanetarySet, **speeds: float) -> dict[str, float]:
+def three_shaft_speeds(planetary: PlanetarySet, **speeds: float | str) -> dict[str, float]:
     """Three-shaft operation: give two of ``sun``, ``ring``, ``carrier`` (1/min), get all.
+
+    Parameters
+    ----------
+    planetary : PlanetarySet
+        The set (its tooth counts give the planet speed).
+    **speeds : float, str or pint.Quantity
+        Exactly two of ``sun``, ``ring``, ``carrier`` (the members, not the shaft names), in
+        1/min or with a unit (``sun="1500 U/min"``).
+
+    Returns
+    -------
+    dict
+        ``sun``, ``ring``, ``carrier`` (and ``planet``, ``planet_relative``) in 1/min.
+
+    Raises
+    ------
+    ModelError
+        Not exactly two known members given.
+    UnitError
+        A speed that cannot be read or is no speed.
 
     The result also holds ``planet`` (absolute) and ``planet_relative`` (to
     the carrier) when the set has tooth counts (the first planet gear).
@@ -243,7 +264,8 @@ def three_shaft_speeds(planetary: PlanetarySet, **speeds: float) -> dict[str, fl
         )
     local = _as_set(planetary, None)
     train = GearTrain([local], name="three-shaft operation")
-    solved = solve_speeds(matrices(train, ()), {k: float(v) for k, v in speeds.items()})
+    given = {k: to_core(v, "speed", field=f"three_shaft_speeds: {k}") for k, v in speeds.items()}
+    solved = solve_speeds(matrices(train, ()), given)
     result = {r: solved[r] for r in roles}
     if local.teeth is not None:
         relative = local.teeth.planet_factors[0] * (result["sun"] - result["carrier"])

@@ -50,7 +50,7 @@ from .checks import (
     NeighbourCheck,
     UndercutCheck,
 )
-from .errors import GeometryError
+from .errors import GeometryError, expect_type
 from .gear import MeshGeometry
 from .involute import inv, profile_shift_sum
 from .set_geometry import SetGeometry
@@ -517,6 +517,36 @@ def check_fitting(
 ) -> FittingReport:
     """Run every fitting condition (number of planets from the set unless given).
 
+    Parameters
+    ----------
+    geometry : SetGeometry
+        The set's gears (:meth:`SetGeometry.create`).
+    planets : int, optional
+        Number of planets; default the set's.
+    allow_unequal : bool, default False
+        Accept unequal planet spacing where equal spacing cannot be assembled.
+    min_clearance : float, default 0
+        Smallest tip clearance between neighbouring planets, mm.
+    undercut : {"theoretical", "practical"}
+        Undercut limit z_min = 2/sin²α (theoretical) or 5/6 of it (practical).
+    tolerance : float, default 1e-3
+        Allowed difference of the centre distances for coaxiality, mm.
+
+    Returns
+    -------
+    FittingReport
+        Every check with its numbers, ``passed``, ``table()``, ``raise_if_failed()``.
+
+    Raises
+    ------
+    GeometryError
+        ``geometry`` is no SetGeometry, or ``planets`` is no whole number ≥ 1.
+
+    References
+    ----------
+    SDP/SI, *Elements of Metric Gear Technology* (D785), section 13 (coaxial, assembly and
+    neighbouring conditions); ISO 21771 (undercut, interference).
+
     Examples
     --------
     >>> from epicyclic import PlanetarySet
@@ -525,6 +555,7 @@ def check_fitting(
     >>> report.passed, [c.condition for c in report.checks][:3]
     (True, ['coaxiality', 'assembly', 'neighbours'])
     """
+    expect_type(geometry, SetGeometry, "check_fitting", "geometry", "make one with SetGeometry.create(set, module=...)")
     n = geometry.planetary_set.planets if planets is None else planets
     assembly = check_assembly(geometry, n, allow_unequal=allow_unequal)
     angles = assembly.angles if (assembly.passed and not assembly.equally_spaced) else None

@@ -37,7 +37,7 @@ from types import MappingProxyType
 from typing import Any
 
 from ._render import html_table, text_table
-from .errors import GeometryError
+from .errors import GeometryError, expect_type
 from .gear import MeshGeometry
 from .set_geometry import SetGeometry
 
@@ -330,6 +330,11 @@ def planetary_forces(
     ----------
     Queitsch part I, eqs. (23)–(26), (30) (F_t = 2000 M/d per planet).
     """
+    if not (hasattr(solution, "elements") and hasattr(solution, "train")):
+        raise GeometryError(f"planetary_forces: solution must be a Solution, got a {type(solution).__name__}; "
+                            "give solve(train, operating_point) first.")
+    expect_type(set_name, str, "planetary_forces", "set_name", "give the name of the set in the train, e.g. 'P'")
+    expect_type(geometry, SetGeometry, "planetary_forces", "geometry", "make one with SetGeometry.create(set, module=...)")
     try:
         state = solution.elements[set_name]
     except KeyError:

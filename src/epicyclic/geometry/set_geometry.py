@@ -184,7 +184,50 @@ class SetGeometry:
         face_width: float | Mapping[str, float] | None = None,
         load_sharing: float | None = None,
     ) -> SetGeometry:
-        """Build the geometry from plain numbers (module and face width in mm, angles in degrees)."""
+        """Build the geometry from plain numbers (module and face width in mm, angles in degrees).
+
+        Parameters
+        ----------
+        planetary_set : PlanetarySet
+            A set made from tooth counts.
+        module : float
+            Normal module m_n, mm (0.001 … 100).
+        pressure_angle, helix_angle : float
+            α_n in (0, 45) and β in [0, 45) degrees of the basic rack (ISO 53: 20, spur: 0).
+        addendum, dedendum : float
+            h_a* and h_f* of the basic rack (1.0 and 1.25).
+        x_sun, x_planet, x_ring : float
+            Profile-shift coefficients; ``x_planet`` one value per planet gear (a
+            double or stepped set has two).
+        ring_module : float, optional
+            Stepped sets: module of the second mesh, mm.
+        tip_shortening : bool, default True
+            Shorten the tips of external pairs to keep the tip clearance.
+        face_width : float or mapping gear → float, optional
+            Face width b, mm (needed for mesh losses).
+        load_sharing : float, optional
+            K_γ ≥ 1 for the design forces (default by number of planets).
+
+        Returns
+        -------
+        SetGeometry
+
+        Raises
+        ------
+        GeometryError
+            A value out of range, a set without tooth counts, profile shifts that do not fit.
+
+        References
+        ----------
+        ISO 21771:2007 (cylindrical gear geometry); ISO 53 (basic rack).
+
+        Examples
+        --------
+        >>> from epicyclic import PlanetarySet
+        >>> p = PlanetarySet.simple("P", sun="s", ring="r", carrier="c", z_sun=39, z_planet=49, z_ring=137)
+        >>> SetGeometry.create(p, module=2.0)
+        SetGeometry(simple 'P', m_n=2.0, sun-planet a_w=88.000, planet-ring a_w=88.000)
+        """
         rack = BasicRack(module, pressure_angle, helix_angle, addendum, dedendum)
         return cls(planetary_set, rack, x_sun, x_ring, x_planet, ring_module, tip_shortening,  # type: ignore[arg-type]
                    face_width, load_sharing)

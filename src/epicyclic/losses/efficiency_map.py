@@ -19,12 +19,14 @@ import json
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
 from ..errors import ModelError
 from ..model.train import GearTrain
+from ..units import to_core_array
 from .element import SOURCES, ElementLosses
 from .solve import solve_batch_with_losses
 
@@ -74,6 +76,12 @@ class EfficiencyMap:
     losses: Mapping[str, np.ndarray]
     self_locking: np.ndarray
     ratio: float
+
+    def __post_init__(self) -> None:
+        # a frozen result: read-only views of the arrays, a read-only mapping of the losses
+        for name in ("speeds", "torques", "efficiency", "input_power", "output_power", "loss", "self_locking"):
+            object.__setattr__(self, name, _read_only(getattr(self, name)))
+        object.__setattr__(self, "losses", MappingProxyType({k: _read_only(v) for k, v in self.losses.items()}))
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -195,8 +203,14 @@ class EfficiencyMap:
         return path
 
 
-def _axis(values, name: str) -> np.ndarray:
-    arr = np.asarray(values, dtype=float).ravel()
+def _read_only(values) -> np.ndarray:
+    view = np.asarray(values).view()
+    view.flags.writeable = False
+    return view
+
+
+def _axis(values, name: str, quantity: str) -> np.ndarray:
+    arr = to_core_array(values, quantity, field=f"efficiency_map: {name}").ravel()
     if arr.size == 0 or not np.all(np.isfinite(arr)):
         raise ModelError(f"efficiency_map: {name} must be finite numbers, got {values!r}.")
     if np.any(arr <= 0):
@@ -233,9 +247,11 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
         drive and load are used), a :class:`~epicyclic.transmission.Transmission`,
         or a train with ``input`` and ``output`` given.
     speeds : array_like
-        Input speeds, 1/min (> 0).
+        Input speeds, 1/min (> 0); values may carry units (``"1500 U/min"``), or give one pint
+        quantity holding an array (its unit is converted, never stripped).
     torques : array_like
-        Input torques, N·m (> 0; in coast the output is driven with torque × |ratio|).
+        Input torques, N·m (> 0; in coast the output is driven with torque × |ratio|); units as
+        for ``speeds`` (``"15 kp*m"``).
     gear : str, optional
         Gear of the transmission's schedule (default: the file's operating-point gear).
     losses : mapping element → ElementLosses, optional
@@ -298,8 +314,8 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     for shaft in (input, output):
         base.check_shaft(shaft, "efficiency_map")
     _check_one_freedom(base, input, output)
-    n = _axis(speeds, "speeds")
-    t = _axis(torques, "torques")
+    n = _axis(speeds, "speeds", "speed")
+    t = _axis(torques, "torques", "torque")
     speed_grid, torque_grid = np.meshgrid(n, t)
     models = dict(losses or {})
     ratio_sol = solve_batch_with_losses(base, {}, speeds={input: np.array([1000.0])}, torques={input: np.array([1.0])},

@@ -22,11 +22,19 @@ __all__ = ["OperatingPoint"]
 
 #: The quantity of each group of values (for unit conversion).
 _QUANTITIES = {"speeds": "speed", "torques": "torque", "powers": "power"}
+#: A value of each group, for messages.
+_EXAMPLES = {"speeds": "3000", "torques": "'100 N*m'", "powers": "'10 kW'"}
 
 
 def _frozen_values(values: Mapping[str, object] | None, field_name: str) -> Mapping[str, float]:
+    if values is None:
+        values = {}
+    if not isinstance(values, Mapping):
+        raise OperatingPointError(
+            f"operating point: {field_name} must be a mapping shaft → value, e.g. {field_name}={{'sun': "
+            f"{_EXAMPLES[field_name]}}}, got {type(values).__name__} {values!r:.40}.", group=field_name)
     checked: dict[str, float] = {}
-    for shaft, value in dict(values or {}).items():
+    for shaft, value in values.items():
         if not isinstance(shaft, str):
             raise OperatingPointError(f"operating point: {field_name} keys must be shaft names, got {shaft!r}.",
                                       group=field_name)
@@ -111,7 +119,16 @@ class OperatingPoint:
             value = getattr(self, name)
             if isinstance(value, str):
                 value = (value,)
-            object.__setattr__(self, name, tuple(value))
+            try:
+                value = tuple(value)
+            except TypeError:
+                value = (value,)
+            for shaft in value:
+                if not isinstance(shaft, str):
+                    raise OperatingPointError(
+                        f"operating point: {name} must be shaft names, e.g. {name}=['sun'], got {shaft!r:.40}.",
+                        group=name)
+            object.__setattr__(self, name, value)
         both = set(self.drives) & set(self.loads)
         if both:
             raise OperatingPointError(
@@ -124,6 +141,11 @@ class OperatingPoint:
                 f"operating point: give a torque or a power at shaft(s) {', '.join(sorted(twice))}, not both.",
                 group="powers", shafts=sorted(twice),
             )
+
+    def __hash__(self) -> int:
+        # the generated hash would hash the read-only mappings, which are unhashable
+        return hash((*(frozenset(getattr(self, g).items()) for g in _QUANTITIES),
+                     self.drives, self.loads, self.connected))
 
     @cached_property
     def external_shafts(self) -> tuple[str, ...]:

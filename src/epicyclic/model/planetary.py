@@ -182,12 +182,49 @@ class PlanetarySet:
     ) -> PlanetarySet:
         """A simple sun–planet–ring (minus) set from tooth counts: i0 = -z_ring/z_sun.
 
-        ``mesh_efficiencies`` (sun–planet, planet–ring) are combined by product
-        into the stationary efficiency.
+        Parameters
+        ----------
+        name : str
+            Element name (unique in the train).
+        sun, ring, carrier : str
+            The shafts the sun, the ring and the carrier sit on.
+        z_sun, z_planet, z_ring : int
+            Tooth counts (3 … 1000).  The ring must be coaxial with the sun:
+            z_ring = z_sun + 2·z_planet, within ±2 teeth (profile shift).
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (sun–planet, planet–ring), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry
+            (equal spacing needs (z_sun + z_ring)/planets whole, checked by
+            :func:`~epicyclic.geometry.check_fitting`).
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, a ring not larger than
+            the sun, or counts that cannot mesh coaxially (the message says which
+            count to change).
+        EfficiencyError
+            An efficiency outside (0, 1].
 
         References
         ----------
         tec-science, "Willis-Gleichung", Standübersetzung i_0; Queitsch, eq. 4.
+
+        Examples
+        --------
+        >>> p = PlanetarySet.simple("P", sun="in", ring="ring", carrier="out",
+        ...                         z_sun=30, z_planet=24, z_ring=78, stationary_efficiency=0.98)
+        >>> p.stationary_ratio, p.planets
+        (-2.6, 3)
         """
         owner = f"planetary set {name!r}"
         zs = check_teeth(z_sun, "z_sun", owner)

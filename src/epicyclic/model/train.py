@@ -16,7 +16,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Union
 
-from ..errors import ModelError, UnknownShaftError
+from ..errors import ModelError, UnknownShaftError, closest
 from ..limits import MAX_ELEMENTS, MAX_SHAFTS, MAX_TITLE_CHARS
 from .elements import HOUSING, Brake, Clutch, GearStage
 from .planetary import PlanetarySet, check_name
@@ -25,6 +25,18 @@ __all__ = ["GearTrain", "Element", "ShiftElement"]
 
 Element = Union[PlanetarySet, GearStage, Clutch, Brake]
 ShiftElement = Union[Clutch, Brake]
+
+
+def _sequence(value: object, field_name: str, example: str) -> tuple:
+    """``value`` as a tuple if it is an iterable of items (not one element), else a ModelError naming the field."""
+    if isinstance(value, (PlanetarySet, GearStage, Clutch, Brake)):
+        raise ModelError(f"gear train: {field_name} must be a list of elements, got one {type(value).__name__} "
+                         f"{value.name!r}; put it in a list: {example}.")
+    try:
+        return tuple(value)  # type: ignore[arg-type]
+    except TypeError:
+        raise ModelError(f"gear train: {field_name} must be a list, got {type(value).__name__} {value!r:.40}; "
+                         f"e.g. {example}.") from None
 
 
 @dataclass(frozen=True)
@@ -66,7 +78,7 @@ class GearTrain:
         return {k: v for k, v in self.__dict__.items() if k != "_hash"}
 
     def __post_init__(self) -> None:
-        elements = tuple(self.elements)
+        elements = _sequence(self.elements, "elements", "GearTrain([PlanetarySet(...), Brake(...)])")
         if not elements:
             raise ModelError("gear train: elements must contain at least one element, got none.")
         if len(elements) > MAX_ELEMENTS:
@@ -85,7 +97,8 @@ class GearTrain:
                 raise ModelError(f"gear train: element name {element.name!r} is used twice; names must be unique.")
             names.add(element.name)
         ordered: list[str] = []
-        for shaft in tuple(self.shafts):
+        extra = (self.shafts,) if isinstance(self.shafts, str) else _sequence(self.shafts, "shafts", "shafts=['out']")
+        for shaft in extra:
             check_name(shaft, "shafts", "gear train")
             if shaft not in ordered:
                 ordered.append(shaft)
@@ -105,9 +118,11 @@ class GearTrain:
         for element in self.elements:
             if element.name == name:
                 return element
+        names = [e.name for e in self.elements]
+        close = closest(name, names)
         raise ModelError(
-            f"gear train: no element named {name!r}; elements are "
-            f"{', '.join(repr(e.name) for e in self.elements)}."
+            f"gear train: no element named {name!r:.70}; elements are {', '.join(repr(n) for n in names)}."
+            + (f" Did you mean {close!r}?" if close else "")
         )
 
     def check_shaft(self, name: str, where: str = "operating point") -> str:

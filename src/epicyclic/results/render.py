@@ -1,7 +1,8 @@
 """Render a Solution as plain data, a text table or an HTML table.
 
-Rendering never computes: it reads the result object.  Units are the core
-units (1/min, N·m, W); the I/O layer converts for other units.  This module
+Rendering never computes: it reads the result object.  Numbers are in the core
+units (1/min, N·m, W) unless a table is asked for in other units (the sources'
+U/min, kp·cm, PS: :class:`epicyclic.units.Units`).  This module
 knows the result only by its attributes (it imports nothing from
 :mod:`epicyclic.results.solution`, which imports it).
 
@@ -16,6 +17,8 @@ from __future__ import annotations
 
 import html
 from typing import Any
+
+from ..units import Units, as_units
 
 __all__ = ["solution_to_dict", "solution_table", "solution_html", "SCHEMA_VERSION"]
 
@@ -84,39 +87,44 @@ def _num(value: float | None, digits: int = 6) -> str:
     return "—" if value is None else f"{value:.{digits}g}"
 
 
-def _shaft_rows(sol: Any) -> list[list[str]]:
-    return [[s.name, _num(s.speed), _num(s.torque), _num(s.power), s.role] for s in sol.shafts.values()]
+def _shaft_rows(sol: Any, u: Units) -> list[list[str]]:
+    return [[s.name, _num(u.speed_from_core(s.speed)), _num(u.torque_from_core(s.torque)),
+             _num(u.power_from_core(s.power)), s.role] for s in sol.shafts.values()]
 
 
-def _element_rows(sol: Any) -> list[list[str]]:
+def _element_rows(sol: Any, u: Units) -> list[list[str]]:
     rows = []
     for e in sol.elements.values():
-        torques = " / ".join(f"{p} {_num(t, 5)}" for p, t in e.torques.items())
-        rows.append([e.name, e.kind, e.status, torques, _num(e.rolling_power), _num(e.coupling_power), _num(e.loss)])
+        torques = " / ".join(f"{p} {_num(u.torque_from_core(t), 5)}" for p, t in e.torques.items())
+        rows.append([e.name, e.kind, e.status, torques, _num(u.power_from_core(e.rolling_power)),
+                     _num(u.power_from_core(e.coupling_power)), _num(u.power_from_core(e.loss))])
     return rows
 
 
-def _summary(sol: Any) -> list[str]:
+def _summary(sol: Any, u: Units) -> list[str]:
     """Summary lines, labels aligned: powers, loss, efficiency, circulation, warnings."""
-    pairs = [("input power", f"{sol.input_power:.6g} W"), ("output power", f"{sol.output_power:.6g} W"),
-             ("total loss", f"{sol.loss:.6g} W")]
+    power = u.power_from_core
+    pairs = [("input power", f"{power(sol.input_power):.6g} {u.power}"),
+             ("output power", f"{power(sol.output_power):.6g} {u.power}"),
+             ("total loss", f"{power(sol.loss):.6g} {u.power}")]
     if sol.self_locking is not None:
         pairs += [("efficiency", "— (self-locking)"), ("self-locking", sol.self_locking.message)]
     else:
         pairs.append(("efficiency", _num(sol.efficiency)))
-    pairs += _circulation_pairs(sol.circulation)
+    pairs += _circulation_pairs(sol.circulation, u)
     pairs += [("warning", w) for w in sol.warnings]
     width = max(len(label) for label, _ in pairs)
     return [f"{label.ljust(width)}  {value}" for label, value in pairs]
 
 
-def _circulation_pairs(circulation: Any) -> list[tuple[str, str]]:
+def _circulation_pairs(circulation: Any, u: Units) -> list[tuple[str, str]]:
     if circulation.indeterminate:
         return [("circulating power", "— (" + circulation.describe() + ")")]
     if circulation.loops:
-        pairs = [("circulating power", f"{_num(circulation.power)} W"
+        pairs = [("circulating power", f"{_num(u.convert(circulation.power, 'power'))} {u.power}"
                   + (f" = {_num(circulation.ratio, 4)} × input" if circulation.ratio is not None else ""))]
-        pairs += [("circulating loop", f"{loop.describe()}: {_num(loop.power)} W") for loop in circulation.loops]
+        pairs += [("circulating loop", f"{loop.describe()}: {_num(u.convert(loop.power, 'power'))} {u.power}")
+                  for loop in circulation.loops]
     else:
         pairs = [("circulating power", "none")]
     if circulation.largest_element_ratio is not None:
@@ -124,18 +132,23 @@ def _circulation_pairs(circulation: Any) -> list[tuple[str, str]]:
     return pairs
 
 
-SHAFT_HEADERS = ["shaft", "speed [1/min]", "torque [N*m]", "power [W]", "role"]
-ELEMENT_HEADERS = ["element", "kind", "state", "port torques [N*m]", "rolling power [W]",
-                   "coupling power [W]", "loss [W]"]
+def _shaft_headers(u: Units) -> list[str]:
+    return ["shaft", f"speed [{u.speed}]", f"torque [{u.torque}]", f"power [{u.power}]", "role"]
 
 
-def solution_table(sol: Any) -> str:
-    """Plain-text report: shafts, elements, summary."""
+def _element_headers(u: Units) -> list[str]:
+    return ["element", "kind", "state", f"port torques [{u.torque}]", f"rolling power [{u.power}]",
+            f"coupling power [{u.power}]", f"loss [{u.power}]"]
+
+
+def solution_table(sol: Any, units: Any = None) -> str:
+    """Plain-text report: shafts, elements, summary; in ``units`` (see :func:`epicyclic.units.as_units`)."""
+    u = as_units(units)
     return "\n\n".join([
         f"{sol.train.name}",
-        _grid(SHAFT_HEADERS, _shaft_rows(sol)),
-        _grid(ELEMENT_HEADERS, _element_rows(sol)),
-        "\n".join(_summary(sol)),
+        _grid(_shaft_headers(u), _shaft_rows(sol, u)),
+        _grid(_element_headers(u), _element_rows(sol, u)),
+        "\n".join(_summary(sol, u)),
     ])
 
 
@@ -147,10 +160,11 @@ def _html_table(headers: list[str], rows: list[list[str]]) -> str:
 
 def solution_html(sol: Any) -> str:
     """HTML fragment (for notebooks and reports)."""
-    summary = "".join(f"<li>{html.escape(line)}</li>" for line in _summary(sol))
+    u = Units()
+    summary = "".join(f"<li>{html.escape(line)}</li>" for line in _summary(sol, u))
     return (
         f"<div class='epicyclic-solution'><h4>{html.escape(sol.train.name)}</h4>"
-        + _html_table(SHAFT_HEADERS, _shaft_rows(sol))
-        + _html_table(ELEMENT_HEADERS, _element_rows(sol))
+        + _html_table(_shaft_headers(u), _shaft_rows(sol, u))
+        + _html_table(_element_headers(u), _element_rows(sol, u))
         + f"<ul>{summary}</ul></div>"
     )

@@ -20,6 +20,9 @@ from .render import solution_html, solution_table, solution_to_dict
 from .zero import ZERO_TOLERANCE
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..units import Units
+
+if TYPE_CHECKING:  # pragma: no cover
     from ..model.operating_point import OperatingPoint
     from ..model.train import GearTrain
 
@@ -274,9 +277,23 @@ class Solution:
         """Plain data (JSON-ready) with units stated; see :mod:`epicyclic.results.render`."""
         return solution_to_dict(self)
 
-    def table(self) -> str:
-        """A plain-text table for terminals."""
-        return solution_table(self)
+    def table(self, units: Units | Mapping[str, str] | None = None) -> str:
+        """A plain-text table for terminals, in the core units or in ``units``.
+
+        Parameters
+        ----------
+        units : Units or mapping quantity → unit, optional
+            E.g. ``{"speed": "U/min", "torque": "kp*cm", "power": "PS"}`` (a file's ``[units]``);
+            quantities not named stay in 1/min, N·m, W.
+
+        Examples
+        --------
+        >>> from epicyclic.demo import brandenberger_1952
+        >>> from epicyclic import solve
+        >>> print(solve(*brandenberger_1952()).table({"power": "PS"}).splitlines()[-6])
+        input power            3 PS
+        """
+        return solution_table(self, units)
 
     def _repr_html_(self) -> str:
         return solution_html(self)

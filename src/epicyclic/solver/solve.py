@@ -32,7 +32,7 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import (ContradictionError, NearSingularError, NonFiniteResultError, OperatingPointError,
+from ..errors import (ContradictionError, ModelError, NearSingularError, NonFiniteResultError, OperatingPointError,
                       UnderdeterminedError)
 from ..model.elements import HOUSING, Clutch, GearStage
 from ..model.operating_point import OperatingPoint
@@ -56,6 +56,13 @@ MAX_PATTERN_TRIES = 8
 
 
 def _validate(train: GearTrain, op: OperatingPoint) -> None:
+    if not isinstance(train, GearTrain):
+        raise ModelError(f"solve: the first argument must be a GearTrain, got {type(train).__name__}; "
+                         "build it as GearTrain([elements]) or read a file with epicyclic.io.load_train_file(path).train.")
+    if not isinstance(op, OperatingPoint):
+        raise OperatingPointError(
+            f"solve: the operating point must be an OperatingPoint, got {type(op).__name__}; "
+            "build it as OperatingPoint(speeds={...}, torques={...}, drives=[...], loads=[...]).")
     for shaft in op.shaft_names():
         train.check_shaft(shaft)
     for group in ("drives", "loads", "connected"):

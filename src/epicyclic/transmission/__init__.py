@@ -2,6 +2,7 @@
 
 from .explore import Combination, Exploration, explore
 from .results import GearResult, TransmissionAnalysis
+from .errors import UnknownGearError
 from .transmission import GearFreedomError, ShiftScheduleError, Transmission
 
 __all__ = [
@@ -12,5 +13,6 @@ __all__ = [
     "ShiftScheduleError",
     "Transmission",
     "TransmissionAnalysis",
+    "UnknownGearError",
     "explore",
 ]

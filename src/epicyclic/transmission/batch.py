@@ -22,6 +22,7 @@ import numpy as np
 
 from ..errors import ModelError
 from ..solver.batch import BatchSolution, solve_batch
+from ..units import to_core_array
 from .transmission import Transmission
 
 __all__ = ["TransmissionBatch", "solve_gears"]
@@ -114,7 +115,8 @@ def solve_gears(
     ----------
     transmission : Transmission
     input_speed, input_torque : array_like
-        Broadcast to one shape; torques are magnitudes (> 0).
+        Broadcast to one shape; torques are magnitudes (> 0).  Values may carry units
+        (``"2000 U/min"``, ``"15 kp*m"``) or be one pint quantity holding an array.
     gears : iterable of str, optional
         Default: all gears.
     direction : {"drive", "coast"}
@@ -132,8 +134,8 @@ def solve_gears(
     """
     if direction not in ("drive", "coast"):
         raise ModelError(f"solve_gears: direction must be 'drive' or 'coast', got {direction!r}.")
-    n = np.asarray(input_speed, dtype=float)
-    torque = np.abs(np.asarray(input_torque, dtype=float))
+    n = to_core_array(input_speed, "speed", field="solve_gears: input_speed")
+    torque = np.abs(to_core_array(input_torque, "torque", field="solve_gears: input_torque"))
     chosen = list(transmission.gears if gears is None else gears)
     t = transmission
     solutions = {}

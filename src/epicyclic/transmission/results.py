@@ -24,6 +24,7 @@ from ..model.elements import Clutch
 from ..model.planetary import PlanetarySet
 from ..results.solution import Solution
 from ..text import markdown_text
+from .errors import UnknownGearError
 
 
 class Scheduled(Protocol):
@@ -236,7 +237,7 @@ class TransmissionAnalysis:
         for g in self.gears:
             if g.gear == gear:
                 return g
-        raise KeyError(gear)
+        raise UnknownGearError(gear, (g.gear for g in self.gears))
 
     @property
     def forward(self) -> tuple[GearResult, ...]:

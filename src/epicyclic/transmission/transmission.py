@@ -35,7 +35,8 @@ from ..model.train import GearTrain
 from ..solver import solve
 from ..solver.assembly import matrices
 from ..solver.kinematics import degrees_of_freedom, free_speed_shafts, solve_speeds
-from .errors import GearFreedomError, ShiftScheduleError
+from ..units import to_core
+from .errors import GearFreedomError, ShiftScheduleError, UnknownGearError
 from .explore import Exploration, explore
 from .results import GearResult, TransmissionAnalysis, gear_result
 
@@ -190,15 +191,34 @@ class Transmission:
         """The train in ``gear`` (its shift elements engaged, all others open)."""
         try:
             return self._trains[gear]
-        except KeyError:
-            raise ShiftScheduleError(
-                f"transmission: no gear {gear!r}; gears are {', '.join(repr(g) for g in self.schedule)}."
-            ) from None
+        except (KeyError, TypeError):  # TypeError: an unhashable gear
+            raise UnknownGearError(gear, self.schedule) from None
 
-    def speeds(self, gear: str, input_speed: float = 1.0) -> dict[str, float]:
-        """Every shaft speed (1/min) in ``gear`` at the given input speed (Willis, kinematics only)."""
+    def speeds(self, gear: str, input_speed: float | str = 1.0) -> dict[str, float]:
+        """Every shaft speed (1/min) in ``gear`` at the given input speed (Willis, kinematics only).
+
+        Parameters
+        ----------
+        gear : str
+            A gear of the schedule (``"1"``, ``"R"``).
+        input_speed : float, str or pint.Quantity, default 1
+            1/min, or with a unit (``"2000 U/min"``).
+
+        Returns
+        -------
+        dict shaft → float
+            Speeds in 1/min.
+
+        Raises
+        ------
+        UnknownGearError
+            A gear the schedule does not have.
+        UnitError
+            An input speed that is no speed.
+        """
         train = self.gear_train(gear)
-        return solve_speeds(matrices(train, [self.input, self.output]), {self.input: float(input_speed)})
+        speed = to_core(input_speed, "speed", field="input_speed")
+        return solve_speeds(matrices(train, [self.input, self.output]), {self.input: speed})
 
     def ratio(self, gear: str) -> float:
         """Speed ratio i = n_input / n_output of ``gear`` (negative: reverse).
@@ -237,18 +257,20 @@ class Transmission:
                             self.input, self.output, self.name)
 
     # ------------------------------------------------------------------ analysis
-    def analyze(self, gear: str, *, input_speed: float = 1000.0, input_torque: float = 100.0) -> GearResult:
+    def analyze(self, gear: str, *, input_speed: float | str = 1000.0, input_torque: float | str = 100.0
+                ) -> GearResult:
         """Analyse one gear in drive and coast.
 
         Parameters
         ----------
         gear : str
-        input_speed : float, default 1000
-            1/min.  The results are ratios and multiples, independent of the
-            level (losses depend on rolling power only, Brandenberger 1952, eq. 7).
-        input_torque : float, default 100
-            N·m at the input in drive; in coast the output is driven with the
-            torque ``input_torque · |ratio|``.
+        input_speed : float, str or pint.Quantity, default 1000
+            1/min, or with a unit (``"2000 U/min"``).  The results are ratios and
+            multiples, independent of the level (losses depend on rolling power
+            only, Brandenberger 1952, eq. 7), unless loss models are attached.
+        input_torque : float, str or pint.Quantity, default 100
+            N·m at the input in drive, or with a unit (``"15 kp*m"``); in coast
+            the output is driven with the torque ``input_torque · |ratio|``.
 
         Returns
         -------
@@ -259,6 +281,8 @@ class Transmission:
         Brandenberger 1952, eqs. 7, 7' and 10 (efficiency by direction of
         power flow).
         """
+        input_speed = to_core(input_speed, "speed", field="input_speed")
+        input_torque = to_core(input_torque, "torque", field="input_torque")
         if not (np.isfinite(input_speed) and input_speed != 0):
             raise ModelError(f"transmission: input_speed must be a finite, non-zero 1/min value, got {input_speed!r}.")
         if not (np.isfinite(input_torque) and input_torque > 0):
@@ -281,8 +305,9 @@ class Transmission:
         coast = run(train, coast_op)
         return gear_result(self, gear, ratio, drive, coast)
 
-    def analyze_all(self, *, input_speed: float = 1000.0, input_torque: float = 100.0) -> TransmissionAnalysis:
-        """:meth:`analyze` every gear; returns a :class:`TransmissionAnalysis`."""
+    def analyze_all(self, *, input_speed: float | str = 1000.0, input_torque: float | str = 100.0
+                    ) -> TransmissionAnalysis:
+        """:meth:`analyze` every gear (units as there); returns a :class:`TransmissionAnalysis`."""
         results = tuple(self.analyze(g, input_speed=input_speed, input_torque=input_torque) for g in self.schedule)
         return TransmissionAnalysis(self.name, self.input, self.output, results)
 
