@@ -14,6 +14,7 @@ Brandenberger 1952, eqs. 1–10.
 
 from __future__ import annotations
 
+import numbers
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -26,6 +27,7 @@ from ..model.elements import HOUSING
 from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
+from ..units import to_core_array
 from .assembly import matrices
 from .evaluate import evaluate, relative_speeds
 from .given_losses import DRAG, given_losses, with_efficiencies
@@ -98,12 +100,26 @@ class BatchSolution:
         )
 
 
+#: The given groups of :func:`solve_batch` and the quantity of their values.
+_GROUPS = (("speeds", "speed"), ("torques", "torque"), ("powers", "power"))
+
+
+def _in_core_units(values: object, quantity: str, field: str) -> np.ndarray:
+    """Plain numbers as given (1/min, N·m, W); strings with units and pint quantities converted
+    (:func:`~epicyclic.units.to_core_array`, never stripped of their unit); errors name ``field``."""
+    if isinstance(values, numbers.Real) or (isinstance(values, np.ndarray) and values.dtype.kind in "iuf"):
+        return np.asarray(values, dtype=float)
+    return to_core_array(values, quantity, field=field)
+
+
 def _broadcast(groups: Sequence[Mapping[str, object]]) -> tuple[list[dict[str, np.ndarray]], tuple[int, ...]]:
-    arrays = [np.asarray(v, dtype=float) for g in groups for v in g.values()]
+    groups = [{k: _in_core_units(v, quantity, f"solve_batch: {name}[{k!r}]") for k, v in g.items()}
+              for (name, quantity), g in zip(_GROUPS, groups)]
+    arrays = [v for g in groups for v in g.values()]
     shape = np.broadcast_shapes(*(a.shape for a in arrays)) if arrays else ()
     out = []
     for g in groups:
-        out.append({k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for k, v in g.items()})
+        out.append({k: np.broadcast_to(v, shape).ravel() for k, v in g.items()})
     for g in out:
         for k, v in g.items():
             if not np.all(np.isfinite(v)):
@@ -130,8 +146,9 @@ def solve_batch(
     ----------
     train : GearTrain
     speeds, torques, powers : mapping shaft → array_like
-        As in :class:`~epicyclic.OperatingPoint` (1/min, N·m, W), each value
-        an array; all broadcast to one shape.
+        As in :class:`~epicyclic.OperatingPoint`: plain numbers in 1/min, N·m, W, or
+        values with units (strings such as ``"1500 U/min"``, pint quantities, also a
+        quantity holding an array), each value an array; all broadcast to one shape.
     drives, loads, connected : sequence of str
         As in :class:`~epicyclic.OperatingPoint`.
     efficiencies, loss_torques : mapping, optional
@@ -143,6 +160,14 @@ def solve_batch(
     Returns
     -------
     BatchSolution
+
+    Raises
+    ------
+    UnitError
+        A value that cannot be read or has the wrong dimension; the message names the
+        field and the index, e.g. ``solve_batch: speeds['sun'][2]``.
+    OperatingPointError, UnderdeterminedError, ContradictionError
+        As :func:`~epicyclic.solver.solve.solve`, naming the first bad point.
 
     Examples
     --------
