@@ -30,6 +30,7 @@ from ..results.solution import RPM_TO_RAD_S
 from ..units import to_core_array
 from .assembly import matrices
 from .evaluate import evaluate, relative_speeds
+from .friction_state import ambiguous_points
 from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
 from .self_locking import SELF_LOCKING_MARGIN
@@ -59,6 +60,11 @@ class BatchSolution:
         output/input; NaN exactly where ``self_locking`` is True or no power
         enters (see ``defined``).
     self_locking : ndarray of bool
+    ambiguous : ndarray of bool
+        Where the friction state is not unique: another loss-direction pattern (one element's
+        reversed) is consistent too and keeps the designated drives and loads; the result shows
+        the one reached from the lossless power flow, as :func:`~epicyclic.solver.solve.solve`
+        does (which warns).  See :mod:`~epicyclic.solver.friction_state`.
     patterns : int
         Number of distinct loss-direction patterns solved.
     loss_sources : mapping element → mapping source → ndarray
@@ -78,6 +84,7 @@ class BatchSolution:
     self_locking: np.ndarray
     patterns: int
     loss_sources: Mapping[str, ArrayMap] = field(default_factory=dict)
+    ambiguous: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -96,7 +103,9 @@ class BatchSolution:
         span = f"efficiency {eff.min():.4f}…{eff.max():.4f}" if eff.size else "no defined efficiency"
         return (
             f"<BatchSolution {self.train.name!r}: {len(self)} points, {span}, "
-            f"{int(self.self_locking.sum())} self-locking, {self.patterns} loss pattern(s)>"
+            f"{int(self.self_locking.sum())} self-locking, {self.patterns} loss pattern(s)"
+            + (f", {int(self.ambiguous.sum())} with a friction state that is not unique" if self.ambiguous.any() else "")
+            + ">"
         )
 
 
@@ -418,8 +427,11 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     results |= {("port_torques", (e, p)): ev.x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
     results |= {("losses", e): value for e, value in losses.items()}
     results |= {("sources", e, k): value for e, parts in sources.items() for k, value in parts.items()}
+    ambiguous = (ambiguous_points(train, mats, given, pattern, consistent, tau, rows, effs, n, given_map, dragged,
+                                  [(shaft_row[s], "drive") for s in drives] + [(shaft_row[s], "load") for s in loads],
+                                  _corrected, solved) if lossy else np.zeros(count, dtype=bool))
     results |= {"input_power": drive_power, "output_power": load_power, "loss": loss, "efficiency": efficiency,
-                "self_locking": self_locking}
+                "self_locking": self_locking, "ambiguous": ambiguous}
     return results, solved
 
 
@@ -486,7 +498,7 @@ def _assembled(problem: _Problem, results: dict, solved: set, shape: tuple[int, 
         train=problem.train,
         **{name: MappingProxyType(values) for name, values in group.items() if name != "sources"},
         **{name: results[name].reshape(shape) for name in
-           ("input_power", "output_power", "loss", "efficiency", "self_locking")},
+           ("input_power", "output_power", "loss", "efficiency", "self_locking", "ambiguous")},
         patterns=len(solved),
         loss_sources=MappingProxyType({e: MappingProxyType(parts) for e, parts in group["sources"].items()}),
     )
