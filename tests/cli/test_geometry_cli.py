@@ -136,7 +136,7 @@ def test_forces_reads_as_a_report():
     assert [r[0] for r in rows] == ["1", "1", "2", "2", "3", "3", "4", "4"]
     assert [r[2] for r in rows[::2]] == ["0.00", "90.00", "180.00", "270.00"]
     assert float(rows[0][4]) == pytest.approx(1.2 * 243.03e3 / (4 * 36.0), rel=1e-4)
-    assert "sun -0.0067796 N*m" in result.output  # P2 carries only drag in gear 1
+    assert "sun (s12) -0.0067796 N*m" in result.output  # P2 carries only drag in gear 1
     assert "fitting of" not in result.output and "d_b" not in result.output
     fit = runner.invoke(app, ["fit", str(EXAMPLES / "zf_8hp70_geometry.toml")]).output
     assert fit.startswith("fitting of ZF 8HP 70") and "d_b [mm]" in fit and "a_w [mm]" in fit

@@ -194,3 +194,36 @@ def test_torques_are_distances_between_the_other_lines(case, request):
     scale = abs(torques[d.ports[0]]) / graphical[0]
     for port, g in zip(d.ports, graphical):
         assert abs(torques[port]) == pytest.approx(scale * g, rel=1e-9)
+
+
+def test_a_file_with_geometry_draws_its_own_radii():
+    """The speed plan of a file with a geometry table uses its operating pitch radii (ISO 21771 a_w, d_w),
+    not a unit module: lecad's profile-shifted 21/43/108, m 1.75 (a_w = 56.8 mm, d_w1 = 2·56.8·21/64);
+    the stepped example's two modules (a_w = 50 mm both, ring 91·2·50/70/2 = 65 mm)."""
+    from pathlib import Path
+
+    from epicyclic.io import load_train_file
+    from epicyclic.plotting.subject import figure_subject
+
+    examples = Path(__file__).resolve().parents[2] / "examples"
+    simple = figure_subject(load_train_file(examples / "geometry_simple_set.toml"))
+    plan = speed_plan(simple.solution, "P", context=simple.context)
+    a_w = plan.layout.bodies[0].axis
+    assert a_w == pytest.approx(56.8, abs=1e-4)
+    assert plan.layout.central["sun"][0] == pytest.approx(a_w * 21 / 64, rel=1e-9)  # d_w1 = 2 a_w z1/(z1 + z2)
+    assert plan.assumptions() == "the file's geometry: m_n 1.75 mm, profile-shifted" and plan.module == 1.75
+    # the sun's peripheral speed v = ω r_w at 3000 1/min
+    assert plan.member_points("sun")[1][1] == pytest.approx(3000 * math.pi / 30 * a_w * 21 / 64 / 1000, rel=1e-9)
+    stepped = figure_subject(load_train_file(examples / "geometry_stepped_set.toml"))
+    plan = speed_plan(stepped.solution, "S", context=stepped.context)
+    assert plan.layout.bodies[0].axis == pytest.approx(50.0, abs=1e-9)
+    assert plan.layout.central["sun"][0] == pytest.approx(20.0) and plan.layout.central["ring"][0] == pytest.approx(65.0)
+    assert "ring mesh 1.429 mm" in plan.assumptions()
+    # the lines still meet: the planet's line passes through its mesh points and the carrier at its axis
+    body = plan.layout.bodies[0]
+    (r0, v0), (r1, v1) = plan.planet_line(body)
+    for r, v in plan.planet_points(body).values():
+        assert v == pytest.approx(v0 + (v1 - v0) * (r - r0) / (r1 - r0), abs=1e-9)
+    # without the file's geometry: the unit module, said so
+    bare = speed_plan(stepped.solution, "S")
+    assert "module 1 mm assumed" in bare.assumptions()

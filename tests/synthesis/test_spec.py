@@ -47,34 +47,63 @@ def test_spread_spec():
 
 
 @pytest.mark.parametrize("targets, sets, elements, constraints, match", [
-    ([], 2, None, None, "non-empty list"),
-    ([2.0, 0.0], 2, None, None, "must be a finite number|> 0"),
-    ([2.0, math.nan], 2, None, None, "finite number"),
-    (["2"], 2, None, None, "finite number"),
-    ({"reverse": [-2.0]}, 2, None, None, "at least one forward"),
-    ({"forward": [2.0], "bogus": 1}, 2, None, None, "unknown targets key"),
-    ({"spread": 4.0, "gears": 3}, 2, None, None, "targets.first"),
-    ({"spread": 0.5, "gears": 3, "first": 2.0}, 2, None, None, "spread must be > 1"),
-    ([2.0, 1.0], 0, None, None, "sets must be a whole number >= 1"),
-    ([2.0, 1.0], {"simple": 5}, None, None, "1 to 4 planetary sets"),
-    ([2.0, 1.0], 2, {"brakes": 4, "clutches": 5}, None, "at most 8 shift elements"),
+    ([], 2, None, None, "key 'targets': expected a non-empty list"),
+    ([2.0, 0.0], 2, None, None, "key 'targets': a target ratio of 0"),
+    ([2.0, math.nan], 2, None, None, "key 'targets': expected a finite number"),
+    (["2"], 2, None, None, "key 'targets': expected a finite number"),
+    ({"reverse": [-2.0]}, 2, None, None, "key 'targets.forward': give at least one forward"),
+    ({"forward": [2.0], "bogus": 1}, 2, None, None, "key 'targets': unknown key"),
+    ({"spread": 4.0, "gears": 3}, 2, None, None, "key 'targets.first': missing"),
+    ({"spread": 0.5, "gears": 3, "first": 2.0}, 2, None, None, "key 'targets.spread': expected a number > 1"),
+    ({"forward": 2.0}, 2, None, None, "key 'targets.forward': expected a list of ratios"),
+    ([2.0, 1.0], 0, None, None, "key 'sets': expected a whole number >= 1"),
+    ([2.0, 1.0], {"simple": 5}, None, None, "key 'sets': give 1 to 4 planetary sets"),
+    ([2.0, 1.0], 2, {"brakes": 4, "clutches": 5}, None, "key 'elements': at most 8 shift elements"),
     ([float(k) for k in range(20, 3, -1)], 2, {"brakes": 4, "clutches": 4}, None, "at most 16 target ratios"),
-    ([2.0, 1.0], {"ring": 1}, None, None, "unknown sets key"),
-    ([2.0, 1.0], 2, {"brakes": 1, "clutches": 0}, None, "cannot give 2 gears|fewer than"),
-    ([3.0, 2.0, 1.0, -2.0], 2, {"brakes": 2, "clutches": 2, "engaged": 4}, None, "fewer than the 4 gears"),
-    ([2.0, 1.0], 2, {"brakes": 2, "clutches": 2, "gears": 3}, None, "unknown elements key"),
-    ([2.0, 1.0], 2, None, {"tolerance": 5}, r"\(0, 0.2\]"),
-    ([2.0, 1.0], 2, None, {"stationary_ratio": [0.5, 3.0]}, "must exceed 1"),
-    ([2.0, 1.0], 2, None, {"stationary_ratio": [3.0, 2.0]}, "low <= high"),
-    ([2.0, 1.0], 2, None, {"sun": [2, 40]}, "whole number >= 3"),
-    ([2.0, 1.0], 2, None, {"stationary_efficiency": 1.5}, r"\(0, 1\]"),
-    ([2.0, 1.0], 2, None, {"free_input": "yes"}, "true or false"),
-    ([2.0, 1.0], 2, None, {"levels": 9}, "at most 4"),
-    ([2.0, 1.0], 2, None, {"colour": "red"}, "unknown constraint"),
+    ([2.0, 1.0], {"ring": 1}, None, None, "key 'sets': unknown key"),
+    ([2.0, 1.0], 2, {"brakes": 1, "clutches": 0}, None, "key 'elements': 1 shift elements cannot give 2 gears"),
+    ([3.0, 2.0, 1.0, -2.0], 2, {"brakes": 2, "clutches": 2, "engaged": 4}, None,
+     "key 'elements.engaged': .* fewer than the 4 gears"),
+    ([2.0, 1.0], 2, {"brakes": 2, "clutches": 2, "gears": 3}, None, "key 'elements': unknown key"),
+    ([2.0, 1.0], 2, {"brakes": -1}, None, "key 'elements.brakes': expected a whole number >= 0"),
+    ([2.0, 1.0], 2, None, {"tolerance": 5}, r"key 'constraints.tolerance': .*\(0, 0.2\]"),
+    ([2.0, 1.0], 2, None, {"stationary_ratio": [0.5, 3.0]}, "key 'constraints.stationary_ratio': .*must exceed 1"),
+    ([2.0, 1.0], 2, None, {"stationary_ratio": [3.0, 2.0]}, "key 'constraints.stationary_ratio': .*low <= high"),
+    ([2.0, 1.0], 2, None, {"sun": [2, 40]}, "key 'constraints.sun': expected a whole number >= 3"),
+    ([2.0, 1.0], 2, None, {"stationary_efficiency": 1.5}, r"key 'constraints.stationary_efficiency': .*\(0, 1\]"),
+    ([2.0, 1.0], 2, None, {"free_input": "yes"}, "key 'constraints.free_input': expected true or false"),
+    ([2.0, 1.0], 2, None, {"levels": 9}, "key 'constraints.levels': expected at most 4"),
+    ([2.0, 1.0], 2, None, {"colour": "red"}, "key 'constraints.colour': unknown constraint"),
 ])
 def test_bad_specs_raise_clear_errors(targets, sets, elements, constraints, match):
-    with pytest.raises(SynthesisError, match=match):
+    """The Python call: each message starts with `synthesize: key '<argument>.<key>':`, as file errors do."""
+    with pytest.raises(SynthesisError, match=match) as info:
         SynthesisSpec.create(targets, sets, elements, constraints)
+    assert str(info.value).startswith("synthesize: key '")
+
+
+@pytest.mark.parametrize("text, where", [
+    ("[targets]\nforward = [2.0, 1.0]\ntolerance = 5\n", "[targets], key 'tolerance': the tolerance is relative"),
+    ("[targets]\nforward = [2.0, 1.0]\n[bounds]\nsun = [2, 40]\n", "[bounds], key 'sun': expected a whole number"),
+    ("[targets]\nforward = [2.0, 1.0]\n[bounds]\ntolerance = 0.5\n", "[bounds], key 'tolerance':"),
+    ("[targets]\nforward = [2.0, 1.0]\n[search]\nlevels = 9\n", "[search], key 'levels': expected at most 4"),
+    ("[targets]\nforward = [2.0, 1.0]\n[search]\nspeed = 3\n", "[search], key 'speed': unknown constraint"),
+    ("[targets]\nforward = [2.0, 1.0]\n[sets]\nsimple = 5\n", "[sets]: give 1 to 4 planetary sets"),
+    ("[targets]\nforward = [2.0, 1.0]\n[sets]\nsimple = 'two'\n", "[sets], key 'simple': expected a whole"),
+    ("[targets]\nforward = [2.0, 1.0]\n[elements]\nbrakes = 2\nclutches = 2\nengaged = 4\n",
+     "[elements], key 'engaged':"),
+    ("[targets]\nforward = [2.0, 0.0]\n", "[targets], key 'forward': forward ratios must be > 0"),
+    ("[targets]\nforward = ['fast']\n", "[targets], key 'forward': expected a finite number, got 'fast'"),
+    ("[targets]\nspread = 4.0\ngears = 3\n", "[targets], key 'first': missing"),
+    ("[targets]\nfoward = [2.0]\n", "[targets]: unknown key(s) 'foward'"),
+])
+def test_file_errors_name_the_file_table_and_key(tmp_path, text, where):
+    """A specification file: `<file>: [table], key 'name': ...` (io.reader.at_key, as train files say it)."""
+    path = tmp_path / "spec.toml"
+    path.write_text(text)
+    with pytest.raises(SynthesisError) as info:
+        SynthesisSpec.from_file(path)
+    assert str(info.value).startswith(f"{path}: {where}")
 
 
 def test_from_file_and_its_errors(tmp_path):
@@ -90,7 +119,7 @@ def test_from_file_and_its_errors(tmp_path):
         "unknown.toml": "[targets]\nforward=[2.0]\n[gears]\nx=1\n",
         "notargets.toml": "[sets]\nsimple = 2\n",
     }
-    messages = {"missing.toml": "no such file", "bad.toml": "not valid TOML", "table.toml": "must be a table",
+    messages = {"missing.toml": "no such file", "bad.toml": "not valid TOML", "table.toml": "key 'targets': expected a table",
                 "unknown.toml": "unknown table", "notargets.toml": r"missing \[targets\]"}
     for name, text in cases.items():
         path = tmp_path / name

@@ -270,3 +270,34 @@ def test_search_needs_three_different_members(client, examples, page_form):
     said = message(client.post("/tool/search", data=data))
     assert "give three different members" in said
     assert "give three different members" in command_error("search", "--ratio", "4", "--held", "sun", "--driver", "sun")
+
+
+def test_forces_of_one_wolfrom_set_share_the_planet_with_the_other(client, page_form):
+    """The form for set W alone still solves the planet it shares with set S as one body (its bearing
+    is the vector sum of the meshes of both sets, as `epicyclic forces` of the whole file says)."""
+    text, path = example("wolfrom_drive")
+    one = body(client.post("/tool/forces", data=page_form(text, tool_forces_set="W")))
+    assert "planets shared with set &#x27;S&#x27;" in one and "S: planet-ring = W: first-planet_first" in one
+    bearing = re.findall(r"<td>planet_first\+planet_second</td><td>0.00</td><td>first-planet_first</td>"
+                         r"(?:<td>[\d.]+</td>){3}<td>([\d.]+)</td>", one)
+    assert bearing and bearing[0] in command("forces", path)
+
+
+def test_the_map_form_speaks_the_files_units(client, page_form, tmp_path):
+    """A file with [units] rad/s and kp*m: the form starts from the default range written in them, says so,
+    and reads its fields in them, as `epicyclic map` of that file does."""
+    text, _ = example("geometry_simple_set")
+    text = text.replace("\n[lubricant]", '\n[units]\nspeed = "rad/s"\ntorque = "kp*m"\n\n[lubricant]', 1)
+    assert "[units]" in text
+    path = tmp_path / "units.toml"
+    path.write_text(text, encoding="utf-8")
+    page = client.post("/apply/text", data=page_form(text)).text
+    start = fields_of(page, "map")
+    assert (start["speed"], start["torque"]) == ("52.3599..628.319:50", "1.01972..50.9858:50")
+    assert "input speeds [rad/s]" in page and "input torques [kp·m]" in page
+    data = page_form(text, tool_map_speed="100..600:6", tool_map_torque="2..20:4")
+    summary = html.unescape(re.search(r"<pre>(.*?)</pre>", body(client.post("/tool/map", data=data)), re.S).group(1))
+    assert "input speed 100..600 rad/s (6 values), input torque 2..20 kp*m (4 values)" in summary
+    assert summary + "\n" == command("map", path, "--speed", "100..600:6", "--torque", "2..20:4")
+    assert command("map", path, "--speed", "954.93..5729.58:6 rpm", "--torque", "2..20:4").splitlines()[1] == \
+        "input speed 100..600 rad/s (6 values), input torque 2..20 kp*m (4 values)"

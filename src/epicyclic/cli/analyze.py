@@ -42,7 +42,7 @@ def analyze(
         text = markdown_report(solution, units, title=title) + sections.markdown()
     elif format is OutputFormat.html:
         text = html_report(solution, units, title=title, source=source, description=train_file.description,
-                           lang=lang, sections=sections.html())
+                           lang=lang, sections=sections.html(), geometry=train_file.geometry)
     else:
         text = text_report(solution, units, title=title) + sections.text()
     emit(text, out)

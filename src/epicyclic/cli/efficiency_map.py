@@ -1,8 +1,11 @@
 """``epicyclic map FILE``: an efficiency map over input speed × input torque.
 
-``--speed 500..6000:50`` is 50 speeds from 500 to 6000 1/min (``A..B:N``, N
-evenly spaced values, ends included; ``A`` alone is one value), likewise
-``--torque`` in N·m.  The train file's loss tables (geometry-based mesh
+``--speed 500..6000:50`` is 50 speeds from 500 to 6000 (``A..B:N``, N
+evenly spaced values, ends included; ``A`` alone is one value) in the file's
+``[units]`` speed unit (1/min without one), likewise ``--torque``; a unit after
+the range overrides it (``--speed "50..600:50 rad/s"``).  Without them the map
+spans 500..6000 1/min and 10..500 N·m, 50 values each, shown in the file's
+units.  The train file's loss tables (geometry-based mesh
 friction, planet bearings, drag) give the losses; ``--gear`` picks a gear of its
 ``[transmission]``.  ``-o map.png`` (or ``.svg``, ``.pdf``) draws the map,
 ``-o map.csv`` / ``-o map.json`` writes the numbers; without ``-o`` a summary is
@@ -40,8 +43,12 @@ def parse_axis(text: str, name: str, unit: str):
 @guarded
 def efficiency_map(
     file: Annotated[Path, typer.Argument(help="Train description (.toml) with loss tables, see docs/losses.md.")],
-    speed: Annotated[str, typer.Option("--speed", help="Input speeds A..B:N in 1/min.")] = "500..6000:50",
-    torque: Annotated[str, typer.Option("--torque", help="Input torques A..B:N in N*m.")] = "10..500:50",
+    speed: Annotated[Optional[str], typer.Option(
+        "--speed", help="Input speeds A..B:N in the file's \\[units] (1/min without one), or with a unit: "
+                        "'50..600:50 rad/s'. Default: 500..6000 1/min, 50 values.")] = None,
+    torque: Annotated[Optional[str], typer.Option(
+        "--torque", help="Input torques A..B:N in the file's \\[units] (N*m without one), or with a unit: "
+                         "'1..50:50 kp*m'. Default: 10..500 N*m, 50 values.")] = None,
     gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
     coast: Annotated[bool, typer.Option("--coast", help="Drive from the output (engine braking).")] = False,
     out: Annotated[Optional[Path], typer.Option(
@@ -55,10 +62,10 @@ def efficiency_map(
 
     from ..io.ranges import map_grid
 
-    speeds, torques = map_grid(speed, torque)
     if out is not None and out.suffix.lower() not in MAP_SUFFIXES:
         raise ModelError(f"--out {str(out)!r}: give a file ending in {', '.join(MAP_SUFFIXES)}.")
     train_file = load(file, gear, set_)
+    speeds, torques = map_grid(speed, torque, units=train_file.units)  # in the file's units
     emap = compute(train_file, speeds, torques, direction="coast" if coast else "drive")
     note = "" if train_file.losses else (
         "note: the file has no loss tables ([planetary.losses], [gear.losses]): every efficiency comes from the "

@@ -36,20 +36,22 @@ from .fitting import (
     min_profile_shift,
     undercut_limit,
 )
-from .forces import MeshForce, PlanetaryForces, PlanetLoad, default_load_sharing, mesh_forces, planetary_forces
+from .forces import (MeshForce, PlanetaryForces, PlanetLoad, SharedPlanet, default_load_sharing, mesh_forces,
+                     planetary_forces)
 from .gear import BasicRack, GearGeometry, MeshGeometry
 from .involute import inv, inv_inverse, profile_shift_sum
 from .search import Candidate, ToothSearch, search_teeth, search_teeth_loops, two_shaft_ratio
 from .set_geometry import SetGeometry
+from .shared_planets import share_planets
 from .stage_forces import StageForces, stage_forces
 from .stage_geometry import StageGeometry
 
 __all__ = [
     "AssemblyCheck", "BasicRack", "Candidate", "Check", "CoaxialityCheck", "FittingError", "FittingReport",
     "GearGeometry", "GeometryError", "InterferenceCheck", "MeshForce", "MeshGeometry", "NeighbourCheck",
-    "PlanetLoad", "PlanetaryForces", "SetGeometry", "StageForces", "StageGeometry", "ToothSearch", "UndercutCheck", "assembly_ticks",
+    "PlanetLoad", "PlanetaryForces", "SetGeometry", "SharedPlanet", "StageForces", "StageGeometry", "ToothSearch", "UndercutCheck", "assembly_ticks",
     "check_assembly", "check_coaxiality", "check_fitting", "check_interference", "check_neighbours",
     "check_undercut", "default_load_sharing", "inv", "inv_inverse", "max_planets", "mesh_forces",
     "mesh_phasing", "min_profile_shift", "planetary_forces", "profile_shift_sum", "search_teeth",
-    "search_teeth_loops", "stage_forces", "two_shaft_ratio", "undercut_limit",
+    "search_teeth_loops", "share_planets", "stage_forces", "two_shaft_ratio", "undercut_limit",
 ]

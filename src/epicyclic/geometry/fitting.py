@@ -53,7 +53,7 @@ from .checks import (
 from .errors import GeometryError, expect_type
 from .gear import MeshGeometry
 from .involute import inv, profile_shift_sum
-from .set_geometry import SetGeometry
+from .set_geometry import SetGeometry, gear_label
 
 __all__ = [
     "Check",
@@ -125,7 +125,9 @@ def check_coaxiality(geometry: SetGeometry, tolerance: float = 1e-3) -> Coaxiali
         suggestion["x_ring"] = needed + planet.profile_shift if ring.internal else needed - planet.profile_shift
     except ValueError:
         pass
-    hint = f"set x_ring = {suggestion['x_ring']:.4f} (other shifts kept)" if suggestion else "change the tooth counts"
+    ring_label = geometry.gear_label("ring")
+    hint = (f"set x_{ring_label} = {suggestion['x_ring']:.4f} (other shifts kept)" if suggestion
+            else "change the tooth counts")
     if geometry.kind == "simple":
         zs, zp, zr = (geometry.planetary_set.teeth.sun, geometry.planetary_set.teeth.planet[0],  # type: ignore[union-attr]
                       geometry.planetary_set.teeth.ring)  # type: ignore[union-attr]
@@ -233,16 +235,14 @@ def check_assembly(geometry_or_teeth, planets: int, *, allow_unequal: bool = Fal
     angles = tuple(360.0 * p / ticks for p in positions) if ticks else tuple(0.0 for _ in range(planets))
     deviation = max(abs(a - 360.0 * i / planets) for i, a in enumerate(angles))
     distinct = ticks >= planets and len(set(positions)) == planets
-    ring_gear = teeth.ring
-    sun_gear = teeth.sun
-    phasing = {"sun": mesh_phasing(sun_gear, angles), "ring": mesh_phasing(ring_gear, angles)} if distinct else {}
+    phasing = {"sun": mesh_phasing(teeth.sun, angles), "ring": mesh_phasing(teeth.ring, angles)} if distinct else {}
     min_angle = 360.0 / ticks if ticks else 360.0
     formula = {"simple": "(z_sun + z_ring)", "double": "(z_ring - z_sun)", "stepped": "D/gcd(z_b, z_c)"}[teeth.kind]
     if equal:
         message = (
             f"{planets} planets equally spaced at {360.0 / planets:g}°: {formula}/N = {ticks}/{planets} = "
-            f"{ticks // planets} (phi_min = {min_angle:.3f}°); phasing sun {phasing.get('sun')}, "
-            f"ring {phasing.get('ring')}"
+            f"{ticks // planets} (phi_min = {min_angle:.3f}°); phasing {gear_label(teeth, 'sun')} {phasing.get('sun')}, "
+            f"{gear_label(teeth, 'ring')} {phasing.get('ring')}"
         )
         passed = True
     else:
@@ -418,9 +418,10 @@ def check_undercut(geometry: SetGeometry, limit: Literal["theoretical", "practic
     Queitsch, z_g; DIN 3960 (x_min = h_a* − z sin²α_t/(2 cos β)).
     """
     out = []
-    for name, gear in geometry.gears.items():
+    for key, gear in geometry.gears.items():
         if gear.internal:
             continue
+        name = geometry.gear_label(key)
         r = gear.rack
         z_lim = undercut_limit(r.pressure_angle, r.addendum, r.helix_angle) * (5 / 6 if limit == "practical" else 1)
         x_min = min_profile_shift(gear.teeth, r.pressure_angle, r.addendum, r.helix_angle, limit)
@@ -492,6 +493,7 @@ def check_interference(geometry: SetGeometry) -> tuple[InterferenceCheck, ...]:
         inv_m, tro_m, trim_m = _interference_margins(mesh)
         bad = [name for name, m in (("involute", inv_m), ("trochoid", tro_m), ("trimming", trim_m)) if m < 0]
         z1, z2 = mesh.gear1.teeth, mesh.gear2.teeth
+        ring = geometry.gear_label(next(g for g in geometry.mesh_gears(mesh) if geometry.gears[g].internal))
         if not bad:
             message = f"{mesh.name}: no involute, trochoid or trimming interference (z2 - z1 = {z2 - z1})"
         else:
@@ -500,7 +502,7 @@ def check_interference(geometry: SetGeometry) -> tuple[InterferenceCheck, ...]:
             message = (
                 f"{mesh.name}: {', '.join(bad)} interference (margins: involute {inv_m:+.4f}, trochoid "
                 f"{tro_m:+.4f} rad, trimming {trim_m:+.4f} rad); {'; '.join(_WHY_INTERFERENCE[b] for b in bad)} "
-                f"(planet {z1}, ring {z2} teeth): {', '.join(fixes)}, raise x_ring or shorten the ring's addendum"
+                f"(planet {z1}, ring {z2} teeth): {', '.join(fixes)}, raise x_{ring} or shorten the ring's addendum"
             )
         out.append(InterferenceCheck("interference", not bad, message, "warning", mesh.name, inv_m, tro_m, trim_m))
     return tuple(out)

@@ -11,8 +11,12 @@ the set, N·m) are turned into forces on the planets, in the carrier frame
   ``F_r = F_t tan α_wt`` (Queitsch eq. 30 with α_b for α_0);
 * axial force of helical meshes ``F_a = F_t tan β_w`` (β_w helix angle at the
   operating pitch cylinder, ISO 21771);
-* the planet bearing carries the sum of the mesh forces on its planet; the
-  carrier pin takes the opposite force.  With losses (η0 < 1) the mesh
+* the planet bearing carries the vector sum of the mesh forces on its planet
+  (tangential and radial components at each mesh's position); the carrier pin
+  takes the opposite force.  A planet that several sets of a train share (a
+  Wolfrom drive's stepped planet, a Ravigneaux set's long planet) is one body:
+  :func:`~epicyclic.geometry.shared_planets.share_planets` adds the forces of
+  all its meshes (:class:`SharedPlanet`).  With losses (η0 < 1) the mesh
   forces' moments on a planet do not cancel: the remainder is the friction
   moment that the pin (bearing) passes to the carrier, so the carrier torque
   from the pin forces plus these moments equals the solver's carrier torque.
@@ -20,6 +24,16 @@ the set, N·m) are turned into forces on the planets, in the carrier frame
 Nominal forces assume equal load sharing (each planet 1/N).  The design
 values multiply them by the load-sharing factor K_γ (user-given, or the
 default by number of planets of :func:`default_load_sharing`).
+
+What is modelled: the in-plane forces at the operating pitch points and
+their resultant on the pin, the *bearing load*.  The gear wheels of a stepped
+planet sit at different axial positions; their forces also tilt the pin, and
+how the resultant divides between the bearings of one pin depends on where the
+wheels and bearings sit along it: neither is computed (size each bearing from
+the resultant and the planet's layout).  The net axial force assumes the same
+helix hand on every wheel of a planet (the usual choice, so that the thrusts
+oppose): F_a = |Σ ± F_a,i|, the sign of each mesh from the sense of its
+circumferential force on the planet.
 
 References
 ----------
@@ -32,7 +46,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Any
 
@@ -100,7 +114,7 @@ class MeshForce:
     Attributes
     ----------
     mesh : str
-        Mesh name (``sun-planet``, ``planet-ring``, ...).
+        Mesh name (``sun-planet``, ``planet-ring``, ``first-planet_first`` for two rings, ...).
     tangential, radial, axial, normal : float
         Magnitudes, N.
     point : (float, float)
@@ -147,6 +161,12 @@ class PlanetLoad:
     bearing_axial : float
         Net axial force on the bearing, N, with the mesh thrusts opposing
         (one planet gear meshing sun and ring; 0 for spur gears).
+    shared_with : tuple of str
+        Other sets of the train that share this planet body (empty unless
+        :func:`~epicyclic.geometry.shared_planets.share_planets` found some).
+        Then ``bearing_force`` and ``bearing_axial`` are those of the whole body,
+        the vector sum over the meshes of all these sets (:class:`SharedPlanet`);
+        ``meshes`` stay this set's.
     """
 
     index: int
@@ -157,6 +177,7 @@ class PlanetLoad:
     bearing_force: Vec
     friction_moment: float
     bearing_axial: float
+    shared_with: tuple[str, ...] = ()
 
     @property
     def bearing_load(self) -> float:
@@ -167,6 +188,69 @@ class PlanetLoad:
     def pin_force(self) -> Vec:
         """Force of the carrier pin on the planet, N (= −bearing_force)."""
         return (-self.bearing_force[0], -self.bearing_force[1])
+
+
+@dataclass(frozen=True)
+class SharedPlanet:
+    """One planet body that several sets of a train share, with the forces of all its meshes.
+
+    A train describes a Wolfrom drive as a simple set (sun, planet, ring 1) and
+    a set with two rings (ring 1, stepped planet, ring 2) on one carrier: the
+    planet gear meshing ring 1 is the same gear in both.  Each set's forces
+    carry its share of the torques; the body carries them all.
+
+    Attributes
+    ----------
+    sets : tuple of str
+        The sets sharing the body; the first set's frame is used.
+    index : int
+        Planet number (0-based) in each set.
+    gears : str
+        The body's gears, per set (``S: planet = W: planet_first; W: planet_second``).
+    angle : float
+        Carrier angle of the pin in the first set's frame, degrees.
+    center : (float, float)
+        Pin position, mm.
+    meshes : tuple of MeshForce
+        Every mesh of the body once, named ``set: mesh``.  A mesh that two sets
+        share (the planet gear with ring 1) appears once with the sum of the
+        sets' tangential forces and the radial and axial forces of that sum
+        (F_r = |F_t| tan α_wt, F_a = |F_t| tan β_w).
+    bearing_force : (float, float)
+        Σ of the mesh forces on the body, N (the force on its pin).
+    bearing_axial : float
+        Net axial force (same helix hand on every wheel), N.
+    """
+
+    sets: tuple[str, ...]
+    index: int
+    gears: str
+    angle: float
+    center: Vec
+    meshes: tuple[MeshForce, ...]
+    bearing_force: Vec
+    bearing_axial: float
+
+    @property
+    def bearing_load(self) -> float:
+        """Radial bearing load |F_bearing|, N."""
+        return math.hypot(*self.bearing_force)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"sets": list(self.sets), "index": self.index, "gears": self.gears, "angle": self.angle,
+                "center": list(self.center), "bearing_force": list(self.bearing_force),
+                "bearing_load": self.bearing_load, "bearing_axial": self.bearing_axial,
+                "meshes": [_mesh_dict(m) for m in self.meshes]}
+
+    def rows(self, factor: float = 1.0) -> list[list[object]]:
+        """Table rows (forces × ``factor``): planet, angle, mesh, F_t, F_r, F_a, bearing."""
+        return [[self.index + 1, f"{self.angle:.2f}", m.mesh, m.tangential * factor, m.radial * factor,
+                 m.axial * factor, self.bearing_load * factor] for m in self.meshes]
+
+
+def _mesh_dict(m: MeshForce) -> dict[str, Any]:
+    return {"mesh": m.mesh, "tangential": m.tangential, "radial": m.radial, "axial": m.axial,
+            "normal": m.normal, "point": list(m.point), "force_on_planet": list(m.force_on_planet)}
 
 
 @dataclass(frozen=True)
@@ -188,6 +272,12 @@ class PlanetaryForces:
         carrier, N (zero for equally spaced planets).
     carrier_torque_from_forces : float
         Carrier torque rebuilt from pin forces × radii plus friction moments, N·m.
+    members : mapping port → (gear, shaft)
+        What each port is in this set: its gear's name (``first``/``second``
+        for two rings or two suns, :func:`~epicyclic.geometry.set_geometry.gear_label`)
+        and the train's shaft.
+    shared : tuple of SharedPlanet
+        The planet bodies this set shares with other sets (see :attr:`PlanetLoad.shared_with`).
     """
 
     set_name: str
@@ -197,6 +287,8 @@ class PlanetaryForces:
     bodies: tuple[PlanetLoad, ...]
     central_forces: Mapping[str, Vec]
     carrier_torque_from_forces: float
+    members: Mapping[str, tuple[str, str]] = field(default_factory=lambda: MappingProxyType({}))
+    shared: tuple[SharedPlanet, ...] = ()
 
     @property
     def housing_torque(self) -> float:
@@ -214,7 +306,7 @@ class PlanetaryForces:
 
     @property
     def design_bearing_load(self) -> float:
-        """Largest planet bearing load × K_γ, N."""
+        """Largest planet bearing load × K_γ, N (of the whole body where planets are shared)."""
         return max(b.bearing_load for b in self.bodies) * self.load_sharing_factor
 
     def to_dict(self) -> dict[str, Any]:
@@ -224,6 +316,7 @@ class PlanetaryForces:
             "load_sharing_factor": self.load_sharing_factor,
             "units": {"force": "N", "length": "mm", "torque": "N*m", "angle": "deg"},
             "torques": dict(self.torques),
+            "members": {port: {"gear": gear, "shaft": shaft} for port, (gear, shaft) in self.members.items()},
             "carrier_torque_from_forces": self.carrier_torque_from_forces,
             "housing_torque": self.housing_torque,
             "central_forces": {k: list(v) for k, v in self.central_forces.items()},
@@ -234,14 +327,12 @@ class PlanetaryForces:
                     "index": b.index, "gear": b.gear, "angle": b.angle, "center": list(b.center),
                     "bearing_force": list(b.bearing_force), "bearing_load": b.bearing_load,
                     "bearing_axial": b.bearing_axial, "friction_moment": b.friction_moment,
-                    "meshes": [
-                        {"mesh": m.mesh, "tangential": m.tangential, "radial": m.radial, "axial": m.axial,
-                         "normal": m.normal, "point": list(m.point), "force_on_planet": list(m.force_on_planet)}
-                        for m in b.meshes
-                    ],
+                    "shared_with": list(b.shared_with),
+                    "meshes": [_mesh_dict(m) for m in b.meshes],
                 }
                 for b in self.bodies
             ],
+            "shared_planets": [p.to_dict() for p in self.shared],
         }
 
     def _rows(self) -> list[list[object]]:
@@ -254,14 +345,34 @@ class PlanetaryForces:
 
     _HEAD = ["planet", "gear", "angle [deg]", "mesh", "F_t [N]", "F_r [N]", "F_a [N]", "bearing [N]"]
 
+    def _port(self, port: str) -> str:
+        gear, shaft = self.members.get(port, (port, ""))
+        return f"{gear} ({shaft})" if shaft and shaft != gear else gear
+
+    _SHARED_HEAD = ["planet", "angle [deg]", "mesh", "F_t [N]", "F_r [N]", "F_a [N]", "bearing [N]"]
+
+    def _shared_title(self) -> str:
+        others = sorted({name for p in self.shared for name in p.sets if name != self.set_name})
+        return (f"planets shared with set {', '.join(map(repr, others))} ({self.shared[0].gears}): every mesh of "
+                f"each planet; its bearing carries their vector sum (x K_gamma)")
+
+    def _shared_rows(self) -> list[list[object]]:
+        return [row for p in self.shared for row in p.rows(self.load_sharing_factor)]
+
     def table(self) -> str:
-        """Design forces (× K_γ) per planet and mesh, N."""
+        """Design forces (× K_γ) per planet and mesh, N; every mesh of planets shared with other sets."""
         title = (f"forces of {self.set_name!r}: {self.planets} planets, K_gamma = {self.load_sharing_factor:g} "
-                 f"(torques {', '.join(f'{p} {t:.5g} N*m' for p, t in self.torques.items())})")
-        return text_table(self._HEAD, self._rows(), title=title)
+                 f"(torques {', '.join(f'{self._port(p)} {t:.5g} N*m' for p, t in self.torques.items())})")
+        text = text_table(self._HEAD, self._rows(), title=title)
+        if self.shared:
+            text += "\n\n" + text_table(self._SHARED_HEAD, self._shared_rows(), title=self._shared_title())
+        return text
 
     def _repr_html_(self) -> str:
-        return html_table(self._HEAD, self._rows(), title=f"forces of {self.set_name} (N, K_gamma applied)")
+        out = html_table(self._HEAD, self._rows(), title=f"forces of {self.set_name} (N, K_gamma applied)")
+        if self.shared:
+            out += html_table(self._SHARED_HEAD, self._shared_rows(), title=self._shared_title())
+        return out
 
     def __repr__(self) -> str:
         dt = ", ".join(f"{m} {f:.1f} N" for m, f in self.design_tangential.items())
@@ -361,7 +472,7 @@ def planetary_forces(
         raise GeometryError(f"planetary_forces: load_sharing (K_gamma) must be a number >= 1, got {load_sharing!r}.")
 
     t_sun, t_ring, t_carrier = (state.torques[p] for p in ("sun", "ring", "carrier"))
-    names = geometry.planet_gear_names
+    names = tuple(geometry.gear_label(g) for g in geometry.planet_gear_names)
     sun_mesh, ring_mesh = geometry.sun_mesh, geometry.ring_mesh
     ring_internal = ring_mesh.internal
     sun_internal = geometry.gears["sun"].internal  # the first ring of a Wolfrom set
@@ -423,7 +534,12 @@ def planetary_forces(
         add_body(j, names[0], theta, c1, [sun_force, mesh_on1], [arm_sun, arm12_1])
         add_body(j, names[1], theta + gamma, c2, [mesh_on2, ring_force], [arm12_2, arm_ring])
 
+    members = {port: (geometry.gear_label(port), shaft) for port, shaft in zip(("sun", "ring", "carrier"),
+                                                                                 pset.shafts)}
+    if element is not None:  # the train's shafts (geometry may be built from a set with other shaft names)
+        members = {port: (gear, shaft) for (port, (gear, _)), shaft in zip(members.items(), element.shafts)}
     return PlanetaryForces(
         set_name, n, float(k), MappingProxyType(dict(state.torques)), tuple(bodies),
         MappingProxyType({key: (v[0], v[1]) for key, v in sums.items()}), carrier_torque,
+        MappingProxyType(members),
     )

@@ -14,6 +14,8 @@ Meshes by kind of set (``Teeth.kind``):
   external or internal (``Teeth.sun_internal``, ``Teeth.ring_internal``:
   sun + ring, two suns, or two rings as in the Wolfrom set).  The ring mesh
   may have its own module (``ring_module``), as stepped planets often do.
+  A set with two suns or two rings names its gears as its file does
+  (:func:`gear_label`): first–planet_first, planet_second–second.
 
 References
 ----------
@@ -33,10 +35,28 @@ from ._render import html_table, text_table
 from .errors import GeometryError
 from .gear import BasicRack, GearGeometry, MeshGeometry
 
-__all__ = ["SetGeometry", "planet_names", "TWO_CENTRAL_NAMES"]
+__all__ = ["SetGeometry", "planet_names", "gear_label", "TWO_CENTRAL_NAMES"]
 
 #: Names of the gears of a set with two suns or two rings (``teeth.kind`` two_suns / two_rings in files).
 TWO_CENTRAL_NAMES = {"sun": "first", "planet_sun": "planet_first", "planet_ring": "planet_second", "ring": "second"}
+
+
+def gear_label(teeth: Teeth, name: str) -> str:
+    """A gear's (or port's) name as a user of this arrangement says it, the names of the file's ``teeth`` table.
+
+    A set with two rings or two suns calls its central gears ``first`` and ``second`` and
+    its planet gears ``planet_first`` and ``planet_second``; every other set keeps
+    ``sun``, ``ring``, ``planet``, ... .  Mesh names, fitting messages and force tables
+    use these labels.
+
+    >>> gear_label(Teeth("stepped", 81, 78, (27, 24), sun_internal=True), "sun")
+    'first'
+    >>> gear_label(Teeth("simple", 30, 78, (24,)), "sun")
+    'sun'
+    """
+    if teeth.arrangement in ("two rings", "two suns"):
+        return TWO_CENTRAL_NAMES.get(name, name)
+    return name
 
 
 def planet_names(teeth: Teeth) -> tuple[str, ...]:
@@ -149,14 +169,14 @@ class SetGeometry:
         gears["ring"] = GearGeometry(teeth.ring, ring_rack, self.x_ring, internal=teeth.ring_internal)
 
         pairs = _mesh_pairs(teeth.kind, names)
-        meshes = [_mesh(gears, a, b) for a, b in pairs]
+        meshes = [_mesh(gears, a, b, teeth) for a, b in pairs]
         if self.tip_shortening:
             k: dict[str, float] = {}
             for (a, b), mesh in zip(pairs, meshes):
                 for g in (a, b):
                     k[g] = max(k.get(g, 0.0), mesh.tip_shortening)
             gears = {n: replace(g, tip_shortening=k.get(n, 0.0)) if not g.internal else g for n, g in gears.items()}
-            meshes = [_mesh(gears, a, b) for a, b in pairs]
+            meshes = [_mesh(gears, a, b, teeth) for a, b in pairs]
         object.__setattr__(self, "gears", MappingProxyType(gears))
         object.__setattr__(self, "meshes", tuple(meshes))
         object.__setattr__(self, "face_width", _face_widths(self.face_width, tuple(gears), owner))
@@ -243,7 +263,7 @@ class SetGeometry:
         return planet_names(self.planetary_set.teeth)  # type: ignore[arg-type]
 
     def mesh(self, name: str) -> MeshGeometry:
-        """The mesh called ``name`` (e.g. ``"sun-planet"``)."""
+        """The mesh called ``name`` (e.g. ``"sun-planet"``, ``"first-planet_first"`` for two rings)."""
         for m in self.meshes:
             if m.name == name:
                 return m
@@ -276,8 +296,21 @@ class SetGeometry:
                 f"SetGeometry of {self.planetary_set.name!r}: no face width is given; mesh losses need the load "
                 "per face width: give face_width (mm)."
             )
-        a, b = self.mesh(name).name.split("-")
+        a, b = self.mesh_gears(name)
         return min(widths[a], widths[b])  # type: ignore[index]
+
+    def mesh_gears(self, mesh: MeshGeometry | str) -> tuple[str, str]:
+        """The keys of :attr:`gears` (``sun``, ``planet_sun``, ...) of a mesh's two gears, in its name's order.
+
+        Mesh names use :meth:`gear_label` (``first-planet_first`` for a set with two rings);
+        this gives the gears behind them.
+        """
+        name = mesh if isinstance(mesh, str) else mesh.name
+        for pair, m in zip(_mesh_pairs(self.kind, self.planet_gear_names), self.meshes):
+            if m.name == name:
+                return pair
+        self.mesh(name)  # raises the error naming the meshes
+        raise AssertionError(name)  # pragma: no cover
 
     @property
     def carrier_radius(self) -> float:
@@ -308,9 +341,7 @@ class SetGeometry:
 
     def gear_label(self, name: str) -> str:
         """The gear's name as a user of this arrangement says it: ``first``/``second`` for two suns or rings."""
-        if self.planetary_set.teeth.arrangement in ("two rings", "two suns"):  # type: ignore[union-attr]
-            return TWO_CENTRAL_NAMES.get(name, name)
-        return name
+        return gear_label(self.planetary_set.teeth, name)  # type: ignore[arg-type]
 
     def _rows(self) -> tuple[list[str], list[list[object]]]:
         headers = ["gear", "z", "x", "d [mm]", "d_b [mm]", "d_a [mm]", "d_f [mm]"]
@@ -368,10 +399,10 @@ def _face_widths(value, names: tuple[str, ...], owner: str) -> Mapping[str, floa
     return MappingProxyType({n: float(b) for n, b in widths.items()})
 
 
-def _mesh(gears: Mapping[str, GearGeometry], a: str, b: str) -> MeshGeometry:
-    """The mesh of gears ``a`` and ``b``, named ``"a-b"``, with the internal gear (if any) second."""
+def _mesh(gears: Mapping[str, GearGeometry], a: str, b: str, teeth: Teeth) -> MeshGeometry:
+    """The mesh of gears ``a`` and ``b``, named ``"a-b"`` by their labels, with the internal gear (if any) second."""
     first, second = (gears[b], gears[a]) if gears[a].internal else (gears[a], gears[b])
-    return MeshGeometry(first, second, f"{a}-{b}")
+    return MeshGeometry(first, second, f"{gear_label(teeth, a)}-{gear_label(teeth, b)}")
 
 
 def _mesh_pairs(kind: str, names: tuple[str, ...]) -> list[tuple[str, str]]:

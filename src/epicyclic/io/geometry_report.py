@@ -4,7 +4,9 @@ Used by ``epicyclic analyze`` (all formats), ``epicyclic fit`` and
 ``epicyclic forces``: one entry per element with geometry, in file order, with
 the set's :class:`~epicyclic.geometry.FittingReport` and the forces at the
 solved operating point (:class:`~epicyclic.geometry.PlanetaryForces` for a set,
-:class:`~epicyclic.geometry.StageForces` for a stage).
+:class:`~epicyclic.geometry.StageForces` for a stage).  Planets that several sets
+share (a Wolfrom drive's, a Ravigneaux set's long planet) get the bearing load of
+the whole body (:func:`~epicyclic.geometry.share_planets`).
 
 JSON layout (the ``"geometry"`` key of the report, null without geometry)::
 
@@ -21,10 +23,10 @@ from __future__ import annotations
 
 import html
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
-from ..geometry import SetGeometry, check_fitting, planetary_forces, stage_forces
+from ..geometry import SetGeometry, check_fitting, planetary_forces, share_planets, stage_forces
 
 __all__ = ["GeometryResult", "geometry_results", "geometry_dict", "geometry_text", "geometry_markdown",
            "geometry_html"]
@@ -71,7 +73,10 @@ def geometry_results(geometry: Mapping[str, Any], solution=None, *, planets: int
         elif solution is not None and name in solution.elements:
             forces = stage_forces(solution, name, shape)
         out.append(GeometryResult(name, shape, fitting, forces))
-    return tuple(out)
+    # a planet that several sets share is one body: its bearing carries the meshes of all of them
+    set_forces = {r.name: r.forces for r in out if r.kind == "planetary set" and r.forces is not None}
+    shared = share_planets(set_forces, {name: geometry[name] for name in set_forces})
+    return tuple(replace(r, forces=shared.get(r.name, r.forces)) for r in out)
 
 
 def geometry_dict(results: tuple[GeometryResult, ...]) -> dict[str, Any] | None:

@@ -18,6 +18,7 @@ True
 from __future__ import annotations
 
 import html
+from typing import Any
 from datetime import datetime, timezone
 
 from ..results.solution import Solution
@@ -44,8 +45,8 @@ figcaption{font-weight:600;margin-bottom:.3rem}svg{max-width:100%;height:auto}
 """
 
 
-def report_figures(solution: Solution, units: Units | None = None, title: str | None = None
-                   ) -> tuple[list[tuple[str, str]], str | None]:
+def report_figures(solution: Solution, units: Units | None = None, title: str | None = None,
+                   geometry: Any = None) -> tuple[list[tuple[str, str]], str | None]:
     """Diagrams from :mod:`epicyclic.plotting` if available.
 
     Returns
@@ -59,7 +60,7 @@ def report_figures(solution: Solution, units: Units | None = None, title: str | 
     except ImportError:
         return [], "diagrams need epicyclic.plotting.report_figures, which is not available"
     try:
-        return list(make_figures(solution, units=units, title=title)), None
+        return list(make_figures(solution, units=units, title=title, geometry=geometry)), None
     except Exception as exc:  # a diagram must not cost the user the whole report
         return [], f"diagrams could not be drawn ({type(exc).__name__}: {exc})"
 
@@ -75,6 +76,7 @@ def html_report(
     explanation: bool = True,
     lang: str = "en",
     sections: str = "",
+    geometry: Any = None,
 ) -> str:
     """The report as one self-contained HTML document.
 
@@ -94,6 +96,9 @@ def html_report(
     sections : str, optional
         Further HTML (escaped, self-contained) placed after the tables, e.g. the
         geometry, fitting and forces of :mod:`epicyclic.io.geometry_report`.
+    geometry : mapping set name → SetGeometry, optional
+        The file's gear geometry (``TrainFile.geometry``): the speed plan draws
+        those sets at their operating pitch radii.
 
     Returns
     -------
@@ -142,7 +147,7 @@ def html_report(
         parts.append(sections)
 
     if figures:
-        found, note = report_figures(solution, units, name)
+        found, note = report_figures(solution, units, name, geometry)
         if found:
             parts.append("<h2>Diagrams</h2>")
             for caption, svg in found:

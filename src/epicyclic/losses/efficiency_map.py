@@ -26,7 +26,7 @@ import numpy as np
 
 from ..errors import ModelError
 from ..model.train import GearTrain
-from ..units import to_core_array
+from ..units import Units, to_core_array, unit_factor
 from .element import SOURCES, ElementLosses
 from .solve import solve_batch_with_losses
 
@@ -60,6 +60,10 @@ class EfficiencyMap:
     self_locking : ndarray of bool (T, S)
     ratio : float
         n_input/n_output.
+    units : Units, optional
+        The units the summary and the figure show speeds and torques in (a
+        train file's ``[units]``; default 1/min and N·m).  The arrays, CSV and
+        JSON stay in 1/min, N·m and W.
     """
 
     name: str
@@ -76,6 +80,13 @@ class EfficiencyMap:
     losses: Mapping[str, np.ndarray]
     self_locking: np.ndarray
     ratio: float
+    units: Units | None = None
+
+    def shown(self, quantity: str) -> tuple[np.ndarray, str]:
+        """The ``"speed"`` or ``"torque"`` axis in the units the map is shown in, and that unit."""
+        units = self.units or Units()
+        axis = self.speeds if quantity == "speed" else self.torques
+        return axis / unit_factor(units.of(quantity), quantity), units.of(quantity)
 
     def __post_init__(self) -> None:
         # a frozen result: read-only views of the arrays, a read-only mapping of the losses
@@ -111,10 +122,11 @@ class EfficiencyMap:
     def table(self) -> str:
         s = self.summary()
         split = ", ".join(f"{k} {100 * v:.1f} %" for k, v in s["loss_split"].items())
+        (n, n_unit), (t, t_unit) = self.shown("speed"), self.shown("torque")
         lines = [
             f"efficiency map of {self.title()}",
-            f"input speed {self.speeds.min():g}..{self.speeds.max():g} 1/min ({self.speeds.size} values), "
-            f"input torque {self.torques.min():g}..{self.torques.max():g} N*m ({self.torques.size} values)",
+            f"input speed {n.min():g}..{n.max():g} {n_unit} ({n.size} values), "
+            f"input torque {t.min():g}..{t.max():g} {t_unit} ({t.size} values)",
         ]
         if s["efficiency_min"] is not None:
             lines.append(f"efficiency {s['efficiency_min']:.4f} .. {s['efficiency_max']:.4f} "
@@ -251,7 +263,8 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
         quantity holding an array (its unit is converted, never stripped).
     torques : array_like
         Input torques, N·m (> 0; in coast the output is driven with torque × |ratio|); units as
-        for ``speeds`` (``"15 kp*m"``).
+        for ``speeds`` (``"15 kp*m"``).  A train file's map shows both in its ``[units]``
+        (:func:`epicyclic.io.ranges.map_grid` reads them so).
     gear : str, optional
         Gear of the transmission's schedule (default: the file's operating-point gear).
     losses : mapping element → ElementLosses, optional
@@ -274,10 +287,10 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     """
     if direction not in ("drive", "coast"):
         raise ModelError(f"efficiency_map: direction must be 'drive' or 'coast', got {direction!r}.")
-    name, title_gear = "gear train", gear
+    name, title_gear, units = "gear train", gear, None
     if hasattr(train, "operating_train") and hasattr(train, "losses"):  # a TrainFile
         file = train
-        name = file.title
+        name, units = file.title, file.units
         losses = dict(file.losses) if losses is None else losses
         gear = gear if gear is not None else file.gear
         if gear is None and file.transmission is not None:
@@ -333,4 +346,4 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
             sources[source] = sources.get(source, np.zeros(sol.shape)) + value
     sources = {k: v for k, v in sources.items() if np.any(v != 0) or k == "mesh"}
     return EfficiencyMap(name, title_gear, direction, input, output, n, t, sol.efficiency, sol.input_power,
-                         sol.output_power, sol.loss, sources, sol.self_locking, ratio)
+                         sol.output_power, sol.loss, sources, sol.self_locking, ratio, units)

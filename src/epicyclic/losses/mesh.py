@@ -134,7 +134,7 @@ def set_meshes(geometry: SetGeometry) -> tuple[MeshLoss, ...]:
     names = geometry.planet_gear_names
     out = []
     for mesh in geometry.meshes:
-        a, b = mesh.name.split("-")
+        a, b = geometry.mesh_gears(mesh)
         width = geometry.mesh_face_width(mesh.name)
         planet = b if a == "sun" else a  # every mesh of a set involves a planet gear
         # the internal gear of a mesh is its gear 2: a planet is gear 1 unless it meshes an external sun

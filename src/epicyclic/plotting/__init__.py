@@ -139,11 +139,13 @@ def save_plot(solution: Solution, kind: str, path: str | Path, *, dpi: int = 150
     return save_figure(figure(solution, kind, **options), path, dpi=dpi)
 
 
-def report_figures(solution: Solution, *, units: Any = None, title: str | None = None) -> list[tuple[str, str]]:
+def report_figures(solution: Solution, *, units: Any = None, title: str | None = None,
+                   geometry: Any = None) -> list[tuple[str, str]]:
     """Every picture of a solution as (title, inline SVG text) for the HTML report.
 
     ``units`` (:class:`~epicyclic.units.Units`, the file's) and ``title`` frame
-    the figures as the report's tables are.
+    the figures as the report's tables are; ``geometry`` (the file's sets'
+    :class:`~epicyclic.geometry.SetGeometry`) gives the speed plan its radii.
 
     The SVG texts start with ``<svg`` (no XML prolog) and contain no scripts
     or external references.  Pictures that do not apply (a speed plan without
@@ -169,7 +171,8 @@ def report_figures(solution: Solution, *, units: Any = None, title: str | None =
     }
     from ..units import Units
 
-    context = FigureContext(title=title or solution.train.name, units=units or Units())
+    sets = {name: g for name, g in (geometry or {}).items() if hasattr(g, "sun_mesh")}
+    context = FigureContext(title=title or solution.train.name, units=units or Units(), geometry=sets)
     out: list[tuple[str, str]] = []
     has_sets = bool(solution.train.planetary_sets)
     for kind in KINDS:

@@ -218,6 +218,18 @@ def lever_elements(train: GearTrain) -> list[tuple[Any, tuple[str, str, str], tu
     return out
 
 
+def member_name(pset: PlanetarySet, port: str) -> str:
+    """A port's name as the set's file says it: ``first``/``second`` for two rings or two suns.
+
+    >>> member_name(PlanetarySet.two_rings("W", first="a", second="b", carrier="c", z_first=81,
+    ...                                    z_planet_first=27, z_planet_second=24, z_second=78), "sun")
+    'first'
+    """
+    if pset.teeth is not None and pset.teeth.arrangement in ("two rings", "two suns"):
+        return {"sun": "first", "ring": "second"}.get(port, port)
+    return port
+
+
 def planetary_set(solution: Solution, name: str | None) -> PlanetarySet:
     """The planetary set called ``name`` (the first one if None), else PlottingError."""
     sets = solution.train.planetary_sets

@@ -10,8 +10,9 @@ geometry where tooth counts are missing).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..units import Units
 from .values import clean, fmt
@@ -59,12 +60,16 @@ class FigureContext:
         The gear of a transmission the figure shows.
     notes : tuple of str
         Assumptions to state on the figure, e.g. "unit input speed and torque".
+    geometry : mapping set name → SetGeometry
+        The gear geometry the file gives (``TrainFile.geometry``): the speed plan
+        draws those sets at their real operating pitch radii.
     """
 
     title: str = ""
     units: Units = field(default_factory=Units)
     gear: str | None = None
     notes: tuple[str, ...] = ()
+    geometry: Mapping[str, Any] = field(default_factory=dict, compare=False)
 
     def with_note(self, note: str) -> FigureContext:
         """A copy with one more note (notes already present are not repeated)."""

@@ -24,7 +24,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from ._common import SHAFT_COLOURS, figure_svg, planetary_set, pyplot
+from ._common import SHAFT_COLOURS, figure_svg, member_name, planetary_set, pyplot
 from .context import FigureContext
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -71,6 +71,7 @@ class RangeDiagram:
     zero_points: tuple[float, float, float]
     operating_range: int | None
     context: FigureContext = field(default_factory=FigureContext)
+    names: tuple[str, str, str] | None = None  # the ports as the set's file names them (first/second)
 
     def speeds_at(self, x: float) -> tuple[float, float, float]:
         """Scaled speeds of I, II, III at position x (the three lines)."""
@@ -118,7 +119,7 @@ class RangeDiagram:
         lo, hi = min(min(p), self.x_operating) - 0.35 * span, max(max(p), self.x_operating, 0.0) + 0.35 * span
         for j in range(3):
             ax.plot([k * lo, k * hi], [k * (self.offsets[j] + lo), k * (self.offsets[j] + hi)], color=SHAFT_COLOURS[j],
-                    lw=2, label=f"{self.labels[j]} = {self.ports[j]} ({self.shafts[j]})")
+                    lw=2, label=f"{self.labels[j]} = {(self.names or self.ports)[j]} ({self.shafts[j]})")
             ax.plot([0], [k * self.offsets[j]], "o", color=SHAFT_COLOURS[j], mec="black")
         edges = [hi, *p, lo]
         for j, point in enumerate(p):
@@ -200,7 +201,8 @@ def range_diagram(solution: Solution, element: str | None = None, *,
     x_op = sign * n["carrier"]
     ports = (first, second, "carrier")
     diagram = RangeDiagram(pset.name, ("I", "II", "III"), ports, tuple(state.ports[p] for p in ports),  # type: ignore[arg-type]
-                           offsets, sign, x_op, zero, None, context or FigureContext())  # type: ignore[arg-type]
+                           offsets, sign, x_op, zero, None, context or FigureContext(),  # type: ignore[arg-type]
+                           tuple(member_name(pset, p) for p in ports))  # type: ignore[arg-type]
     if locked:
         return diagram
     return replace(diagram, operating_range=diagram.range_of(x_op))

@@ -7,8 +7,10 @@ a planet is a straight line through its mesh points and, at its axis, through
 the carrier's line — the endpoints of the velocity vectors lie on one line
 (Queitsch, eq. 7: ``v51 − v41 = v21 − v51``).
 
-Radii come from the tooth counts with the *operating* pitch radii of each
-mesh (unit module 1 mm unless given): with centre distance ``a`` of a planet
+Radii are the *operating* pitch radii of each mesh.  A set with a geometry
+table (:class:`~epicyclic.geometry.SetGeometry`: module, profile shifts, a
+stepped planet's second module) is drawn at its own; otherwise they come
+from the tooth counts (unit module 1 mm unless given): with centre distance ``a`` of a planet
 axis, ``r_sun = a·z_s/(z_s + z_p)``, an internal ring ``r = a·z_r/(z_r − z_p)``
 and an external second central gear ``r = a·z_d/(z_d + z_c)``.  For a set
 known only by ``i0`` a layout with the same ``i0`` is made up (radii relative
@@ -87,6 +89,8 @@ class SetLayout:
     schematic : bool
     drawn : DrawnSet
         The tooth counts drawn and which drawn gear is which port.
+    note : str
+        What the radii rest on, when it is the set's geometry (else empty).
     """
 
     set_name: str
@@ -97,6 +101,7 @@ class SetLayout:
     schematic: bool = False
     drawn: DrawnSet | None = None
     stationary_ratio: float = float("nan")
+    note: str = ""
 
 
 def _pitch(a: float, z: float, z_partner: float, internal: bool) -> float:
@@ -104,7 +109,7 @@ def _pitch(a: float, z: float, z_partner: float, internal: bool) -> float:
     return a * z / (z - z_partner) if internal else a * z / (z + z_partner)
 
 
-def set_layout(pset: PlanetarySet, module: float = 1.0) -> SetLayout:
+def set_layout(pset: PlanetarySet, module: float = 1.0, geometry: Any = None) -> SetLayout:
     """The radii of ``pset`` for the speed plan (see the module text).
 
     A set given by i0 alone is drawn with the schematic tooth counts of
@@ -117,6 +122,9 @@ def set_layout(pset: PlanetarySet, module: float = 1.0) -> SetLayout:
     pset : PlanetarySet
     module : float, default 1.0
         Gear module in mm.
+    geometry : SetGeometry, optional
+        The set's gear geometry: the radii are its meshes' operating pitch radii
+        (profile shifts, a stepped planet's second module), ``module`` is not used.
 
     Examples
     --------
@@ -131,6 +139,8 @@ def set_layout(pset: PlanetarySet, module: float = 1.0) -> SetLayout:
     if not (isinstance(module, (int, float)) and not isinstance(module, bool) and module > 0):
         raise PlottingError(f"speed plan: module must be a positive number of mm, got {module!r}.")
     drawn = drawn_set(pset)
+    if geometry is not None and pset.teeth is not None and geometry.planetary_set.teeth == pset.teeth:
+        return replace(_layout_from_geometry(pset.name, geometry), drawn=drawn, stationary_ratio=pset.stationary_ratio)
     layout = _layout_from_teeth(pset.name, drawn.teeth, float(module))
     layout = replace(layout, from_teeth=not drawn.schematic, schematic=drawn.schematic, drawn=drawn,
                      stationary_ratio=pset.stationary_ratio)
@@ -163,27 +173,54 @@ def _layout_from_teeth(name: str, teeth: Teeth, m: float) -> SetLayout:
     zs, zr, zp = teeth.sun, teeth.ring, teeth.planet
     if teeth.kind == "simple":
         a = m * (zs + zp[0]) / 2
-        rs, rr = _pitch(a, zs, zp[0], False), _pitch(a, zr, zp[0], True)
-        body = PlanetBody("planet", a, (rs, rr), MappingProxyType({"sun": rs, "ring": rr}))
-        return SetLayout(name, "mm", MappingProxyType({"sun": (rs, False), "ring": (rr, True)}), (body,), True)
+        return _layout(name, teeth, a, a, _pitch(a, zs, zp[0], False), _pitch(a, zr, zp[0], True))
     if teeth.kind == "stepped":
         zb, zc = zp
         sun_internal = getattr(teeth, "sun_internal", False)  # the first ring of a Wolfrom set
         a = m * (zs - zb if sun_internal else zs + zb) / 2
-        rs = _pitch(a, zs, zb, sun_internal)
-        rd = _pitch(a, zr, zc, teeth.ring_internal)
-        extent = (min(rs, 2 * a - rs, 2 * a - rd, rd), max(2 * a - rs, rs, rd, 2 * a - rd))
-        body = PlanetBody("stepped planet", a, extent, MappingProxyType({"sun": rs, "ring": rd}))
-        return SetLayout(name, "mm", MappingProxyType({"sun": (rs, sun_internal),
-                                                       "ring": (rd, teeth.ring_internal)}), (body,), True)
+        return _layout(name, teeth, a, a, _pitch(a, zs, zb, sun_internal), _pitch(a, zr, zc, teeth.ring_internal))
+    z1, z2 = zp
+    return _layout(name, teeth, m * (zs + z1) / 2, m * (zr - z2) / 2, m * zs / 2, m * zr / 2)
+
+
+def _layout_from_geometry(name: str, geometry: Any) -> SetLayout:
+    """The layout at the geometry's operating pitch radii and centre distances (mm)."""
+    def pitch_radius(mesh: Any, gear: str) -> float:  # gear 1 of a mesh is its external gear (SetGeometry)
+        a, b = geometry.mesh_gears(mesh)
+        first = b if geometry.gears[a].internal else a
+        return mesh.operating_pitch_diameters[0 if gear == first else 1] / 2
+
+    teeth = geometry.planetary_set.teeth
+    layout = _layout(name, teeth, geometry.carrier_radius, geometry.outer_planet_radius,
+                     pitch_radius(geometry.sun_mesh, "sun"), pitch_radius(geometry.ring_mesh, "ring"))
+    rack = geometry.rack
+    modules = f"m_n {fmt(rack.module)} mm" + (f", ring mesh {fmt(geometry.ring_module, 4)} mm"
+                                              if geometry.ring_module is not None else "")
+    shifted = any(x != 0 for x in (geometry.x_sun, geometry.x_ring, *geometry.x_planet))
+    note = f"the file's geometry: {modules}" + (", profile-shifted" if shifted else "")
+    from dataclasses import replace
+
+    return replace(layout, note=note)
+
+
+def _layout(name: str, teeth: Teeth, a1: float, a2: float, rs: float, rr: float) -> SetLayout:
+    """The layout from the planet axes' radii (a1 of the sun-side planet, a2 of the ring-side one) and the
+    operating pitch radii rs, rr of the two central gears, mm."""
+    sun_internal, ring_internal = getattr(teeth, "sun_internal", False), teeth.ring_internal
+    central = MappingProxyType({"sun": (rs, sun_internal), "ring": (rr, ring_internal)})
+    if teeth.kind == "simple":
+        body = PlanetBody("planet", a1, (rs, rr), MappingProxyType({"sun": rs, "ring": rr}))
+        return SetLayout(name, "mm", central, (body,), True)
+    if teeth.kind == "stepped":
+        a = a1
+        extent = (min(rs, 2 * a - rs, 2 * a - rr, rr), max(2 * a - rs, rs, rr, 2 * a - rr))
+        body = PlanetBody("stepped planet", a, extent, MappingProxyType({"sun": rs, "ring": rr}))
+        return SetLayout(name, "mm", central, (body,), True)
     # double planet: planet 1 meshes the sun, planet 2 the ring; their common
     # mesh lies off the radial lines, so each body is drawn on its own radial line.
-    z1, z2 = zp
-    a1, a2 = m * (zs + z1) / 2, m * (zr - z2) / 2
-    rs, rr = m * zs / 2, m * zr / 2
     b1 = PlanetBody("planet 1", a1, (rs, 2 * a1 - rs), MappingProxyType({"sun": rs}), 0)
     b2 = PlanetBody("planet 2", a2, (2 * a2 - rr, rr), MappingProxyType({"ring": rr}), 1)
-    return SetLayout(name, "mm", MappingProxyType({"sun": (rs, False), "ring": (rr, True)}), (b1, b2), True)
+    return SetLayout(name, "mm", central, (b1, b2), True)
 
 
 @dataclass(frozen=True)
@@ -267,7 +304,10 @@ class SpeedPlan:
         return f"<SpeedPlan {self.layout.set_name!r}: {speeds} 1/min, {len(self.layout.bodies)} planet body/ies>"
 
     def assumptions(self) -> str:
-        """What the radii rest on: the module (given or assumed) and, for a schematic set, its teeth."""
+        """What the radii rest on: the file's geometry, the module (given or assumed) and, for a schematic set,
+        its teeth."""
+        if self.layout.note:
+            return self.layout.note
         text = f"module {fmt(self.module)} mm" + ("" if self.module_given else " assumed")
         drawn = self.layout.drawn
         if self.layout.schematic and drawn is not None:
@@ -295,6 +335,9 @@ class SpeedPlan:
         ctx = self.context
         colours = dict(zip(("sun", "ring", "carrier"), SHAFT_COLOURS))
         names = {"sun": "sun", "ring": "ring" if self.layout.central["ring"][1] else "2nd central", "carrier": "carrier"}
+        teeth = self.layout.drawn.teeth if self.layout.drawn is not None and not self.layout.schematic else None
+        if teeth is not None and teeth.arrangement in ("two rings", "two suns"):  # as the set's file names them
+            names.update(sun="first", ring="second")
         top = max(self.speed_scale * RPM_TO_RAD_S, scale_of((*self.omegas.values(), *self.planet_omegas)))
 
         def speed(w: float) -> str:  # in the figure's unit, round-off (a held member) shown as 0
@@ -310,14 +353,15 @@ class SpeedPlan:
                     label=f"{body.label}: {speed(self.planet_omegas[body.index])}")
             for name, (r, v) in self.planet_points(body).items():
                 ax.plot([v], [r], "o", color=colours[name], ms=7, mec="black", zorder=5)
-                ax.annotate(name if name != "carrier" else "axis", (v, r), textcoords="offset points",
+                ax.annotate(names[name] if name != "carrier" else "axis", (v, r), textcoords="offset points",
                             xytext=(6, -4), fontsize=8)
         ax.axvline(0, color="black", lw=0.8)
         ax.axhline(0, color="black", lw=0.8)
-        ax.set_ylabel(f"radius r in mm ({self.assumptions()})" if not self.layout.schematic else "radius r in mm")
+        own = self.layout.schematic or self.layout.note  # said in the title, not beside the axis
+        ax.set_ylabel("radius r in mm" if own else f"radius r in mm ({self.assumptions()})")
         ax.set_xlabel(f"peripheral speed v in {self.velocity_unit}")
         title = f"Speed plan (Kutzbach) of set {self.layout.set_name!r}"
-        if self.layout.schematic:
+        if own:
             title += "\n" + self.assumptions()
         ax.set_title(title, fontsize=10)
         ax.grid(True, alpha=0.3)
@@ -335,7 +379,8 @@ def speed_plan(solution: Solution, element: str | None = None, *, module: float 
     element : str, optional
         Name of the planetary set (default: the first).
     module : float, default 1.0
-        Module in mm for radii from tooth counts.
+        Module in mm for radii from tooth counts (a set with geometry in
+        ``context.geometry`` is drawn at its own operating pitch radii).
 
     Returns
     -------
@@ -361,7 +406,9 @@ def speed_plan(solution: Solution, element: str | None = None, *, module: float 
     """
     pset = planetary_set(solution, element)
     state = solution.elements[pset.name]
-    layout = set_layout(pset, module)
+    layout = set_layout(pset, module, (context.geometry if context is not None else {}).get(pset.name))
+    if layout.note:
+        module = (context.geometry[pset.name].rack.module if context is not None else module)
     omegas = {p: state.speeds[p] * RPM_TO_RAD_S for p in ("sun", "ring", "carrier")}
     if state.planet_speeds:
         planet = tuple(n * RPM_TO_RAD_S for n in state.planet_speeds)

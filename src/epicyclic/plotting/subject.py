@@ -76,7 +76,8 @@ def figure_subject(train_file: Any, gear: str | None = None) -> Subject:
     from ..units import to_core
 
     units = train_file.units
-    context = FigureContext(title=train_file.title or train_file.train.name, units=units)
+    sets = {name: g for name, g in (getattr(train_file, "geometry", None) or {}).items() if hasattr(g, "sun_mesh")}
+    context = FigureContext(title=train_file.title or train_file.train.name, units=units, geometry=sets)
     transmission = _transmission(train_file)
     if gear is not None:
         if transmission is None:

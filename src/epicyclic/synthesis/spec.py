@@ -30,7 +30,9 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     stationary_efficiency = 0.98
     top = 20
 
-Every problem raises :class:`SynthesisError` naming the key and the fix.
+Every problem raises :class:`SynthesisError` naming the file (or ``synthesize``
+for the Python call), the key and the fix, as every file error does:
+``spec.toml: [bounds], key 'sun': ...`` or ``synthesize: key 'constraints.sun': ...``.
 
 References
 ----------
@@ -49,6 +51,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ModelError
+from ..text import short
 from ..limits import (MAX_PLANETS, MAX_SYNTHESIS_ELEMENTS, MAX_SYNTHESIS_GEARS, MAX_SYNTHESIS_SETS, MAX_TEETH,
                       MIN_TEETH)
 
@@ -56,29 +59,65 @@ __all__ = ["SynthesisError", "SynthesisSpec", "progressive_ratios"]
 
 
 class SynthesisError(ModelError):
-    """A synthesis specification that cannot be searched (names the key and the fix)."""
+    """A synthesis specification that cannot be searched (names the file or call, the key and the fix)."""
 
 
-def _number(value: Any, key: str, where: str) -> float:
+@dataclass(frozen=True)
+class _Place:
+    """Where a specification's values came from, to name them in messages as every file error does.
+
+    ``source`` is the file (its keys live in tables ``[targets]``, ``[sets]``,
+    ``[elements]``, ``[bounds]``, ``[search]``; ``tables`` says which table each
+    constraint came from) or the Python call (``synthesize``: keys
+    ``targets.forward``, ``constraints.sun``, ...).
+
+    >>> _Place("s.toml", {"sun": "bounds"}).key("constraints", "sun")
+    "[bounds], key 'sun'"
+    >>> _Place("synthesize").key("constraints", "sun")
+    "key 'constraints.sun'"
+    """
+
+    source: str
+    tables: Mapping[str, str] | None = None  # None: the Python call
+
+    def key(self, group: str, name: str | None = None) -> str:
+        from ..io.reader import at_key
+
+        if self.tables is None:
+            return f"key {group + '.' + name if name else group!r}"
+        table = self.tables.get(name or "", "search") if group == "constraints" else group
+        return at_key(f"[{table}]", name) if name else f"[{table}]"
+
+    def error(self, group: str, name: str | None, message: str) -> SynthesisError:
+        """``"<source>: <key>: <message>"`` (``s.toml: [bounds], key 'sun': ...``)."""
+        where = self.key(group, name)
+        exc = SynthesisError(f"{self.source}: {where}: {message}")
+        exc.source, exc.where = self.source, where
+        return exc
+
+
+def _number(value: Any, place: _Place, group: str, name: str | None) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise SynthesisError(f"{where}: {key} must be a finite number, got {value!r}.")
+        raise place.error(group, name, f"expected a finite number, got {short(value)}.")
     return float(value)
 
 
-def _count(value: Any, key: str, where: str, minimum: int = 0, maximum: int | None = None) -> int:
+def _count(value: Any, place: _Place, group: str, name: str | None, minimum: int = 0,
+           maximum: int | None = None) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
-        raise SynthesisError(f"{where}: {key} must be a whole number >= {minimum}, got {value!r}.")
+        raise place.error(group, name, f"expected a whole number >= {minimum}, got {short(value)}.")
     if maximum is not None and value > maximum:
-        raise SynthesisError(f"{where}: {key} must be at most {maximum}, got {value!r} (see docs/limits.md).")
+        raise place.error(group, name, f"expected at most {maximum}, got {value!r} (see docs/limits.md).")
     return value
 
 
-def _pair(value: Any, key: str, where: str, integer: bool = False) -> tuple[float, float]:
+def _pair(value: Any, place: _Place, name: str, integer: bool = False) -> tuple[float, float]:
     if not isinstance(value, Sequence) or isinstance(value, str) or len(value) != 2:
-        raise SynthesisError(f"{where}: {key} must be a pair [low, high], got {value!r}.")
-    lo, hi = (_count(v, key, where, MIN_TEETH, MAX_TEETH) if integer else _number(v, key, where) for v in value)
+        raise place.error("constraints", name, f"expected a pair [low, high], got {short(value)}.")
+    lo, hi = (_count(v, place, "constraints", name, MIN_TEETH, MAX_TEETH) if integer
+              else _number(v, place, "constraints", name) for v in value)
     if not lo <= hi:
-        raise SynthesisError(f"{where}: {key} must have low <= high, got [{lo}, {hi}].")
+        raise place.error("constraints", name, f"expected low <= high, got [{lo}, {hi}].")
     return lo, hi
 
 
@@ -180,40 +219,50 @@ class SynthesisSpec:
             ``max_members_per_shaft``, ``free_input``, ``input_members``, ``output_members``, ``levels``,
             ``stationary_efficiency``, ``top``, ``title``.
         """
+        place = where if isinstance(where, _Place) else _Place(where)
         kw: dict[str, Any] = {}
-        tmap = dict(targets) if isinstance(targets, Mapping) else {"ratios": targets}
+        listed = not isinstance(targets, Mapping)
+        tmap = {"ratios": targets} if listed else dict(targets)
         unknown = set(tmap) - {"ratios", "forward", "reverse", "tolerance", "spread", "gears", "first", "progression"}
         if unknown:
-            raise SynthesisError(f"{where}: unknown targets key(s) {', '.join(sorted(map(repr, unknown)))}; use "
-                                 "forward, reverse, tolerance or spread, gears, first, progression.")
+            raise place.error("targets", None, f"unknown key(s) {', '.join(sorted(map(short, unknown)))}; use "
+                                               "forward, reverse, tolerance or spread, gears, first, progression.")
         if "spread" in tmap:
             for key in ("gears", "first"):
                 if key not in tmap:
-                    raise SynthesisError(f"{where}: targets.spread needs targets.{key} as well.")
-            spread = _number(tmap["spread"], "targets.spread", where)
-            first = _number(tmap["first"], "targets.first", where)
-            gears = _count(tmap["gears"], "targets.gears", where, 2)
-            prog = _number(tmap.get("progression", 1.0), "targets.progression", where)
-            if spread <= 1 or first <= 0 or prog <= 0:
-                raise SynthesisError(f"{where}: targets.spread must be > 1, first and progression > 0.")
+                    raise place.error("targets", key, "missing: a spread of ratios needs the number of gears and "
+                                                      "the first ratio (gears = 8, first = 4.7).")
+            spread = _number(tmap["spread"], place, "targets", "spread")
+            first = _number(tmap["first"], place, "targets", "first")
+            gears = _count(tmap["gears"], place, "targets", "gears", 2)
+            prog = _number(tmap.get("progression", 1.0), place, "targets", "progression")
+            for key, value, low in (("spread", spread, "> 1"), ("first", first, "> 0"), ("progression", prog, "> 0")):
+                if not (value > 1 if key == "spread" else value > 0):
+                    raise place.error("targets", key, f"expected a number {low}, got {value!r}.")
             forward = list(progressive_ratios(spread, gears, first, prog))
-            reverse = [_number(v, "targets.reverse", where) for v in tmap.get("reverse", [])]
+            reverse = [_number(v, place, "targets", "reverse") for v in _list(tmap.get("reverse", []), place,
+                                                                               "reverse")]
         elif "ratios" in tmap:
             values = tmap["ratios"]
             if isinstance(values, (str, bytes)) or not isinstance(values, Sequence) or not values:
-                raise SynthesisError(f"{where}: targets must be a non-empty list of ratios, got {values!r}.")
-            nums = [_number(v, "targets", where) for v in values]
+                raise place.error("targets", None, f"expected a non-empty list of ratios, got {short(values)}.")
+            nums = [_number(v, place, "targets", None) for v in values]
             if any(v == 0 for v in nums):
-                raise SynthesisError(f"{where}: a target ratio of 0 is no gear; forward ratios must be > 0 and "
-                                     "reverse ratios < 0.")
+                raise place.error("targets", None, "a target ratio of 0 is no gear; forward ratios must be > 0 and "
+                                                   "reverse ratios < 0.")
             forward, reverse = [v for v in nums if v > 0], [v for v in nums if v < 0]
         else:
-            forward = [_number(v, "targets.forward", where) for v in tmap.get("forward", [])]
-            reverse = [_number(v, "targets.reverse", where) for v in tmap.get("reverse", [])]
-        if any(v <= 0 for v in forward) or any(v >= 0 for v in reverse):
-            raise SynthesisError(f"{where}: forward ratios must be > 0 and reverse ratios < 0 (a ratio of 0 is no gear).")
+            forward = [_number(v, place, "targets", "forward") for v in _list(tmap.get("forward", []), place,
+                                                                               "forward")]
+            reverse = [_number(v, place, "targets", "reverse") for v in _list(tmap.get("reverse", []), place,
+                                                                               "reverse")]
+        for key, bad, rule in (("forward", [v for v in forward if v <= 0], "> 0"),
+                               ("reverse", [v for v in reverse if v >= 0], "< 0")):
+            if bad:
+                raise place.error("targets", None if listed else key,
+                                  f"{key} ratios must be {rule} (a ratio of 0 is no gear), got {bad[0]!r}.")
         if not forward:
-            raise SynthesisError(f"{where}: give at least one forward ratio (targets.forward).")
+            raise place.error("targets", None if listed else "forward", "give at least one forward ratio.")
         kw["forward"] = tuple(sorted(forward, reverse=True))
         kw["reverse"] = tuple(sorted(reverse))
         cons = dict(constraints or {})
@@ -222,78 +271,87 @@ class SynthesisSpec:
         if isinstance(sets, Mapping):
             unknown = set(sets) - {"simple", "plus"}
             if unknown:
-                raise SynthesisError(f"{where}: unknown sets key(s) {sorted(unknown)}; use simple and plus.")
-            kw["simple"] = _count(sets.get("simple", 0), "sets.simple", where)
-            kw["plus"] = _count(sets.get("plus", 0), "sets.plus", where)
+                raise place.error("sets", None, f"unknown key(s) {', '.join(sorted(map(short, unknown)))}; use "
+                                                "simple and plus.")
+            kw["simple"] = _count(sets.get("simple", 0), place, "sets", "simple")
+            kw["plus"] = _count(sets.get("plus", 0), place, "sets", "plus")
         else:
-            kw["simple"], kw["plus"] = _count(sets, "sets", where, 1), 0
+            kw["simple"], kw["plus"] = _count(sets, place, "sets", None, 1), 0
         if not 1 <= kw["simple"] + kw["plus"] <= MAX_SYNTHESIS_SETS:
-            raise SynthesisError(f"{where}: give 1 to {MAX_SYNTHESIS_SETS} planetary sets in all (sets.simple + "
-                                 f"sets.plus), got {kw['simple'] + kw['plus']} (see docs/limits.md).")
+            raise place.error("sets", None, f"give 1 to {MAX_SYNTHESIS_SETS} planetary sets in all (simple + plus), "
+                                            f"got {kw['simple'] + kw['plus']} (see docs/limits.md).")
         elements = dict(elements or {"brakes": 2, "clutches": 2})
         unknown = set(elements) - {"brakes", "clutches", "engaged"}
         if unknown:
-            raise SynthesisError(f"{where}: unknown elements key(s) {sorted(unknown)}; use brakes, clutches, engaged.")
-        kw["brakes"] = _count(elements.get("brakes", 0), "elements.brakes", where)
-        kw["clutches"] = _count(elements.get("clutches", 0), "elements.clutches", where)
+            raise place.error("elements", None, f"unknown key(s) {', '.join(sorted(map(short, unknown)))}; use "
+                                                "brakes, clutches, engaged.")
+        kw["brakes"] = _count(elements.get("brakes", 0), place, "elements", "brakes")
+        kw["clutches"] = _count(elements.get("clutches", 0), place, "elements", "clutches")
         total = kw["brakes"] + kw["clutches"]
         gears = len(kw["forward"]) + len(kw["reverse"])
         if total > MAX_SYNTHESIS_ELEMENTS:
-            raise SynthesisError(f"{where}: at most {MAX_SYNTHESIS_ELEMENTS} shift elements (elements.brakes + "
-                                 f"elements.clutches), got {total} (see docs/limits.md).")
+            raise place.error("elements", None, f"at most {MAX_SYNTHESIS_ELEMENTS} shift elements (brakes + "
+                                                f"clutches), got {total} (see docs/limits.md).")
         if gears > MAX_SYNTHESIS_GEARS:
-            raise SynthesisError(f"{where}: at most {MAX_SYNTHESIS_GEARS} target ratios, got {gears} "
-                                 "(see docs/limits.md).")
+            raise place.error("targets", None, f"at most {MAX_SYNTHESIS_GEARS} target ratios, got {gears} "
+                                               "(see docs/limits.md).")
         if "engaged" in elements:
             engaged = elements["engaged"]
             engaged = (engaged,) if not isinstance(engaged, Sequence) else tuple(engaged)
-            kw["engaged"] = tuple(_count(e, "elements.engaged", where, 1) for e in engaged)
+            kw["engaged"] = tuple(_count(e, place, "elements", "engaged", 1) for e in engaged)
         else:
             kw["engaged"] = tuple(k for k in range(1, total) if comb(total, k) >= gears)
         for k in kw["engaged"]:
             if k >= total or comb(total, k) < gears:
-                raise SynthesisError(
-                    f"{where}: {total} shift elements with {k} engaged per gear give {comb(total, k) if k < total else 0} "
-                    f"combinations, fewer than the {gears} gears asked for; add elements (elements.brakes/clutches) "
-                    "or change elements.engaged.")
+                raise place.error(
+                    "elements", "engaged",
+                    f"{total} shift elements with {k} engaged per gear give {comb(total, k) if k < total else 0} "
+                    f"combinations, fewer than the {gears} gears asked for; add brakes or clutches, or change "
+                    "the number engaged.")
         if not kw["engaged"]:
-            raise SynthesisError(f"{where}: {total} shift elements cannot give {gears} gears; add brakes or clutches.")
-        return cls._with_constraints(kw, cons, where)
+            raise place.error("elements", None, f"{total} shift elements cannot give {gears} gears; add brakes or "
+                                                "clutches.")
+        return cls._with_constraints(kw, cons, place)
 
     @classmethod
-    def _with_constraints(cls, kw: dict[str, Any], cons: dict[str, Any], where: str) -> SynthesisSpec:
+    def _with_constraints(cls, kw: dict[str, Any], cons: dict[str, Any], place: _Place) -> SynthesisSpec:
         allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "max_members_per_shaft",
                    "free_input", "input_members", "output_members", "levels", "stationary_efficiency", "top",
                    "title"}
         unknown = set(cons) - allowed
         if unknown:
-            raise SynthesisError(f"{where}: unknown constraint(s) {', '.join(sorted(map(repr, unknown)))}; "
-                                 f"allowed: {', '.join(sorted(allowed))}.")
+            name = sorted(unknown)[0]
+            raise place.error("constraints", name, f"unknown constraint; allowed: {', '.join(sorted(allowed))}.")
+
+        def bad(name: str, message: str) -> SynthesisError:
+            return place.error("constraints", name, message)
+
         if "tolerance" in cons:
-            kw["tolerance"] = _number(cons["tolerance"], "tolerance", where)
+            kw["tolerance"] = _number(cons["tolerance"], place, "constraints", "tolerance")
             if not 0 < kw["tolerance"] <= 0.2:
-                raise SynthesisError(f"{where}: tolerance is relative (0.01 = 1 %) and must lie in (0, 0.2], "
-                                     f"got {kw['tolerance']!r}.")
+                raise bad("tolerance", f"the tolerance is relative (0.01 = 1 %) and must lie in (0, 0.2], "
+                                       f"got {kw['tolerance']!r}.")
         if "stationary_ratio" in cons:
-            lo, hi = _pair(cons["stationary_ratio"], "bounds.stationary_ratio", where)
+            lo, hi = _pair(cons["stationary_ratio"], place, "stationary_ratio")
             if lo <= 1.0:
-                raise SynthesisError(f"{where}: bounds.stationary_ratio gives |i0|, which must exceed 1 "
-                                     f"(ring larger than sun), got [{lo}, {hi}].")
+                raise bad("stationary_ratio", f"the bounds of |i0| must exceed 1 (ring larger than sun), "
+                                              f"got [{lo}, {hi}].")
             kw["stationary_ratio"] = (lo, hi)
         for key in ("sun", "planet"):
             if key in cons:
-                kw[key] = _pair(cons[key], f"bounds.{key}", where, integer=True)
+                kw[key] = _pair(cons[key], place, key, integer=True)
         if "planets" in cons:
             p = cons["planets"]
             p = (p,) if isinstance(p, int) else p
             if not isinstance(p, Sequence) or not p:
-                raise SynthesisError(f"{where}: bounds.planets must be a list of planet numbers, got {p!r}.")
-            kw["planets"] = tuple(_count(v, "bounds.planets", where, 1, MAX_PLANETS) for v in p)
+                raise bad("planets", f"expected a list of planet numbers, got {short(p)}.")
+            kw["planets"] = tuple(_count(v, place, "constraints", "planets", 1, MAX_PLANETS) for v in p)
         if cons.get("max_members_per_shaft") is not None:
-            kw["max_members_per_shaft"] = _count(cons["max_members_per_shaft"], "search.max_members_per_shaft", where, 2)
+            kw["max_members_per_shaft"] = _count(cons["max_members_per_shaft"], place, "constraints",
+                                                 "max_members_per_shaft", 2)
         if "free_input" in cons:
             if not isinstance(cons["free_input"], bool):
-                raise SynthesisError(f"{where}: search.free_input must be true or false, got {cons['free_input']!r}.")
+                raise bad("free_input", f"expected true or false, got {short(cons['free_input'])}.")
             kw["free_input"] = cons["free_input"]
         for key in ("input_members", "output_members"):
             if key in cons:
@@ -301,27 +359,31 @@ class SynthesisSpec:
                 value = [value] if isinstance(value, str) else value
                 if not isinstance(value, Sequence) or not value or any(v not in ("sun", "ring", "carrier")
                                                                         for v in value):
-                    raise SynthesisError(f"{where}: search.{key} must be a non-empty list of 'sun', 'ring', "
-                                         f"'carrier', got {cons[key]!r}.")
+                    raise bad(key, f"expected a non-empty list of 'sun', 'ring', 'carrier', got {short(cons[key])}.")
                 kw[key] = tuple(value)
         if "levels" in cons:
-            kw["levels"] = _count(cons["levels"], "search.levels", where, 0)
-            if kw["levels"] > 4:
-                raise SynthesisError(f"{where}: search.levels must be at most 4, got {kw['levels']}.")
+            kw["levels"] = _count(cons["levels"], place, "constraints", "levels", 0, 4)
         if "stationary_efficiency" in cons:
-            eta = _number(cons["stationary_efficiency"], "search.stationary_efficiency", where)
+            eta = _number(cons["stationary_efficiency"], place, "constraints", "stationary_efficiency")
             if not 0 < eta <= 1:
-                raise SynthesisError(f"{where}: search.stationary_efficiency must lie in (0, 1], got {eta!r}.")
+                raise bad("stationary_efficiency", f"expected an efficiency in (0, 1], got {eta!r}.")
             kw["stationary_efficiency"] = eta
         if "top" in cons:
-            kw["top"] = _count(cons["top"], "search.top", where, 1)
+            kw["top"] = _count(cons["top"], place, "constraints", "top", 1)
         if "title" in cons:
             kw["title"] = str(cons["title"])
         return cls(**kw)
 
     @classmethod
     def from_file(cls, path: str | Path) -> SynthesisSpec:
-        """Read a TOML specification (see the module docstring for the keys)."""
+        """Read a TOML specification (see the module docstring for the keys).
+
+        Raises
+        ------
+        SynthesisError
+            A bad file or value; the message names the file, the table and the key
+            (``spec.toml: [bounds], key 'sun': ...``).
+        """
         from ..io.source import InputFileError, parse_toml, read_source
 
         path = Path(path)
@@ -331,15 +393,24 @@ class SynthesisSpec:
             raise SynthesisError(str(exc)) from None
         unknown = set(data) - {"title", "targets", "sets", "elements", "bounds", "search"}
         if unknown:
-            raise SynthesisError(f"{path}: unknown table(s)/key(s) {', '.join(sorted(map(repr, unknown)))}; "
+            raise SynthesisError(f"{path}: unknown table(s)/key(s) {', '.join(sorted(map(short, unknown)))}; "
                                  "use title, [targets], [sets], [elements], [bounds], [search].")
         for table in ("targets", "sets", "elements", "bounds", "search"):
             if table in data and not isinstance(data[table], Mapping):
-                raise SynthesisError(f"{path}: {table} must be a table [{table}].")
+                raise SynthesisError(f"{path}: key {table!r}: expected a table [{table}], got {short(data[table])}.")
         if "targets" not in data:
             raise SynthesisError(f"{path}: missing [targets] table (forward = [...], reverse = [...]).")
-        cons = {**data.get("bounds", {}), **data.get("search", {})}
+        bounds, search = data.get("bounds", {}), data.get("search", {})
+        cons = {**bounds, **search}
+        tables = {"tolerance": "targets", **{k: "bounds" for k in bounds}, **{k: "search" for k in search}}
         if "title" in data:
             cons["title"] = data["title"]
         return cls.create(data["targets"], data.get("sets", {"simple": 2}), data.get("elements"), cons,
-                          where=str(path))
+                          where=_Place(str(path), tables))  # type: ignore[arg-type]
+
+
+def _list(value: Any, place: _Place, name: str) -> Sequence[Any]:
+    """A list of target ratios (``[targets]`` forward or reverse)."""
+    if isinstance(value, (str, bytes)) or not isinstance(value, Sequence):
+        raise place.error("targets", name, f"expected a list of ratios, got {short(value)}.")
+    return value

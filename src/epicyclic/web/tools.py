@@ -158,11 +158,30 @@ def _defaults(tool: Tool, context: Context, chosen_set: str | None) -> dict[str,
     chosen = values.get("set")
     if chosen and chosen != ALL:
         values.update({k: v for k, v in _set_defaults(context, chosen).items() if k in values})
+    if tool.name == "map":  # the map's default axes in the file's [units], as `epicyclic map` reads them
+        from ..io.ranges import default_axis
+
+        units = _units(context)
+        values.update(speed=default_axis("speed", units.speed), torque=default_axis("torque", units.torque))
     first = _first_geometry(context)
     if tool.name == "search" and first is not None:  # search near the file's own design
         values.update(module=f"{first.rack.module:g}", pressure_angle=f"{first.rack.pressure_angle:g}",
                       planets=str(first.planetary_set.planets))
     return values
+
+
+def _units(context: Context):
+    from ..units import Units
+
+    return getattr(context.train_file, "units", None) or Units()
+
+
+def _labelled(tool: Tool, f: Field, context: Context) -> Field:
+    """The field with its unit: the map's axes are in the file's ``[units]``."""
+    if tool.name == "map" and f.name in ("speed", "torque"):
+        unit = _units(context).of(f.name).replace("*", "·")
+        return replace(f, label=f"input {f.name}s [{unit}] (A..B:N, or a unit after it)")
+    return f
 
 
 def form_rows(tool: Tool, context: Context, chosen_set: str | None = None) -> list[tuple[Field, str, tuple[str, ...]]]:
@@ -173,7 +192,7 @@ def form_rows(tool: Tool, context: Context, chosen_set: str | None = None) -> li
     for f in tool.fields:
         if (f.per_set and chosen == ALL) or (f.choices == ("gear",) and not _choices(f, context)):
             continue
-        rows.append((f, values[f.name], _choices(f, context) if f.kind == "choice" else ()))
+        rows.append((_labelled(tool, f, context), values[f.name], _choices(f, context) if f.kind == "choice" else ()))
     return rows
 
 
@@ -261,7 +280,9 @@ def _forces(context: Context, v: Mapping[str, Any]) -> str:
     chosen = dict(_chosen(context, v))
     if v["set"] != ALL and v["load_sharing"] is not None:
         chosen[v["set"]] = replace(chosen[v["set"]], load_sharing=v["load_sharing"])
-    results = geometry_results(chosen, context.solution)
+    # solved with every set of the file, so that a planet the chosen set shares with another is one body
+    results = geometry_results({**_file_geometry(context), **chosen}, context.solution)
+    results = tuple(r for r in results if r.name in chosen)
     check_finite(geometry_dict(results), context.train_file.source, "forces")
     results = tuple(replace(r, fitting=None) for r in results)  # the forces only, as `epicyclic forces -f html`
     return geometry_html(results, heading="Forces", show_geometry=False)
@@ -330,7 +351,8 @@ def map_of(context: Context, v: Mapping[str, Any]):
     from ..io.ranges import map_grid
     from ..losses.efficiency_map import efficiency_map
 
-    speeds, torques = map_grid(v["speed"], v["torque"], ("map: input speeds", "map: input torques"))
+    speeds, torques = map_grid(v["speed"], v["torque"], ("map: input speeds", "map: input torques"),
+                               units=_units(context))
     return efficiency_map(context.train_file, speeds, torques, gear=v["gear"], direction=v["direction"])
 
 

@@ -410,5 +410,5 @@ def download(state: PageState, kind: str) -> Reply:
     else:
         description = " ".join(filter(None, (train_file.description, *subject.context.notes)))
         body = html_report(subject.solution, units, title=train_file.title, source=state.source,
-                           description=description, lang=state.lang)
+                           description=description, lang=state.lang, geometry=subject.context.geometry)
     return Reply(body, media_type=_DOWNLOADS[kind], filename=name)
