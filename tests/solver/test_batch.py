@@ -77,7 +77,7 @@ def test_batch_errors_name_the_point():
     with pytest.raises(OperatingPointError, match=r"stands still at point 1"):
         solve_batch(train, speeds={"sun": np.array([100.0, 0.0])}, powers={"sun": np.array([1.0, 1.0])},
                     loads=["x"])
-    with pytest.raises(OperatingPointError, match="at point 2 is not finite"):
+    with pytest.raises(UnitError, match=r"solve_batch: speeds\['sun'\]\[2\]: expected a finite speed"):
         solve_batch(train, speeds={"sun": np.array([100.0, 1.0, np.nan])}, torques={"sun": 1.0}, loads=["x"])
 
 

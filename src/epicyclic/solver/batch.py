@@ -14,15 +14,13 @@ Brandenberger 1952, eqs. 1–10.
 
 from __future__ import annotations
 
-import numbers
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import (EpicyclicError, NearSingularError, NonFiniteResultError, OperatingPointError,
-                      UnderdeterminedError)
+from ..errors import EpicyclicError, NonFiniteResultError, OperatingPointError
 from ..model.elements import HOUSING
 from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
@@ -33,7 +31,7 @@ from .evaluate import evaluate, relative_speeds
 from .friction_state import ambiguous_points
 from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
-from .self_locking import SELF_LOCKING_MARGIN
+from .self_locking import SELF_LOCKING_MARGIN, limit_solver, with_pattern
 from .solve import MAX_PATTERN_TRIES, _validate
 from .statics import TorqueSolver, torque_solver
 
@@ -109,32 +107,13 @@ class BatchSolution:
         )
 
 
-#: The given groups of :func:`solve_batch` and the quantity of their values.
-_GROUPS = (("speeds", "speed"), ("torques", "torque"), ("powers", "power"))
-
-
-def _in_core_units(values: object, quantity: str, field: str) -> np.ndarray:
-    """Plain numbers as given (1/min, N·m, W); strings with units and pint quantities converted
-    (:func:`~epicyclic.units.to_core_array`, never stripped of their unit); errors name ``field``."""
-    if isinstance(values, numbers.Real) or (isinstance(values, np.ndarray) and values.dtype.kind in "iuf"):
-        return np.asarray(values, dtype=float)
-    return to_core_array(values, quantity, field=field)
-
-
 def _broadcast(groups: Sequence[Mapping[str, object]]) -> tuple[list[dict[str, np.ndarray]], tuple[int, ...]]:
-    groups = [{k: _in_core_units(v, quantity, f"solve_batch: {name}[{k!r}]") for k, v in g.items()}
-              for (name, quantity), g in zip(_GROUPS, groups)]
-    arrays = [v for g in groups for v in g.values()]
-    shape = np.broadcast_shapes(*(a.shape for a in arrays)) if arrays else ()
-    out = []
-    for g in groups:
-        out.append({k: np.broadcast_to(v, shape).ravel() for k, v in g.items()})
-    for g in out:
-        for k, v in g.items():
-            if not np.all(np.isfinite(v)):
-                bad = int(np.flatnonzero(~np.isfinite(v))[0])
-                raise OperatingPointError(f"batch: value for shaft {k!r} at point {bad} is not finite ({v[bad]!r}).")
-    return out, shape
+    """The given speeds, torques and powers in 1/min, N·m, W (units converted, never stripped; errors name
+    the field and index: :func:`~epicyclic.units.to_core_array`), flattened in one broadcast shape."""
+    groups = [{k: to_core_array(v, quantity, field=f"solve_batch: {name}[{k!r}]") for k, v in g.items()}
+              for name, quantity, g in zip(("speeds", "torques", "powers"), ("speed", "torque", "power"), groups)]
+    shape = np.broadcast_shapes(*(v.shape for g in groups for v in g.values()))
+    return [{k: np.broadcast_to(v, shape).ravel() for k, v in g.items()} for g in groups], shape
 
 
 def solve_batch(
@@ -329,7 +308,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         extra is not None and (dragged is not None or bool(np.any(extra.efficiency != 1.0))))
     ev = ideal_eval  # lossless: the ideal evaluation is the result
     retried = False
-    singular: set[tuple[int, ...]] = set()  # loss patterns whose equations are singular (see _pattern_solver)
+    singular: set[tuple[int, ...]] = set()  # loss patterns whose equations are singular (limit_solver)
     at_limit_points = np.zeros(count, dtype=bool)
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
@@ -340,7 +319,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
             if attempt == 0 and len(given) == 1 and effs is None and rows is None:
                 # one given torque: each point's torques are its pattern's column times the torque
                 # (Statics.torques point by point, without gathering the points of each pattern)
-                columns = np.stack([_pattern_solver(mats, given, row, ideal, singular).operator[:, 0]
+                columns = np.stack([limit_solver(mats, given, row, ideal, singular).operator[:, 0]
                                     for row, _, _ in groups], axis=1)
                 which = np.zeros(count, dtype=int)
                 for k, (_, _, mask) in enumerate(groups[1:], 1):
@@ -350,7 +329,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                 x += 0.0  # as linear.apply
             else:
                 for row, members, _ in groups:
-                    solver = _pattern_solver(mats, given, row, ideal, singular)
+                    solver = limit_solver(mats, given, row, ideal, singular)
                     x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
                                                None if rows is None else rows[:, members],
                                                None if effs is None else effs[:, members])
@@ -367,7 +346,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                                 None if dragged is None else dragged[:, pending]).pattern
         ok = np.all((column == observed) | (observed == 0), axis=0)
         if singular:  # exactly at a self-locking limit: no finite state with this pattern, none tried after it
-            hit = _with_pattern(column, singular)
+            hit = with_pattern(column, singular)
             at_limit_points[pending[hit]] = True
             ok |= hit  # settled (not consistent: see below)
         consistent[pending[ok]] = True
@@ -433,28 +412,6 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     results |= {"input_power": drive_power, "output_power": load_power, "loss": loss, "efficiency": efficiency,
                 "self_locking": self_locking, "ambiguous": ambiguous}
     return results, solved
-
-
-def _pattern_solver(mats, given, row, ideal: TorqueSolver, singular: set) -> TorqueSolver:
-    """The torque solver of the loss pattern ``row``.
-
-    Where its equations are singular although the lossless ones are not, the set is exactly at its
-    self-locking limit (i0·η0^w = 1: unbounded torques, see :func:`~epicyclic.solver.solve.solve`);
-    ``row`` then goes into ``singular`` and the lossless solver stands in (its points self-lock).
-    """
-    try:
-        return torque_solver(mats, given, row)
-    except (UnderdeterminedError, NearSingularError):
-        singular.add(tuple(int(w) for w in row))
-        return ideal
-
-
-def _with_pattern(column: np.ndarray, rows: set[tuple[int, ...]]) -> np.ndarray:
-    """Points (columns of ``column``) whose loss pattern is one of ``rows``."""
-    hit = np.zeros(column.shape[1], dtype=bool)
-    for row in rows:
-        hit |= np.all(column == np.array(row, dtype=column.dtype)[:, None], axis=0)
-    return hit
 
 
 def _groups(pattern: np.ndarray, pending: np.ndarray, everything: bool = False):

@@ -27,12 +27,13 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import EpicyclicError
+from ..errors import EpicyclicError, NearSingularError, UnderdeterminedError
 from ..results.solution import RPM_TO_RAD_S, SelfLocking, Solution
 from .assembly import TrainMatrices
 from .linear import pseudoinverse
+from .statics import TorqueSolver, torque_solver
 
-__all__ = ["SELF_LOCKING_MARGIN", "self_locking", "formal_efficiency"]
+__all__ = ["SELF_LOCKING_MARGIN", "self_locking", "formal_efficiency", "limit_solver", "with_pattern"]
 
 #: A formal efficiency at or below this (relative power at the loads) is self-locking.
 SELF_LOCKING_MARGIN = 1e-9
@@ -134,6 +135,28 @@ def formal_efficiency(mats: TrainMatrices, given, values, speeds, pattern, solut
     if drive == 0.0:
         return -np.inf if load < 0 else np.inf
     return float(load / drive)
+
+
+def limit_solver(mats: TrainMatrices, given, row, ideal: TorqueSolver, singular: set) -> TorqueSolver:
+    """The torque solver of the loss pattern ``row`` (for the batch, as :func:`~epicyclic.solver.solve.solve`).
+
+    Where its equations are singular although the lossless ones are not, the train is exactly at its
+    self-locking limit (i0·η0^w = 1: unbounded torques); ``row`` then goes into ``singular`` and the
+    lossless solver ``ideal`` stands in (the points of that pattern self-lock).
+    """
+    try:
+        return torque_solver(mats, given, row)
+    except (UnderdeterminedError, NearSingularError):
+        singular.add(tuple(int(w) for w in row))
+        return ideal
+
+
+def with_pattern(column: np.ndarray, rows: set[tuple[int, ...]]) -> np.ndarray:
+    """Points (columns of ``column``) whose loss pattern is one of ``rows``."""
+    hit = np.zeros(column.shape[1], dtype=bool)
+    for row in rows:
+        hit |= np.all(column == np.array(row, dtype=column.dtype)[:, None], axis=0)
+    return hit
 
 
 def _thresholds(mats, given, values, speeds, pattern, solution) -> dict[str, float]:
