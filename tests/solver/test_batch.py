@@ -106,3 +106,21 @@ def test_batch_reads_units_as_solve_does():
         solve_batch(train, speeds={"sun": 100.0}, powers={"sun": np.array([1.0, 2.0]) * ureg("m")}, **roles)
     with pytest.raises(UnitError, match=r"solve_batch: torques\['sun'\]\[0\]: cannot read 'abc' as a torque"):
         solve_batch(train, speeds={"sun": 100.0}, torques={"sun": ["abc"]}, **roles)
+
+
+def test_batch_with_more_than_twelve_levers_solves_each_point_with_its_own_pattern():
+    # A chain of 13 stages (η0 = 0.97 each), the power flowing either way: two loss-direction patterns.
+    # Patterns of more than 12 levers are grouped by np.unique; each point must get its own pattern's
+    # torques (once every point got the last pattern's: η = 1.0 and a torque 2.1× too small).
+    # Reference: the scalar solver at every point; a chain's η is Π η0 = 0.97^13 in both directions.
+    shafts = [f"s{k}" for k in range(14)]
+    train = GearTrain([GearStage(f"G{k}", shafts[k], shafts[k + 1], -1.1 if k % 2 else 1.2, 0.97) for k in range(13)])
+    speed = np.array([1000.0, 1000.0, -800.0, 500.0])
+    torque = np.array([10.0, -10.0, 5.0, -7.0])
+    res = solve_batch(train, speeds={"s0": speed}, torques={"s0": torque}, connected=["s13"])
+    assert res.patterns == 2
+    for k in range(4):
+        sol = solve(train, OperatingPoint(speeds={"s0": speed[k]}, torques={"s0": torque[k]}, connected=["s13"]))
+        assert res.torques["s13"][k] == pytest.approx(sol.torque("s13"), rel=1e-12)
+        assert res.efficiency[k] == pytest.approx(sol.efficiency, rel=1e-12)
+        assert res.efficiency[k] == pytest.approx(0.97 ** 13, rel=1e-12)

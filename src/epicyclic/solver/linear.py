@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["apply", "row_products", "SMALL", "Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "unreached_columns", "RANK_TOLERANCE",
+__all__ = ["apply", "row_products", "span", "SMALL", "Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "unreached_columns", "RANK_TOLERANCE",
            "NEAR_SINGULAR"]
 
 #: Relative singular values at or below this are exact zeros (round-off of an exact dependence).
@@ -82,6 +82,20 @@ def row_products(rows: list[list[float]], values: list[float]) -> list[float]:
             total += a * b
         out.append(total)
     return out
+
+
+def span(size: np.ndarray) -> tuple[float, float]:
+    """The smallest non-zero and the largest entry of ``size`` (magnitudes, ≥ 0): (inf, 0) where all
+    are 0; NaN where one is NaN.  Two reductions (three where some entry is 0).
+
+    >>> span(np.array([[0.0, 2.0], [0.5, 0.0]]))
+    (0.5, 2.0)
+    """
+    most = float(size.max(initial=0.0))
+    least = float(size.min(initial=np.inf))
+    if least == 0.0:
+        least = float(np.min(size, where=size > 0.0, initial=np.inf))
+    return least, most
 
 
 def equilibrate(matrix: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
