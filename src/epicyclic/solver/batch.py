@@ -25,12 +25,14 @@ from ..model.elements import HOUSING
 from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
+from ..units import to_core_array
 from .assembly import matrices
 from .evaluate import directions, evaluate, given_columns, relative_speeds
+from .friction_state import ambiguous_points
 from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
 from .linear import span
-from .self_locking import SELF_LOCKING_MARGIN
+from .self_locking import SELF_LOCKING_MARGIN, limit_solver, with_pattern
 from .solve import MAX_PATTERN_TRIES, _validate
 from .statics import TorqueSolver, torque_solver
 
@@ -59,6 +61,11 @@ class BatchSolution:
         output/input; NaN exactly where ``self_locking`` is True or no power
         enters (see ``defined``).
     self_locking : ndarray of bool
+    ambiguous : ndarray of bool
+        Where the friction state is not unique: another loss-direction pattern (one element's
+        reversed) is consistent too and keeps the designated drives and loads; the result shows
+        the one reached from the lossless power flow, as :func:`~epicyclic.solver.solve.solve`
+        does (which warns).  See :mod:`~epicyclic.solver.friction_state`.
     patterns : int
         Number of distinct loss-direction patterns solved.
     loss_sources : mapping element → mapping source → ndarray
@@ -78,6 +85,7 @@ class BatchSolution:
     self_locking: np.ndarray
     patterns: int
     loss_sources: Mapping[str, ArrayMap] = field(default_factory=dict)
+    ambiguous: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -96,22 +104,19 @@ class BatchSolution:
         span = f"efficiency {eff.min():.4f}…{eff.max():.4f}" if eff.size else "no defined efficiency"
         return (
             f"<BatchSolution {self.train.name!r}: {len(self)} points, {span}, "
-            f"{int(self.self_locking.sum())} self-locking, {self.patterns} loss pattern(s)>"
+            f"{int(self.self_locking.sum())} self-locking, {self.patterns} loss pattern(s)"
+            + (f", {int(self.ambiguous.sum())} with a friction state that is not unique" if self.ambiguous.any() else "")
+            + ">"
         )
 
 
 def _broadcast(groups: Sequence[Mapping[str, object]]) -> tuple[list[dict[str, np.ndarray]], tuple[int, ...]]:
-    arrays = [np.asarray(v, dtype=float) for g in groups for v in g.values()]
-    shape = np.broadcast_shapes(*(a.shape for a in arrays)) if arrays else ()
-    out = []
-    for g in groups:
-        out.append({k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for k, v in g.items()})
-    for g in out:
-        for k, v in g.items():
-            if not np.all(np.isfinite(v)):
-                bad = int(np.flatnonzero(~np.isfinite(v))[0])
-                raise OperatingPointError(f"batch: value for shaft {k!r} at point {bad} is not finite ({v[bad]!r}).")
-    return out, shape
+    """The given speeds, torques and powers in 1/min, N·m, W (units converted, never stripped; errors name
+    the field and index: :func:`~epicyclic.units.to_core_array`), flattened in one broadcast shape."""
+    groups = [{k: to_core_array(v, quantity, field=f"solve_batch: {name}[{k!r}]") for k, v in g.items()}
+              for name, quantity, g in zip(("speeds", "torques", "powers"), ("speed", "torque", "power"), groups)]
+    shape = np.broadcast_shapes(*(v.shape for g in groups for v in g.values()))
+    return [{k: np.broadcast_to(v, shape).ravel() for k, v in g.items()} for g in groups], shape
 
 
 def solve_batch(
@@ -132,8 +137,9 @@ def solve_batch(
     ----------
     train : GearTrain
     speeds, torques, powers : mapping shaft → array_like
-        As in :class:`~epicyclic.OperatingPoint` (1/min, N·m, W), each value
-        an array; all broadcast to one shape.
+        As in :class:`~epicyclic.OperatingPoint`: plain numbers in 1/min, N·m, W, or
+        values with units (strings such as ``"1500 U/min"``, pint quantities, also a
+        quantity holding an array), each value an array; all broadcast to one shape.
     drives, loads, connected : sequence of str
         As in :class:`~epicyclic.OperatingPoint`.
     efficiencies, loss_torques : mapping, optional
@@ -145,6 +151,14 @@ def solve_batch(
     Returns
     -------
     BatchSolution
+
+    Raises
+    ------
+    UnitError
+        A value that cannot be read or has the wrong dimension; the message names the
+        field and the index, e.g. ``solve_batch: speeds['sun'][2]``.
+    OperatingPointError, UnderdeterminedError, ContradictionError
+        As :func:`~epicyclic.solver.solve.solve`, naming the first bad point.
 
     Examples
     --------
@@ -310,6 +324,8 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     pending = np.arange(count)
     solved: set[tuple[int, ...]] = set()
     retried = False
+    singular: set[tuple[int, ...]] = set()  # loss patterns whose equations are singular (limit_solver)
+    at_limit_points = np.zeros(count, dtype=bool)
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
@@ -319,7 +335,8 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                 # (Statics.torques point by point, without gathering the points of each pattern)
                 patterns, which = _pattern_index(pattern)
                 solved |= {tuple(int(w) for w in row) for row in patterns}
-                columns = np.stack([torque_solver(mats, given, row).operator[:, 0] for row in patterns], axis=1)
+                columns = np.stack([limit_solver(mats, given, row, ideal, singular).operator[:, 0]
+                                    for row in patterns], axis=1)
                 read = given_columns(mats)  # the only columns evaluate reads
                 x = np.zeros((columns.shape[0], count))
                 x[read] = columns[read].take(which, axis=1) * tau + 0.0  # + 0.0 as linear.apply
@@ -329,7 +346,7 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                 if x is first_x:  # the first solution stays as it is for the points that find no pattern
                     x = x.copy()
                 for row, members, _ in groups:
-                    solver = torque_solver(mats, given, row)
+                    solver = limit_solver(mats, given, row, ideal, singular)
                     x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
                                                None if rows is None else rows[:, members],
                                                None if effs is None else effs[:, members])
@@ -345,10 +362,15 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                                 None if effs is None else effs[:, pending],
                                 None if dragged is None else dragged[:, pending]).pattern
         ok = _agrees(column, observed)
+        if singular:  # exactly at a self-locking limit: no finite state with this pattern, none tried after it
+            hit = with_pattern(column, singular)
+            at_limit_points[pending[hit]] = True
+            ok |= hit  # settled (not consistent: see below)
         consistent[pending[ok]] = True
         pending = pending[~ok]
         if pending.size:
             pattern[:, pending] = np.where(observed[:, ~ok] == 0, column[:, ~ok], observed[:, ~ok])
+    consistent &= ~at_limit_points
     if not lossy:
         consistent[:] = True
         solved.add(tuple(int(w) for w in first_pattern[:, 0]) if count else ())
@@ -356,6 +378,9 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         # points with no consistent pattern keep the formal solution of the ideal pattern
         x[:, ~consistent] = first_x[:, ~consistent]
         pattern[:, ~consistent] = first_pattern[:, ~consistent]
+        if at_limit_points.any():  # no finite lossy state: the lossless numbers are shown, as solve does
+            x[:, at_limit_points] = x_ideal[:, at_limit_points]
+            pattern[:, at_limit_points] = 0
         ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
 
     # the results of these points
@@ -404,8 +429,11 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     results |= {("port_torques", (e, p)): ev.x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
     results |= {("losses", e): value for e, value in losses.items()}
     results |= {("sources", e, k): value for e, parts in sources.items() for k, value in parts.items()}
+    ambiguous = (ambiguous_points(train, mats, given, pattern, consistent, tau, rows, effs, n, given_map, dragged,
+                                  [(shaft_row[s], "drive") for s in drives] + [(shaft_row[s], "load") for s in loads],
+                                  _corrected, solved) if lossy else np.zeros(count, dtype=bool))
     results |= {"input_power": drive_power, "output_power": load_power, "loss": loss, "efficiency": efficiency,
-                "self_locking": self_locking}
+                "self_locking": self_locking, "ambiguous": ambiguous}
     return results, solved
 
 
@@ -483,7 +511,7 @@ def _assembled(problem: _Problem, results: dict, solved: set, shape: tuple[int, 
         train=problem.train,
         **{name: MappingProxyType(values) for name, values in group.items() if name != "sources"},
         **{name: results[name].reshape(shape) for name in
-           ("input_power", "output_power", "loss", "efficiency", "self_locking")},
+           ("input_power", "output_power", "loss", "efficiency", "self_locking", "ambiguous")},
         patterns=len(solved),
         loss_sources=MappingProxyType({e: MappingProxyType(parts) for e, parts in group["sources"].items()}),
     )
