@@ -11,6 +11,7 @@ $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e '.[test]'
+	$(PY) -m compileall -q src  # bytecode, as pip writes it for an installed package (PYTHONDONTWRITEBYTECODE may be set)
 	touch $(STAMP)
 
 demo: $(STAMP)

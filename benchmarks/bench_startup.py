@@ -6,6 +6,10 @@ solves and prints the table. Both run as fresh processes, alternating, so that a
 slows both alike; the figure is the ratio of the medians (the minima are printed too).
 Target (issue 11): ratio ≤ 3.
 
+The package's bytecode is compiled first (``compileall``), as pip does when it installs a package:
+numpy's is, and with PYTHONDONTWRITEBYTECODE set (as on some CI machines) an editable checkout would
+otherwise compile every module from source at each start — about 80 ms more, measured 2026-11-23.
+
 Run:  .venv/bin/python benchmarks/bench_startup.py [runs]
 """
 
@@ -33,6 +37,11 @@ def wall(command: list[str]) -> float:
 
 
 def main(runs: int = 21) -> None:
+    import compileall
+
+    import epicyclic
+
+    compileall.compile_dir(Path(epicyclic.__file__).parent, quiet=1)  # see the module docstring
     wall(BASELINE), wall(COMMAND)  # warm the file cache
     base, command = [], []
     for _ in range(runs):
