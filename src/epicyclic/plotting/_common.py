@@ -225,9 +225,7 @@ def member_name(pset: PlanetarySet, port: str) -> str:
     ...                                    z_planet_first=27, z_planet_second=24, z_second=78), "sun")
     'first'
     """
-    if pset.teeth is not None and pset.teeth.arrangement in ("two rings", "two suns"):
-        return {"sun": "first", "ring": "second"}.get(port, port)
-    return port
+    return port if pset.teeth is None else pset.teeth.label(port)
 
 
 def planetary_set(solution: Solution, name: str | None) -> PlanetarySet:
