@@ -267,10 +267,55 @@ class PlanetarySet:
     ) -> PlanetarySet:
         """A double-planet (plus) set: sun–planet 1–planet 2–ring, i0 = +z_ring/z_sun.
 
-        ``mesh_efficiencies`` are the three meshes' efficiencies (combined by
-        product).  The planets must be placeable: planet 1 at (z_sun + z_p1)/2,
-        planet 2 at (z_ring − z_p2)/2 and their centre distance (z_p1 + z_p2)/2
-        (modules) must close a triangle (see :func:`~epicyclic.model.teeth.check_double`).
+        The planets must be placeable: planet 1 at (z_sun + z_p1)/2, planet 2 at
+        (z_ring − z_p2)/2 and their centre distance (z_p1 + z_p2)/2 (modules) must
+        close a triangle, within one module (see :func:`~epicyclic.model.teeth.check_double`).
+
+        Parameters
+        ----------
+        name : str
+            Element name (unique in the train).
+        sun, ring, carrier : str
+            The shafts the sun, the ring and the carrier sit on.
+        z_sun, z_planet_sun, z_planet_ring, z_ring : int
+            Tooth counts (3 … 1000): sun, planet 1 (meshes the sun), planet 2
+            (meshes planet 1 and the ring), ring.
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (sun–planet 1, planet 1–planet 2, planet 2–ring), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry.
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, a ring not larger than the
+            sun or than planet 2, or planets that cannot be placed.
+        EfficiencyError
+            An efficiency outside (0, 1].
+        ModelError
+            Both ``stationary_efficiency`` and ``mesh_efficiencies``, the wrong number of
+            mesh efficiencies, or shafts that are not three different names.
+
+        References
+        ----------
+        Brandenberger 1952, eq. 1 (i0 as the product of the mesh ratios, carrier held:
+        two external meshes and one internal give i0 = +z_ring/z_sun);
+        SDP/SI, *Elements of Metric Gear Technology* (D785), section 13 (double planets).
+
+        Examples
+        --------
+        >>> d = PlanetarySet.double_planet("D", sun="s", ring="r", carrier="c", z_sun=30,
+        ...                                z_planet_sun=15, z_planet_ring=16, z_ring=78)
+        >>> d.stationary_ratio, d.is_plus_set
+        (2.6, True)
         """
         owner = f"planetary set {name!r}"
         zs = check_teeth(z_sun, "z_sun", owner)
@@ -319,12 +364,49 @@ class PlanetarySet:
 
         Parameters
         ----------
+        name : str
+            Element name (unique in the train).
+        sun, ring, carrier : str
+            The shafts of the first central gear a, the second central gear d
+            and the carrier.
+        z_sun, z_planet_sun, z_planet_ring, z_ring : int
+            Tooth counts (3 … 1000) of a, b (meshes a), c (meshes d) and d.
+        ring_internal : bool, default True
+            Whether d is an internal gear (a ring); False for a second sun.
+        sun_internal : bool, default False
+            Whether a is an internal gear (True with ``ring_internal`` for a
+            Wolfrom set: prefer :meth:`two_rings`).
         module_ratio : float, optional
             m_d/m_a, the module of the second mesh over that of the first.
             Given, the tooth counts are checked for coaxiality
             (|(z_a ± z_b) − (m_d/m_a)(z_d ± z_c)| ≤ 2 max(1, m_d/m_a) teeth);
             ``None`` (default) leaves coaxiality to the geometry
             (:func:`~epicyclic.geometry.check_coaxiality`).
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (a–b, c–d), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry.
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, an internal gear not larger
+            than its planet gear, i0 = 1 (two suns or two rings that lock), a
+            non-positive ``module_ratio``, or counts that cannot be coaxial; also a
+            ``ring_internal``/``sun_internal`` that is not a bool.
+        EfficiencyError
+            An efficiency outside (0, 1].
+        ModelError
+            Both ``stationary_efficiency`` and ``mesh_efficiencies``, the wrong number of
+            mesh efficiencies, or shafts that are not three different names.
 
         References
         ----------
@@ -377,6 +459,44 @@ class PlanetarySet:
         equal modules (``module_ratio = 1``, default) the tooth counts must be
         coaxial: z_1 − z_p1 = z_2 − z_p2 within ±2 teeth.
 
+        Parameters
+        ----------
+        name : str
+            Element name (unique in the train).
+        first, second, carrier : str
+            The shafts of ring 1, ring 2 and the carrier.
+        z_first, z_planet_first, z_planet_second, z_second : int
+            Tooth counts (3 … 1000): ring 1, the planet gear meshing it, the planet
+            gear meshing ring 2 (same planet shaft), ring 2.
+        module_ratio : float or None, default 1.0
+            m2/m1, the module of the ring-2 mesh over that of the ring-1 mesh, for the
+            coaxiality check (z_1 − z_p1 = (m2/m1)(z_2 − z_p2) within ±2 max(1, m2/m1)
+            teeth); ``None`` leaves coaxiality to the geometry.
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (ring 1–planet, planet–ring 2), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry.
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, a ring not larger than its
+            planet gear, z_1·z_p2 = z_2·z_p1 (i0 = 1: the set locks), a non-positive
+            ``module_ratio`` or counts that cannot be coaxial.
+        EfficiencyError
+            An efficiency outside (0, 1].
+        ModelError
+            Both ``stationary_efficiency`` and ``mesh_efficiencies``, the wrong number of
+            mesh efficiencies, or shafts that are not three different names.
+
         References
         ----------
         Brandenberger 1952, eq. 1 (a/b·c/d with both meshes internal: no sign change);
@@ -415,6 +535,45 @@ class PlanetarySet:
 
         With equal modules (``module_ratio = 1``, default) the tooth counts must
         be coaxial: z_1 + z_p1 = z_2 + z_p2 within ±2 teeth.
+
+        Parameters
+        ----------
+        name : str
+            Element name (unique in the train).
+        first, second, carrier : str
+            The shafts of sun 1 (Brandenberger's system I), sun 2 (system II) and
+            the carrier (system III).
+        z_first, z_planet_first, z_planet_second, z_second : int
+            Tooth counts (3 … 1000): sun 1 (a), the planet gear meshing it (b), the
+            planet gear meshing sun 2 (c, same planet shaft), sun 2 (d).
+        module_ratio : float or None, default 1.0
+            m2/m1, the module of the sun-2 mesh over that of the sun-1 mesh, for the
+            coaxiality check (z_1 + z_p1 = (m2/m1)(z_2 + z_p2) within ±2 max(1, m2/m1)
+            teeth); ``None`` leaves coaxiality to the geometry.
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (sun 1–planet, planet–sun 2), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry.
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, z_1·z_p2 = z_2·z_p1 (i0 = 1:
+            the set locks), a non-positive ``module_ratio`` or counts that cannot be
+            coaxial.
+        EfficiencyError
+            An efficiency outside (0, 1].
+        ModelError
+            Both ``stationary_efficiency`` and ``mesh_efficiencies``, the wrong number of
+            mesh efficiencies, or shafts that are not three different names.
 
         References
         ----------

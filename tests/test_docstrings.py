@@ -1,0 +1,255 @@
+"""Every public function and method has a numpydoc docstring that documents its parameters.
+
+"Public" means: named in the ``__all__`` of a module that the API reference documents (the package,
+every sub-package and top-level module but the command line and the demo; a function, or a method
+of a class there, not starting with ``_``).  A function with a docstring but more than one parameter must
+have a ``Parameters`` section, and that section must name every parameter (python-control's
+``test_docstrings`` does the same for its API).
+"""
+
+from __future__ import annotations
+
+import importlib
+import inspect
+import re
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1] / "src" / "epicyclic"
+#: Not API (as on the API reference pages, docs/gen_pages.py): the command line, the demo script.
+NOT_API = {"cli", "demo", "__main__"}
+#: Public modules that their package's ``__init__`` does not re-export (documented on its page).
+SUBMODULES = ("epicyclic.solver.batch", "epicyclic.solver.given_losses")
+
+
+def _packages() -> list[str]:
+    """``epicyclic``, every sub-package and public top-level module: the pages of the API reference."""
+    names = ["epicyclic"]
+    for path in sorted(ROOT.iterdir()):
+        if path.stem.startswith("_") or path.stem in NOT_API:
+            continue
+        if (path / "__init__.py").is_file() or path.suffix == ".py":
+            names.append(f"epicyclic.{path.stem}")
+    return names + list(SUBMODULES)
+
+
+PACKAGES = _packages()
+
+
+def public_functions() -> list[tuple[str, object]]:
+    """(qualified name, function) of every public function and method, each function once."""
+    seen: set[int] = set()
+    found = []
+    for package in PACKAGES:
+        module = importlib.import_module(package)
+        for name in getattr(module, "__all__", ()):
+            obj = getattr(module, name, None)
+            items = []
+            if inspect.isfunction(obj):
+                items = [(f"{package}.{name}", obj)]
+            elif inspect.isclass(obj) and not issubclass(obj, BaseException):
+                for key, value in vars(obj).items():
+                    function = value.__func__ if isinstance(value, (classmethod, staticmethod)) else value
+                    if not key.startswith("_") and inspect.isfunction(function):
+                        items.append((f"{package}.{name}.{key}", function))
+            for qualified, function in items:
+                if id(function) not in seen:
+                    seen.add(id(function))
+                    found.append((qualified, function))
+    return found
+
+
+def _parameters(function: object) -> list[str]:
+    return [name for name, p in inspect.signature(function).parameters.items()
+            if name not in ("self", "cls") and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+
+
+def _section(doc: str, title: str) -> str:
+    """The text of a numpydoc section (empty if absent)."""
+    match = re.search(rf"^{title}\n-+\n(.*?)(?=^\w[\w ]*\n-+\n|\Z)", doc, re.M | re.S)
+    return match.group(1) if match else ""
+
+
+def _documented(section: str) -> set[str]:
+    """Parameter names on the ``name : type`` / ``a, b : type`` lines of a Parameters section."""
+    names: set[str] = set()
+    for line in section.splitlines():
+        if line and not line[0].isspace():
+            names |= {n.strip().lstrip("*") for n in line.split(":")[0].split(",")}
+    return names
+
+
+def problems(function: object) -> list[str]:
+    """What the docstring of ``function`` lacks (empty when it is complete)."""
+    doc = inspect.getdoc(function) or ""
+    if not doc.strip():
+        return ["no docstring"]
+    params = _parameters(function)
+    if len(params) <= 1:
+        return []
+    section = _section(doc, "Parameters")
+    if not section:
+        return [f"no Parameters section ({', '.join(params)})"]
+    missing = [p for p in params if p not in _documented(section)]
+    return [f"Parameters section lacks {', '.join(missing)}"] if missing else []
+
+
+FUNCTIONS = public_functions()
+
+
+def test_the_api_is_found():
+    names = {q for q, _ in FUNCTIONS}
+    assert len(FUNCTIONS) > 250
+    assert {"epicyclic.solve", "epicyclic.Solution.table", "epicyclic.geometry.mesh_forces"} <= names
+
+
+#: Documented in the solver lane (solver/ was being changed by others when this test came): strict xfail,
+#: so that a docstring written there makes this list shrink.
+PENDING = {"epicyclic.solver.given_losses.GivenLosses.drag_loss", "epicyclic.solver.given_losses.GivenLosses.split",
+           "epicyclic.solver.given_losses.given_losses", "epicyclic.solver.given_losses.with_efficiencies"}
+
+#: Still being documented (this branch): removed as each module is done; empty when it is finished.
+TODO = {
+    "epicyclic.analysis.ModeTable.rows",
+    "epicyclic.analysis.ModeTable.table",
+    "epicyclic.analysis.ModeTable.to_dict",
+    "epicyclic.errors.closest",
+    "epicyclic.explain.Explanation.to_dict",
+    "epicyclic.geometry.Candidate.key",
+    "epicyclic.geometry.Candidate.planetary_set",
+    "epicyclic.geometry.Check.to_dict",
+    "epicyclic.geometry.FittingReport.table",
+    "epicyclic.geometry.FittingReport.to_dict",
+    "epicyclic.geometry.MeshGeometry.at_center_distance",
+    "epicyclic.geometry.PlanetaryForces.to_dict",
+    "epicyclic.geometry.SharedPlanet.to_dict",
+    "epicyclic.geometry.StageForces.table",
+    "epicyclic.geometry.StageForces.to_dict",
+    "epicyclic.geometry.StageGeometry.table",
+    "epicyclic.geometry.ToothSearch.table",
+    "epicyclic.geometry.ToothSearch.to_dict",
+    "epicyclic.geometry.check_coaxiality",
+    "epicyclic.geometry.check_undercut",
+    "epicyclic.geometry.inv_inverse",
+    "epicyclic.geometry.max_planets",
+    "epicyclic.geometry.mesh_forces",
+    "epicyclic.geometry.mesh_phasing",
+    "epicyclic.geometry.min_profile_shift",
+    "epicyclic.geometry.search_teeth_loops",
+    "epicyclic.geometry.stage_forces",
+    "epicyclic.geometry.two_shaft_ratio",
+    "epicyclic.geometry.undercut_limit",
+    "epicyclic.io.Transmission.train_in_gear",
+    "epicyclic.io.apply_overrides",
+    "epicyclic.io.check_finite",
+    "epicyclic.io.loads_train_file",
+    "epicyclic.io.locate_error",
+    "epicyclic.limits.check_count",
+    "epicyclic.limits.check_range",
+    "epicyclic.losses.ConstantFriction.coefficient",
+    "epicyclic.losses.EfficiencyMap.summary",
+    "epicyclic.losses.EfficiencyMap.table",
+    "epicyclic.losses.EfficiencyMap.title",
+    "epicyclic.losses.EfficiencyMap.to_json",
+    "epicyclic.losses.ElementLosses.evaluate",
+    "epicyclic.losses.ElementLosses.for_set",
+    "epicyclic.losses.ElementLosses.for_stage",
+    "epicyclic.losses.MeshLoss.create",
+    "epicyclic.losses.MeshLoss.efficiency",
+    "epicyclic.losses.MeshLoss.operating_state",
+    "epicyclic.losses.SchlenkFriction.coefficient",
+    "epicyclic.losses.mesh_efficiency",
+    "epicyclic.losses.solve_batch_with_losses",
+    "epicyclic.losses.tooth_loss_factor_numerical",
+    "epicyclic.plotting.FigureContext.convert",
+    "epicyclic.plotting.FigureContext.heading",
+    "epicyclic.plotting.FigureContext.text",
+    "epicyclic.plotting.LeverDiagram.to_dict",
+    "epicyclic.plotting.PlanetaryAnimation.gif",
+    "epicyclic.plotting.PlanetaryAnimation.to_dict",
+    "epicyclic.plotting.PowerDiagram.to_dict",
+    "epicyclic.plotting.PowerFlow.node",
+    "epicyclic.plotting.PowerFlow.to_dict",
+    "epicyclic.plotting.RangeDiagram.to_dict",
+    "epicyclic.plotting.SpeedChart.to_dict",
+    "epicyclic.plotting.TorqueDiagram.group",
+    "epicyclic.plotting.TorqueDiagram.to_dict",
+    "epicyclic.plotting.plot_speed_plan",
+    "epicyclic.plotting.report_figures",
+    "epicyclic.plotting.save_figure",
+    "epicyclic.plotting.save_plot",
+    "epicyclic.plotting.speed_plan",
+    "epicyclic.plotting.torque_diagram",
+    "epicyclic.results.Circulation.to_dict",
+    "epicyclic.results.PowerLoop.to_dict",
+    "epicyclic.synthesis.Candidate.element_name",
+    "epicyclic.synthesis.Candidate.from_transmission",
+    "epicyclic.synthesis.Candidate.shaft_name",
+    "epicyclic.synthesis.Candidate.to_dict",
+    "epicyclic.synthesis.SynthesisResult.markdown",
+    "epicyclic.synthesis.SynthesisResult.plot",
+    "epicyclic.synthesis.SynthesisResult.to_json",
+    "epicyclic.synthesis.SynthesisResult.write_toml",
+    "epicyclic.synthesis.SynthesisSpec.create",
+    "epicyclic.synthesis.synthesize",
+    "epicyclic.synthesis.synthesize_spec",
+    "epicyclic.text.short",
+    "epicyclic.transmission.Combination.to_dict",
+    "epicyclic.transmission.Exploration.markdown",
+    "epicyclic.transmission.Exploration.table",
+    "epicyclic.transmission.Exploration.to_dict",
+    "epicyclic.transmission.Transmission.analyze_all",
+    "epicyclic.transmission.Transmission.from_file",
+    "epicyclic.transmission.TransmissionAnalysis.to_dict",
+    "epicyclic.units.Units.convert",
+    "epicyclic.units.Units.power_from_core",
+    "epicyclic.units.Units.speed_from_core",
+    "epicyclic.units.Units.to_dict",
+    "epicyclic.units.Units.torque_from_core",
+    "epicyclic.units.as_units",
+    "epicyclic.units.from_core",
+}
+
+
+@pytest.mark.parametrize(("name", "function"), [
+    pytest.param(q, f, id=q, marks=pytest.mark.xfail(strict=True, reason="solver lane" if q in PENDING else "to do"))
+    if q in PENDING | TODO
+    else pytest.param(q, f, id=q) for q, f in FUNCTIONS])
+def test_public_function_is_documented(name, function):
+    assert not problems(function), f"{name}: {'; '.join(problems(function))}"
+
+
+def test_problems_are_found():
+    def bare(a, b):
+        pass
+
+    def no_section(a, b):
+        """Summary only."""
+
+    def partial(a, b):
+        """Summary.
+
+        Parameters
+        ----------
+        a : float
+            One.
+
+        Returns
+        -------
+        float
+        """
+
+    def complete(a, b, *args, **kwargs):
+        """Summary.
+
+        Parameters
+        ----------
+        a, b : float
+            Two.
+        """
+
+    assert problems(bare) == ["no docstring"]
+    assert problems(no_section) == ["no Parameters section (a, b)"]
+    assert problems(partial) == ["Parameters section lacks b"]
+    assert problems(complete) == []
