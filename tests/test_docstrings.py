@@ -111,11 +111,6 @@ PENDING = {"epicyclic.solver.given_losses.GivenLosses.drag_loss", "epicyclic.sol
 
 #: Still being documented (this branch): removed as each module is done; empty when it is finished.
 TODO = {
-    "epicyclic.analysis.ModeTable.rows",
-    "epicyclic.analysis.ModeTable.table",
-    "epicyclic.analysis.ModeTable.to_dict",
-    "epicyclic.errors.closest",
-    "epicyclic.explain.Explanation.to_dict",
     "epicyclic.geometry.Candidate.key",
     "epicyclic.geometry.Candidate.planetary_set",
     "epicyclic.geometry.Check.to_dict",
@@ -145,8 +140,6 @@ TODO = {
     "epicyclic.io.check_finite",
     "epicyclic.io.loads_train_file",
     "epicyclic.io.locate_error",
-    "epicyclic.limits.check_count",
-    "epicyclic.limits.check_range",
     "epicyclic.losses.ConstantFriction.coefficient",
     "epicyclic.losses.EfficiencyMap.summary",
     "epicyclic.losses.EfficiencyMap.table",
@@ -181,8 +174,6 @@ TODO = {
     "epicyclic.plotting.save_plot",
     "epicyclic.plotting.speed_plan",
     "epicyclic.plotting.torque_diagram",
-    "epicyclic.results.Circulation.to_dict",
-    "epicyclic.results.PowerLoop.to_dict",
     "epicyclic.synthesis.Candidate.element_name",
     "epicyclic.synthesis.Candidate.from_transmission",
     "epicyclic.synthesis.Candidate.shaft_name",
@@ -194,7 +185,6 @@ TODO = {
     "epicyclic.synthesis.SynthesisSpec.create",
     "epicyclic.synthesis.synthesize",
     "epicyclic.synthesis.synthesize_spec",
-    "epicyclic.text.short",
     "epicyclic.transmission.Combination.to_dict",
     "epicyclic.transmission.Exploration.markdown",
     "epicyclic.transmission.Exploration.table",

@@ -202,6 +202,14 @@ class Explanation:
     _repr_html_ = html
 
     def to_dict(self) -> dict[str, Any]:
+        """The worked solution as JSON-ready data.
+
+        Returns
+        -------
+        dict
+            ``title``, ``lang``, ``units`` (:meth:`Units.to_dict <epicyclic.units.Units.to_dict>`)
+            and ``steps``: a list of ``{title, lines}`` in the order of the text.
+        """
         return {"title": self.title, "lang": self.lang, "units": self.units.to_dict(),
                 "steps": [{"title": s.title, "lines": list(s.lines)} for s in self.steps]}
 
