@@ -82,7 +82,25 @@ _EPS_MM = 1e-9
 
 # ---------------------------------------------------------------------- coaxiality
 def check_coaxiality(geometry: SetGeometry, tolerance: float = 1e-3) -> CoaxialityCheck:
-    """Coaxiality of the set (tolerance on centre distances in mm).
+    """Coaxiality of the set: both meshes' planet axes on one circle (centre distances in mm).
+
+    A set with one planet per mesh chain (simple, stepped, two suns/rings) is coaxial
+    when the sun-side and ring-side meshes run at the same operating centre distance;
+    a double-planet set when the three centre distances close a triangle.  A failing
+    check suggests the ring's profile shift that would make it coaxial.
+
+    Parameters
+    ----------
+    geometry : SetGeometry
+        The set's gears and meshes.
+    tolerance : float, default 1e-3
+        Largest accepted difference of the centre distances, mm.
+
+    Returns
+    -------
+    CoaxialityCheck
+        ``passed``, a message with the numbers and the fix, the centre distances
+        (mm) and the suggested ``x_ring``.
 
     References
     ----------
@@ -178,9 +196,25 @@ def assembly_ticks(teeth) -> int:
 def mesh_phasing(teeth: int, angles: Sequence[float]) -> str:
     """Phasing of the meshes of one central gear with planets at ``angles`` (degrees).
 
-    Returns ``"in-phase"``, ``"sequential"``, ``"counter-phase"`` or ``"mixed"``
-    from the first-harmonic sums of the mesh excitations.
+    From the first-harmonic sums of the mesh excitations: the force sum and the
+    torque sum of the N meshes over one tooth period.
 
+    Parameters
+    ----------
+    teeth : int
+        Tooth count of the central gear.
+    angles : sequence of float
+        Angular positions of the planets, degrees.
+
+    Returns
+    -------
+    str
+        ``"in-phase"`` (all meshes together: torque ripple, no net force),
+        ``"sequential"`` (net force, no torque ripple), ``"counter-phase"`` (neither)
+        or ``"mixed"``.
+
+    Examples
+    --------
     >>> mesh_phasing(48, [0, 90, 180, 270]), mesh_phasing(51, [0, 90, 180, 270])
     ('in-phase', 'sequential')
 
@@ -266,6 +300,25 @@ def max_planets(tip_diameter: float, center_distance: float, min_clearance: floa
     """Largest number of equally spaced planets whose tip circles keep ``min_clearance`` (mm).
 
     Contact (zero clearance) counts as interference: ``2 a sin(π/N) − d_a > c_min``.
+
+    Parameters
+    ----------
+    tip_diameter : float
+        Planet tip diameter d_a, mm (> 0).
+    center_distance : float
+        Radius of the planet axes (the sun–planet centre distance a), mm (> 0).
+    min_clearance : float, default 0
+        Least gap between neighbouring tip circles, mm.
+
+    Returns
+    -------
+    int
+        N_max ≥ 1 (at most 1000).
+
+    Raises
+    ------
+    GeometryError
+        ``tip_diameter`` or ``center_distance`` ≤ 0.
 
     Examples
     --------
@@ -370,6 +423,22 @@ def check_neighbours(
 def undercut_limit(pressure_angle: float = 20.0, addendum: float = 1.0, helix_angle: float = 0.0) -> float:
     """Limit tooth count z_g = 2 h_a* cos β / sin²α_t (degrees in; theoretical, without profile shift).
 
+    Parameters
+    ----------
+    pressure_angle : float, default 20
+        Normal pressure angle α_n, degrees (α_t = atan(tan α_n / cos β)).
+    addendum : float, default 1.0
+        Addendum factor h_a*.
+    helix_angle : float, default 0
+        Helix angle β, degrees.
+
+    Returns
+    -------
+    float
+        z_g (not rounded).
+
+    Examples
+    --------
     >>> round(undercut_limit(20.0), 3), round(undercut_limit(14.5), 2)
     (17.097, 31.9)
 
@@ -389,6 +458,29 @@ def min_profile_shift(teeth: int, pressure_angle: float = 20.0, addendum: float 
 
     ``limit="practical"`` uses z_lim = 5/6 z_g (slight undercut accepted;
     ≈ 14 teeth for 20°).
+
+    Parameters
+    ----------
+    teeth : int
+        Tooth count z of the external gear.
+    pressure_angle : float, default 20
+        Normal pressure angle α_n, degrees.
+    addendum : float, default 1.0
+        Addendum factor h_a*.
+    helix_angle : float, default 0
+        Helix angle β, degrees.
+    limit : {"theoretical", "practical"}, default "theoretical"
+        Which limit tooth count z_lim.
+
+    Returns
+    -------
+    float
+        x_min (negative where the gear has teeth to spare).
+
+    Raises
+    ------
+    GeometryError
+        ``limit`` is neither ``"theoretical"`` nor ``"practical"``.
 
     Examples
     --------
@@ -412,6 +504,26 @@ def min_profile_shift(teeth: int, pressure_angle: float = 20.0, addendum: float 
 
 def check_undercut(geometry: SetGeometry, limit: Literal["theoretical", "practical"] = "theoretical") -> tuple[UndercutCheck, ...]:
     """Undercut of every external gear of the set (internal gears do not undercut this way).
+
+    A gear passes when its profile shift is at least :func:`min_profile_shift`.
+
+    Parameters
+    ----------
+    geometry : SetGeometry
+        The set's gears (tooth counts, profile shifts, racks).
+    limit : {"theoretical", "practical"}, default "theoretical"
+        ``theoretical``: z_g = 2 h_a* cos β / sin²α_t; ``practical``: 5/6 z_g
+        (slight undercut accepted).
+
+    Returns
+    -------
+    tuple of UndercutCheck
+        One per external gear, named as the set's file names it.
+
+    Raises
+    ------
+    GeometryError
+        ``limit`` is neither ``"theoretical"`` nor ``"practical"``.
 
     References
     ----------
