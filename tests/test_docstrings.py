@@ -111,11 +111,6 @@ PENDING = {"epicyclic.solver.given_losses.GivenLosses.drag_loss", "epicyclic.sol
 
 #: Still being documented (this branch): removed as each module is done; empty when it is finished.
 TODO = {
-    "epicyclic.io.Transmission.train_in_gear",
-    "epicyclic.io.apply_overrides",
-    "epicyclic.io.check_finite",
-    "epicyclic.io.loads_train_file",
-    "epicyclic.io.locate_error",
     "epicyclic.losses.ConstantFriction.coefficient",
     "epicyclic.losses.EfficiencyMap.summary",
     "epicyclic.losses.EfficiencyMap.table",
