@@ -111,21 +111,6 @@ PENDING = {"epicyclic.solver.given_losses.GivenLosses.drag_loss", "epicyclic.sol
 
 #: Still being documented (this branch): removed as each module is done; empty when it is finished.
 TODO = {
-    "epicyclic.losses.ConstantFriction.coefficient",
-    "epicyclic.losses.EfficiencyMap.summary",
-    "epicyclic.losses.EfficiencyMap.table",
-    "epicyclic.losses.EfficiencyMap.title",
-    "epicyclic.losses.EfficiencyMap.to_json",
-    "epicyclic.losses.ElementLosses.evaluate",
-    "epicyclic.losses.ElementLosses.for_set",
-    "epicyclic.losses.ElementLosses.for_stage",
-    "epicyclic.losses.MeshLoss.create",
-    "epicyclic.losses.MeshLoss.efficiency",
-    "epicyclic.losses.MeshLoss.operating_state",
-    "epicyclic.losses.SchlenkFriction.coefficient",
-    "epicyclic.losses.mesh_efficiency",
-    "epicyclic.losses.solve_batch_with_losses",
-    "epicyclic.losses.tooth_loss_factor_numerical",
     "epicyclic.plotting.FigureContext.convert",
     "epicyclic.plotting.FigureContext.heading",
     "epicyclic.plotting.FigureContext.text",
