@@ -111,17 +111,6 @@ PENDING = {"epicyclic.solver.given_losses.GivenLosses.drag_loss", "epicyclic.sol
 
 #: Still being documented (this branch): removed as each module is done; empty when it is finished.
 TODO = {
-    "epicyclic.synthesis.Candidate.element_name",
-    "epicyclic.synthesis.Candidate.from_transmission",
-    "epicyclic.synthesis.Candidate.shaft_name",
-    "epicyclic.synthesis.Candidate.to_dict",
-    "epicyclic.synthesis.SynthesisResult.markdown",
-    "epicyclic.synthesis.SynthesisResult.plot",
-    "epicyclic.synthesis.SynthesisResult.to_json",
-    "epicyclic.synthesis.SynthesisResult.write_toml",
-    "epicyclic.synthesis.SynthesisSpec.create",
-    "epicyclic.synthesis.synthesize",
-    "epicyclic.synthesis.synthesize_spec",
     "epicyclic.transmission.Combination.to_dict",
     "epicyclic.transmission.Exploration.markdown",
     "epicyclic.transmission.Exploration.table",
