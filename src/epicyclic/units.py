@@ -456,6 +456,26 @@ def _from_quantity(value: object, quantity: str, field: str) -> float:
 def from_core(value: float, quantity: str, unit: str) -> float:
     """Convert ``value`` from the core unit of ``quantity`` into ``unit``.
 
+    Parameters
+    ----------
+    value : float
+        The value in the core unit (1/min, N·m, W).
+    quantity : {"speed", "torque", "power"}
+        What it is.
+    unit : str
+        The unit wanted (``"U/min"``, ``"kp*cm"``, ``"PS"``, ``"rad/s"``, ...).
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    UnitError
+        A unit that is unknown or does not fit ``quantity``.
+
+    Examples
+    --------
     >>> round(from_core(14.047045, "torque", "kp*cm"), 2)
     143.24
     """
@@ -492,24 +512,96 @@ class Units:
         return getattr(self, quantity)
 
     def convert(self, value: float | None, quantity: str) -> float | None:
-        """A core value in the chosen unit (None stays None)."""
+        """A core value in the chosen unit (None stays None).
+
+        Parameters
+        ----------
+        value : float or None
+            The value in the core unit (1/min, N·m, W).
+        quantity : {"speed", "torque", "power"}
+            What it is.
+
+        Returns
+        -------
+        float or None
+
+        Examples
+        --------
+        >>> round(Units(power="PS").convert(2206.5, "power"), 3)
+        3.0
+        """
         return None if value is None else from_core(value, quantity, self.of(quantity))
 
     def speed_from_core(self, value: float) -> float:
+        """A speed in 1/min converted into :attr:`speed`.
+
+        Parameters
+        ----------
+        value : float
+            Speed, 1/min.
+
+        Returns
+        -------
+        float
+        """
         return from_core(value, "speed", self.speed)
 
     def torque_from_core(self, value: float) -> float:
+        """A torque in N·m converted into :attr:`torque`.
+
+        Parameters
+        ----------
+        value : float
+            Torque, N·m.
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> round(Units(torque="kp*cm").torque_from_core(14.047045), 2)   # Brandenberger's input torque
+        143.24
+        """
         return from_core(value, "torque", self.torque)
 
     def power_from_core(self, value: float) -> float:
+        """A power in W converted into :attr:`power`.
+
+        Parameters
+        ----------
+        value : float
+            Power, W.
+
+        Returns
+        -------
+        float
+        """
         return from_core(value, "power", self.power)
 
     def to_dict(self) -> dict[str, str]:
+        """The unit of each quantity: ``{"speed": ..., "torque": ..., "power": ...}``.
+
+        Returns
+        -------
+        dict of str
+        """
         return {"speed": self.speed, "torque": self.torque, "power": self.power}
 
 
 def as_units(value: object, field: str = "units") -> Units:
     """``value`` as :class:`Units`: a Units, None (core units) or a mapping such as ``{"power": "PS"}``.
+
+    Parameters
+    ----------
+    value : Units, mapping or None
+        Units, or a mapping quantity → unit (quantities not named keep the core unit).
+    field : str, default "units"
+        What the value was given as, the start of a message.
+
+    Returns
+    -------
+    Units
 
     Raises
     ------
