@@ -34,10 +34,11 @@ import numpy as np
 from ..model.planetary import PlanetarySet
 from ._render import html_table, text_table
 from .errors import GeometryError
-from .fitting import check_fitting, undercut_limit
+from .fitting import check_fitting
 from .gear import BasicRack
 from .involute import inv
 from .set_geometry import SetGeometry
+from .undercut import undercut_limit
 
 __all__ = ["Candidate", "ToothSearch", "search_teeth", "search_teeth_loops", "two_shaft_ratio"]
 
