@@ -10,9 +10,9 @@ Python floats), `solve` at 100 different operating points in turn (nothing is ca
 the caches hold the train's equations and prepared operators, not results), and `solve` followed by
 reading the parts of the Solution that are made on first access (the circulating power, the warnings
 and the lossless solution `.ideal`), i.e. the whole analysis as a report needs it. Each figure is the
-best of several rounds of many calls.
+best of several rounds of many calls, in CPU time (run it with OPENBLAS_NUM_THREADS=1).
 
-Run:  .venv/bin/python benchmarks/bench_solve.py
+Run:  OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/bench_solve.py
 """
 
 from __future__ import annotations
@@ -33,12 +33,15 @@ from epicyclic.solver.batch import solve_batch  # noqa: E402
 
 
 def per_call(function, calls: int = 500, rounds: int = 7) -> float:
+    """Seconds per call: the best of ``rounds`` rounds of ``calls`` calls, in the process's CPU time
+    (single-threaded work: on a shared machine the wall clock also counts the time other processes hold
+    the core, the CPU time does not)."""
     best = float("inf")
     for _ in range(rounds):
-        start = time.perf_counter()
+        start = time.process_time()
         for _ in range(calls):
             function()
-        best = min(best, (time.perf_counter() - start) / calls)
+        best = min(best, (time.process_time() - start) / calls)
     return best
 
 

@@ -132,3 +132,25 @@ def test_an_error_in_a_later_block_names_its_point_in_the_whole_batch():
     speed[batch.BLOCK + 5] = 0.0  # a power given where the shaft stands still
     with pytest.raises(OperatingPointError, match=rf"stands still at point {batch.BLOCK + 5}\b"):
         solve_batch(train, speeds={"II": speed}, powers={"II": 2000.0}, drives=["II"], loads=["I"])
+
+
+@pytest.mark.parametrize("example", ["brandenberger_1952.toml", "toyota_prius_power_split.toml"])
+def test_one_point_of_solve_equals_the_array_code_bit_for_bit(example):
+    """solve takes its one point through the speed and torque operators in Python floats where one speed
+    or torque is given (a product per entry, BLAS's numbers) and through numpy where more are (BLAS may
+    fuse a multiply and an add): every speed, torque and power equals solve_batch's on that point, bit for
+    bit. The Prius file gives two speeds (engine and wheels), the demo one."""
+    from pathlib import Path
+
+    from epicyclic.io import load_train_file
+
+    train_file = load_train_file(Path(__file__).parents[2] / "examples" / example)
+    op = train_file.operating_point
+    solution = train_file.solve()
+    one = {group: {s: np.array([v]) for s, v in getattr(op, group).items()} for group in ("speeds", "torques", "powers")}
+    batch_solution = solve_batch(train_file.train, **one, drives=op.drives, loads=op.loads, connected=op.connected)
+    for shaft in train_file.train.shafts:
+        for quantity in ("speeds", "torques", "powers"):
+            scalar = getattr(solution.shafts[shaft], quantity[:-1])
+            array = float(getattr(batch_solution, quantity)[shaft][0])
+            assert scalar == array and np.signbit(scalar) == np.signbit(array), (shaft, quantity)

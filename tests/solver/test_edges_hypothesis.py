@@ -146,6 +146,7 @@ def check(train: GearTrain, op: OperatingPoint, one_loss_path: bool = False) -> 
         assert batch.speeds[shaft][0] == sol.speed(shaft)
         assert abs(batch.torques[shaft][0] - sol.torque(shaft)) <= 1e-12 * max(1e-300, abs(sol.torque(shaft)))
     assert bool(batch.self_locking[0]) == sol.is_self_locking
+    assert bool(batch.ambiguous[0]) == any("the friction state is not unique" in w for w in sol.warnings)
     if sol.efficiency is None:
         assert math.isnan(batch.efficiency[0])
     else:

@@ -70,12 +70,14 @@ def test_two_input_set_matches_the_gear_pair_entity_formulas(i0, eta0, n_sun, n_
         assert sol.torque("r") == pytest.approx(t_ring, rel=1e-9, abs=1e-9)
         assert sol.torque("c") == pytest.approx(t_carrier, rel=1e-12)
         assert not sol.is_self_locking
+        assert not any("not unique" in w for w in sol.warnings)
     elif not expected:
         assert eta0 < i0 < 1.0 / eta0   # only a plus set close to 1 can lock
         assert sol.is_self_locking
-    else:   # two friction states agree (inside the band): the solver returns one of them
+    else:   # two friction states agree (inside the band): the solver returns one of them and says so
         assert eta0 < i0 < 1.0 / eta0
         assert any(sol.torque("s") == pytest.approx(t, rel=1e-9) for t, _ in expected)
+        assert any("the friction state is not unique" in w for w in sol.warnings)
 
 
 @pytest.mark.parametrize("i0, n_sun, n_ring, role, w", [

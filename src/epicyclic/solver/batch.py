@@ -25,17 +25,22 @@ from ..model.elements import HOUSING
 from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
+from ..units import to_core_array
 from .assembly import matrices
-from .evaluate import evaluate, relative_speeds
+from .evaluate import directions, evaluate, given_columns, relative_speeds
+from .friction_state import ambiguous_points
 from .given_losses import DRAG, given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
-from .self_locking import SELF_LOCKING_MARGIN
+from .linear import span
+from .self_locking import SELF_LOCKING_MARGIN, limit_solver, with_pattern
 from .solve import MAX_PATTERN_TRIES, _validate
 from .statics import TorqueSolver, torque_solver
 
 __all__ = ["BatchSolution", "solve_batch"]
 
 ArrayMap = Mapping[str, np.ndarray]
+#: The smallest normal and the largest finite float.
+_TINY, _HUGE = np.finfo(float).tiny, np.finfo(float).max
 
 
 @dataclass(frozen=True, eq=False)
@@ -56,6 +61,11 @@ class BatchSolution:
         output/input; NaN exactly where ``self_locking`` is True or no power
         enters (see ``defined``).
     self_locking : ndarray of bool
+    ambiguous : ndarray of bool
+        Where the friction state is not unique: another loss-direction pattern (one element's
+        reversed) is consistent too and keeps the designated drives and loads; the result shows
+        the one reached from the lossless power flow, as :func:`~epicyclic.solver.solve.solve`
+        does (which warns).  See :mod:`~epicyclic.solver.friction_state`.
     patterns : int
         Number of distinct loss-direction patterns solved.
     loss_sources : mapping element → mapping source → ndarray
@@ -75,6 +85,7 @@ class BatchSolution:
     self_locking: np.ndarray
     patterns: int
     loss_sources: Mapping[str, ArrayMap] = field(default_factory=dict)
+    ambiguous: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -93,22 +104,19 @@ class BatchSolution:
         span = f"efficiency {eff.min():.4f}…{eff.max():.4f}" if eff.size else "no defined efficiency"
         return (
             f"<BatchSolution {self.train.name!r}: {len(self)} points, {span}, "
-            f"{int(self.self_locking.sum())} self-locking, {self.patterns} loss pattern(s)>"
+            f"{int(self.self_locking.sum())} self-locking, {self.patterns} loss pattern(s)"
+            + (f", {int(self.ambiguous.sum())} with a friction state that is not unique" if self.ambiguous.any() else "")
+            + ">"
         )
 
 
 def _broadcast(groups: Sequence[Mapping[str, object]]) -> tuple[list[dict[str, np.ndarray]], tuple[int, ...]]:
-    arrays = [np.asarray(v, dtype=float) for g in groups for v in g.values()]
-    shape = np.broadcast_shapes(*(a.shape for a in arrays)) if arrays else ()
-    out = []
-    for g in groups:
-        out.append({k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel() for k, v in g.items()})
-    for g in out:
-        for k, v in g.items():
-            if not np.all(np.isfinite(v)):
-                bad = int(np.flatnonzero(~np.isfinite(v))[0])
-                raise OperatingPointError(f"batch: value for shaft {k!r} at point {bad} is not finite ({v[bad]!r}).")
-    return out, shape
+    """The given speeds, torques and powers in 1/min, N·m, W (units converted, never stripped; errors name
+    the field and index: :func:`~epicyclic.units.to_core_array`), flattened in one broadcast shape."""
+    groups = [{k: to_core_array(v, quantity, field=f"solve_batch: {name}[{k!r}]") for k, v in g.items()}
+              for name, quantity, g in zip(("speeds", "torques", "powers"), ("speed", "torque", "power"), groups)]
+    shape = np.broadcast_shapes(*(v.shape for g in groups for v in g.values()))
+    return [{k: np.broadcast_to(v, shape).ravel() for k, v in g.items()} for g in groups], shape
 
 
 def solve_batch(
@@ -129,8 +137,9 @@ def solve_batch(
     ----------
     train : GearTrain
     speeds, torques, powers : mapping shaft → array_like
-        As in :class:`~epicyclic.OperatingPoint` (1/min, N·m, W), each value
-        an array; all broadcast to one shape.
+        As in :class:`~epicyclic.OperatingPoint`: plain numbers in 1/min, N·m, W, or
+        values with units (strings such as ``"1500 U/min"``, pint quantities, also a
+        quantity holding an array), each value an array; all broadcast to one shape.
     drives, loads, connected : sequence of str
         As in :class:`~epicyclic.OperatingPoint`.
     efficiencies, loss_torques : mapping, optional
@@ -142,6 +151,14 @@ def solve_batch(
     Returns
     -------
     BatchSolution
+
+    Raises
+    ------
+    UnitError
+        A value that cannot be read or has the wrong dimension; the message names the
+        field and the index, e.g. ``solve_batch: speeds['sun'][2]``.
+    OperatingPointError, UnderdeterminedError, ContradictionError
+        As :func:`~epicyclic.solver.solve.solve`, naming the first bad point.
 
     Examples
     --------
@@ -235,7 +252,9 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
     kin = speed_solver(mats, given_speed)
     with np.errstate(all="ignore"):
         moving = kin.speeds(g) if given_speed else np.zeros((len(mats.speed_index), count))
-    check_speeds(mats, moving)
+    speed_span = span(np.abs(moving))  # also for evaluate's range check
+    if not (_TINY <= speed_span[0] and speed_span[1] <= _HUGE):  # else check_speeds passes
+        check_speeds(mats, moving)
     kin.check(g, moving)
     n = np.vstack([moving, np.zeros((1, count))])  # housing last
 
@@ -259,11 +278,12 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                     f"batch: powers[{shaft!r}] at point {k} needs a torque beyond the floating-point range "
                     "(about 1.8e308 N·m); give a larger speed or a smaller power.", "torque", shaft)
         else:
-            value = torque_in[shaft].copy()
-        sign = np.sign(omega)
+            value = torque_in[shaft]
         if shaft in drives:
+            sign = np.sign(omega)
             value = np.where(sign != 0, np.abs(value) * sign, value)
         elif shaft in loads:
+            sign = np.sign(omega)
             value = np.where(sign != 0, -np.abs(value) * sign, value)
         tau[r] = value
     given_map = {s: tau[r] for r, s in enumerate(given)}
@@ -273,53 +293,67 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         x_ideal = ideal.torques(tau)
     ideal.check(tau, x_ideal)
     relative = relative_speeds(mats, n)
-    ideal_eval = evaluate(mats, n, x_ideal, None, given_map, relative=relative)
-
-    # loss directions: group points by pattern, one solve per pattern; then all points are evaluated
-    # at once, and only the (rare) points whose re-read pattern differs are tried again
-    pattern = ideal_eval.pattern.copy()
-    first_pattern = pattern.copy()
-    x = np.array(x_ideal)
-    first_x = x
-    consistent = np.zeros(count, dtype=bool)
-    pending = np.arange(count)
-    solved: set[tuple[int, ...]] = set()
-    extra, mats, all_rows = problem.losses()
+    # the lossless solution: with losses only its loss directions and the roles of connected shafts count
+    # (evaluate.directions); the full evaluation where it is the result or the zero rule could act
+    role_rows = [shaft_row[s] for s in mats.external if s not in drives and s not in loads]
+    maybe_lossy = any(lever.efficiency != 1.0 for lever in mats.levers) or problem.efficiencies or problem.loss_torques
+    lean = directions(mats, n, x_ideal, given_map, relative, role_rows, speed_span) if maybe_lossy else None
+    ev = None
+    if lean is None:
+        ev = evaluate(mats, n, x_ideal, None, given_map, relative=relative, speed_span=speed_span)
+        lean = ev.pattern, {row: ev.powers[row] for row in role_rows}
+    extra, lossy_mats, all_rows = problem.losses()  # after the lossless evaluation's errors, as ever
     rows = effs = dragged = None
     if extra is not None:
         effs = extra.efficiency[:, points]
         dragged = extra.torques[:, points] if all_rows is not None else None
         rows = None if all_rows is None else all_rows[:, points]
-    lossy = any(lever.efficiency != 1.0 for lever in mats.levers) or (
+    lossy = any(lever.efficiency != 1.0 for lever in lossy_mats.levers) or (
         extra is not None and (dragged is not None or bool(np.any(extra.efficiency != 1.0))))
-    ev = ideal_eval  # lossless: the ideal evaluation is the result
+    if ev is None and (not lossy or not count):  # the lossless evaluation is the result (settled: no error)
+        ev = evaluate(mats, n, x_ideal, None, given_map, relative=relative, speed_span=speed_span)
+    ideal_pattern, ideal_powers = lean
+    mats = lossy_mats
+
+    # loss directions: group points by pattern, one solve per pattern; then all points are evaluated
+    # at once, and only the (rare) points whose re-read pattern differs are tried again
+    pattern = ideal_pattern.copy()
+    first_pattern = pattern.copy()
+    x = first_x = x_ideal  # (copied before any change)
+    consistent = np.zeros(count, dtype=bool)
+    pending = np.arange(count)
+    solved: set[tuple[int, ...]] = set()
     retried = False
+    singular: set[tuple[int, ...]] = set()  # loss patterns whose equations are singular (limit_solver)
+    at_limit_points = np.zeros(count, dtype=bool)
     for attempt in range(MAX_PATTERN_TRIES if lossy else 0):
         if pending.size == 0:
             break
-        groups = list(_groups(pattern, pending, attempt == 0))
-        solved |= {tuple(int(w) for w in row) for row, _, _ in groups}
         with np.errstate(all="ignore"):
             if attempt == 0 and len(given) == 1 and effs is None and rows is None:
                 # one given torque: each point's torques are its pattern's column times the torque
                 # (Statics.torques point by point, without gathering the points of each pattern)
-                columns = np.stack([torque_solver(mats, given, row).operator[:, 0] for row, _, _ in groups], axis=1)
-                which = np.zeros(count, dtype=int)
-                for k, (_, _, mask) in enumerate(groups[1:], 1):
-                    which[mask] = k
-                x = columns.take(which, axis=1)
-                x *= tau
-                x += 0.0  # as linear.apply
+                patterns, which = _pattern_index(pattern)
+                solved |= {tuple(int(w) for w in row) for row in patterns}
+                columns = np.stack([limit_solver(mats, given, row, ideal, singular).operator[:, 0]
+                                    for row in patterns], axis=1)
+                read = given_columns(mats)  # the only columns evaluate reads
+                x = np.zeros((columns.shape[0], count))
+                x[read] = columns[read].take(which, axis=1) * tau + 0.0  # + 0.0 as linear.apply
             else:
+                groups = list(_groups(pattern, pending, attempt == 0))
+                solved |= {tuple(int(w) for w in row) for row, _, _ in groups}
+                if x is first_x:  # the first solution stays as it is for the points that find no pattern
+                    x = x.copy()
                 for row, members, _ in groups:
-                    solver = torque_solver(mats, given, row)
+                    solver = limit_solver(mats, given, row, ideal, singular)
                     x[:, members] = _corrected(train, mats, given, solver, row, tau[:, members],
                                                None if rows is None else rows[:, members],
                                                None if effs is None else effs[:, members])
         column = pattern if attempt == 0 else pattern[:, pending]
         if attempt == 0:  # every point (pending is all of them): this evaluation is kept where consistent
-            first_x = x.copy()
-            ev = evaluate(mats, n, x, pattern, given_map, effs, dragged, relative)
+            first_x = x
+            ev = evaluate(mats, n, x, pattern, given_map, effs, dragged, relative, speed_span)
             observed = ev.pattern
         else:
             retried = True
@@ -327,11 +361,16 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
                                 {s: v[pending] for s, v in given_map.items()},
                                 None if effs is None else effs[:, pending],
                                 None if dragged is None else dragged[:, pending]).pattern
-        ok = np.all((column == observed) | (observed == 0), axis=0)
+        ok = _agrees(column, observed)
+        if singular:  # exactly at a self-locking limit: no finite state with this pattern, none tried after it
+            hit = with_pattern(column, singular)
+            at_limit_points[pending[hit]] = True
+            ok |= hit  # settled (not consistent: see below)
         consistent[pending[ok]] = True
         pending = pending[~ok]
         if pending.size:
             pattern[:, pending] = np.where(observed[:, ~ok] == 0, column[:, ~ok], observed[:, ~ok])
+    consistent &= ~at_limit_points
     if not lossy:
         consistent[:] = True
         solved.add(tuple(int(w) for w in first_pattern[:, 0]) if count else ())
@@ -339,6 +378,9 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         # points with no consistent pattern keep the formal solution of the ideal pattern
         x[:, ~consistent] = first_x[:, ~consistent]
         pattern[:, ~consistent] = first_pattern[:, ~consistent]
+        if at_limit_points.any():  # no finite lossy state: the lossless numbers are shown, as solve does
+            x[:, at_limit_points] = x_ideal[:, at_limit_points]
+            pattern[:, at_limit_points] = 0
         ev = evaluate(mats, n, x, pattern, given_map, effs, dragged)
 
     # the results of these points
@@ -361,29 +403,73 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         elif s in loads:
             load_power -= power
         else:  # role from the ideal solution's sign
-            ideal_power = ideal_eval.powers[shaft_row[s]]
-            drive_power += np.where(ideal_power > 0, power, 0.0)
-            load_power -= np.where(ideal_power < 0, power, 0.0)
-    drive_power, load_power = drive_power + 0.0, load_power + 0.0
+            ideal_power = ideal_powers[shaft_row[s]]
+            drive_power += power * (ideal_power > 0)  # as np.where(…, power, 0.0): ±0 adds nothing
+            load_power -= power * (ideal_power < 0)
+    drive_power += 0.0
+    load_power += 0.0
     scale = np.maximum(drive_power, load_power)
     flowing = (drive_power != 0) | (load_power != 0)
-    loss = sum(losses.values(), np.zeros(count)) + 0.0
+    loss = np.zeros(count)
+    for value in losses.values():
+        loss += value
+    loss += 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
-        wrong = _wrong_way(ev.powers, mats, drives, loads, ideal_eval, shaft_row, scale)
+        wrong = _wrong_way(ev.powers, mats, drives, loads, ideal_powers, shaft_row, scale)
         at_limit = load_power <= SELF_LOCKING_MARGIN * drive_power
         self_locking = flowing & (wrong | ~consistent | at_limit)
         efficiency = np.where((drive_power > 0) & ~self_locking, load_power / drive_power, np.nan)
-    exact = (loss == 0) & (np.abs(efficiency - 1.0) <= 1e-9)
-    efficiency = np.where(exact, 1.0, np.minimum(efficiency, 1.0))
+    efficiency = np.minimum(efficiency, 1.0)
+    lossless = loss == 0
+    if np.count_nonzero(lossless):
+        efficiency[lossless & (np.abs(efficiency - 1.0) <= 1e-9)] = 1.0  # no efficiency from round-off
     results = {("speeds", s): ev.speeds[k] for s, k in shaft_row.items()}
     results |= {("torques", s): ev.torques[k] for s, k in shaft_row.items()}
     results |= {("powers", s): ev.powers[k] for s, k in shaft_row.items()}
     results |= {("port_torques", (e, p)): ev.x[c] for (kind, e, p), c in mats.torque_index.items() if kind == "port"}
     results |= {("losses", e): value for e, value in losses.items()}
     results |= {("sources", e, k): value for e, parts in sources.items() for k, value in parts.items()}
+    ambiguous = (ambiguous_points(train, mats, given, pattern, consistent, tau, rows, effs, n, given_map, dragged,
+                                  [(shaft_row[s], "drive") for s in drives] + [(shaft_row[s], "load") for s in loads],
+                                  _corrected, solved) if lossy else np.zeros(count, dtype=bool))
     results |= {"input_power": drive_power, "output_power": load_power, "loss": loss, "efficiency": efficiency,
-                "self_locking": self_locking}
+                "self_locking": self_locking, "ambiguous": ambiguous}
     return results, solved
+
+
+def _agrees(column: np.ndarray, observed: np.ndarray) -> np.ndarray:
+    """Per point: every lever's observed direction is the one solved with, or 0 (row by row)."""
+    ok = np.ones(column.shape[1:], dtype=bool)
+    for solved_with, seen in zip(column, observed):
+        ok &= (solved_with == seen) | (seen == 0)
+    return ok
+
+
+def _pattern_index(pattern: np.ndarray) -> tuple[list[np.ndarray], np.ndarray]:
+    """The distinct loss-direction patterns (columns of ``pattern``, in the order of their codes) and,
+    per point, the index of its pattern among them."""
+    levers = pattern.shape[0]
+    if levers == 0 or pattern.shape[1] == 0:
+        return [pattern[:, 0] if pattern.shape[1] else pattern[:, :0].sum(axis=1)], np.zeros(pattern.shape[1], int)
+    if levers > 12:  # too many codes to count
+        unique, which = np.unique(pattern, axis=1, return_inverse=True)
+        return list(unique.T), which.ravel()
+    codes = _codes(pattern)
+    present = np.flatnonzero(np.bincount(codes, minlength=3 ** levers))
+    digits = (present[None, :] // 3 ** np.arange(levers)[:, None]) % 3 - 1
+    if present.size == 1:
+        return [digits[:, 0]], np.zeros(pattern.shape[1], dtype=int)
+    lookup = np.zeros(3 ** levers, dtype=int)
+    lookup[present] = np.arange(present.size)
+    return list(digits.T), lookup.take(codes)
+
+
+def _codes(column: np.ndarray) -> np.ndarray:
+    """One integer per point: the directions w + 1 as base-3 digits, lever 0 first."""
+    codes = column[0] + 1
+    for k in range(1, column.shape[0]):
+        codes += (column[k] + 1) * 3 ** k
+    return codes
 
 
 def _groups(pattern: np.ndarray, pending: np.ndarray, everything: bool = False):
@@ -397,9 +483,7 @@ def _groups(pattern: np.ndarray, pending: np.ndarray, everything: bool = False):
     if not column.size or levers == 0:
         yield column[:, 0], pending, (True if everything else None)
         return
-    codes = column[0] + 1  # one integer code per pattern is much faster to group than rows
-    for k in range(1, levers):
-        codes += (column[k] + 1) * 3 ** k
+    codes = _codes(column)  # one integer code per pattern is much faster to group than rows
     if levers > 12:  # too many codes to count
         unique_codes, first_index, inverse = np.unique(codes, return_index=True, return_inverse=True)
         for k in range(unique_codes.size):
@@ -427,26 +511,26 @@ def _assembled(problem: _Problem, results: dict, solved: set, shape: tuple[int, 
         train=problem.train,
         **{name: MappingProxyType(values) for name, values in group.items() if name != "sources"},
         **{name: results[name].reshape(shape) for name in
-           ("input_power", "output_power", "loss", "efficiency", "self_locking")},
+           ("input_power", "output_power", "loss", "efficiency", "self_locking", "ambiguous")},
         patterns=len(solved),
         loss_sources=MappingProxyType({e: MappingProxyType(parts) for e, parts in group["sources"].items()}),
     )
 
 
-def _wrong_way(powers, mats, drives, loads, ideal_eval, shaft_row, scale) -> np.ndarray:
+def _wrong_way(powers, mats, drives, loads, ideal_powers, shaft_row, scale) -> np.ndarray:
     """Points where a load delivers, or a drive absorbs, more than the margin of the input power."""
     wrong = np.zeros(scale.shape, dtype=bool)
+    limit = SELF_LOCKING_MARGIN * scale
     for s in mats.external:
         power = powers[shaft_row[s]]
         if s in drives:
-            is_drive, is_load = True, False
+            wrong |= power < -limit
         elif s in loads:
-            is_drive, is_load = False, True
+            wrong |= power > limit
         else:
-            ideal_power = ideal_eval.powers[shaft_row[s]]
-            is_drive, is_load = ideal_power > 0, ideal_power < 0
-        wrong |= is_drive & (power < -SELF_LOCKING_MARGIN * scale)
-        wrong |= is_load & (power > SELF_LOCKING_MARGIN * scale)
+            ideal_power = ideal_powers[shaft_row[s]]
+            wrong |= (ideal_power > 0) & (power < -limit)
+            wrong |= (ideal_power < 0) & (power > limit)
     return wrong
 
 

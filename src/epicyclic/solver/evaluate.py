@@ -37,13 +37,17 @@ from ..results.solution import RPM_TO_RAD_S
 from ..results.zero import ZERO_TOLERANCE, clean_array
 from ..model.elements import HOUSING
 from .assembly import TrainMatrices
+from .linear import span
 
-__all__ = ["Evaluation", "evaluate", "check_finite", "relative_speeds"]
+__all__ = ["Evaluation", "evaluate", "check_finite", "directions", "given_columns", "relative_speeds"]
 
 #: The smallest normal float: below it a result has lost its precision (underflow).
 _TINY = np.finfo(float).tiny
 #: The largest finite float.
 _HUGE = np.finfo(float).max
+#: Non-zero magnitudes of speeds, torques and factors in which no result of :func:`evaluate` (products
+#: of at most four of them, sums of such products) can over- or underflow: far inside the float range.
+_SAFE_LOW, _SAFE_HIGH = 1e-50, 1e50
 
 
 @dataclass(frozen=True, eq=False)
@@ -86,7 +90,8 @@ class Evaluation:
 
 def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
              given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
-             shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None) -> Evaluation:
+             shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None,
+             speed_span: tuple[float, float] | None = None) -> Evaluation:
     """Clean the solved torques and derive torques, powers, rolling powers and losses.
 
     Parameters
@@ -107,15 +112,82 @@ def evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np
         N·m: a shaft's external torque balances them too (M_s + T_loss − Σ T_port = 0).
     relative : ndarray (levers, P), optional
         :func:`relative_speeds` of ``speeds``, where already known.
+    speed_span : (float, float), optional
+        :func:`~epicyclic.solver.linear.span` of ``|speeds|``, where already known.
 
     Returns
     -------
     Evaluation
     """
     with np.errstate(all="ignore"):  # overflow is reported by check_finite, by name
-        result = _evaluate(mats, speeds, x, pattern, given, efficiencies, shaft_torques, relative)
+        result = _evaluate(mats, speeds, x, pattern, given, efficiencies, shaft_torques, relative, speed_span)
     check_finite(mats, result)
     return result
+
+
+def directions(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, given: Mapping[str, np.ndarray],
+               relative: np.ndarray, rows, speed_span: tuple[float, float] | None = None
+               ) -> tuple[np.ndarray, dict[int, np.ndarray]] | None:
+    """Of the lossless evaluation, only what a lossy solution needs: the ``pattern`` (sign of every
+    lever's rolling power) and the ``powers`` of the shaft rows ``rows`` (the roles of connected shafts).
+
+    The same numbers as ``evaluate(mats, speeds, x, None, given, relative=relative)`` gives, where
+    :func:`_settled` shows that the zero rule leaves the port torques as they are and nothing can
+    leave the float range; None elsewhere (then call :func:`evaluate`).  Only the ports a balance
+    needs are computed, and the span of the others follows from the lever ports a (T_b = −i0·T_a,
+    T_c = −(1 − i0)·T_a without losses, each rounded once): a fraction of the operations.
+    """
+    lay = mats.layout
+    with np.errstate(all="ignore"):
+        t_a = x[lay.lever_a_columns]
+        first = x[lay.link_first_columns]
+        lever = 3 * np.arange(len(mats.levers)) + 1  # w = 0
+        k_b, k_c = lay.lever_tables[0][lever], lay.lever_tables[1][lever]
+        factors = np.abs(np.concatenate([k_b, k_c]))
+        if not np.isfinite(factors).all():
+            return None
+        factors = factors[factors > 0]
+        least_a, most_a = span(np.abs(t_a))
+        least_first, most_first = span(np.abs(first))
+        low = min(least_a, least_first, least_a * factors.min(initial=np.inf) * (1.0 - 1e-12))
+        peak = max(most_a, most_first, most_a * factors.max(initial=0.0) * (1.0 + 1e-12))
+        if not _settled(lay, (low, peak), speeds, given, None, None, speed_span):
+            return None
+        derived = {}  # port column → how evaluate computes it
+        for k, (a, b, c) in enumerate(zip(lay.lever_a_columns, lay.lever_b_columns, lay.lever_c_columns)):
+            derived |= {int(a): lambda k=k: t_a[k] + 0.0, int(b): lambda k=k: -k_b[k] * t_a[k] + 0.0,
+                        int(c): lambda k=k: -k_c[k] * t_a[k] + 0.0}
+        for k, (one, two) in enumerate(zip(lay.link_first_columns, lay.link_second_columns)):
+            derived |= {int(one): lambda k=k: first[k] + 0.0, int(two): lambda k=k: -first[k] + 0.0}
+        given_rows = {lay.rows[s]: value for s, value in given.items()}
+        reacting = dict(zip(lay.reacting_rows.tolist(), lay.reacting_groups))
+        powers = {}
+        for row in rows:
+            if row in given_rows:
+                torque = given_rows[row]
+            elif row in reacting:
+                group = reacting[row]
+                port = np.array([derived[int(lay.port_columns[j])]() for j in group])
+                if len(group) == 1:  # _clean(p, |p|) is p + 0.0
+                    torque = port[0]
+                else:
+                    whole = [tuple(range(len(group)))]
+                    torque = _clean(_sums(port, whole)[0], _rows(np.maximum, np.abs(port), whole)[0])
+            else:
+                torque = np.zeros(speeds.shape[1:])
+            power = torque * speeds[row]
+            power *= RPM_TO_RAD_S
+            power += 0.0
+            powers[row] = power
+        rolling = t_a * relative
+        rolling *= RPM_TO_RAD_S
+        rolling += 0.0
+        return _signs(rolling), powers
+
+
+def _signs(values: np.ndarray) -> np.ndarray:
+    """``np.sign(values).astype(int)`` for values without NaN (−0 → 0)."""
+    return np.sign(values).astype(int)
 
 
 def relative_speeds(mats: TrainMatrices, speeds: np.ndarray) -> np.ndarray:
@@ -128,7 +200,8 @@ def relative_speeds(mats: TrainMatrices, speeds: np.ndarray) -> np.ndarray:
 
 def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: np.ndarray | None,
               given: Mapping[str, np.ndarray], efficiencies: np.ndarray | None = None,
-              shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None) -> Evaluation:
+              shaft_torques: np.ndarray | None = None, relative: np.ndarray | None = None,
+              speed_span: tuple[float, float] | None = None) -> Evaluation:
     # Reductions over the few rows of a part or a shaft are written row by row (_rows): numpy's
     # reductions along axis 0 of a (rows, points) array are many times slower than whole-row operations.
     # The results are rows of one array (``block``), so that one pass checks them all (check_finite).
@@ -137,7 +210,8 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     levers, shafts, columns = len(mats.levers), len(lay.rows), len(mats.torque_columns)
     block = np.empty((columns + 2 * shafts + 4 * levers,) + points)
     x_in, x = x, block[:columns]
-    x[...] = x_in
+    kept = given_columns(mats)  # the columns not derived below (lever ports b, c, links' second, externals)
+    x[kept] = x_in[kept]
     torques = block[columns:columns + shafts]
     powers = block[columns + shafts:columns + 2 * shafts]
     rolling, coupling, loss, relative_out = (block[columns + 2 * shafts + k * levers:columns + 2 * shafts
@@ -153,20 +227,105 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
 
     # every element's torques exactly in its own ratios: T_b = −k_b·T_a, T_c = −k_c·T_a, link T_2 = −T_1
     if levers:
-        if efficiencies is None:
-            k_b, k_c = lay.lever_tables[0].take(table), lay.lever_tables[1].take(table)
+        if efficiencies is None:  # −k_b, −k_c from the negated tables (the same numbers as −(k·T))
+            minus_b, minus_c = (-lay.lever_tables[0]).take(table), (-lay.lever_tables[1]).take(table)
         else:  # η0 per point (given losses): k_b = i0·η0^w, k_c = 1 − k_b
             i0 = np.array([lv.ratio for lv in mats.levers]).reshape((-1,) + (1,) * len(points))
             k_b = np.where(used > 0, i0 * efficiencies, np.where(used < 0, i0 / efficiencies, i0))
-            k_c = 1.0 - k_b
+            minus_b, minus_c = -k_b, -(1.0 - k_b)
         t_a = x[lay.lever_a_columns]
-        x[lay.lever_b_columns] = -k_b * t_a + 0.0
-        x[lay.lever_c_columns] = -k_c * t_a + 0.0
+        x[lay.lever_b_columns] = minus_b * t_a + 0.0
+        x[lay.lever_c_columns] = minus_c * t_a + 0.0
     x[lay.link_second_columns] = -x[lay.link_first_columns] + 0.0
 
-    # idle elements: torques that are round-off of the torques of the elements they share a shaft with
-    port = x[lay.port_columns]
+    ports = _ports(lay)
+    port = x[ports]
     size = np.abs(port)
+    settled = _settled(lay, span(size), speeds, given, efficiencies, shaft_torques, speed_span)
+    if settled:  # no port torque is round-off of another: the zero rule changes nothing but −0
+        port += 0.0
+    else:
+        port = _idle_cleaned(lay, port, size, given, shaft_torques)
+    if not (settled and isinstance(ports, slice)):  # else port is a view of x
+        x[ports] = port
+
+    # external torques: given exactly, else the balance of the port torques on the shaft
+    torques[...] = 0.0
+    reacting_rows, groups = _balanced(lay, given, shaft_torques is None)
+    if len(reacting_rows):
+        total = _sums(port, groups)
+        terms = _rows(np.maximum, size if settled else np.abs(port), groups)
+        if shaft_torques is not None:  # M_s = Σ T_port − T_loss
+            total = total - shaft_torques[reacting_rows]
+            terms = np.maximum(terms, np.abs(shaft_torques[reacting_rows]))
+        torques[reacting_rows] = _clean(total, terms)
+    if shaft_torques is None:  # one port, no loss torque: the balance is the (cleaned) port torque itself
+        given_rows = {lay.rows[s] for s in given}
+        for row, group in zip(lay.reacting_rows.tolist(), lay.reacting_groups):
+            if len(group) == 1 and row not in given_rows:
+                torques[row] = port[group[0]]
+    if shaft_torques is not None:  # reactions of loss torques where no port is (the housing, say)
+        reacting = set(lay.reacting_rows.tolist())
+        bare = [row for row in (lay.rows[s] for s in (*mats.external, HOUSING)) if row not in reacting]
+        torques[bare] = -shaft_torques[bare] + 0.0
+    for shaft, value in given.items():
+        torques[lay.rows[shaft]] = value
+    x[lay.external_columns] = torques[lay.external_rows]
+    np.multiply(torques, speeds, out=powers)
+    powers *= RPM_TO_RAD_S
+    powers += 0.0  # P = M·ω, never −0
+
+    # levers: relative speed, rolling and coupling power, loss
+    relative_out[...] = relative_speeds(mats, speeds) if relative is None else relative
+    relative = relative_out
+    c = speeds[lay.lever_c_rows]
+    t_a = x[lay.lever_a_columns]
+    for out, other in ((rolling, relative), (coupling, c)):  # T_a·(n_a − n_c)·π/30 and T_a·n_c·π/30
+        np.multiply(t_a, other, out=out)
+        out *= RPM_TO_RAD_S
+        out += 0.0
+    if efficiencies is None:
+        lost = (1.0 - lay.lever_tables[2]).take(table)  # 1 − η0^w (1/η0 only where solved with it)
+    else:
+        lost = 1.0 - np.where(used > 0, efficiencies, np.where(used < 0, 1.0 / efficiencies, 1.0))
+    np.multiply(rolling, lost, out=loss)
+    loss += 0.0
+    normal = _block_normal(block, speeds) if not settled else True  # settled: no value can leave the range
+    if normal is None and _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
+        # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
+        # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
+        for array in (powers, rolling, coupling, loss):
+            array[...] = _flush(array)
+    observed = _signs(rolling)
+    direction = observed if pattern is None else used * (observed != 0)
+    return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block,
+                      normal)
+
+
+def given_columns(mats: TrainMatrices) -> np.ndarray | slice:
+    """The columns of x that :func:`evaluate` reads: lever ports a and links' first ports (the others
+    follow from them exactly; all columns where some column is neither a port nor an external torque)."""
+    lay = mats.layout
+    if len(lay.port_columns) + len(lay.external_columns) != len(mats.torque_columns):
+        return slice(None)
+    return np.concatenate([lay.lever_a_columns, lay.link_first_columns]).astype(int)
+
+
+def _balanced(lay, given: Mapping[str, np.ndarray], plain: bool) -> tuple[np.ndarray, tuple]:
+    """Reacting rows whose torque is a balance to compute, and their groups of ports: not the rows of
+    given torques (they are the given values), nor, where ``plain`` (no loss torques), single ports
+    (their balance is the port torque: ``_clean(p, |p|)`` is ``p + 0.0``, which the port already is)."""
+    rows = {lay.rows[s] for s in given}
+    keep = [k for k, (row, group) in enumerate(zip(lay.reacting_rows.tolist(), lay.reacting_groups))
+            if row not in rows and not (plain and len(group) == 1)]
+    return lay.reacting_rows[keep], tuple(lay.reacting_groups[k] for k in keep)
+
+
+def _idle_cleaned(lay, port: np.ndarray, size: np.ndarray, given: Mapping[str, np.ndarray],
+                  shaft_torques: np.ndarray | None) -> np.ndarray:
+    """The port torques with the zero rule applied: idle elements and round-off ports exactly 0."""
+    points = port.shape[1:]
+    # idle elements: torques that are round-off of the torques of the elements they share a shaft with
     padded = np.zeros((lay.parts + 1,) + points)  # the last row: no neighbour
     own = padded[:-1]
     _rows(np.maximum, size, lay.part_ports, own)
@@ -194,62 +353,63 @@ def _evaluate(mats: TrainMatrices, speeds: np.ndarray, x: np.ndarray, pattern: n
     # a port torque that is round-off of its element's largest is 0 (the zero rule of clean_array)
     zero = idle[lay.port_parts] | ((size <= ZERO_TOLERANCE * own[lay.port_parts]) & np.isfinite(port))
     port = np.where(zero, 0.0, port) + 0.0
-    x[lay.port_columns] = port
+    return port
 
-    # external torques: given exactly, else the balance of the port torques on the shaft
-    torques[...] = 0.0
-    if len(lay.reacting_rows):
-        total = _sums(port, lay.reacting_groups)
-        terms = _rows(np.maximum, np.abs(port), lay.reacting_groups)
-        if shaft_torques is not None:  # M_s = Σ T_port − T_loss
-            total = total - shaft_torques[lay.reacting_rows]
-            terms = np.maximum(terms, np.abs(shaft_torques[lay.reacting_rows]))
-        torques[lay.reacting_rows] = _clean(total, terms)
-    if shaft_torques is not None:  # reactions of loss torques where no port is (the housing, say)
-        reacting = set(lay.reacting_rows.tolist())
-        bare = [row for row in (lay.rows[s] for s in (*mats.external, HOUSING)) if row not in reacting]
-        torques[bare] = -shaft_torques[bare] + 0.0
-    for shaft, value in given.items():
-        torques[lay.rows[shaft]] = value
-    x[lay.external_columns] = torques[lay.external_rows]
-    np.multiply(torques, speeds, out=powers)
-    powers *= RPM_TO_RAD_S
-    powers += 0.0  # P = M·ω, never −0
 
-    # levers: relative speed, rolling and coupling power, loss
-    relative_out[...] = relative_speeds(mats, speeds) if relative is None else relative
-    relative = relative_out
-    c = speeds[lay.lever_c_rows]
-    t_a = x[lay.lever_a_columns]
-    for out, other in ((rolling, relative), (coupling, c)):  # T_a·(n_a − n_c)·π/30 and T_a·n_c·π/30
-        np.multiply(t_a, other, out=out)
-        out *= RPM_TO_RAD_S
-        out += 0.0
-    if efficiencies is None:
-        factor = lay.lever_tables[2].take(table)  # η0^w (1/η0 only where solved with it)
-    else:
-        factor = np.where(used > 0, efficiencies, np.where(used < 0, 1.0 / efficiencies, 1.0))
-    np.multiply(rolling, 1.0 - factor, out=loss)
-    loss += 0.0
+def _block_normal(block: np.ndarray, speeds: np.ndarray) -> bool | None:
+    """Whether every value of ``block`` and ``speeds`` is finite and 0 or normal; None where some is subnormal."""
     size = np.abs(block)
-    normal = None  # whether every value of the block is finite and 0 or normal (None: not known)
     small = size < _TINY
     if not np.count_nonzero(small) or not np.count_nonzero(size[small]):  # no subnormal value
-        normal = bool(size.max(initial=0.0) <= _HUGE) and _normal(speeds)
-    elif _subnormal(block[columns + shafts:columns + 2 * shafts + 3 * levers]):  # powers, rolling, coupling, loss
-        # rare: a power below the float range next to normal powers is 0 (torques and speeds are not
-        # flushed: a subnormal torque at a huge speed can still carry power; check_finite names them)
-        for array in (powers, rolling, coupling, loss):
-            array[...] = _flush(array)
-    observed = np.sign(rolling).astype(int)
-    direction = observed if pattern is None else np.where(observed == 0, 0, used)
-    return Evaluation(speeds, x, torques, powers, relative, rolling, coupling, loss, observed, direction, block,
-                      normal)
+        return bool(size.max(initial=0.0) <= _HUGE) and _normal(speeds)
+    return None
+
+
+def _settled(lay, port_span: tuple[float, float], speeds: np.ndarray, given: Mapping[str, np.ndarray],
+             efficiencies: np.ndarray | None, shaft_torques: np.ndarray | None,
+             speed_span: tuple[float, float] | None = None) -> bool:
+    """Whether the zero rule leaves every port torque as it is and no result can leave the float range.
+
+    Both hold when every non-zero magnitude going in (port torques, ``port_span`` = their smallest non-zero
+    and largest magnitude or bounds of them, speeds, given and loss
+    torques, the factors η0^w) lies within [``_SAFE_LOW``, ``_SAFE_HIGH``] — the few products and sums
+    of :func:`_evaluate` then stay far inside the range of normal floats — and the smallest non-zero
+    port torque is more than ``ZERO_TOLERANCE`` times the largest torque of all points (no element can
+    be idle and no port round-off of its element's largest: the scales they are judged by are never
+    larger).  Two reductions per array instead of the zero rule's and the range check's passes
+    (``speed_span``: :func:`~epicyclic.solver.linear.span` of ``|speeds|`` where already known).
+    """
+    low, peak = port_span
+    torques = (*given.values(), *(() if shaft_torques is None else (shaft_torques,)))  # scales of the rule too
+    factor = lay.lever_tables[2] if efficiencies is None else efficiencies
+    for values in (*torques, factor, *(() if speed_span else (speeds,))):
+        least, most = span(np.abs(values))
+        if not (least >= _SAFE_LOW and most <= _SAFE_HIGH):
+            return False
+        if any(values is t for t in torques):
+            peak = max(peak, most)
+    if speed_span and not (speed_span[0] >= _SAFE_LOW and speed_span[1] <= _SAFE_HIGH):
+        return False
+    return bool(_SAFE_LOW <= low and peak <= _SAFE_HIGH and low > ZERO_TOLERANCE * peak)  # NaN fails too
+
+
+def _ports(lay) -> slice | np.ndarray:
+    """The port columns of x: a slice where they are the first columns in order (a view, no copy)."""
+    columns = lay.port_columns
+    if np.array_equal(columns, np.arange(columns.size)):
+        return slice(0, int(columns.size))
+    return columns
 
 
 def _clean(values: np.ndarray, scale: np.ndarray) -> np.ndarray:
-    """:func:`~epicyclic.results.zero.clean_array` for a float array and a scale ≥ 0 of its shape."""
+    """:func:`~epicyclic.results.zero.clean_array` for a float array and a scale ≥ 0 of its shape.
+
+    ``values`` is a temporary: it is cleaned in place where nothing in it is round-off (the usual case).
+    """
     zero = np.abs(values) <= ZERO_TOLERANCE * scale
+    if not np.count_nonzero(zero):
+        values += 0.0
+        return values
     zero &= np.isfinite(values)
     out = np.where(zero, 0.0, values)
     out += 0.0

@@ -29,7 +29,7 @@ from ..errors import ContradictionError, NearSingularError, NonFiniteResultError
 from ..model.elements import HOUSING
 from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
-from .linear import SMALL, Pseudoinverse, apply, pseudoinverse, row_products, unreached_columns
+from .linear import SMALL, Pseudoinverse, apply, pseudoinverse, row_products, span, unreached_columns
 
 #: The smallest normal and the largest finite float.
 _TINY, _HUGE = float(np.finfo(float).tiny), float(np.finfo(float).max)
@@ -101,11 +101,14 @@ class SpeedSolver:
         what stands still by the ratios (sets sharing their shafts and a held member).
         """
         g = np.asarray(values, dtype=float)
-        g = np.where(np.abs(g) < np.finfo(float).tiny, 0.0, g)  # a given speed below 2.2e-308 1/min is 0
-        shape = (-1,) + (1,) * (g.ndim - 1)
+        below = np.abs(g) < _TINY
+        if np.count_nonzero(below):  # a given speed below 2.2e-308 1/min is 0 (−0 too)
+            g = np.where(below, 0.0, g)
         n = apply(self.operator, g)
         for r, shaft in enumerate(self.given):
             n[self.mats.speed_index[shaft]] = g[r]
+        if n.ndim > 1 and self._settled(n):
+            return self._follow(n)
         size = np.where(np.isfinite(n), np.abs(n), 0.0)  # overflow is named by check_speeds
         # measured against the largest speed (per point), so that |A⁺|·|A|·|n| cannot overflow near 1e308
         # (an infinite bound made every speed "round-off": a carrier at 2.8e307 1/min came out as 0)
@@ -115,23 +118,41 @@ class SpeedSolver:
         zero = size <= ZERO_TOLERANCE * terms
         zero[[self.mats.speed_index[g] for g in self.given]] = False  # a given speed stays as given
         n = np.where(zero & np.isfinite(n), 0.0, n)
-        follow = self._representatives  # shafts turning together: bit for bit the same speed
-        n = np.where((follow >= 0).reshape(shape), n[np.maximum(follow, 0)], 0.0) + 0.0
-        return n + 0.0
+        return self._follow(n)
+
+    def _follow(self, n: np.ndarray) -> np.ndarray:
+        """Shafts turning together bit for bit at the same speed, held shafts exactly 0 (never −0)."""
+        follow = self._representatives
+        out = n[np.maximum(follow, 0)]
+        out[follow < 0] = 0.0
+        out += 0.0
+        return out
+
+    def _settled(self, n: np.ndarray) -> bool:
+        """Whether the round-off rule of :meth:`speeds` sets no speed to 0 and no speed can be out of the
+        float range: every non-zero |n| within 1e-50…1e50 and above ZERO_TOLERANCE · the row sums of
+        |A⁺|·|A| (the largest the bound can be, speeds relative to the largest) · the largest |n| of all
+        points (a margin of 1e-6 for the round-off of the bound itself).  Two reductions.
+        """
+        least, most = span(np.abs(n))
+        bound = self._magnitudes[2]
+        return bool(1e-50 <= least and most <= 1e50 and least > ZERO_TOLERANCE * (1.0 + 1e-6) * bound * most)
 
     @cached_property
     def _magnitudes(self) -> tuple[np.ndarray, np.ndarray]:
-        """|A| and |A⁺| (see :meth:`speeds`)."""
-        return np.abs(self.system.matrix), np.abs(self.system.inverse)
+        """|A|, |A⁺| and the largest row sum of |A⁺|·|A| (see :meth:`speeds`)."""
+        moduli = np.abs(self.system.matrix), np.abs(self.system.inverse)
+        return (*moduli, float((moduli[1] @ (moduli[0] @ np.ones(moduli[0].shape[1]))).max(initial=0.0)))
 
     @cached_property
     def _plain(self) -> tuple[list[int], list[int], list[list[float]] | None, list[list[float]] | None]:
-        """For :meth:`point`: the columns of the given speeds, :attr:`_representatives`, and for a small
-        system the operator and |A⁺|·|A| as lists of rows (Python loops beat numpy's call overhead there)."""
-        small = self.operator.size + self._magnitudes[0].size <= SMALL
+        """For :meth:`point`: the columns of the given speeds, :attr:`_representatives`, the operator as
+        lists of rows where one speed is given (a product per entry: BLAS's numbers), and |A⁺|·|A| as
+        lists of rows where it is small (Python loops beat numpy's call overhead there)."""
+        bound = self._magnitudes[1] @ self._magnitudes[0]
         return ([self.mats.speed_index[g] for g in self.given], self._representatives.tolist(),
-                self.operator.tolist() if small else None,
-                (self._magnitudes[1] @ self._magnitudes[0]).tolist() if small else None)
+                self.operator.tolist() if self.operator.shape[1] == 1 else None,
+                bound.tolist() if bound.size <= SMALL else None)
 
     def point(self, values: Sequence[float]) -> list[float] | None:
         """:meth:`speeds` of one point in Python floats (the same numbers); None where one is not finite.

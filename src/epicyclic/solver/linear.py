@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["apply", "row_products", "SMALL", "Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "unreached_columns", "RANK_TOLERANCE",
+__all__ = ["apply", "row_products", "span", "SMALL", "Pseudoinverse", "pseudoinverse", "equilibrate", "rank", "unreached_columns", "RANK_TOLERANCE",
            "NEAR_SINGULAR"]
 
 #: Relative singular values at or below this are exact zeros (round-off of an exact dependence).
@@ -60,14 +60,15 @@ def apply(matrix: np.ndarray, values: np.ndarray) -> np.ndarray:
     return matrix @ values
 
 
-#: Entries up to which a solver's one-point product works in Python floats (numpy's call overhead
-#: is larger than the arithmetic there).
+#: Entries up to which a one-point product works in Python floats (numpy's call overhead is larger
+#: than the arithmetic there).
 SMALL = 48
 
 
 def row_products(rows: list[list[float]], values: list[float]) -> list[float]:
     """``matrix @ values`` for a matrix given as its rows, in Python floats: each entry summed from 0.0,
-    left to right (for one column, BLAS's numbers; for more, the same up to round-off).
+    left to right.  For one column these are BLAS's numbers (a product per entry); for more, BLAS may
+    fuse a multiply and an add (one rounding), so they are the same up to the last bit only.
 
     >>> row_products([[2.0, 1.0], [-1.0, 0.5]], [3.0, 4.0])
     [10.0, -1.0]
@@ -82,6 +83,20 @@ def row_products(rows: list[list[float]], values: list[float]) -> list[float]:
             total += a * b
         out.append(total)
     return out
+
+
+def span(size: np.ndarray) -> tuple[float, float]:
+    """The smallest non-zero and the largest entry of ``size`` (magnitudes, ≥ 0): (inf, 0) where all
+    are 0; NaN where one is NaN.  Two reductions (three where some entry is 0).
+
+    >>> span(np.array([[0.0, 2.0], [0.5, 0.0]]))
+    (0.5, 2.0)
+    """
+    most = float(size.max(initial=0.0))
+    least = float(size.min(initial=np.inf))
+    if least == 0.0:
+        least = float(np.min(size, where=size > 0.0, initial=np.inf))
+    return least, most
 
 
 def equilibrate(matrix: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -17,6 +17,7 @@ Brandenberger 1952, eqs. 3' and 7; Queitsch, Wälz- und Kupplungsleistung (as
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
@@ -27,7 +28,7 @@ from ..model.elements import HOUSING
 from ..results.solution import RPM_TO_RAD_S
 from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
-from .evaluate import Evaluation, evaluate
+from .evaluate import _SAFE_HIGH, _SAFE_LOW, Evaluation, evaluate
 
 __all__ = ["evaluate_point", "PointEvaluation"]
 
@@ -51,6 +52,7 @@ class _Plain:
     levers: tuple  # (a column, b column, c column, a row, c row, ratio, 3·lever + 1)
     links: tuple  # (first column, second column)
     tables: tuple  # k_b, k_c, η0^w at 3·lever + w + 1
+    tables_within: bool  # every η0^w within the safe range (see _settled)
 
 
 @lru_cache(maxsize=64)
@@ -74,6 +76,7 @@ def _plain(mats: TrainMatrices) -> _Plain:
                          [3 * k + 1 for k in range(len(mats.levers))])),
         links=tuple(zip(ints(lay.link_first_columns), ints(lay.link_second_columns))),
         tables=tuple(tuple(float(v) for v in table) for table in lay.lever_tables),
+        tables_within=_within(float(v) for v in lay.lever_tables[2]),
     )
 
 
@@ -172,32 +175,37 @@ def _normal(values) -> bool:
     return True
 
 
-def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str, float], eta: list | None,
-              loss_torques: list | None):
-    """The steps of evaluate._evaluate, in its order, on floats."""
-    tol = ZERO_TOLERANCE
-    if not (_normal(n) and _normal(x) and _normal(given.values())
-            and (eta is None or _normal(eta)) and (loss_torques is None or _normal(loss_torques))):
-        raise _Unusual
-    # every element's torques exactly in its own ratios
-    for k, (a, b, c, _, _, ratio, entry) in enumerate(lay.levers):
-        wk = 0 if w is None else w[k]
-        if eta is None:
-            k_b, k_c = lay.tables[0][entry + wk], lay.tables[1][entry + wk]
-        else:
-            k_b = ratio * eta[k] if wk > 0 else ratio / eta[k] if wk < 0 else ratio
-            k_c = 1.0 - k_b
-        t_a = x[a]
-        x[b] = -k_b * t_a + 0.0
-        x[c] = -k_c * t_a + 0.0
-    for first, second in lay.links:
-        x[second] = -x[first] + 0.0
-    port = [x[c] for c in lay.port_columns]
-    if not _normal(port):
-        raise _Unusual
-    size = [abs(v) for v in port]
+def _within(values) -> bool:
+    """Whether every non-zero magnitude of ``values`` lies in [_SAFE_LOW, _SAFE_HIGH] (NaN does not)."""
+    for v in values:
+        a = abs(v)
+        if a and not (_SAFE_LOW <= a <= _SAFE_HIGH):
+            return False
+    return True
 
-    # idle elements
+
+def _settled(lay: _Plain, size: list, n: list, given: Mapping[str, float], eta: list | None,
+             loss_torques: list | None) -> bool:
+    """evaluate._settled of one point: the zero rule leaves every port torque as it is and no result
+    can leave the range of normal floats (every non-zero magnitude going in within the safe range, the
+    smallest non-zero port torque more than ZERO_TOLERANCE times the largest torque)."""
+    if not (_within(size) and _within(n) and _within(given.values())
+            and (lay.tables_within if eta is None else _within(eta))
+            and (loss_torques is None or _within(loss_torques))):
+        return False
+    low = min([a for a in size if a], default=math.inf)
+    peak = max(size, default=0.0)
+    for values in (given.values(), loss_torques or ()):
+        for v in values:
+            peak = max(peak, abs(v))
+    return low > ZERO_TOLERANCE * peak
+
+
+def _idle_cleaned(lay: _Plain, x: list, port: list, size: list, given: Mapping[str, float],
+                  loss_torques: list | None) -> None:
+    """The zero rule on the port torques (as evaluate._idle_cleaned): idle elements, and each port's
+    round-off of its element's largest, exactly 0; ``port`` and ``x`` changed in place."""
+    tol = ZERO_TOLERANCE
     own = [max([size[j] for j in ports]) for ports in lay.part_ports]
     scale = [max([own[j] for j in near]) for near in lay.neighbours]
     for shaft, value in given.items():
@@ -219,6 +227,36 @@ def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str,
     for j, (column, part) in enumerate(zip(lay.port_columns, lay.port_parts)):
         value = 0.0 if idle[part] or size[j] <= tol * own[part] else port[j] + 0.0
         port[j] = x[column] = value
+
+
+def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str, float], eta: list | None,
+              loss_torques: list | None):
+    """The steps of evaluate._evaluate, in its order, on floats."""
+    tol = ZERO_TOLERANCE
+    # every element's torques exactly in its own ratios
+    for k, (a, b, c, _, _, ratio, entry) in enumerate(lay.levers):
+        wk = 0 if w is None else w[k]
+        if eta is None:
+            k_b, k_c = lay.tables[0][entry + wk], lay.tables[1][entry + wk]
+        else:
+            k_b = ratio * eta[k] if wk > 0 else ratio / eta[k] if wk < 0 else ratio
+            k_c = 1.0 - k_b
+        t_a = x[a]
+        x[b] = -k_b * t_a + 0.0
+        x[c] = -k_c * t_a + 0.0
+    for first, second in lay.links:
+        x[second] = -x[first] + 0.0
+    port = [x[c] for c in lay.port_columns]
+    size = [abs(v) for v in port]
+    settled = _settled(lay, size, n, given, eta, loss_torques)
+    if settled:  # no port torque is round-off of another: the zero rule changes nothing but −0
+        for j, column in enumerate(lay.port_columns):
+            port[j] = x[column] = port[j] + 0.0
+    else:
+        if not (_normal(n) and _normal(x) and _normal(given.values()) and _normal(port)
+                and (eta is None or _normal(eta)) and (loss_torques is None or _normal(loss_torques))):
+            raise _Unusual
+        _idle_cleaned(lay, x, port, size, given, loss_torques)
 
     # external torques
     torques = [0.0] * len(lay.rows)
@@ -258,6 +296,6 @@ def _evaluate(lay: _Plain, n: list, x: list, w: list | None, given: Mapping[str,
         loss.append(roll * (1.0 - factor) + 0.0)
         observed.append(sign)
         direction.append(sign if w is None else (0 if sign == 0 else wk))
-    if not _normal(x + torques + powers + relative + rolling + coupling + loss):
-        raise _Unusual
+    if not settled and not _normal(x + torques + powers + relative + rolling + coupling + loss):
+        raise _Unusual  # settled: no value can leave the range of normal floats
     return x, torques, powers, relative, rolling, coupling, loss, observed, direction

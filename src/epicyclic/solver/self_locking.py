@@ -27,12 +27,13 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import EpicyclicError
+from ..errors import EpicyclicError, NearSingularError, UnderdeterminedError
 from ..results.solution import RPM_TO_RAD_S, SelfLocking, Solution
 from .assembly import TrainMatrices
 from .linear import pseudoinverse
+from .statics import TorqueSolver, torque_solver
 
-__all__ = ["SELF_LOCKING_MARGIN", "self_locking", "formal_efficiency"]
+__all__ = ["SELF_LOCKING_MARGIN", "self_locking", "formal_efficiency", "limit_solver", "with_pattern"]
 
 #: A formal efficiency at or below this (relative power at the loads) is self-locking.
 SELF_LOCKING_MARGIN = 1e-9
@@ -49,26 +50,28 @@ def _wrong_way(solution: Solution) -> list[str]:
 
 
 def self_locking(solution: Solution, consistent: bool, mats: TrainMatrices, given, values, speeds,
-                 pattern) -> SelfLocking | None:
+                 pattern, *, singular: bool = False) -> SelfLocking | None:
     """Detect self-locking and find each lossy element's threshold η0 (None: the train moves).
 
     ``pattern`` is the loss-direction pattern of the ideal power flow, ``speeds``
     all shaft speeds (train order), ``given``/``values`` the given
-    external torques.
+    external torques.  ``singular``: the equations of a loss pattern were singular
+    although the lossless ones were not (the train is exactly at its limit; ``solution``
+    then holds the formal solution of an earlier pattern or, if none, the lossless one).
     """
     if solution.input_power == 0.0 and solution.output_power == 0.0:
         return None  # no power flows: nothing to lock
-    wrong = _wrong_way(solution)
+    wrong = [] if singular else _wrong_way(solution)
     at_limit = solution.output_power <= SELF_LOCKING_MARGIN * solution.input_power
     if consistent and not wrong and not at_limit:
         return None
     formal = formal_efficiency(mats, given, values, speeds, pattern, solution)
     thresholds = _thresholds(mats, given, values, speeds, pattern, solution)
-    if wrong:
-        load = any(solution.shafts[s].role == "load" for s in wrong)
-        reason = ("with losses, " + ", ".join(repr(s) for s in wrong)
-                  + (" would have to deliver power although it is the load" if load
-                     else " would have to absorb power although it is the drive"))
+    if singular:
+        reason = ("with losses, the torques would be unbounded: the train is exactly at its self-locking "
+                  "limit (i0·η0^w = 1)")
+    elif wrong:
+        reason = "with losses, " + _wrong_way_words(solution, wrong)
     elif not consistent:
         reason = "no loss-direction pattern is consistent with the given load"
     elif formal is None or formal > -SELF_LOCKING_MARGIN:
@@ -78,12 +81,32 @@ def self_locking(solution: Solution, consistent: bool, mats: TrainMatrices, give
     where = ", ".join(f"{name}: η0 < {eta:.6g}" for name, eta in thresholds.items())
     message = (
         f"the train self-locks in this direction of power flow: {reason}"
-        + (f" (formal efficiency {formal:.4g})" if formal is not None else "")
+        + (f" (formal efficiency {formal + 0.0:.4g})" if formal is not None else "")
         + (f"; self-locking starts at {where}" if where else "")
         + ". Drive it from the other side, or raise the efficiency."
     )
     shown = None if formal is None else (0.0 if abs(formal) <= SELF_LOCKING_MARGIN else formal)
     return SelfLocking(message, shown, MappingProxyType(thresholds))
+
+
+def _wrong_way_words(solution: Solution, wrong: list[str]) -> str:
+    """What the ``wrong`` shafts would have to do, by their declared role.
+
+    A designated drive or load is called so; a shaft declared ``connected`` has its role from the
+    lossless power flow, and the words say that.
+    """
+    point = solution.operating_point
+    parts = []
+    for shaft in wrong:
+        role = solution.shafts[shaft].role
+        verb = "deliver" if role == "load" else "absorb"
+        if shaft in point.drives or shaft in point.loads:
+            parts.append(f"{shaft!r} would have to {verb} power although it is a {role}")
+        else:
+            parts.append(f"{shaft!r} would have to {verb} power although, without losses, it "
+                         + ("takes power out" if role == "load" else "puts power in")
+                         + (" (a connected shaft)" if shaft in point.connected else ""))
+    return "; ".join(parts)
 
 
 def formal_efficiency(mats: TrainMatrices, given, values, speeds, pattern, solution, etas=None) -> float | None:
@@ -97,6 +120,9 @@ def formal_efficiency(mats: TrainMatrices, given, values, speeds, pattern, solut
     for r, shaft in enumerate(given):
         rows[r, mats.external_column(shaft)] = 1.0
     system = pseudoinverse(np.vstack([matrix, rows]))
+    columns = mats.torque_columns
+    if any(columns[c][0] == "external" for c in system.free_columns()):
+        return None  # singular: exactly at the limit, the torques are unbounded and the ratio undefined
     x = system.solve(np.concatenate([np.zeros(matrix.shape[0]), np.asarray(values, dtype=float)]))
     shafts = mats.train.shafts
     powers = {s: x[mats.external_column(s)] * speeds[k] * RPM_TO_RAD_S
@@ -109,6 +135,28 @@ def formal_efficiency(mats: TrainMatrices, given, values, speeds, pattern, solut
     if drive == 0.0:
         return -np.inf if load < 0 else np.inf
     return float(load / drive)
+
+
+def limit_solver(mats: TrainMatrices, given, row, ideal: TorqueSolver, singular: set) -> TorqueSolver:
+    """The torque solver of the loss pattern ``row`` (for the batch, as :func:`~epicyclic.solver.solve.solve`).
+
+    Where its equations are singular although the lossless ones are not, the train is exactly at its
+    self-locking limit (i0·η0^w = 1: unbounded torques); ``row`` then goes into ``singular`` and the
+    lossless solver ``ideal`` stands in (the points of that pattern self-lock).
+    """
+    try:
+        return torque_solver(mats, given, row)
+    except (UnderdeterminedError, NearSingularError):
+        singular.add(tuple(int(w) for w in row))
+        return ideal
+
+
+def with_pattern(column: np.ndarray, rows: set[tuple[int, ...]]) -> np.ndarray:
+    """Points (columns of ``column``) whose loss pattern is one of ``rows``."""
+    hit = np.zeros(column.shape[1], dtype=bool)
+    for row in rows:
+        hit |= np.all(column == np.array(row, dtype=column.dtype)[:, None], axis=0)
+    return hit
 
 
 def _thresholds(mats, given, values, speeds, pattern, solution) -> dict[str, float]:

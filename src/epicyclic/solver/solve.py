@@ -32,7 +32,8 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..errors import ContradictionError, ModelError, NonFiniteResultError, OperatingPointError
+from ..errors import (ContradictionError, EpicyclicError, ModelError, NearSingularError, NonFiniteResultError,
+                      OperatingPointError, UnderdeterminedError)
 from ..model.elements import HOUSING, Clutch, GearStage
 from ..model.operating_point import OperatingPoint
 from ..model.planetary import PlanetarySet
@@ -44,6 +45,7 @@ from .assembly import TrainMatrices, matrices
 from .evaluate import Evaluation
 from .given_losses import DRAG, GivenLosses, given_losses, with_efficiencies
 from .kinematics import degrees_of_freedom, solve_speeds
+from .friction_state import describe, reversible_levers, wrong_way_at_designated
 from .point import evaluate_point
 from .self_locking import self_locking
 from .statics import TorqueSolver, torque_solver
@@ -216,11 +218,18 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
     tried: list[tuple[int, ...]] = []
     consistent: tuple[TorqueSolver, Evaluation] | None = None
     first: tuple[TorqueSolver, Evaluation] | None = None
+    singular = False
     while len(tried) < MAX_PATTERN_TRIES and pattern not in tried:
         tried.append(pattern)
-        solver = torque_solver(mats, given, pattern)
-        x = solver.point(values, rows)
-        solver.check(values, x, rows)
+        try:
+            solver = torque_solver(mats, given, pattern)
+            x = solver.point(values, rows)
+            solver.check(values, x, rows)
+        except (UnderdeterminedError, NearSingularError, ContradictionError) as error:
+            if not _at_limit(error, ideal_solver, mats, given, pattern):
+                raise
+            singular = True  # exactly (or within round-off) at the self-locking limit of this pattern
+            break
         ev = evaluate_point(mats, n, x, pattern, given_values, shaft_torques=dragged)
         if first is None:
             first = (solver, ev)
@@ -230,12 +239,55 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
             break
         pattern = tuple(w if o == 0 else o for w, o in zip(pattern, observed))
 
-    solver, ev = consistent if consistent is not None else first
-    solution = _build(train, op, mats, ev, solver, roles, ideal, extra=extra)
-    locked = self_locking(solution, consistent is not None, mats, given, values, n, ideal_pattern)
+    if consistent is None and first is None:  # no lossy solution at all: the lossless numbers are shown
+        solution = replace(ideal(), ideal=ideal())
+    else:
+        solver, ev = consistent if consistent is not None else first
+        other = None if consistent is None else (
+            lambda: _other_friction_state(train, op, mats, solver, given, values, rows, n, given_values, dragged))
+        solution = _build(train, op, mats, ev, solver, roles, ideal, extra=extra, other=other)
+    locked = self_locking(solution, consistent is not None, mats, given, values, n, ideal_pattern,
+                          singular=singular)
     if locked is not None:
         solution = solution.replace(self_locking=locked, efficiency=None)
     return solution
+
+
+def _at_limit(error, ideal_solver: TorqueSolver, mats: TrainMatrices, given, pattern) -> bool:
+    """Whether ``error`` of a loss pattern's equations means "at the self-locking limit".
+
+    The lossless equations were determined; if those of a loss pattern leave a torque free
+    (``UnderdeterminedError``), are too close to singular (``NearSingularError``) or, having lost
+    rank, cannot take the given torques (``ContradictionError``), the losses alone made them
+    singular: i0·η0^w (or a loop's product of such ratios) is 1, the torques of that pattern are
+    unbounded, and no consistent solution with it exists (Brandenberger 1952, text to Bild 9:
+    self-locking where the carrier torque M3' = 0 for a finite drive torque).
+    """
+    if isinstance(error, ContradictionError):
+        lossy = mats.solvers.get(("torque", tuple(given), tuple(int(w) for w in pattern)))
+        return lossy is not None and lossy.system.rank < ideal_solver.system.rank
+    return True
+
+
+def _other_friction_state(train, op, mats, solver: TorqueSolver, given, values, rows, n, given_values,
+                          dragged) -> tuple[str, ...]:
+    """A warning if another loss pattern, one element reversed, is consistent too (see friction_state)."""
+    designated = [(k, "drive" if s in op.drives else "load") for k, s in enumerate(train.shafts)
+                  if s in op.drives or s in op.loads]
+    for k in reversible_levers(solver):
+        other = tuple(-w if j == k else w for j, w in enumerate(solver.pattern))
+        try:
+            alternative = torque_solver(mats, given, other)
+            x = alternative.point(values, rows)
+            alternative.check(values, x, rows)
+            col = _Column(evaluate_point(mats, n, x, other, given_values, shaft_torques=dragged))
+        except EpicyclicError:  # singular or out of range: no state
+            continue
+        scale = max(abs(p) for p in col.powers)
+        if _consistent(other, col.pattern) and not wrong_way_at_designated(col.powers, designated, scale):
+            torques = {s: t for s, t in zip(train.shafts, col.torques) if s in mats.external}
+            return (describe(mats, solver.pattern, other, torques),)
+    return ()
 
 
 def _once(make):
@@ -279,7 +331,7 @@ def _efficiency(drive_power: float, load_power: float, loss: float) -> float | N
 
 
 def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, lossless=False,
-           extra: GivenLosses | None = None) -> Solution:
+           extra: GivenLosses | None = None, other=None) -> Solution:
     col = _Column(ev)
     shafts = {shaft: ShaftState(shaft, speed, torque, power, roles[shaft])
               for shaft, speed, torque, power in zip(train.shafts, col.speeds, col.torques, col.powers)}
@@ -310,7 +362,7 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
         self_locking=None,
         circulation=circ,
         degrees_of_freedom=degrees_of_freedom(mats),
-        warnings=lambda: tuple(_warnings(shafts, solver, circ(), drive_power, load_power)),
+        warnings=lambda: tuple(_warnings(shafts, solver, circ(), drive_power, load_power)) + (other() if other else ()),
         ideal=ideal,
     )
 

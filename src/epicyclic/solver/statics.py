@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import ContradictionError, NearSingularError, UnderdeterminedError
 from .assembly import TrainMatrices
-from .linear import SMALL, Pseudoinverse, apply, pseudoinverse, row_products, unreached_columns
+from .linear import Pseudoinverse, apply, pseudoinverse, row_products, unreached_columns
 
 __all__ = ["TorqueSolver", "torque_solver"]
 
@@ -84,8 +84,8 @@ class TorqueSolver:
 
     @cached_property
     def _rows(self) -> list[list[float]] | None:
-        """:attr:`operator` as lists of rows where it is small (see :meth:`point`)."""
-        return self.operator.tolist() if self.operator.size <= SMALL else None
+        """:attr:`operator` as lists of rows where one torque is given (see :meth:`point`)."""
+        return self.operator.tolist() if self.operator.shape[1] == 1 else None
 
     def point(self, values: Sequence[float], rows: np.ndarray | None = None) -> list[float]:
         """:meth:`torques` of one point in Python floats (a list; ``rows``, if given, one column)."""
