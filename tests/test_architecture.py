@@ -25,7 +25,7 @@ MAX_LINES = 600
 #: Sub-packages and top-level modules of ``epicyclic`` by layer, lowest first ("" is the package
 #: itself, ``epicyclic/__init__.py``, which re-exports model, results and solver).
 LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
-    {"errors", "limits", "pickling", "text", "units"},  # foundations: errors, limits, unit, text, pickle rules
+    {"errors", "limits", "pickling", "text", "unit_registry", "units"},  # foundations: errors, limits, units, text, pickling
     {"model"},                                        # the description: elements, train, operating point
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results

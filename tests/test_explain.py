@@ -38,7 +38,9 @@ def test_every_shaft_balances_to_zero_and_results_end_the_text():
 
 def test_german_terms():
     text = explain(solve(*brandenberger_1952()), lang="de").text()
-    for term in ("Lösungsweg", "Steg", "Sonnenrad", "Hohlrad", "Standübersetzung", "Standwirkungsgrad",
+    # Brandenberger's set has two suns (a, d external): its systems I and II are the first and second
+    # central gear (Zentralrad), not sun and ring; a simple set's Sonnenrad/Hohlrad: tests/io/test_reports.py.
+    for term in ("Lösungsweg", "Steg", "erstes Zentralrad", "zweites Zentralrad", "Standübersetzung", "Standwirkungsgrad",
                  "Wälzleistung", "Kupplungsleistung", "Wirkungsgrad", "Momentengleichgewicht"):
         assert term in text
     assert set(LANGUAGES) == {"en", "de"}

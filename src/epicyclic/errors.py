@@ -71,6 +71,22 @@ class UnknownShaftError(EpicyclicError, ValueError):
 def closest(name: object, known: Sequence[str]) -> str | None:
     """The name in ``known`` that ``name`` most likely misspells (another case, a typo), or None.
 
+    A name that differs only in case wins; otherwise the closest by
+    :func:`difflib.get_close_matches` with a similarity of at least 0.6.
+
+    Parameters
+    ----------
+    name : object
+        What the user gave (anything that is not a string has no close name).
+    known : sequence of str
+        The names that exist.
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
     >>> closest("sunn", ["sun", "ring", "carrier"]), closest("Ring", ["sun", "ring"]), closest("x", ["sun"])
     ('sun', 'ring', None)
     """

@@ -45,6 +45,7 @@ from typing import Any
 from .errors import EpicyclicError
 from .io.tables import fmt
 from .model import Brake, Clutch, GearStage, PlanetarySet
+from .results.render import port_labels
 from .results.solution import Solution
 from .results.zero import clean
 from .text import markdown_text
@@ -61,7 +62,7 @@ _T = {
         "balance": "4. Torque balance at every shaft",
         "results": "5. Results",
         "sun": "sun", "ring": "ring", "carrier": "carrier", "first": "first shaft", "second": "second shaft",
-        "housing": "housing",
+        "housing": "housing", "first_central": "first central gear", "second_central": "second central gear",
         "set": "planetary set", "stage": "gear stage", "clutch": "clutch", "brake": "brake",
         "i0": "stationary ratio i0", "eta0": "stationary efficiency η0", "ratio": "ratio i", "eta": "efficiency η",
         "engaged": "engaged", "open": "open",
@@ -104,7 +105,7 @@ _T = {
         "balance": "4. Momentengleichgewicht an jeder Welle",
         "results": "5. Ergebnisse",
         "sun": "Sonnenrad", "ring": "Hohlrad", "carrier": "Steg", "first": "erste Welle", "second": "zweite Welle",
-        "housing": "Gehäuse",
+        "housing": "Gehäuse", "first_central": "erstes Zentralrad", "second_central": "zweites Zentralrad",
         "set": "Umlaufradsatz", "stage": "Standgetriebe", "clutch": "Kupplung", "brake": "Bremse",
         "i0": "Standübersetzung i0", "eta0": "Standwirkungsgrad η0", "ratio": "Übersetzung i",
         "eta": "Wirkungsgrad η",
@@ -201,12 +202,26 @@ class Explanation:
     _repr_html_ = html
 
     def to_dict(self) -> dict[str, Any]:
+        """The worked solution as JSON-ready data.
+
+        Returns
+        -------
+        dict
+            ``title``, ``lang``, ``units`` (:meth:`Units.to_dict <epicyclic.units.Units.to_dict>`)
+            and ``steps``: a list of ``{title, lines}`` in the order of the text.
+        """
         return {"title": self.title, "lang": self.lang, "units": self.units.to_dict(),
                 "steps": [{"title": s.title, "lines": list(s.lines)} for s in self.steps]}
 
     def __str__(self) -> str:
         return self.text()
 
+
+
+def _central(element: PlanetarySet, port: str) -> str:
+    """Translation key of a set's central member: first/second central gear for two rings or two suns."""
+    label = element.teeth.label(port) if element.teeth is not None else port
+    return {"first": "first_central", "second": "second_central"}.get(label, label)
 
 def _p(value: float) -> str:
     """A number for substitution: negative values in parentheses."""
@@ -261,7 +276,8 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
     for element in train.elements:
         if isinstance(element, PlanetarySet):
             given.append(
-                f"{t['set']} {element.name!r}: 1 = {t['sun']} {element.sun!r}, 2 = {t['ring']} {element.ring!r}, "
+                f"{t['set']} {element.name!r}: 1 = {t[_central(element, 'sun')]} {element.sun!r}, "
+                f"2 = {t[_central(element, 'ring')]} {element.ring!r}, "
                 f"3 = {t['carrier']} {element.carrier!r}; {t['i0']} = (n1 − n3)/(n2 − n3) = "
                 f"{fmt(element.stationary_ratio)}, {t['eta0']} = {fmt(element.stationary_efficiency)}"
             )
@@ -319,8 +335,8 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
 
     balance: list[str] = [t["balance_rule"]]
     for shaft, sstate in solution.shafts.items():
-        parts = [(e.name, port, tq) for e in solution.elements.values() for port, tq in e.torques.items()
-                 if e.ports[port] == shaft]
+        parts = [(e.name, port_labels(solution, e)[port], tq) for e in solution.elements.values()
+                 for port, tq in e.torques.items() if e.ports[port] == shaft]
         if not parts:
             continue
         terms = " + ".join(f"M_{name}.{port}" for name, port, _ in parts)

@@ -187,7 +187,32 @@ def max_file_bytes() -> int:
 
 
 def check_range(value: int | float, field: str, bounds: tuple[int | float, int | float]) -> int | float:
-    """Return ``value`` if ``bounds[0] <= value <= bounds[1]``, else raise :class:`LimitError`."""
+    """Return ``value`` if ``bounds[0] <= value <= bounds[1]``, else raise :class:`LimitError`.
+
+    Parameters
+    ----------
+    value : int or float
+        The number to check (NaN is outside every range).
+    field : str
+        Where it came from, the start of the message (e.g. ``"geometry.module"``).
+    bounds : tuple of (int or float, int or float)
+        The accepted range, both ends included (one of the ``*_RANGE`` constants here).
+
+    Returns
+    -------
+    int or float
+        ``value`` unchanged.
+
+    Raises
+    ------
+    LimitError
+        ``value`` outside ``bounds``; the message names ``field`` and the range.
+
+    Examples
+    --------
+    >>> check_range(2.5, "geometry.module", MODULE_RANGE)
+    2.5
+    """
     low, high = bounds
     if not low <= value <= high:  # also False for NaN
         raise LimitError(f"{field}: {value!r} is outside the accepted range {low} … {high} (see docs/limits.md).",
@@ -196,7 +221,29 @@ def check_range(value: int | float, field: str, bounds: tuple[int | float, int |
 
 
 def check_count(count: int, field: str, maximum: int, what: str) -> int:
-    """Raise :class:`LimitError` if there are more than ``maximum`` ``what`` (e.g. ``"elements"``)."""
+    """Return ``count`` if it is at most ``maximum``, else raise :class:`LimitError`.
+
+    Parameters
+    ----------
+    count : int
+        How many were given.
+    field : str
+        Where they came from, the start of the message (e.g. ``"planetary"``).
+    maximum : int
+        The most accepted (one of the ``MAX_*`` constants here).
+    what : str
+        What is counted, plural, for the message (e.g. ``"elements"``).
+
+    Returns
+    -------
+    int
+        ``count`` unchanged.
+
+    Raises
+    ------
+    LimitError
+        ``count > maximum``.
+    """
     if count > maximum:
         raise LimitError(f"{field}: {count} {what} given; at most {maximum} are accepted (see docs/limits.md).",
                          field)

@@ -42,7 +42,24 @@ def markdown_text(text: str) -> str:
 
 
 def short(value: object, limit: int = 60) -> str:
-    """``repr(value)`` cut to ``limit`` characters (for messages that quote what was given)."""
+    """``repr(value)`` cut to ``limit`` characters (for messages that quote what was given).
+
+    Parameters
+    ----------
+    value : object
+        Anything; a value nested too deeply for ``repr`` is described by its type.
+    limit : int, default 60
+        Most characters returned; a longer text ends in ``…``.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> short("x" * 100, 10)
+    "'xxxxxxxx…"
+    """
     try:
         text = repr(value)
     except RecursionError:  # a value nested too deeply to print

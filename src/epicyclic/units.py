@@ -53,6 +53,7 @@ from typing import TYPE_CHECKING
 
 from .errors import EpicyclicError
 from .limits import MAX_DECIMAL_EXPONENT, MAX_UNIT_CHARS, MAX_UNIT_POWER, UNIT_FACTOR_RANGE
+from .unit_registry import _KNOWN_FACTORS, CORE_UNITS, G0, QUANTITIES, registry
 
 if TYPE_CHECKING:  # pragma: no cover
     import numpy as np
@@ -70,28 +71,6 @@ __all__ = [
     "to_core",
     "unit_factor",
 ]
-
-#: The core unit of every quantity the I/O layer converts.
-CORE_UNITS = {"speed": "1/min", "torque": "N*m", "power": "W"}
-
-#: Quantities that carry units, with examples of accepted units (for messages).
-QUANTITIES = {
-    "speed": "1/min, U/min, rpm, 1/s, rad/s",
-    "torque": "N*m, kN*m, kp*cm, cm*kg, kp*m, lbf*ft",
-    "power": "W, kW, PS, hp",
-}
-
-#: Standard gravity (kp = 9.80665 N exactly).
-G0 = 9.80665
-
-_DEFINITIONS = (
-    "revolution = 1 = rev = turn = U = Umdrehung",
-    "radian = revolution / (2 * pi) = rad",
-    "rpm = revolution / minute",
-    "PS = 735.49875 W = metric_horsepower_PS",
-    "kp = 9.80665 N = kilopond",
-    "newton_meter = N * m = Nm",
-)
 
 
 class UnitError(EpicyclicError, ValueError):
@@ -112,29 +91,6 @@ class UnitError(EpicyclicError, ValueError):
         self.quantity = quantity
         self.given = given
         super().__init__(message)
-
-
-#: Core units per unit for the units of the sources, the examples and the documentation, so that
-#: reading them needs neither pint nor its registry (importing pint and building the registry cost
-#: about 0.3 s of every start).  Not a second definition: tests/test_units.py checks every entry
-#: against the registry, which stays the reference for every other unit.
-_KNOWN_FACTORS: dict[str, dict[str, float]] = {
-    "speed": {"1/min": 1.0, "U/min": 1.0, "rpm": 1.0, "1/s": 60.0, "rad/s": 30.0 / math.pi},
-    "torque": {"N*m": 1.0, "Nm": 1.0, "kN*m": 1000.0, "kp*cm": G0 / 100, "cm*kg": G0 / 100, "kp*m": G0,
-               "m*kg": G0, "lbf*ft": 0.45359237 * G0 * 0.3048},
-    "power": {"W": 1.0, "kW": 1000.0, "MW": 1e6, "PS": 735.49875, "hp": 0.45359237 * G0 * 0.3048 * 550},
-}
-
-
-@lru_cache(maxsize=1)
-def registry() -> pint.UnitRegistry:
-    """The project's unit registry (built once; pint's defaults plus the sources' units)."""
-    import pint  # imported here: the known units below need neither pint nor its registry
-
-    ureg = pint.UnitRegistry(on_redefinition="ignore", cache_folder=None)
-    for definition in _DEFINITIONS:
-        ureg.define(definition)
-    return ureg
 
 
 # ---------------------------------------------------------------- the number-and-unit grammar
@@ -456,6 +412,26 @@ def _from_quantity(value: object, quantity: str, field: str) -> float:
 def from_core(value: float, quantity: str, unit: str) -> float:
     """Convert ``value`` from the core unit of ``quantity`` into ``unit``.
 
+    Parameters
+    ----------
+    value : float
+        The value in the core unit (1/min, N·m, W).
+    quantity : {"speed", "torque", "power"}
+        What it is.
+    unit : str
+        The unit wanted (``"U/min"``, ``"kp*cm"``, ``"PS"``, ``"rad/s"``, ...).
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    UnitError
+        A unit that is unknown or does not fit ``quantity``.
+
+    Examples
+    --------
     >>> round(from_core(14.047045, "torque", "kp*cm"), 2)
     143.24
     """
@@ -492,24 +468,55 @@ class Units:
         return getattr(self, quantity)
 
     def convert(self, value: float | None, quantity: str) -> float | None:
-        """A core value in the chosen unit (None stays None)."""
+        """A core value in the chosen unit (None stays None).
+
+        Parameters
+        ----------
+        value : float or None
+            The value in the core unit (1/min, N·m, W).
+        quantity : {"speed", "torque", "power"}
+            What it is.
+
+        Returns
+        -------
+        float or None
+        """
         return None if value is None else from_core(value, quantity, self.of(quantity))
 
     def speed_from_core(self, value: float) -> float:
+        """A speed ``value`` in 1/min converted into :attr:`speed` (float)."""
         return from_core(value, "speed", self.speed)
 
     def torque_from_core(self, value: float) -> float:
+        """A torque ``value`` in N·m converted into :attr:`torque` (float).
+
+        >>> round(Units(torque="kp*cm").torque_from_core(14.047045), 2)   # Brandenberger's input torque
+        143.24
+        """
         return from_core(value, "torque", self.torque)
 
     def power_from_core(self, value: float) -> float:
+        """A power ``value`` in W converted into :attr:`power` (float)."""
         return from_core(value, "power", self.power)
 
     def to_dict(self) -> dict[str, str]:
+        """The unit of each quantity: ``{"speed": ..., "torque": ..., "power": ...}``."""
         return {"speed": self.speed, "torque": self.torque, "power": self.power}
 
 
 def as_units(value: object, field: str = "units") -> Units:
     """``value`` as :class:`Units`: a Units, None (core units) or a mapping such as ``{"power": "PS"}``.
+
+    Parameters
+    ----------
+    value : Units, mapping or None
+        Units, or a mapping quantity → unit (quantities not named keep the core unit).
+    field : str, default "units"
+        What the value was given as, the start of a message.
+
+    Returns
+    -------
+    Units
 
     Raises
     ------

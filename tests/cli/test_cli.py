@@ -107,7 +107,8 @@ def test_explain_shows_equation_7_with_numbers():
 def test_explain_in_german():
     result = run("explain", BRANDENBERGER, "--lang", "de")
     assert result.exit_code == 0, result.output
-    for term in ("Steg", "Sonnenrad", "Hohlrad", "Standübersetzung", "Wälzleistung", "Kupplungsleistung",
+    for term in ("Steg", "erstes Zentralrad", "zweites Zentralrad",  # two suns: first/second central gear
+                 "Standübersetzung", "Wälzleistung", "Kupplungsleistung",
                  "Wirkungsgrad", "Brandenberger Gl. 7"):
         assert term in result.stdout
     markdown = run("explain", BRANDENBERGER, "--format", "markdown")

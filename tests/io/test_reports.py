@@ -40,10 +40,12 @@ def test_json_schema_keys_are_stable(brandenberger):
     # Brandenberger 1952: with friction M1' = 66.7, M2' = −40.3, M3' = −26.4 cm kg (paper's signs, all
     # speeds negative; ours are opposite). The paper rounds its ratios to 1.49 and 0.284 first, so its
     # torques differ from the exact ones in the last printed digit: tolerance 0.15 kp·cm.
-    assert planetary["torques"]["sun"] == pytest.approx(-66.7, abs=0.15)
-    assert planetary["torques"]["ring"] == pytest.approx(40.3, abs=0.15)
+    # Its set has two suns (a and d both external), so the report names systems I and II first and second.
+    assert planetary["ports"] == {"first": "I", "second": "II", "carrier": "III"}
+    assert planetary["torques"]["first"] == pytest.approx(-66.7, abs=0.15)
+    assert planetary["torques"]["second"] == pytest.approx(40.3, abs=0.15)
     assert planetary["torques"]["carrier"] == pytest.approx(26.4, abs=0.15)
-    assert report["ideal"]["elements"]["planetary"]["torques"]["sun"] == pytest.approx(-78.2, abs=0.25)
+    assert report["ideal"]["elements"]["planetary"]["torques"]["first"] == pytest.approx(-78.2, abs=0.25)
     # loss in PS = sum of element losses in PS
     assert sol["loss"] == pytest.approx(sum(e["loss"] for e in sol["elements"].values()))
 
@@ -116,3 +118,60 @@ def test_notebook_display_is_a_table():
     page = s._repr_html_()
     assert "<table>" in page and "<th>shaft</th>" in page and "</table>" in page
     assert Units(power="PS").power == "PS"
+
+
+@pytest.fixture(scope="module")
+def wolfrom():
+    f = load_train_file(EXAMPLES / "wolfrom_drive.toml")
+    return f, f.solve()
+
+
+def _row(table: str, element: str) -> str:
+    return next(line for line in table.splitlines() if line.startswith(element + " ") or
+                line.startswith(f"| {element} |") or line.startswith(f"<td>{element}</td>"))
+
+
+def test_two_ring_set_reports_name_ports_first_second(wolfrom):
+    """A Wolfrom set's port torques are 'first …, second …' in every report; a simple set keeps sun/ring.
+
+    Regression: the Elements table said "sun 223.04, ring -242.96" for the two-ring set W (the solver's port
+    names), while the file, the meshes and the forces call its central gears first (81) and second (78).
+    """
+    f, s = wolfrom
+    text = text_report(s, f.units)
+    assert "first 223.04, second -242.96, carrier 19.921" in _row(text, "W")
+    assert "sun 5, ring 14.921, carrier -19.921" in _row(text, "S")
+    assert "first 223.04, second -242.96, carrier 19.921" in markdown_report(s, f.units)
+    page = html_report(s, f.units, figures=False)
+    assert "first 223.04, second -242.96, carrier 19.921" in page and "sun 223" not in page
+    assert "first 223.04" in s.table() and "first 223.04" in s._repr_html_()
+    # the solver keeps its own port names; only the presentation changes
+    assert set(s.elements["W"].torques) == {"sun", "ring", "carrier"}
+
+
+def test_two_ring_set_json_ports_first_second(wolfrom):
+    f, s = wolfrom
+    report = report_dict(s, f.units)
+    w = report["solution"]["elements"]["W"]
+    assert w["ports"] == {"first": "r1", "second": "out", "carrier": "c"}
+    assert set(w["torques"]) == set(w["speeds"]) == {"first", "second", "carrier"}
+    assert w["speeds"]["second"] == pytest.approx(3000 / 52, rel=1e-12)
+    assert report["solution"]["elements"]["S"]["ports"] == {"sun": "in", "ring": "r1", "carrier": "c"}
+    # Lossless statics (Brandenberger 1952: M_b = -i0 M_a) with i0 = z_second z_planet_first / (z_first
+    # z_planet_second) = 78·27/(81·24); output torque -52 × 5 N·m (ratio 52 from Willis, see the file).
+    ideal = report["ideal"]["elements"]["W"]["torques"]
+    assert ideal["second"] == pytest.approx(-78 * 27 / (81 * 24) * ideal["first"], rel=1e-12)
+    assert ideal["second"] == pytest.approx(-52 * 5, rel=1e-12)
+
+
+def test_two_ring_set_explain_names_first_second(wolfrom):
+    from epicyclic.explain import explain
+
+    _, s = wolfrom
+    text = explain(s).text()
+    assert "1 = first central gear 'r1', 2 = second central gear 'out'" in text
+    assert "M_W.first" in text and "M_W.second" in text and "M_W.sun" not in text
+    assert "1 = sun 'in', 2 = ring 'r1'" in text
+    german = explain(s, lang="de").text()
+    assert "1 = Sonnenrad 'in', 2 = Hohlrad 'r1'" in german
+    assert "1 = erstes Zentralrad 'r1', 2 = zweites Zentralrad 'out'" in german

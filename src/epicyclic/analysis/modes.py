@@ -107,6 +107,15 @@ class ModeTable:
         return len(self.modes)
 
     def rows(self) -> list[list[str]]:
+        """The table's rows as formatted cells, one per mode (columns: :attr:`HEADERS`).
+
+        Ratios to 6 significant digits, efficiencies to 4 decimals; a direction that
+        self-locks reads ``self-locking (η0 < threshold)``.
+
+        Returns
+        -------
+        list of list of str
+        """
         def eff(value: float | None, threshold: float | None) -> str:
             if value is None:
                 return "self-locking" + (f" (η0 < {threshold:.4g})" if threshold else "")
@@ -121,6 +130,21 @@ class ModeTable:
     HEADERS = ("mode", "input", "output", "held", "i in s", "ratio n_in/n_out", "η in→out", "η out→in")
 
     def table(self) -> str:
+        """The seven modes as an aligned plain-text table, under a line naming i0 and η0.
+
+        Returns
+        -------
+        str
+
+        References
+        ----------
+        Queitsch, Tafel 1 (the seven two-shaft ratios in s = i0).
+
+        Examples
+        --------
+        >>> print(two_shaft_modes(-2.0, 0.97).table().splitlines()[0])
+        two-shaft modes of a set with i0 = s = -2, η0 = 0.97 (Queitsch, Tafel 1)
+        """
         rows = self.rows()
         widths = [max(len(h), *(len(r[k]) for r in rows)) for k, h in enumerate(self.HEADERS)]
         lines = [
@@ -133,6 +157,16 @@ class ModeTable:
         return "\n".join(lines)
 
     def to_dict(self) -> dict:
+        """The table as JSON-ready data: i0, η0 and every mode's fields.
+
+        Returns
+        -------
+        dict
+            ``stationary_ratio``, ``stationary_efficiency`` and ``modes``: a list of
+            ``{label, input, output, held, formula, ratio, efficiency, reverse_efficiency,
+            threshold, reverse_threshold}`` (efficiencies ``None`` where a direction
+            self-locks; ``held`` ``None`` for direct drive).
+        """
         return {
             "stationary_ratio": self.stationary_ratio,
             "stationary_efficiency": self.stationary_efficiency,

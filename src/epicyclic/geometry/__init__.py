@@ -30,11 +30,8 @@ from .fitting import (
     check_fitting,
     check_interference,
     check_neighbours,
-    check_undercut,
     max_planets,
     mesh_phasing,
-    min_profile_shift,
-    undercut_limit,
 )
 from .forces import (MeshForce, PlanetaryForces, PlanetLoad, SharedPlanet, default_load_sharing, mesh_forces,
                      planetary_forces)
@@ -45,6 +42,7 @@ from .set_geometry import SetGeometry
 from .shared_planets import share_planets
 from .stage_forces import StageForces, stage_forces
 from .stage_geometry import StageGeometry
+from .undercut import check_undercut, min_profile_shift, undercut_limit
 
 __all__ = [
     "AssemblyCheck", "BasicRack", "Candidate", "Check", "CoaxialityCheck", "FittingError", "FittingReport",

@@ -40,6 +40,14 @@ class Check:
     severity: str
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: every field of the check (mappings as dicts, tuples as lists).
+
+        Lengths in mm, angles in degrees, as the check's fields.
+
+        Returns
+        -------
+        dict
+        """
         out: dict[str, Any] = {}
         for f in fields(self):
             value = getattr(self, f.name)
@@ -144,6 +152,14 @@ class FittingReport:
             )
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: the set's name, whether it passes, every check.
+
+        Returns
+        -------
+        dict
+            ``set``, ``passed`` (no error-level condition fails) and ``checks``
+            (:meth:`Check.to_dict` of each, in the order they were made).
+        """
         return {"set": self.geometry.planetary_set.name, "passed": self.passed,
                 "checks": [c.to_dict() for c in self.checks]}
 
@@ -152,6 +168,15 @@ class FittingReport:
                 for c in self.checks]
 
     def table(self) -> str:
+        """The fitting conditions as a plain-text table: condition, result, numbers.
+
+        The title says whether the set passes or FAILS; each row gives the numbers
+        and, for a failing condition, what to change.
+
+        Returns
+        -------
+        str
+        """
         return text_table(["condition", "result", "numbers"], self._rows(),
                           title=f"fitting of {self.geometry.planetary_set.name!r}: "
                                 + ("passes" if self.passed else "FAILS"))

@@ -54,6 +54,7 @@ from .errors import GeometryError, expect_type
 from .gear import MeshGeometry
 from .involute import inv, profile_shift_sum
 from .set_geometry import SetGeometry, gear_label
+from .undercut import check_undercut, min_profile_shift, undercut_limit
 
 __all__ = [
     "Check",
@@ -82,7 +83,25 @@ _EPS_MM = 1e-9
 
 # ---------------------------------------------------------------------- coaxiality
 def check_coaxiality(geometry: SetGeometry, tolerance: float = 1e-3) -> CoaxialityCheck:
-    """Coaxiality of the set (tolerance on centre distances in mm).
+    """Coaxiality of the set: both meshes' planet axes on one circle (centre distances in mm).
+
+    A set with one planet per mesh chain (simple, stepped, two suns/rings) is coaxial
+    when the sun-side and ring-side meshes run at the same operating centre distance;
+    a double-planet set when the three centre distances close a triangle.  A failing
+    check suggests the ring's profile shift that would make it coaxial.
+
+    Parameters
+    ----------
+    geometry : SetGeometry
+        The set's gears and meshes.
+    tolerance : float, default 1e-3
+        Largest accepted difference of the centre distances, mm.
+
+    Returns
+    -------
+    CoaxialityCheck
+        ``passed``, a message with the numbers and the fix, the centre distances
+        (mm) and the suggested ``x_ring``.
 
     References
     ----------
@@ -178,9 +197,25 @@ def assembly_ticks(teeth) -> int:
 def mesh_phasing(teeth: int, angles: Sequence[float]) -> str:
     """Phasing of the meshes of one central gear with planets at ``angles`` (degrees).
 
-    Returns ``"in-phase"``, ``"sequential"``, ``"counter-phase"`` or ``"mixed"``
-    from the first-harmonic sums of the mesh excitations.
+    From the first-harmonic sums of the mesh excitations: the force sum and the
+    torque sum of the N meshes over one tooth period.
 
+    Parameters
+    ----------
+    teeth : int
+        Tooth count of the central gear.
+    angles : sequence of float
+        Angular positions of the planets, degrees.
+
+    Returns
+    -------
+    str
+        ``"in-phase"`` (all meshes together: torque ripple, no net force),
+        ``"sequential"`` (net force, no torque ripple), ``"counter-phase"`` (neither)
+        or ``"mixed"``.
+
+    Examples
+    --------
     >>> mesh_phasing(48, [0, 90, 180, 270]), mesh_phasing(51, [0, 90, 180, 270])
     ('in-phase', 'sequential')
 
@@ -266,6 +301,25 @@ def max_planets(tip_diameter: float, center_distance: float, min_clearance: floa
     """Largest number of equally spaced planets whose tip circles keep ``min_clearance`` (mm).
 
     Contact (zero clearance) counts as interference: ``2 a sin(π/N) − d_a > c_min``.
+
+    Parameters
+    ----------
+    tip_diameter : float
+        Planet tip diameter d_a, mm (> 0).
+    center_distance : float
+        Radius of the planet axes (the sun–planet centre distance a), mm (> 0).
+    min_clearance : float, default 0
+        Least gap between neighbouring tip circles, mm.
+
+    Returns
+    -------
+    int
+        N_max ≥ 1 (at most 1000).
+
+    Raises
+    ------
+    GeometryError
+        ``tip_diameter`` or ``center_distance`` ≤ 0.
 
     Examples
     --------
@@ -367,79 +421,6 @@ def check_neighbours(
 
 
 # ---------------------------------------------------------------------- undercut
-def undercut_limit(pressure_angle: float = 20.0, addendum: float = 1.0, helix_angle: float = 0.0) -> float:
-    """Limit tooth count z_g = 2 h_a* cos β / sin²α_t (degrees in; theoretical, without profile shift).
-
-    >>> round(undercut_limit(20.0), 3), round(undercut_limit(14.5), 2)
-    (17.097, 31.9)
-
-    References
-    ----------
-    Queitsch, Grenzzähnezahl z_g; DIN 3960 / ISO 21771; z_min = 2/sin²α ≈ 17.097 for 20°
-    (machinecalcs.com profile-shift calculator; easyengcalc.com: 17 at 20°, 32 at 14.5°).
-    """
-    alpha_n, beta = math.radians(pressure_angle), math.radians(helix_angle)
-    alpha_t = math.atan(math.tan(alpha_n) / math.cos(beta))
-    return 2.0 * addendum * math.cos(beta) / math.sin(alpha_t) ** 2
-
-
-def min_profile_shift(teeth: int, pressure_angle: float = 20.0, addendum: float = 1.0, helix_angle: float = 0.0,
-                      limit: Literal["theoretical", "practical"] = "theoretical") -> float:
-    """Least profile shift that avoids undercut: x_min = h_a* (z_lim − z)/z_lim.
-
-    ``limit="practical"`` uses z_lim = 5/6 z_g (slight undercut accepted;
-    ≈ 14 teeth for 20°).
-
-    Examples
-    --------
-    machinecalcs.com worked example: a 12-tooth 20° pinion needs x_min = 0.298:
-
-    >>> round(min_profile_shift(12), 3)
-    0.298
-
-    References
-    ----------
-    DIN 3960; Niemann/Winter, practical limit z_g' = 5/6 z_g (14 for 20°, 26 for 14.5°,
-    as quoted by easyengcalc.com "Gear Undercut & Profile Shift").
-    """
-    z_lim = undercut_limit(pressure_angle, addendum, helix_angle)
-    if limit == "practical":
-        z_lim *= 5.0 / 6.0
-    elif limit != "theoretical":
-        raise GeometryError(f"min_profile_shift: limit must be 'theoretical' or 'practical', got {limit!r}.")
-    return addendum * (z_lim - teeth) / z_lim
-
-
-def check_undercut(geometry: SetGeometry, limit: Literal["theoretical", "practical"] = "theoretical") -> tuple[UndercutCheck, ...]:
-    """Undercut of every external gear of the set (internal gears do not undercut this way).
-
-    References
-    ----------
-    Queitsch, z_g; DIN 3960 (x_min = h_a* − z sin²α_t/(2 cos β)).
-    """
-    out = []
-    for key, gear in geometry.gears.items():
-        if gear.internal:
-            continue
-        name = geometry.gear_label(key)
-        r = gear.rack
-        z_lim = undercut_limit(r.pressure_angle, r.addendum, r.helix_angle) * (5 / 6 if limit == "practical" else 1)
-        x_min = min_profile_shift(gear.teeth, r.pressure_angle, r.addendum, r.helix_angle, limit)
-        passed = gear.profile_shift >= x_min - 1e-9
-        if passed:
-            message = f"{name}: z = {gear.teeth}, x = {gear.profile_shift:+.4f} >= x_min = {x_min:+.4f} ({limit} z_g = {z_lim:.2f})"
-        else:
-            message = (
-                f"{name} is undercut: z = {gear.teeth} < z_g = {z_lim:.2f} at x = {gear.profile_shift:+.4f}; "
-                f"raise its profile shift by {x_min - gear.profile_shift:.4f} to x >= {x_min:.4f}, "
-                f"or use at least {math.ceil(z_lim * (1 - gear.profile_shift / r.addendum) - 1e-9)} teeth"
-            )
-        out.append(UndercutCheck("undercut", passed, message, "error", name, gear.teeth, gear.profile_shift,
-                                 z_lim, x_min, limit))
-    return tuple(out)
-
-
-# ---------------------------------------------------------------------- internal interference
 def _interference_margins(mesh: MeshGeometry) -> tuple[float, float, float]:
     """(involute, trochoid, trimming) margins of an internal mesh, rad or ratio; ≥ 0 is free."""
     p, ring = mesh.gear1, mesh.gear2

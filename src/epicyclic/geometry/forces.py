@@ -90,6 +90,34 @@ def default_load_sharing(planets: int) -> float:
 def mesh_forces(torque: float, pitch_diameter: float, mesh: MeshGeometry) -> tuple[float, float, float]:
     """(F_t, F_r, F_a) in N of a gear with ``torque`` (N·m) on operating pitch diameter ``pitch_diameter`` (mm).
 
+    F_t = 2000 |T| / d_w, F_r = F_t tan α_wt, F_a = F_t tan β_w (all ≥ 0; the
+    directions follow from the gear's side of the mesh).
+
+    Parameters
+    ----------
+    torque : float
+        Torque on the gear, N·m (its sign is ignored); per planet where a set
+        shares it among planets.
+    pitch_diameter : float
+        The gear's operating pitch diameter d_w, mm (> 0).
+    mesh : MeshGeometry
+        The mesh (gives α_wt and β_w).
+
+    Returns
+    -------
+    tuple of float
+        (F_t, F_r, F_a), N.
+
+    Raises
+    ------
+    GeometryError
+        ``pitch_diameter`` ≤ 0.
+
+    References
+    ----------
+    Queitsch part I, eqs. (23)–(25) and (30); ISO 21771:2007 (d_w, α_wt, β_w at the
+    operating pitch cylinder).
+
     Examples
     --------
     Drivetrain Hub force example (z = 15/45, m_n = 2.5, β = 20°, a = 80 mm, T = 100 N·m):
@@ -237,6 +265,15 @@ class SharedPlanet:
         return math.hypot(*self.bearing_force)
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data of the planet body that several sets share (N, mm, degrees).
+
+        Returns
+        -------
+        dict
+            ``sets``, ``index``, ``gears``, ``angle`` (deg), ``center`` (mm),
+            ``bearing_force`` (N, x and y), ``bearing_load`` (N), ``bearing_axial`` (N) and
+            ``meshes`` (each mesh's forces in N).
+        """
         return {"sets": list(self.sets), "index": self.index, "gears": self.gears, "angle": self.angle,
                 "center": list(self.center), "bearing_force": list(self.bearing_force),
                 "bearing_load": self.bearing_load, "bearing_axial": self.bearing_axial,
@@ -310,6 +347,21 @@ class PlanetaryForces:
         return max(b.bearing_load for b in self.bodies) * self.load_sharing_factor
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: torques, every planet body's mesh and bearing forces, design loads.
+
+        Forces in N, lengths in mm, torques in N·m, angles in degrees (stated under
+        ``units``).
+
+        Returns
+        -------
+        dict
+            ``set``, ``planets``, ``load_sharing_factor``, ``units``, ``torques`` (port → N·m),
+            ``members`` (port → ``{gear, shaft}``: ``first``/``second`` for two rings or two
+            suns), ``carrier_torque_from_forces``, ``housing_torque``, ``central_forces``,
+            ``design_tangential``, ``design_bearing_load``, ``bodies`` (one per planet: angle,
+            centre, bearing force/load/axial, friction moment, meshes) and
+            ``shared_planets`` (:meth:`SharedPlanet.to_dict`).
+        """
         return {
             "set": self.set_name,
             "planets": self.planets,

@@ -331,13 +331,31 @@ class MeshGeometry:
         Parameters
         ----------
         z1, z2 : int
+            Tooth counts of gear 1 (the pinion or planet) and gear 2.
         rack : BasicRack
+            Module, pressure and helix angle of both gears.
         center_distance : float
             Operating centre distance a_w, mm.
         x1 : float, default 0
             Profile shift of gear 1; gear 2 takes the rest of the needed sum.
         internal : bool, default False
             Gear 2 internal.
+        name : str, default ""
+            The mesh's name (e.g. ``"sun-planet"``).
+
+        Returns
+        -------
+        MeshGeometry
+
+        Raises
+        ------
+        GeometryError
+            No profile shift sum gives that centre distance (inv α_wt < 0).
+
+        References
+        ----------
+        ISO 21771:2007: inv α_wt = inv α_t + 2 (x1 ± x2) tan α_n / (z2 ± z1),
+        a_w = a cos α_t / cos α_wt.
 
         Examples
         --------

@@ -57,8 +57,29 @@ def inv(alpha):
 def inv_inverse(value, tol: float = 1e-15, max_iter: int = 60):
     """The angle α in [0, π/2) with ``inv α = value`` (Newton's method).
 
-    Works on floats and numpy arrays (element-wise).  ``value`` must be ≥ 0.
+    Works on floats and numpy arrays (element-wise).  inv α = tan α − α.
 
+    Parameters
+    ----------
+    value : float or numpy.ndarray
+        inv α, ≥ 0 and finite.
+    tol : float, default 1e-15
+        Stop when every Newton step is smaller than this, rad.
+    max_iter : int, default 60
+        Most Newton steps.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        α in rad, of the shape of ``value``.
+
+    Raises
+    ------
+    ValueError
+        A negative or non-finite ``value``.
+
+    Examples
+    --------
     >>> round(math.degrees(inv_inverse(0.034317)), 4)
     26.0888
 

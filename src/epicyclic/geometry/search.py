@@ -34,10 +34,11 @@ import numpy as np
 from ..model.planetary import PlanetarySet
 from ._render import html_table, text_table
 from .errors import GeometryError
-from .fitting import check_fitting, undercut_limit
+from .fitting import check_fitting
 from .gear import BasicRack
 from .involute import inv
 from .set_geometry import SetGeometry
+from .undercut import undercut_limit
 
 __all__ = ["Candidate", "ToothSearch", "search_teeth", "search_teeth_loops", "two_shaft_ratio"]
 
@@ -47,12 +48,34 @@ _SHAFTS = ("sun", "ring", "carrier")
 def two_shaft_ratio(i0, held: str, driver: str, driven: str):
     """Speed ratio n_driver/n_driven with shaft ``held`` at rest (floats or arrays).
 
-    >>> two_shaft_ratio(-78 / 30, "ring", "sun", "carrier")
-    3.6
+    From the Willis equation n_sun − i0 n_ring − (1 − i0) n_carrier = 0 with the
+    held shaft's speed zero.
+
+    Parameters
+    ----------
+    i0 : float or numpy.ndarray
+        Stationary ratio (n_sun − n_carrier)/(n_ring − n_carrier); −z_ring/z_sun for a simple set.
+    held, driver, driven : {"sun", "ring", "carrier"}
+        The three shafts, each once.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        n_driver/n_driven.
+
+    Raises
+    ------
+    GeometryError
+        ``held``, ``driver`` and ``driven`` are not ``sun``, ``ring``, ``carrier`` in some order.
 
     References
     ----------
-    Willis equation; Queitsch Tafel 1 (1 − s, 1/(1 − s), 1 − 1/s, ... with s = i0).
+    tec-science, "Willis-Gleichung"; Queitsch, Tafel 1 (1 − s, 1/(1 − s), 1/s, ... with s = i0).
+
+    Examples
+    --------
+    >>> two_shaft_ratio(-78 / 30, "ring", "sun", "carrier")
+    3.6
     """
     if {held, driver, driven} != set(_SHAFTS):
         raise GeometryError(
@@ -78,12 +101,39 @@ class Candidate:
 
     def planetary_set(self, name: str = "P", sun: str = "sun", ring: str = "ring", carrier: str = "carrier",
                       stationary_efficiency: float | None = None) -> PlanetarySet:
-        """The candidate as a model :class:`~epicyclic.model.PlanetarySet`."""
+        """The candidate as a model :class:`~epicyclic.model.PlanetarySet` (a simple set).
+
+        Parameters
+        ----------
+        name : str, default "P"
+            Element name.
+        sun, ring, carrier : str, default "sun", "ring", "carrier"
+            The shafts the set joins.
+        stationary_efficiency : float, optional
+            η0 in (0, 1]; default 1 (lossless).
+
+        Returns
+        -------
+        PlanetarySet
+            With the candidate's tooth counts and number of planets.
+
+        Raises
+        ------
+        EfficiencyError
+            ``stationary_efficiency`` outside (0, 1].
+
+        Examples
+        --------
+        >>> best = search_teeth(4.0, tolerance=0.0, z_sun=(14, 30), z_planet=(14, 30), planets=(3,)).candidates[0]
+        >>> best.planetary_set("P", ring="housing", sun="in", carrier="out").stationary_ratio
+        -3.0
+        """
         return PlanetarySet.simple(name, sun=sun, ring=ring, carrier=carrier, z_sun=self.z_sun,
                                    z_planet=self.z_planet, z_ring=self.z_ring, planets=self.planets,
                                    stationary_efficiency=stationary_efficiency)
 
     def key(self) -> tuple[int, int, int, int]:
+        """The candidate's design as ``(z_sun, z_planet, z_ring, planets)``."""
         return (self.z_sun, self.z_planet, self.z_ring, self.planets)
 
 
@@ -115,6 +165,22 @@ class ToothSearch:
                 for c in self.candidates[:limit]]
 
     def table(self, limit: int = 20) -> str:
+        """The best candidates as a plain-text table, with a line saying why none was found if so.
+
+        Columns: tooth counts, number of planets N, ratio, deviation from the target
+        in %, whether the counts are hunting (no common factor of sun/planet and
+        planet/ring) and the neighbour clearance of the planet tips in mm.
+
+        Parameters
+        ----------
+        limit : int, default 20
+            Most rows shown (the candidates are ranked: smallest error first, then
+            smallest ring, hunting teeth, smallest sun, fewest planets).
+
+        Returns
+        -------
+        str
+        """
         held, driver, driven = self.mode
         title = (f"{len(self)} tooth-count sets for {driver} -> {driven} ({held} held) = {self.target:g} "
                  f"± {100 * self.tolerance:g} %, m = {self.module:g} mm (first {min(limit, len(self))})")
@@ -146,6 +212,15 @@ class ToothSearch:
         return "\n".join([head, *lines]) + "\n"
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: the target, mode, tolerance, module and every candidate.
+
+        Returns
+        -------
+        dict
+            ``target``, ``mode`` (``{held, driver, driven}``), ``tolerance`` (relative),
+            ``module`` (mm) and ``candidates`` (each with the fields of :class:`Candidate`;
+            clearance in mm), in rank order.
+        """
         return {"target": self.target, "mode": dict(zip(("held", "driver", "driven"), self.mode)),
                 "tolerance": self.tolerance, "module": self.module,
                 "candidates": [c.__dict__.copy() for c in self.candidates]}
@@ -302,7 +377,45 @@ def search_teeth_loops(
 ) -> ToothSearch:
     """Reference implementation of :func:`search_teeth`: nested loops and :func:`check_fitting` per candidate.
 
-    Slow; for tests and the benchmark.
+    Slow; for tests and the benchmark (``benchmarks/``).  It takes the same
+    arguments and returns the same candidates as :func:`search_teeth`.
+
+    Parameters
+    ----------
+    target_ratio : float
+        n_driver / n_driven in the mode (``held`` shaft at rest).
+    held, driver, driven : {"sun", "ring", "carrier"}
+        The mode (default: ring held, sun drives carrier).
+    tolerance : float, default 0.01
+        Allowed relative deviation |ratio/target − 1|.
+    z_sun, z_planet : (int, int), default (12, 80)
+        Inclusive bounds of the tooth counts.
+    z_ring : (int, int), optional
+        Inclusive bounds of the ring (z_ring = z_sun + 2 z_planet).
+    planets : sequence of int, default (3, 4, 5)
+        Numbers of planets to try.
+    module : float, default 1.0
+        Module, mm.
+    pressure_angle : float, default 20
+        Pressure angle, degrees.
+    addendum : float, default 1.0
+        Addendum factor h_a*.
+    min_clearance : float, default 0
+        Neighbour clearance between planet tips, mm.
+    undercut : {"theoretical", "practical"}, default "theoretical"
+        Undercut limit (:func:`min_profile_shift`).
+    interference : bool, default True
+        Also reject internal-gear interference.
+
+    Returns
+    -------
+    ToothSearch
+
+    Raises
+    ------
+    GeometryError
+        A target that is not a finite non-zero number, bounds that are not whole
+        numbers ≥ 3 in order, planets < 1, or an unknown mode.
     """
     counts = _validate(target_ratio, tolerance, {"z_sun": z_sun, "z_planet": z_planet,
                                                  **({"z_ring": z_ring} if z_ring else {})}, planets)

@@ -31,14 +31,12 @@ from types import MappingProxyType
 from typing import Any
 
 from ..model.planetary import PlanetarySet, Teeth
+from ..model.teeth import TWO_CENTRAL_NAMES
 from ._render import html_table, text_table
 from .errors import GeometryError
 from .gear import BasicRack, GearGeometry, MeshGeometry
 
 __all__ = ["SetGeometry", "planet_names", "gear_label", "TWO_CENTRAL_NAMES"]
-
-#: Names of the gears of a set with two suns or two rings (``teeth.kind`` two_suns / two_rings in files).
-TWO_CENTRAL_NAMES = {"sun": "first", "planet_sun": "planet_first", "planet_ring": "planet_second", "ring": "second"}
 
 
 def gear_label(teeth: Teeth, name: str) -> str:
@@ -47,16 +45,14 @@ def gear_label(teeth: Teeth, name: str) -> str:
     A set with two rings or two suns calls its central gears ``first`` and ``second`` and
     its planet gears ``planet_first`` and ``planet_second``; every other set keeps
     ``sun``, ``ring``, ``planet``, ... .  Mesh names, fitting messages and force tables
-    use these labels.
+    use these labels (:meth:`~epicyclic.model.Teeth.label`).
 
     >>> gear_label(Teeth("stepped", 81, 78, (27, 24), sun_internal=True), "sun")
     'first'
     >>> gear_label(Teeth("simple", 30, 78, (24,)), "sun")
     'sun'
     """
-    if teeth.arrangement in ("two rings", "two suns"):
-        return TWO_CENTRAL_NAMES.get(name, name)
-    return name
+    return teeth.label(name)
 
 
 def planet_names(teeth: Teeth) -> tuple[str, ...]:

@@ -34,11 +34,25 @@ class StageForces:
     _HEAD = ["mesh", "torque [N*m]", "d_w [mm]", "F_t [N]", "F_r [N]", "F_a [N]"]
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: each mesh's driving torque (N·m), pitch diameter (mm) and forces (N).
+
+        Returns
+        -------
+        dict
+            ``stage``, ``units`` and ``meshes``: ``{mesh, torque, pitch_diameter,
+            tangential, radial, axial}`` per mesh, from the first shaft to the second.
+        """
         return {"stage": self.stage_name, "units": {"force": "N", "length": "mm", "torque": "N*m"},
                 "meshes": [dict(zip(("mesh", "torque", "pitch_diameter", "tangential", "radial", "axial"), r))
                            for r in self.rows]}
 
     def table(self) -> str:
+        """The forces of each mesh as a plain-text table (torque N·m, d_w mm, forces N).
+
+        Returns
+        -------
+        str
+        """
         return text_table(self._HEAD, [list(r) for r in self.rows], title=f"forces of stage {self.stage_name!r}")
 
     def _repr_html_(self) -> str:
@@ -47,6 +61,33 @@ class StageForces:
 
 def stage_forces(solution, name: str, geometry: StageGeometry) -> StageForces:
     """Tooth forces of stage ``name`` in ``solution``.
+
+    Mesh k is driven by |T_first| times the ratios z2/z1 of the meshes before it
+    (the losses of earlier meshes are neglected in this split); each mesh's forces
+    are :func:`~epicyclic.geometry.forces.mesh_forces` on the driving gear's
+    operating pitch diameter.
+
+    Parameters
+    ----------
+    solution : Solution
+        A solved operating point (torques in N·m).
+    name : str
+        The gear stage's element name.
+    geometry : StageGeometry
+        The stage's gears and meshes (mm).
+
+    Returns
+    -------
+    StageForces
+
+    Raises
+    ------
+    GeometryError
+        The solution has no element ``name``, or it is not a gear stage.
+
+    References
+    ----------
+    Queitsch part I, eqs. (23)–(25), (30); ISO 21771:2007 (d_w, α_wt, β_w).
 
     Examples
     --------

@@ -138,6 +138,14 @@ class StageGeometry:
     _HEAD = ["mesh", "z1", "z2", "m_n [mm]", "a_w [mm]", "alpha_wt [deg]", "eps_alpha"]
 
     def table(self) -> str:
+        """The stage's meshes as a plain-text table: tooth counts, m_n, a_w, α_wt, ε_α.
+
+        Lengths in mm, angles in degrees.
+
+        Returns
+        -------
+        str
+        """
         return text_table(self._HEAD, self._rows(), title=f"stage {self.stage.name!r}")
 
     def _repr_html_(self) -> str:

@@ -96,6 +96,23 @@ def locate_error(exc: EpicyclicError, source: str, operating_point: Any = None, 
     'schedule.<gear>'``; operating-point errors at the keys of
     :func:`operating_point_where`; anything else at ``default`` (e.g.
     ``"[operating_point]"`` for an error of the solver).
+
+    Parameters
+    ----------
+    exc : EpicyclicError
+        The error raised by the solver or the transmission code.
+    source : str
+        The input file.
+    operating_point : OperatingPoint, optional
+        The file's operating point, to find the keys of the shafts that the error names.
+    default : str, default ""
+        Where an error of any other kind points (a table, e.g. ``"[operating_point]"``).
+
+    Returns
+    -------
+    EpicyclicError
+        Of the same class and fields, its message prefixed by the file and key
+        (``exc`` itself if it already names a file).
     """
     if getattr(exc, "source", None):
         return exc
@@ -116,8 +133,28 @@ def locate_error(exc: EpicyclicError, source: str, operating_point: Any = None, 
 def check_finite(data: Any, source: str, what: str = "") -> None:
     """Raise :class:`NonFiniteResultError` at the first infinite or NaN number in ``data``.
 
-    ``data`` is a result's ``to_dict()`` (nested dicts and lists); ``what``
-    prefixes the path in the message (e.g. ``"ideal"``).
+    Parameters
+    ----------
+    data : dict or list
+        A result's ``to_dict()`` (nested dicts and lists).
+    source : str
+        The input file, the start of the message.
+    what : str, default ""
+        Prefix of the path in the message (e.g. ``"ideal"``).
+
+    Raises
+    ------
+    NonFiniteResultError
+        A number is infinite or NaN; the message gives its path (``"shafts.out.power"``)
+        and how to stay within double precision; the error's ``field`` is the path.
+
+    Examples
+    --------
+    >>> check_finite({"shafts": {"out": {"power": 1.0}}}, "t.toml")
+    >>> check_finite({"shafts": {"out": {"power": float("inf")}}}, "t.toml")
+    Traceback (most recent call last):
+    ...
+    epicyclic.errors.NonFiniteResultError: t.toml: result 'shafts.out.power' is inf, not a finite number: ...
     """
     stack: list[tuple[Any, str]] = [(data, what)]
     while stack:

@@ -87,6 +87,22 @@ def _pick(elements: list, part: str, text: str, where: str) -> dict:
 def apply_overrides(data: Mapping[str, Any], overrides: Sequence[str]) -> dict[str, Any]:
     """A copy of the TOML ``data`` with every ``KEY=VALUE`` of ``overrides`` applied, in order.
 
+    A key is a dotted path (``operating_point.speeds.in``); an element of an array of
+    tables is picked by its ``name`` or 1-based number (``planetary.P1.stationary_efficiency``).
+    The value is read as TOML, or as a string where it is not a TOML value.
+
+    Parameters
+    ----------
+    data : mapping
+        A parsed TOML file (not changed).
+    overrides : sequence of str
+        ``KEY=VALUE`` texts, as given to ``--set``.
+
+    Returns
+    -------
+    dict
+        The changed copy.
+
     Raises
     ------
     OverrideError

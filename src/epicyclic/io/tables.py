@@ -12,6 +12,7 @@ import html
 from dataclasses import dataclass
 
 from ..results.circulation import Circulation
+from ..results.render import port_labels
 from ..results.solution import Solution
 from ..text import markdown_text
 from ..units import Units
@@ -82,7 +83,8 @@ def report_tables(solution: Solution, units: Units | None = None) -> tuple[Repor
     )
     rows = []
     for e in solution.elements.values():
-        torques = ", ".join(f"{p} {fmt(u.torque_from_core(t), 5)}" for p, t in e.torques.items())
+        labels = port_labels(solution, e)  # first/second for two rings or two suns
+        torques = ", ".join(f"{labels.get(p, p)} {fmt(u.torque_from_core(t), 5)}" for p, t in e.torques.items())
         if e.kind in ("clutch", "brake"):
             rolling = coupling = loss = "—"
             direction = f"slip {fmt(u.speed_from_core(e.slip_speed or 0.0), 5)}"

@@ -101,7 +101,26 @@ class Transmission:
         return tuple(self.schedule)
 
     def train_in_gear(self, train: GearTrain, gear: str) -> GearTrain:
-        """``train`` with exactly the shift elements of ``gear`` engaged."""
+        """``train`` with exactly the shift elements of ``gear`` engaged.
+
+        Parameters
+        ----------
+        train : GearTrain
+            The file's train (its clutches and brakes in any state).
+        gear : str
+            A gear of the schedule (``"1"``, ``"R"``, ...).
+
+        Returns
+        -------
+        GearTrain
+            A copy whose clutches and brakes named by ``schedule[gear]`` are engaged, all
+            others open.
+
+        Raises
+        ------
+        ModelError
+            ``gear`` is not in the schedule; the message lists the gears.
+        """
         if gear not in self.schedule:
             raise ModelError(
                 f"transmission: no gear {short(gear)} in the schedule; gears are "
@@ -212,6 +231,30 @@ def load_train_file(path: str | Path, *, max_bytes: int | None = None, overrides
 
 def loads_train_file(text: str, source: str = "<string>", overrides: Sequence[str] = ()) -> TrainFile:
     """Read a train description from TOML text (``overrides`` as in :func:`load_train_file`).
+
+    Parameters
+    ----------
+    text : str
+        The file's TOML text (the layout is in ``docs/file-format.md``).
+    source : str, default "<string>"
+        What the text came from, the start of every error message.
+    overrides : sequence of str, default ()
+        ``KEY=VALUE`` overrides applied to the parsed text before it is read
+        (:func:`~epicyclic.io.overrides.apply_overrides`).
+
+    Returns
+    -------
+    TrainFile
+
+    Raises
+    ------
+    InputFileError
+        Text too long, not valid TOML, nested too deeply, or invalid content.
+    OverrideError
+        A malformed override or one for a key the text cannot have.
+    EpicyclicError
+        Model errors (tooth counts, efficiencies, shafts, units), prefixed with the
+        source and the key.
 
     Examples
     --------

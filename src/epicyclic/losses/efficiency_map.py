@@ -104,6 +104,15 @@ class EfficiencyMap:
         return {k: (float(np.nansum(v)) / total if total > 0 else 0.0) for k, v in self.losses.items()}
 
     def summary(self) -> dict[str, Any]:
+        """The map in a few numbers: points, efficiency range and mean, self-locking points, loss split.
+
+        Returns
+        -------
+        dict
+            ``points``, ``efficiency_min``, ``efficiency_max``, ``efficiency_mean`` (over the
+            points that do not self-lock; ``None`` if all do), ``self_locking_points`` and
+            ``loss_split`` (:meth:`loss_split`: share of each source, 0…1).
+        """
         eff = self.efficiency[~np.isnan(self.efficiency)]
         return {
             "points": int(self.efficiency.size),
@@ -116,10 +125,22 @@ class EfficiencyMap:
 
     # ------------------------------------------------------------------ rendering
     def title(self) -> str:
+        """``"<name>, gear <gear> (<direction>, ratio <ratio>)"``, the heading of the table and figure.
+
+        Returns
+        -------
+        str
+        """
         gear = f", gear {self.gear}" if self.gear is not None else ""
         return f"{self.name}{gear} ({self.direction}, ratio {self.ratio:.4g})"
 
     def table(self) -> str:
+        """The summary as plain text: axes (in the file's units), efficiency range, self-locking, loss split.
+
+        Returns
+        -------
+        str
+        """
         s = self.summary()
         split = ", ".join(f"{k} {100 * v:.1f} %" for k, v in s["loss_split"].items())
         (n, n_unit), (t, t_unit) = self.shown("speed"), self.shown("torque")
@@ -157,6 +178,12 @@ class EfficiencyMap:
         }
 
     def to_json(self) -> str:
+        """:meth:`to_dict` as JSON text (1/min, N·m, W whatever the file's units; NaN as null).
+
+        Returns
+        -------
+        str
+        """
         return json.dumps(self.to_dict(), indent=1, allow_nan=False) + "\n"
 
     def to_csv(self) -> str:

@@ -149,7 +149,29 @@ class ElementLosses:
     @classmethod
     def for_set(cls, geometry: SetGeometry, *, friction: Friction | None = None,
                 bearing: PlanetBearing | None = None, drag: Sequence[DragTorque] = ()) -> ElementLosses:
-        """The loss model of a planetary set from its geometry (face width needed for a friction model)."""
+        """The loss model of a planetary set from its geometry (face width needed for a friction model).
+
+        Parameters
+        ----------
+        geometry : SetGeometry
+            The set's gears and meshes (with face widths for a friction model).
+        friction : ConstantFriction or SchlenkFriction, optional
+            Mesh friction; ``None`` keeps the set's own η0 for the mesh loss.
+        bearing : PlanetBearing, optional
+            Planet-bearing friction, as an efficiency factor of the set.
+        drag : sequence of DragTorque, default ()
+            Drag torques on the set's members (N·m against their relative speeds).
+
+        Returns
+        -------
+        ElementLosses
+
+        Raises
+        ------
+        LossModelError
+            An unknown friction model, a drag term on a member the set does not
+            have, or a bearing efficiency outside (0, 1].
+        """
         meshes = set_meshes(geometry) if friction is not None else ()
         eta_b = bearing.efficiency(geometry) if bearing is not None else 1.0
         return cls(geometry.planetary_set, meshes, friction, eta_b, tuple(drag))
@@ -157,7 +179,26 @@ class ElementLosses:
     @classmethod
     def for_stage(cls, geometry: StageGeometry, *, friction: Friction | None = None,
                   drag: Sequence[DragTorque] = ()) -> ElementLosses:
-        """The loss model of a gear stage from its geometry."""
+        """The loss model of a gear stage from its geometry.
+
+        Parameters
+        ----------
+        geometry : StageGeometry
+            The stage's gears and meshes (with face widths for a friction model).
+        friction : ConstantFriction or SchlenkFriction, optional
+            Mesh friction; ``None`` keeps the stage's own efficiency.
+        drag : sequence of DragTorque, default ()
+            Drag torques on ``first``/``second`` (N·m against their speeds).
+
+        Returns
+        -------
+        ElementLosses
+
+        Raises
+        ------
+        LossModelError
+            An unknown friction model or a drag term on a member the stage does not have.
+        """
         meshes = stage_meshes(geometry) if friction is not None else ()
         return cls(geometry.stage, meshes, friction, 1.0, tuple(drag))
 
@@ -174,7 +215,35 @@ class ElementLosses:
         return ("sun", "carrier") if isinstance(self.element, PlanetarySet) else ("first", HOUSING)
 
     def evaluate(self, speeds: Mapping[str, Any], torques: Mapping[str, Any]) -> LossState:
-        """The losses at arrays of port speeds (1/min) and port torques (N·m; torque of a shaft on the port)."""
+        """The losses at arrays of port speeds (1/min) and port torques (N·m; torque of a shaft on the port).
+
+        The mesh factor is Π (1 − μ H_V) over the meshes at each point's load and
+        rolling speed (relative to the carrier, or to the housing for a stage), or the
+        element's own η0 without a friction model; the bearing factor is constant;
+        each drag torque opposes its member's speed relative to ``relative_to``.
+
+        Parameters
+        ----------
+        speeds : mapping port → array_like
+            Speed of each port (``sun``/``ring``/``carrier`` or ``first``/``second``), 1/min.
+        torques : mapping port → array_like
+            Torque of the shaft on each port, N·m (from a lossless or previous solve).
+
+        Returns
+        -------
+        LossState
+            Efficiency factors by source, drag torques on shafts, drag loss (W) and μ
+            of each mesh.
+
+        Raises
+        ------
+        LossModelError
+            μ H_V ≥ 1 at some point (a load far beyond what the teeth carry).
+
+        References
+        ----------
+        Ohlendorf 1958 (H_V); ISO/TR 14179-2:2001 (μ_mZ at the mesh's load and speed).
+        """
         a, c = self._relative_port()
         speed = {p: np.asarray(speeds[p], dtype=float) if p != HOUSING else 0.0 for p in self.ports}
         relative = speed[a] - speed[c]

@@ -134,7 +134,22 @@ class ConstantFriction:
         object.__setattr__(self, "value", value)
 
     def coefficient(self, load_per_width, sum_velocity, radius):
-        """μ_m, broadcast to the shape of ``load_per_width``."""
+        """μ_m, broadcast to the shape of ``load_per_width``.
+
+        Parameters
+        ----------
+        load_per_width : float or numpy.ndarray
+            F_bt/b, N/mm (only its shape is used).
+        sum_velocity : float or numpy.ndarray
+            v_ΣC, m/s (not used).
+        radius : float
+            ρ_C, mm (not used).
+
+        Returns
+        -------
+        numpy.ndarray
+            The constant μ_m at every point.
+        """
         return np.full(np.shape(load_per_width), self.value)
 
     @property
@@ -162,7 +177,29 @@ class SchlenkFriction:
         object.__setattr__(self, "roughness", _positive(self.roughness, "roughness Ra (um)", "SchlenkFriction"))
 
     def coefficient(self, load_per_width, sum_velocity, radius):
-        """μ_mZ from the load per face width (N/mm), sum velocity (m/s) and radius of curvature (mm)."""
+        """μ_mZ from the load per face width (N/mm), sum velocity (m/s) and radius of curvature (mm).
+
+        Schlenk's correlation with this model's lubricant (viscosity, lubricant factor)
+        and roughness: :func:`schlenk_friction`.
+
+        Parameters
+        ----------
+        load_per_width : float or numpy.ndarray
+            F_bt/b, transverse tangential load at the base circle per face width, N/mm.
+        sum_velocity : float or numpy.ndarray
+            v_ΣC, the sum of the tangential velocities at the pitch point, m/s.
+        radius : float or numpy.ndarray
+            ρ_C, the relative radius of curvature at the pitch point, mm.
+
+        Returns
+        -------
+        numpy.ndarray or float
+            μ_mZ, of the broadcast shape.
+
+        References
+        ----------
+        Schlenk 1994; ISO/TR 14179-2:2001 (mean coefficient of friction μ_mZ).
+        """
         lub = self.lubricant
         return schlenk_friction(load_per_width, sum_velocity, radius, lub.viscosity, self.roughness,
                                 lub.lubricant_factor)

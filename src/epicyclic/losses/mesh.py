@@ -75,7 +75,37 @@ class MeshLoss:
     @classmethod
     def create(cls, mesh: MeshGeometry, face_width: float, force_port: str, base_radius: float, shares: int,
                pitch_radius: float, speed_ratio: float) -> MeshLoss:
-        """From the gear loaded at ``force_port`` (base radius, mm) and the gear turning at ``speed_ratio``."""
+        """From the gear loaded at ``force_port`` (base radius, mm) and the gear turning at ``speed_ratio``.
+
+        F_bt = 1000 T / (N r_b) per N·m at ``force_port``; v_t = ω r_w with ω =
+        ``speed_ratio`` × the element's relative speed; ρ_C = r_w1 r_w2 sin α_wt /
+        ((r_w2 ± r_w1) cos β_b) (− for an internal mesh).
+
+        Parameters
+        ----------
+        mesh : MeshGeometry
+            The mesh.
+        face_width : float
+            b, mm.
+        force_port : str
+            The port whose torque loads the mesh (``sun``, ``ring``, ``first``).
+        base_radius : float
+            Base radius of the gear on ``force_port`` (or the gear its torque reaches), mm.
+        shares : int
+            Number of planets (paths) that share the torque; 1 for a stage.
+        pitch_radius : float
+            Operating pitch radius of the gear whose speed gives the pitch-line speed, mm.
+        speed_ratio : float
+            That gear's speed per 1/min of the element's relative speed.
+
+        Returns
+        -------
+        MeshLoss
+
+        References
+        ----------
+        Queitsch part I, eqs. (23)–(25); ISO/TR 14179-2:2001 (v_ΣC, ρ_C, F_bt/b).
+        """
         r_w1, r_w2 = (d / 2.0 for d in mesh.operating_pitch_diameters)
         sin_a = math.sin(mesh.alpha_wt)
         span = r_w2 - r_w1 if mesh.internal else r_w2 + r_w1
@@ -84,7 +114,26 @@ class MeshLoss:
                    RPM_TO_RAD_S * abs(speed_ratio) * pitch_radius / 1000.0, tooth_loss_factor(mesh), rho)
 
     def operating_state(self, torque, relative_speed):
-        """(F_bt/b in N/mm, v_ΣC in m/s) for arrays of port torque (N·m) and relative speed (1/min)."""
+        """(F_bt/b in N/mm, v_ΣC in m/s) for arrays of port torque (N·m) and relative speed (1/min).
+
+        v_ΣC = 2 v_t sin α_wt (sum of the tangential velocities at the pitch point).
+
+        Parameters
+        ----------
+        torque : array_like
+            Torque at ``force_port``, N·m (sign ignored).
+        relative_speed : array_like
+            The element's speed relative to its carrier (housing for a stage), 1/min.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (load per face width N/mm, sum velocity m/s).
+
+        References
+        ----------
+        ISO/TR 14179-2:2001 (F_bt/b and v_ΣC in μ_mZ).
+        """
         load = self.force_factor * np.abs(np.asarray(torque, dtype=float)) / self.face_width
         sum_velocity = 2.0 * self.speed_factor * np.abs(np.asarray(relative_speed, dtype=float)) \
             * math.sin(self.mesh.alpha_wt)
@@ -92,6 +141,24 @@ class MeshLoss:
 
     def efficiency(self, friction, torque, relative_speed):
         """η = 1 − μ H_V with μ from ``friction`` at this load and speed (arrays).
+
+        Parameters
+        ----------
+        friction : ConstantFriction or SchlenkFriction
+            The friction model (μ from load per width, sum velocity, ρ_C).
+        torque : array_like
+            Torque at ``force_port``, N·m.
+        relative_speed : array_like
+            The element's relative speed, 1/min.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            (η of the mesh, μ).
+
+        References
+        ----------
+        Ohlendorf 1958 (P_loss = μ H_V P_in); ISO/TR 14179-2:2001.
 
         Raises
         ------

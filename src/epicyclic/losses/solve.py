@@ -145,7 +145,39 @@ def solve_batch_with_losses(train: GearTrain, losses: Mapping[str, ElementLosses
                             max_iterations: int = MAX_ITERATIONS) -> BatchSolution:
     """:func:`solve_with_losses` over arrays of operating points (see :func:`~epicyclic.solver.batch.solve_batch`).
 
-    Each round is one batch solve with per-point efficiency factors and drag torques.
+    Each round is one batch solve with per-point efficiency factors and drag torques,
+    evaluated at the state of the previous round (the first from a solve with unit
+    mesh factors), until no factor changes by more than ``tolerance``.
+
+    Parameters
+    ----------
+    train : GearTrain
+        The train.
+    losses : mapping element name → ElementLosses
+        Loss models; elements without one keep their own η0.
+    speeds, torques, powers : mapping shaft → array_like
+        Given speeds (1/min), torques (N·m), powers (W); arrays broadcast to one shape.
+    drives, loads : sequence of str
+        Driving and driven shafts, as in :class:`~epicyclic.OperatingPoint`.
+    tolerance : float, default 1e-12
+        Largest change of an efficiency factor between rounds at convergence.
+    max_iterations : int, default 30
+        Most rounds.
+
+    Returns
+    -------
+    BatchSolution
+        Arrays over the points (speeds, torques, powers, efficiency, self-locking).
+
+    Raises
+    ------
+    LossModelError
+        A model for an element the train does not have, or no convergence within
+        ``max_iterations`` (a train too close to self-locking).
+
+    References
+    ----------
+    Brandenberger 1952, eqs. 3', 7; ISO/TR 14179-2:2001.
     """
     models = _models(train, losses)
     common = dict(speeds=speeds, torques=torques, powers=powers, drives=drives, loads=loads)

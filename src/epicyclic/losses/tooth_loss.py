@@ -174,6 +174,23 @@ def tooth_loss_factor_numerical(mesh: MeshGeometry, points: int = 400_000) -> fl
     (midpoint rule on ``points`` intervals; error of order 1/points at the
     steps of the load sharing).
 
+    Parameters
+    ----------
+    mesh : MeshGeometry
+        A spur mesh (helix angle 0) with contact ratio ε_α ≥ 1.
+    points : int, default 400000
+        Intervals of the midpoint rule on the path of contact.
+
+    Returns
+    -------
+    float
+        H_V.
+
+    Raises
+    ------
+    LossModelError
+        A helical mesh, or ε_α < 1.
+
     References
     ----------
     Wimmer 2006; Fernandes et al. 2015, Mech. Sci. 6, eq. (1).
@@ -197,6 +214,24 @@ def tooth_loss_factor_numerical(mesh: MeshGeometry, points: int = 400_000) -> fl
 def mesh_efficiency(friction, loss_factor):
     """η = 1 − μ H_V (floats or arrays).
 
+    Parameters
+    ----------
+    friction : float or numpy.ndarray
+        Mean coefficient of friction μ.
+    loss_factor : float
+        Ohlendorf's tooth loss factor H_V (:func:`tooth_loss_factor`).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The mesh efficiency.
+
+    References
+    ----------
+    Ohlendorf 1958; Fernandes et al. 2015, Mech. Sci. 6, eq. (1).
+
+    Examples
+    --------
     >>> round(mesh_efficiency(0.0256, 0.1986), 5)
     0.99492
     """

@@ -94,8 +94,48 @@ class GearStage:
     ) -> GearStage:
         """A stage (or chain of meshes) from tooth counts.
 
-        Each mesh is ``(z_driving, z_driven, "external" | "internal")`` in
-        order from ``first`` to ``second``; n_second = n_first · Π (∓ z_driving/z_driven).
+        n_second = n_first · Π (∓ z_driving/z_driven): an external mesh reverses the
+        direction of rotation, an internal one keeps it; the stage's ``ratio`` is
+        n_first/n_second.
+
+        Parameters
+        ----------
+        name : str
+            Element name (unique in the train).
+        first, second : str
+            The shafts at the two ends of the chain (not the housing).
+        meshes : sequence of tuple
+            ``(z_driving, z_driven)`` or ``(z_driving, z_driven, "external" | "internal")``
+            for each mesh, in order from ``first`` to ``second`` (default external);
+            tooth counts are whole numbers ≥ 3; at most 32 meshes.
+        efficiency : float, default 1.0
+            Efficiency of the whole stage in (0, 1], applied in the direction power flows.
+
+        Returns
+        -------
+        GearStage
+
+        Raises
+        ------
+        ToothCountError
+            No mesh, too many meshes, a mesh that is not two or three items, or a
+            tooth count that is not a whole number in range.
+        ModelError
+            A mesh kind other than ``"external"``/``"internal"``, or ``first`` equal to ``second``.
+        TopologyError
+            ``first`` or ``second`` is the housing (hold a shaft with a Brake).
+        EfficiencyError
+            ``efficiency`` outside (0, 1].
+
+        References
+        ----------
+        Brandenberger 1952, eq. 5: n2 = n3 (e/f)(g/h) for the fixed-axis stage of Bild 10.
+
+        Examples
+        --------
+        >>> stage = GearStage.from_teeth("V", "II", "III", [(40, 44), (20, 64)], efficiency=0.9)
+        >>> round(stage.ratio, 4), stage.meshes[0]
+        (3.52, (40, 44, 'external'))
         """
         owner = f"gear stage {name!r}"
         if not meshes:

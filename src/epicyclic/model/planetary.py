@@ -20,78 +20,14 @@ tec-science, "Willis-Gleichung", "Festgestellter Steg" (i0 = -z_H/z_S).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
-from ..errors import EfficiencyError, ModelError, ToothCountError
-from ..limits import MAX_NAME_CHARS, MAX_PLANETS
+from ..errors import ModelError, ToothCountError
 from .teeth import COAXIAL_TOLERANCE_TEETH, Teeth, check_double, check_stepped, check_teeth
+from .validation import check_efficiency, check_name, check_planets, finite_float
 
 __all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "check_planets", "finite_float",
            "check_teeth", "COAXIAL_TOLERANCE_TEETH"]
-
-
-def check_name(value: object, field_name: str, owner: str) -> str:
-    """Return ``value`` if it is a usable name, else raise ModelError.
-
-    A name is a non-empty string of at most :data:`~epicyclic.limits.MAX_NAME_CHARS`
-    printable characters without leading or trailing spaces (names appear in
-    tables, terminals and file names).
-
-    >>> check_name("sun", "sun", "set P1")
-    'sun'
-    """
-    if not isinstance(value, str) or not value.strip():
-        raise ModelError(f"{owner}: {field_name} must be a non-empty shaft name, got {value!r:.60}.")
-    if len(value) > MAX_NAME_CHARS:
-        raise ModelError(f"{owner}: {field_name} {value[:20]!r}… is {len(value)} characters long; at most "
-                         f"{MAX_NAME_CHARS} are accepted.")
-    if not value.isprintable() or value != value.strip():
-        raise ModelError(f"{owner}: {field_name} {value!r} contains control characters or leading/trailing "
-                         "spaces; use letters, digits and punctuation.")
-    return value
-
-
-def check_planets(value: object, field_name: str, owner: str) -> int:
-    """Return ``value`` if it is a whole number of planets in 1 … MAX_PLANETS, else raise ModelError."""
-    if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_PLANETS:
-        raise ModelError(f"{owner}: {field_name} must be a whole number >= 1 and <= {MAX_PLANETS}, got {value!r:.40}.")
-    return value
-
-
-def finite_float(value: object) -> float | None:
-    """``value`` as float if it is a finite real number (not a boolean), else None.
-
-    Integers beyond double precision (``10**400``) are not finite numbers here.
-
-    >>> finite_float(3), finite_float(float("nan")), finite_float(10**400), finite_float(True)
-    (3.0, None, None, None)
-    """
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        return None
-    try:
-        number = float(value)
-    except OverflowError:
-        return None
-    return number if math.isfinite(number) else None
-
-
-def check_efficiency(value: object, field_name: str, owner: str) -> float:
-    """Return ``value`` as float if it lies in (0, 1], else raise EfficiencyError.
-
-    >>> check_efficiency(0.97, "stationary_efficiency", "set P1")
-    0.97
-    """
-    number = finite_float(value)
-    if number is None and not (isinstance(value, float) and math.isnan(value)):
-        raise EfficiencyError(f"{owner}: {field_name} must be a number in (0, 1], got {value!r:.40}.")
-    value = float("nan") if number is None else number
-    if not (0.0 < value <= 1.0):
-        raise EfficiencyError(
-            f"{owner}: {field_name} must lie in (0, 1] (1 = lossless), got {value!r}. "
-            "Give an efficiency such as 0.98, not a percentage or a loss."
-        )
-    return value
 
 
 @dataclass(frozen=True)
@@ -267,10 +203,55 @@ class PlanetarySet:
     ) -> PlanetarySet:
         """A double-planet (plus) set: sun–planet 1–planet 2–ring, i0 = +z_ring/z_sun.
 
-        ``mesh_efficiencies`` are the three meshes' efficiencies (combined by
-        product).  The planets must be placeable: planet 1 at (z_sun + z_p1)/2,
-        planet 2 at (z_ring − z_p2)/2 and their centre distance (z_p1 + z_p2)/2
-        (modules) must close a triangle (see :func:`~epicyclic.model.teeth.check_double`).
+        The planets must be placeable: planet 1 at (z_sun + z_p1)/2, planet 2 at
+        (z_ring − z_p2)/2 and their centre distance (z_p1 + z_p2)/2 (modules) must
+        close a triangle, within one module (see :func:`~epicyclic.model.teeth.check_double`).
+
+        Parameters
+        ----------
+        name : str
+            Element name (unique in the train).
+        sun, ring, carrier : str
+            The shafts the sun, the ring and the carrier sit on.
+        z_sun, z_planet_sun, z_planet_ring, z_ring : int
+            Tooth counts (3 … 1000): sun, planet 1 (meshes the sun), planet 2
+            (meshes planet 1 and the ring), ring.
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (sun–planet 1, planet 1–planet 2, planet 2–ring), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry.
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, a ring not larger than the
+            sun or than planet 2, or planets that cannot be placed.
+        EfficiencyError
+            An efficiency outside (0, 1].
+        ModelError
+            Both ``stationary_efficiency`` and ``mesh_efficiencies``, the wrong number of
+            mesh efficiencies, or shafts that are not three different names.
+
+        References
+        ----------
+        Brandenberger 1952, eq. 1 (i0 as the product of the mesh ratios, carrier held:
+        two external meshes and one internal give i0 = +z_ring/z_sun);
+        SDP/SI, *Elements of Metric Gear Technology* (D785), section 13 (double planets).
+
+        Examples
+        --------
+        >>> d = PlanetarySet.double_planet("D", sun="s", ring="r", carrier="c", z_sun=30,
+        ...                                z_planet_sun=15, z_planet_ring=16, z_ring=78)
+        >>> d.stationary_ratio, d.is_plus_set
+        (2.6, True)
         """
         owner = f"planetary set {name!r}"
         zs = check_teeth(z_sun, "z_sun", owner)
@@ -319,12 +300,49 @@ class PlanetarySet:
 
         Parameters
         ----------
+        name : str
+            Element name (unique in the train).
+        sun, ring, carrier : str
+            The shafts of the first central gear a, the second central gear d
+            and the carrier.
+        z_sun, z_planet_sun, z_planet_ring, z_ring : int
+            Tooth counts (3 … 1000) of a, b (meshes a), c (meshes d) and d.
+        ring_internal : bool, default True
+            Whether d is an internal gear (a ring); False for a second sun.
+        sun_internal : bool, default False
+            Whether a is an internal gear (True with ``ring_internal`` for a
+            Wolfrom set: prefer :meth:`two_rings`).
         module_ratio : float, optional
             m_d/m_a, the module of the second mesh over that of the first.
             Given, the tooth counts are checked for coaxiality
             (|(z_a ± z_b) − (m_d/m_a)(z_d ± z_c)| ≤ 2 max(1, m_d/m_a) teeth);
             ``None`` (default) leaves coaxiality to the geometry
             (:func:`~epicyclic.geometry.check_coaxiality`).
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (a–b, c–d), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry.
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, an internal gear not larger
+            than its planet gear, i0 = 1 (two suns or two rings that lock), a
+            non-positive ``module_ratio``, or counts that cannot be coaxial; also a
+            ``ring_internal``/``sun_internal`` that is not a bool.
+        EfficiencyError
+            An efficiency outside (0, 1].
+        ModelError
+            Both ``stationary_efficiency`` and ``mesh_efficiencies``, the wrong number of
+            mesh efficiencies, or shafts that are not three different names.
 
         References
         ----------
@@ -377,6 +395,44 @@ class PlanetarySet:
         equal modules (``module_ratio = 1``, default) the tooth counts must be
         coaxial: z_1 − z_p1 = z_2 − z_p2 within ±2 teeth.
 
+        Parameters
+        ----------
+        name : str
+            Element name (unique in the train).
+        first, second, carrier : str
+            The shafts of ring 1, ring 2 and the carrier.
+        z_first, z_planet_first, z_planet_second, z_second : int
+            Tooth counts (3 … 1000): ring 1, the planet gear meshing it, the planet
+            gear meshing ring 2 (same planet shaft), ring 2.
+        module_ratio : float or None, default 1.0
+            m2/m1, the module of the ring-2 mesh over that of the ring-1 mesh, for the
+            coaxiality check (z_1 − z_p1 = (m2/m1)(z_2 − z_p2) within ±2 max(1, m2/m1)
+            teeth); ``None`` leaves coaxiality to the geometry.
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (ring 1–planet, planet–ring 2), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry.
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, a ring not larger than its
+            planet gear, z_1·z_p2 = z_2·z_p1 (i0 = 1: the set locks), a non-positive
+            ``module_ratio`` or counts that cannot be coaxial.
+        EfficiencyError
+            An efficiency outside (0, 1].
+        ModelError
+            Both ``stationary_efficiency`` and ``mesh_efficiencies``, the wrong number of
+            mesh efficiencies, or shafts that are not three different names.
+
         References
         ----------
         Brandenberger 1952, eq. 1 (a/b·c/d with both meshes internal: no sign change);
@@ -415,6 +471,45 @@ class PlanetarySet:
 
         With equal modules (``module_ratio = 1``, default) the tooth counts must
         be coaxial: z_1 + z_p1 = z_2 + z_p2 within ±2 teeth.
+
+        Parameters
+        ----------
+        name : str
+            Element name (unique in the train).
+        first, second, carrier : str
+            The shafts of sun 1 (Brandenberger's system I), sun 2 (system II) and
+            the carrier (system III).
+        z_first, z_planet_first, z_planet_second, z_second : int
+            Tooth counts (3 … 1000): sun 1 (a), the planet gear meshing it (b), the
+            planet gear meshing sun 2 (c, same planet shaft), sun 2 (d).
+        module_ratio : float or None, default 1.0
+            m2/m1, the module of the sun-2 mesh over that of the sun-1 mesh, for the
+            coaxiality check (z_1 + z_p1 = (m2/m1)(z_2 + z_p2) within ±2 max(1, m2/m1)
+            teeth); ``None`` leaves coaxiality to the geometry.
+        stationary_efficiency : float, optional
+            η0 in (0, 1], the efficiency with the carrier held; default 1
+            (lossless) unless ``mesh_efficiencies`` are given.
+        mesh_efficiencies : tuple of float, optional
+            (sun 1–planet, planet–sun 2), each in (0, 1], combined by product into η0;
+            not together with ``stationary_efficiency``.
+        planets : int, default 3
+            Number of planets (1 … 24): for the planet loads and the geometry.
+
+        Returns
+        -------
+        PlanetarySet
+
+        Raises
+        ------
+        ToothCountError
+            A count that is not a whole number in range, z_1·z_p2 = z_2·z_p1 (i0 = 1:
+            the set locks), a non-positive ``module_ratio`` or counts that cannot be
+            coaxial.
+        EfficiencyError
+            An efficiency outside (0, 1].
+        ModelError
+            Both ``stationary_efficiency`` and ``mesh_efficiencies``, the wrong number of
+            mesh efficiencies, or shafts that are not three different names.
 
         References
         ----------

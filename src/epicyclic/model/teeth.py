@@ -35,11 +35,15 @@ from typing import Literal
 from ..errors import ToothCountError
 from ..limits import MAX_TEETH, MIN_TEETH
 
-__all__ = ["Teeth", "COAXIAL_TOLERANCE_TEETH", "check_teeth", "check_stepped", "check_double"]
+__all__ = ["Teeth", "COAXIAL_TOLERANCE_TEETH", "TWO_CENTRAL_NAMES", "check_teeth", "check_stepped", "check_double"]
 
 #: Largest mismatch |z_ring - z_sun - 2 z_planet| (in teeth) that profile shift
 #: can absorb in a simple set; larger ones cannot be made coaxial.
 COAXIAL_TOLERANCE_TEETH = 2
+
+#: Names of the gears (and central ports) of a set with two suns or two rings, as its file's
+#: ``teeth`` table says them (``kind = "two_rings"`` / ``"two_suns"``), by the solver's names.
+TWO_CENTRAL_NAMES = {"sun": "first", "planet_sun": "planet_first", "planet_ring": "planet_second", "ring": "second"}
 
 
 def check_teeth(value: object, field_name: str, owner: str) -> int:
@@ -139,6 +143,38 @@ class Teeth:
         if self.sun_internal == self.ring_internal:
             return "two rings" if self.sun_internal else "two suns"
         return "stepped"
+
+    def label(self, name: str) -> str:
+        """A gear's or port's name as a user of this arrangement says it.
+
+        A set with two rings or two suns (:attr:`arrangement`) calls its central gears
+        ``first`` and ``second`` and its planet gears ``planet_first`` and
+        ``planet_second``, the keys of its file's ``teeth`` table; every other set keeps
+        the solver's names (``sun``, ``ring``, ``planet``, ...).  The solver itself always
+        says ``sun``/``ring``/``carrier``; reports, meshes, forces and plots use this label.
+
+        Parameters
+        ----------
+        name : str
+            The solver's name of a port (``sun``, ``ring``, ``carrier``) or gear
+            (``planet_sun``, ``planet_ring``, ...).
+
+        Returns
+        -------
+        str
+            The name in this arrangement; ``name`` itself where nothing differs.
+
+        Examples
+        --------
+        >>> wolfrom = Teeth("stepped", 81, 78, (27, 24), sun_internal=True)
+        >>> [wolfrom.label(p) for p in ("sun", "ring", "carrier", "planet_sun")]
+        ['first', 'second', 'carrier', 'planet_first']
+        >>> Teeth("simple", 30, 78, (24,)).label("sun")
+        'sun'
+        """
+        if self.arrangement in ("two rings", "two suns"):
+            return TWO_CENTRAL_NAMES.get(name, name)
+        return name
 
 
 def _center(z_gear: int, z_planet: int, internal: bool) -> int:

@@ -126,7 +126,33 @@ class GearTrain:
         )
 
     def check_shaft(self, name: str, where: str = "operating point") -> str:
-        """Return ``name`` if the train has that shaft, else raise UnknownShaftError."""
+        """Return ``name`` if the train has that shaft, else raise UnknownShaftError.
+
+        Parameters
+        ----------
+        name : str
+            A shaft name (the housing is ``"housing"``).
+        where : str, default "operating point"
+            What named the shaft, the prefix of the message (e.g. ``"plot --shaft"``).
+
+        Returns
+        -------
+        str
+            ``name``.
+
+        Raises
+        ------
+        UnknownShaftError
+            The train has no such shaft; the message lists its shafts and the likely
+            misspelt one.
+
+        Examples
+        --------
+        >>> from epicyclic.demo import brandenberger_1952
+        >>> train = brandenberger_1952()[0]
+        >>> train.check_shaft("III")
+        'III'
+        """
         if name not in self.shafts:
             raise UnknownShaftError(name, self.shafts, where)
         return name

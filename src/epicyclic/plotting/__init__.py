@@ -132,7 +132,31 @@ def figure(solution: Solution, kind: str, *, context: FigureContext | None = Non
 
 
 def save_plot(solution: Solution, kind: str, path: str | Path, *, dpi: int = 150, **options: Any) -> Path:
-    """Draw ``kind`` (options as for :func:`figure`) and write it to ``path`` (.svg, .png or .pdf)."""
+    """Draw ``kind`` (options as for :func:`figure`) and write it to ``path`` (.svg, .png or .pdf).
+
+    Parameters
+    ----------
+    solution : Solution
+        A solved train.
+    kind : str
+        One of :data:`ALL_KINDS`.
+    path : str or Path
+        The file; its suffix (.svg, .png, .pdf) chooses the format.
+    dpi : int, default 150
+        Resolution of a PNG.
+    **options
+        ``context``, ``transmission``, ``gear`` as for :func:`figure`.
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Raises
+    ------
+    PlottingError
+        Another suffix, or what :func:`figure` raises.
+    """
     from ._common import check_suffix
 
     check_suffix(path, FIGURE_SUFFIXES, "plot")
@@ -143,14 +167,27 @@ def report_figures(solution: Solution, *, units: Any = None, title: str | None =
                    geometry: Any = None) -> list[tuple[str, str]]:
     """Every picture of a solution as (title, inline SVG text) for the HTML report.
 
-    ``units`` (:class:`~epicyclic.units.Units`, the file's) and ``title`` frame
-    the figures as the report's tables are; ``geometry`` (the file's sets'
-    :class:`~epicyclic.geometry.SetGeometry`) gives the speed plan its radii.
-
     The SVG texts start with ``<svg`` (no XML prolog) and contain no scripts
     or external references.  Pictures that do not apply (a speed plan without
     planetary set) are left out.  The last entry is the animation of the first
     planetary set (SMIL, plays in the browser).
+
+    Parameters
+    ----------
+    solution : Solution
+        A solved train.
+    units : Units, optional
+        The file's units (:class:`~epicyclic.units.Units`); default 1/min, N·m, W.
+    title : str, optional
+        Title of the figures, as the report's (default: the train's name).
+    geometry : mapping element name → geometry, optional
+        The file's geometry tables; the sets' :class:`~epicyclic.geometry.SetGeometry`
+        give the speed plan its operating pitch radii.
+
+    Returns
+    -------
+    list of (str, str)
+        (title, SVG text) per picture.
 
     Examples
     --------

@@ -190,6 +190,26 @@ def save_figure(fig: Any, path: str | Path, *, dpi: int = 150) -> Path:
     """Write ``fig`` to ``path`` (.svg, .png or .pdf by suffix) and close it.
 
     In SVG, text stays text (searchable, small), as in :func:`figure_svg`.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure (closed afterwards).
+    path : str or Path
+        The file; its suffix (.svg, .png, .pdf) chooses the format; missing folders
+        are made.
+    dpi : int, default 150
+        Resolution of a PNG.
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Raises
+    ------
+    PlottingError
+        Another suffix.
     """
     import matplotlib
 
@@ -225,9 +245,7 @@ def member_name(pset: PlanetarySet, port: str) -> str:
     ...                                    z_planet_first=27, z_planet_second=24, z_second=78), "sun")
     'first'
     """
-    if pset.teeth is not None and pset.teeth.arrangement in ("two rings", "two suns"):
-        return {"sun": "first", "ring": "second"}.get(port, port)
-    return port
+    return port if pset.teeth is None else pset.teeth.label(port)
 
 
 def planetary_set(solution: Solution, name: str | None) -> PlanetarySet:

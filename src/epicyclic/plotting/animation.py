@@ -158,6 +158,15 @@ class PlanetaryAnimation:
 
     # ------------------------------------------------------------- output
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data of the animation (speeds in 1/min, not the drawn shapes).
+
+        Returns
+        -------
+        dict
+            ``set``, ``speeds_1_per_min`` (member → speed), ``slowdown``, ``fps``, ``frames``,
+            ``willis`` (phase mode), ``planets``, ``factors`` (planet speed per carrier-relative
+            sun speed), ``i0``, ``schematic`` and ``size`` (pixels).
+        """
         return {"set": self.set_name, "speeds_1_per_min": dict(self.speeds), "slowdown": self.slowdown,
                 "fps": self.fps, "frames": self.frames, "willis": self.willis, "planets": self.planets,
                 "factors": dict(self.factors), "i0": self.i0, "schematic": self.schematic, "size": self.size}
@@ -184,7 +193,21 @@ class PlanetaryAnimation:
                 f"{self.svg()}\n</body></html>\n")
 
     def gif(self, path: str | Path, *, dpi: int = 80) -> Path:
-        """Write the animation as GIF (matplotlib PillowWriter), ``size`` pixels wide."""
+        """Write the animation as GIF (matplotlib PillowWriter), ``size`` pixels wide.
+
+        Parameters
+        ----------
+        path : str or Path
+            The file to write.
+        dpi : int, default 80
+            Resolution the frames are drawn at (the width stays ``size`` pixels; the text
+            scales with it).
+
+        Returns
+        -------
+        Path
+            ``path``.
+        """
         from ._svg import write_gif
 
         return write_gif(self, Path(path), dpi)

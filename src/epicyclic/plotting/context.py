@@ -77,7 +77,28 @@ class FigureContext:
 
     # ------------------------------------------------------------------ words
     def heading(self, train: GearTrain, what: str) -> str:
-        """Title of a figure: ``"<title>: <what>"``, then the shift state and the notes on a second line."""
+        """Title of a figure: ``"<title>: <what>"``, then the shift state and the notes on a second line.
+
+        Parameters
+        ----------
+        train : GearTrain
+            The train drawn (its name if the context has no title; its clutches and brakes
+            give the shift state).
+        what : str
+            What the figure shows, e.g. ``"speeds"``.
+
+        Returns
+        -------
+        str
+
+        Examples
+        --------
+        >>> from epicyclic import Brake, GearTrain, PlanetarySet
+        >>> train = GearTrain([PlanetarySet("P", "a", "b", "c", -2.0), Brake("B", "b")], name="t")
+        >>> print(FigureContext(gear="1").heading(train, "torques"))
+        t: torques
+        gear 1: B engaged
+        """
         second = "; ".join(s for s in (shift_state(train, self.gear), *self.notes) if s)
         first = f"{self.title or train.name}: {what}"
         return first + (f"\n{second}" if second else "")
@@ -92,9 +113,45 @@ class FigureContext:
         return self.units.of(quantity).replace("*", "·")
 
     def convert(self, value: float, quantity: str) -> float:
-        """A core value (1/min, N·m, W) in the figure's unit."""
+        """A core value (1/min, N·m, W) in the figure's unit.
+
+        Parameters
+        ----------
+        value : float
+            The value in the core unit.
+        quantity : {"speed", "torque", "power"}
+            What it is.
+
+        Returns
+        -------
+        float
+
+        Examples
+        --------
+        >>> from epicyclic.units import Units
+        >>> round(FigureContext(units=Units(power="kW")).convert(1500.0, "power"), 6)
+        1.5
+        """
         return float(self.units.convert(value, quantity))  # type: ignore[arg-type]
 
     def text(self, value: float, quantity: str, scale: float, digits: int = 4) -> str:
-        """``"1500 U/min"``: value (core units) converted, zero rule applied against ``scale``."""
+        """``"1500 U/min"``: value (core units) converted, zero rule applied against ``scale``.
+
+        Parameters
+        ----------
+        value : float
+            The value in the core unit (1/min, N·m, W).
+        quantity : {"speed", "torque", "power"}
+            What it is.
+        scale : float
+            The size of the figure's values of that quantity (core unit): a value below the
+            zero rule's share of it is shown as 0 (:func:`epicyclic.results.zero.clean`).
+        digits : int, default 4
+            Significant digits.
+
+        Returns
+        -------
+        str
+            The number and the unit.
+        """
         return f"{fmt(self.convert(clean(value, scale), quantity), digits)} {self.unit(quantity)}"

@@ -107,6 +107,21 @@ class PowerDiagram:
     train: Any = field(default=None, repr=False, compare=False)
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: the power rectangles of every element, with friction and without.
+
+        Rectangles span a speed (x, 1/min) and a torque (y, N·m): their area is a power
+        (W); the loss rectangle is the rolling power times (1 − η0^w).
+
+        Returns
+        -------
+        dict
+            ``title``, ``units`` and ``actual``/``ideal``: per element its ``loss_W``,
+            ``loss_direction`` (w), ``rects`` and ``loss_rect``.
+
+        References
+        ----------
+        Brandenberger 1952, Bild 8/9 (powers as areas).
+        """
         def one(e: ElementPowers) -> dict[str, Any]:
             return {"element": e.element, "loss_W": e.loss, "loss_direction": e.loss_direction,
                     "rects": [r.__dict__ for r in e.rects],
@@ -301,9 +316,29 @@ class TorqueDiagram:
         return tuple(out)
 
     def group(self, name: str) -> tuple[TorqueBar, ...]:
+        """The bars of one group: ``"external"`` (external shafts) or an element's name (its ports).
+
+        Parameters
+        ----------
+        name : str
+            The group.
+
+        Returns
+        -------
+        tuple of TorqueBar
+            Empty for an unknown group or a resting element.
+        """
         return tuple(b for b in self.bars if b.group == name)
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: every torque bar with and without friction (N·m).
+
+        Returns
+        -------
+        dict
+            ``title``, ``unit`` (``"N*m"``) and ``bars``: group, label, ideal and actual
+            torque, role of each.
+        """
         return {"title": self.title, "unit": "N*m", "bars": [b.__dict__ for b in self.bars]}
 
     def _repr_html_(self) -> str:
@@ -368,6 +403,18 @@ def torque_diagram(solution: Solution, *, context: FigureContext | None = None) 
     Values are cleaned by the zero rule against the train's torque scale;
     elements without any torque (idle in this shift state) are listed in
     ``resting`` and get no panel.
+
+    Parameters
+    ----------
+    solution : Solution
+        A solved train (its ``ideal`` gives the bars without friction).
+    context : FigureContext, optional
+        Title, units, gear and notes (default: the train's name, N·m).
+
+    Returns
+    -------
+    TorqueDiagram
+        Plot it with ``.plot()``.
 
     References
     ----------

@@ -108,9 +108,35 @@ class PowerFlow:
     train: Any = field(default=None, repr=False, compare=False)
 
     def node(self, name: str) -> FlowNode:
+        """The node (shaft, element, housing or loss) called ``name``.
+
+        Parameters
+        ----------
+        name : str
+            The node's name.
+
+        Returns
+        -------
+        FlowNode
+
+        Raises
+        ------
+        StopIteration
+            No node has that name.
+        """
         return next(n for n in self.nodes if n.name == name)
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data of the flow graph: nodes, edges (power in W), circulation, rolling power, losses.
+
+        Returns
+        -------
+        dict
+            ``title``, ``units``, ``nodes``, ``edges`` (without their drawn routes),
+            ``input_power``, ``circulation`` (:meth:`Circulation.to_dict
+            <epicyclic.results.Circulation.to_dict>`), ``rolling`` and ``losses`` (element →
+            W) and ``crossings`` (edge crossings of the layout).
+        """
         return {"title": self.title, "units": {"power": "W", "width": "data units"},
                 "nodes": [n.__dict__ for n in self.nodes],
                 "edges": [{k: v for k, v in e.__dict__.items() if k != "route"} for e in self.edges],

@@ -189,6 +189,16 @@ class LeverDiagram:
         return ""
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: every lever, the links between them, the compound lever and the gear lines.
+
+        Returns
+        -------
+        dict
+            ``title``; ``levers`` (element, i0, nodes); ``links`` (shafts that join levers);
+            ``compound`` and ``free_levers`` (elements, node positions, speeds in 1/min or
+            ``None``); ``input``, ``output``; ``gear_lines`` (gear → shaft → speed per input
+            speed); ``units``.
+        """
         def lever(c: CompoundLever | None) -> dict[str, Any] | None:
             if c is None:
                 return None

@@ -97,6 +97,18 @@ class RangeDiagram:
         return abs(n2 - n3), abs(n1 - n3), abs(n1 - n2)
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data of the range diagram (speeds in 1/min after the sign scaling).
+
+        Returns
+        -------
+        dict
+            ``set``, ``labels`` (I, II, III), ``ports``, ``shafts``, ``offsets``, ``sign``,
+            ``x_operating``, ``zero_points`` and ``operating_range`` (1…7 or ``None``).
+
+        References
+        ----------
+        Brandenberger 1952, Bild 3–5 (the seven ranges).
+        """
         return {"set": self.set_name, "labels": self.labels, "ports": self.ports, "shafts": self.shafts,
                 "offsets": self.offsets, "sign": self.sign, "x_operating": self.x_operating,
                 "zero_points": self.zero_points, "operating_range": self.operating_range}

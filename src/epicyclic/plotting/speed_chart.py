@@ -63,6 +63,15 @@ class SpeedChart:
         return max(found, key=lambda t: abs(t[2]), default=None)
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: gears, engaged elements, speeds and slips per unit input speed.
+
+        Returns
+        -------
+        dict
+            ``title``, ``unit`` (``"per input speed"``), ``gears``, ``engaged`` (gear → element
+            names), ``speeds`` (shaft → gear → n/n_in), ``slips`` (open shift element → gear
+            → slip/n_in), ``input`` and ``output``.
+        """
         return {"title": self.title, "unit": "per input speed", "gears": list(self.gears),
                 "engaged": {g: list(e) for g, e in self.engaged.items()},
                 "speeds": {s: dict(v) for s, v in self.speeds.items()},

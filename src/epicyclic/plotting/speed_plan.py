@@ -381,6 +381,8 @@ def speed_plan(solution: Solution, element: str | None = None, *, module: float 
     module : float, default 1.0
         Module in mm for radii from tooth counts (a set with geometry in
         ``context.geometry`` is drawn at its own operating pitch radii).
+    context : FigureContext, optional
+        Title, units, gear, notes and the file's geometry.
 
     Returns
     -------
@@ -421,7 +423,36 @@ def speed_plan(solution: Solution, element: str | None = None, *, module: float 
 
 def plot_speed_plan(solution: Solution, element: str | None = None, *, module: float = 1.0,
                     context: FigureContext | None = None) -> Any:
-    """Figure with the Kutzbach diagram and the range diagram of every (or one) set."""
+    """Figure with the Kutzbach diagram and the range diagram of every (or one) set.
+
+    One row per planetary set: :func:`speed_plan` on the left,
+    :func:`~epicyclic.plotting.ranges.range_diagram` on the right.
+
+    Parameters
+    ----------
+    solution : Solution
+        A solved train.
+    element : str, optional
+        Name of one planetary set (default: every set).
+    module : float, default 1.0
+        Module in mm for radii from tooth counts (sets in ``context.geometry``
+        are drawn at their own operating pitch radii).
+    context : FigureContext, optional
+        Title, units, gear, notes and the file's geometry.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Raises
+    ------
+    PlottingError
+        No such planetary set, or a train without one.
+
+    References
+    ----------
+    Queitsch, Bild 5 (speed plan); Brandenberger 1952, Bild 3–5 (ranges 1–7).
+    """
     plt = pyplot()
     context = context or FigureContext(title=solution.train.name)
     sets = [planetary_set(solution, element)] if element is not None else list(solution.train.planetary_sets)

@@ -71,6 +71,14 @@ class PowerLoop:
         return " → ".join((*self.path, self.path[0]))
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data of one loop.
+
+        Returns
+        -------
+        dict
+            ``path`` (shaft, element, shaft, ... in the direction of the power, closing on
+            itself), ``power`` (W) and ``ratio`` (× input power, ``None`` without input power).
+        """
         return {"path": list(self.path), "power": self.power, "ratio": self.ratio}
 
 
@@ -119,6 +127,22 @@ class Circulation:
         return shown
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: circulating power per loop and in total, largest element power.
+
+        Powers in W (the core unit; reports convert them), ratios as multiples of the
+        input power; ``None`` where the torque split is statically indeterminate.
+
+        Returns
+        -------
+        dict
+            ``power``, ``ratio``, ``loops`` (:meth:`PowerLoop.to_dict`),
+            ``largest_element_power``, ``largest_element_ratio``, ``indeterminate``
+            (names of the elements whose split is open).
+
+        References
+        ----------
+        Brandenberger 1952, text to Bild 11/12 (Blindleistung); Müller 1998.
+        """
         return {
             "power": self.power,
             "ratio": self.ratio,

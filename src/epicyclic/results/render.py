@@ -20,7 +20,7 @@ from typing import Any
 
 from ..units import Units, as_units
 
-__all__ = ["solution_to_dict", "solution_table", "solution_html", "SCHEMA_VERSION"]
+__all__ = ["solution_to_dict", "solution_table", "solution_html", "port_labels", "SCHEMA_VERSION"]
 
 #: Version of the JSON layout produced by :func:`solution_to_dict`.
 SCHEMA_VERSION = 2
@@ -28,8 +28,63 @@ SCHEMA_VERSION = 2
 UNITS = {"speed": "1/min", "torque": "N*m", "power": "W"}
 
 
+def port_labels(sol: Any, state: Any) -> dict[str, str]:
+    """Each port of an element's result named as the element's arrangement says it.
+
+    The solver names a set's ports ``sun``, ``ring`` and ``carrier`` whatever its
+    gears; a set with two rings (Wolfrom) or two suns calls its central members
+    ``first`` and ``second``, as its file's ``teeth`` table does
+    (:meth:`epicyclic.model.Teeth.label`).  Every other element keeps the solver's
+    port names.  Reports use these labels; the result objects keep the solver's.
+
+    Parameters
+    ----------
+    sol : Solution
+        The solution that ``state`` belongs to (its train knows the element).
+    state : ElementState
+        One element's result (``sol.elements[name]``).
+
+    Returns
+    -------
+    dict
+        Port (solver's name) → label, in the order of ``state.ports``.
+
+    Examples
+    --------
+    >>> from epicyclic import GearTrain, OperatingPoint, PlanetarySet, solve
+    >>> wolfrom = PlanetarySet.two_rings("W", first="r1", second="out", carrier="c", z_first=81,
+    ...                                  z_planet_first=27, z_planet_second=24, z_second=78)
+    >>> sol = solve(GearTrain([wolfrom], name="t"), OperatingPoint(speeds={"c": 750, "r1": 0}))
+    >>> port_labels(sol, sol.elements["W"])
+    {'sun': 'first', 'ring': 'second', 'carrier': 'carrier'}
+    """
+    teeth = getattr(sol.train.element(state.name), "teeth", None)
+    return {p: p if teeth is None else teeth.label(p) for p in state.ports}
+
+
+def _labelled(mapping: Any, labels: dict[str, str]) -> dict[str, Any]:
+    return {labels.get(k, k): v for k, v in mapping.items()}
+
+
 def solution_to_dict(sol: Any) -> dict[str, Any]:
-    """JSON-ready dictionary of a solution (stable layout, units stated)."""
+    """JSON-ready dictionary of a solution (stable layout, units stated).
+
+    Ports are named by :func:`port_labels` (``first``/``second`` for a set with
+    two rings or two suns).
+
+    Parameters
+    ----------
+    sol : Solution
+        The solution (speeds 1/min, torques N·m, powers W).
+
+    Returns
+    -------
+    dict
+        ``schema``, ``train``, ``units``, ``shafts``, ``elements``, the powers,
+        ``efficiency``, ``self_locking``, ``circulation``, ``degrees_of_freedom``,
+        ``warnings`` (layout in ``docs/file-format.md``).
+    """
+    labels = {e.name: port_labels(sol, e) for e in sol.elements.values()}
     return {
         "schema": SCHEMA_VERSION,
         "train": sol.train.name,
@@ -42,9 +97,9 @@ def solution_to_dict(sol: Any) -> dict[str, Any]:
             e.name: {
                 "kind": e.kind,
                 "status": e.status,
-                "ports": dict(e.ports),
-                "torques": dict(e.torques),
-                "speeds": dict(e.speeds),
+                "ports": _labelled(e.ports, labels[e.name]),
+                "torques": _labelled(e.torques, labels[e.name]),
+                "speeds": _labelled(e.speeds, labels[e.name]),
                 "rolling_power": e.rolling_power,
                 "coupling_power": e.coupling_power,
                 "loss": e.loss,
@@ -95,7 +150,8 @@ def _shaft_rows(sol: Any, u: Units) -> list[list[str]]:
 def _element_rows(sol: Any, u: Units) -> list[list[str]]:
     rows = []
     for e in sol.elements.values():
-        torques = " / ".join(f"{p} {_num(u.torque_from_core(t), 5)}" for p, t in e.torques.items())
+        labels = port_labels(sol, e)
+        torques = " / ".join(f"{labels.get(p, p)} {_num(u.torque_from_core(t), 5)}" for p, t in e.torques.items())
         rows.append([e.name, e.kind, e.status, torques, _num(u.power_from_core(e.rolling_power)),
                      _num(u.power_from_core(e.coupling_power)), _num(u.power_from_core(e.loss))])
     return rows

@@ -70,6 +70,20 @@ class Candidate:
 
     # ------------------------------------------------------------------ names
     def shaft_name(self, shaft: int) -> str:
+        """A shaft's name in the candidate's files and tables: ``in``, ``out``, or its members.
+
+        Members are named by set (from 1) and letter: ``s1_c2`` joins sun 1 and carrier 2;
+        a shaft with no member is ``x<number>``.
+
+        Parameters
+        ----------
+        shaft : int
+            The shaft's number in the mechanism.
+
+        Returns
+        -------
+        str
+        """
         if shaft == self.input:
             return "in"
         if shaft == self.output:
@@ -78,6 +92,25 @@ class Candidate:
         return "_".join(f"{p[0]}{k + 1}" for k, p in members) or f"x{shaft}"
 
     def element_name(self, element: int) -> str:
+        """A shift element's name: ``B1``, ``B2``, ... for brakes, ``K1``, ``K2``, ... for clutches.
+
+        Numbered in the order of the candidate's elements.
+
+        Parameters
+        ----------
+        element : int
+            The element's number in the mechanism's list of possible elements (one of
+            :attr:`elements`).
+
+        Returns
+        -------
+        str
+
+        Raises
+        ------
+        ValueError
+            ``element`` is not one of the candidate's elements.
+        """
         shafts = element_shafts(self.mechanism.shafts)
         brakes = [e for e in self.elements if len(shafts[e]) == 1]
         clutches = [e for e in self.elements if len(shafts[e]) == 2]
@@ -127,7 +160,28 @@ class Candidate:
 
         Lets a published transmission (e.g. from :mod:`epicyclic.transmission.library`)
         be compared with synthesised ones (:attr:`architecture_key`).  Sets
-        without tooth counts get the ratio as a fraction over 100 teeth.
+        without simple tooth counts get |i0| as a fraction with a denominator of
+        at most 100 (z_sun, z_ring).
+
+        Parameters
+        ----------
+        transmission : Transmission
+            Planetary sets, clutches and brakes only; no set member on the housing;
+            the output on a set member.
+        stationary_efficiency : float, default 0.98
+            η0 of every set for the candidate's efficiency metrics.
+
+        Returns
+        -------
+        Candidate
+            Gears ordered as a synthesis orders them: forward by falling ratio, then
+            reverse.
+
+        Raises
+        ------
+        SynthesisError
+            A transmission outside the synthesis space (a gear stage, a member tied to
+            the housing, an output that is no set member).
         """
         from fractions import Fraction
 
@@ -259,6 +313,15 @@ class Candidate:
         return "\n".join(lines) + "\n"
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: architecture, ties, input/output, named schedule, ratios, targets, teeth, metrics.
+
+        Returns
+        -------
+        dict
+            ``architecture``, ``ties``, ``input``, ``output``, ``schedule`` (gear → element
+            names), ``ratios`` and ``targets`` (gear → n_in/n_out), ``teeth`` (per set) and the
+            ranking metrics (errors, efficiencies, element torque, planet speed, double shifts).
+        """
         return {"architecture": self.describe(), "ties": self.mechanism.describe(),
                 "input": self.shaft_name(self.input), "output": self.shaft_name(self.output),
                 "schedule": {g: list(v) for g, v in self.named_schedule.items()},

@@ -90,6 +90,12 @@ class SynthesisResult:
         return "\n".join(lines)
 
     def markdown(self) -> str:
+        """The ranked candidates as a Markdown table, with the search statistics below.
+
+        Returns
+        -------
+        str
+        """
         lines = ["| " + " | ".join(self.HEADER) + " |", "|" + "---|" * len(self.HEADER)]
         lines += ["| " + " | ".join(c.replace("|", "\\|") for c in r) + " |" for r in self._rows()]
         return "\n".join(lines + ["", self._footer()])
@@ -112,6 +118,12 @@ class SynthesisResult:
                 "candidates": [{"rank": k, **c.to_dict()} for k, c in enumerate(self.top, 1)]}
 
     def to_json(self) -> str:
+        """:meth:`to_dict` as indented JSON text.
+
+        Returns
+        -------
+        str
+        """
         return json.dumps(self.to_dict(), indent=2, ensure_ascii=False)
 
     def to_csv(self) -> str:
@@ -131,7 +143,20 @@ class SynthesisResult:
         return buffer.getvalue()
 
     def write_toml(self, directory: str | Path, count: int | None = None) -> list[Path]:
-        """Write ``candidate_01.toml`` … for the top candidates (``analyze``/``gears`` read them)."""
+        """Write ``candidate_01.toml`` … for the top candidates (``analyze``/``gears`` read them).
+
+        Parameters
+        ----------
+        directory : str or Path
+            Folder to write into (made if missing; files replaced atomically).
+        count : int, optional
+            How many of the top candidates (default: all of :attr:`top`).
+
+        Returns
+        -------
+        list of Path
+            The files written, best first.
+        """
         from ..io.output import write_atomic
 
         directory = Path(directory)
@@ -139,9 +164,30 @@ class SynthesisResult:
                 for k, c in enumerate(self.top[:count], 1)]
 
     def plot(self, rank: int = 1, gear: str | None = None, kind: str = "chart") -> Any:
-        """Figure of candidate ``rank`` (default: the best): the speed chart across all gears
-        (``kind="chart"``, ``gear`` highlighted) or its lever diagram (Benford–Leising) in ``gear``
-        (``kind="lever"``; default gear: the first)."""
+        """Figure of candidate ``rank``: its speed chart across all gears or its lever diagram in one gear.
+
+        Parameters
+        ----------
+        rank : int, default 1
+            The candidate's rank (1: the best).
+        gear : str, optional
+            The gear highlighted on the chart, or drawn as a lever (default: the first).
+        kind : {"chart", "lever"}, default "chart"
+            Speed chart across the gears, or lever diagram (Benford–Leising) in ``gear``.
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+
+        Raises
+        ------
+        SynthesisError
+            A rank out of range, another kind, or an unknown gear.
+
+        References
+        ----------
+        Benford & Leising 1981 (the lever analogy).
+        """
         from .. import plotting
         from .spec import SynthesisError
 

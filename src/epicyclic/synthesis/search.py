@@ -139,7 +139,36 @@ def search_task(task: Task) -> TaskResult:
 def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str | None = None,
                     workers: int | None = None, processes: bool = True,
                     progress: Callable[[int, int], None] | None = None, chunk: int | None = None):
-    """Run a validated :class:`SynthesisSpec` on Dask and rank the candidates (see :func:`synthesize`)."""
+    """Run a validated :class:`SynthesisSpec` on Dask and rank the candidates (see :func:`synthesize`).
+
+    Candidates found by several tasks are kept once; the statistics (tasks, workers,
+    mechanisms, screened, fitted, rejected, seconds) go into the result.
+
+    Parameters
+    ----------
+    spec : SynthesisSpec
+        The validated search (:meth:`SynthesisSpec.create` or ``SynthesisSpec.from_file``).
+    client : dask.distributed.Client, optional
+        Run on this client.
+    scheduler : str, optional
+        Address of an existing Dask scheduler (``tcp://host:8786``).
+    workers : int, optional
+        Workers of the local cluster started otherwise (default: CPU count).
+    processes : bool, default True
+        Local cluster with worker processes (False: threads in this process).
+    progress : callable (done, total), optional
+        Called after each finished task.
+    chunk : int, optional
+        Mechanisms per task (default: about 8).
+
+    Returns
+    -------
+    SynthesisResult
+
+    References
+    ----------
+    Kahraman et al. 2004, J. Mech. Des. 126(6), 1071–1081.
+    """
     from .distributed import run_tasks
     from .results import SynthesisResult
 
@@ -200,6 +229,8 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
         Local cluster with worker processes (False: threads in this process).
     progress : callable (done, total), optional
         Called after each finished task.
+    chunk : int, optional
+        Mechanisms per Dask task (default: about 8, fewer for small searches).
 
     Returns
     -------

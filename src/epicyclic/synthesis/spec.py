@@ -218,6 +218,19 @@ class SynthesisSpec:
             Keys ``tolerance``, ``stationary_ratio``, ``sun``, ``planet``, ``planets``,
             ``max_members_per_shaft``, ``free_input``, ``input_members``, ``output_members``, ``levels``,
             ``stationary_efficiency``, ``top``, ``title``.
+        where : str, default "synthesize"
+            Where the values came from, for messages: the Python call, or a file (then
+            keys are named by their tables, ``[bounds], key 'sun'``).
+
+        Returns
+        -------
+        SynthesisSpec
+
+        Raises
+        ------
+        SynthesisError
+            An unknown key, a value of the wrong type or out of range, or fewer
+            combinations of shift elements than gears; the message names the key.
         """
         place = where if isinstance(where, _Place) else _Place(where)
         kw: dict[str, Any] = {}

@@ -66,6 +66,14 @@ class Combination:
     duplicates: tuple[tuple[str, ...], ...] = ()
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data of one shift state: engaged elements, ratio n_in/n_out, kind, gear, duplicates.
+
+        Returns
+        -------
+        dict
+            ``engaged``, ``ratio``, ``kind`` (reverse, direct, overdrive, reduction), ``gear``
+            (or ``None``), ``redundant`` and ``duplicates``.
+        """
         return {"engaged": list(self.engaged), "ratio": self.ratio, "kind": self.kind, "gear": self.gear,
                 "redundant": self.redundant, "duplicates": [list(d) for d in self.duplicates]}
 
@@ -127,6 +135,15 @@ class Exploration:
                 f"{self.seconds * 1e3:.1f} ms")
 
     def table(self) -> str:
+        """Every driving shift state as a plain-text table (engaged, ratio, kind, gear, same ratio as).
+
+        A footer counts the drives, distinct ratios, states tried, states that hold the
+        output and the time taken.
+
+        Returns
+        -------
+        str
+        """
         rows = [list(self.HEADER)] + self._rows()
         widths = [max(len(r[k]) for r in rows) for k in range(len(self.HEADER))]
         lines = [f"{self.name}: drives from {self.input!r} to {self.output!r}"]
@@ -138,6 +155,12 @@ class Exploration:
         return "\n".join(lines)
 
     def markdown(self) -> str:
+        """:meth:`table` as a Markdown table (cells escaped), footer below.
+
+        Returns
+        -------
+        str
+        """
         lines = ["| " + " | ".join(self.HEADER) + " |", "|" + "---|" * len(self.HEADER)]
         lines += ["| " + " | ".join(markdown_text(c) for c in r) + " |" for r in self._rows()]
         return "\n".join(lines + ["", markdown_text(self._footer())])
@@ -148,6 +171,14 @@ class Exploration:
         return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table><p>{html.escape(self._footer())}</p>"
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: the train, input, output, shift elements, states tried and every combination.
+
+        Returns
+        -------
+        dict
+            ``name``, ``input``, ``output``, ``elements``, ``states``, ``held`` and
+            ``combinations`` (:meth:`Combination.to_dict` of each).
+        """
         return {"name": self.name, "input": self.input, "output": self.output, "elements": list(self.elements),
                 "states": self.states, "held": self.held,
                 "combinations": [c.to_dict() for c in self.combinations]}

@@ -327,6 +327,15 @@ class TransmissionAnalysis:
                 f"<tbody>{body}</tbody></table><p>{html.escape(self._footer())}</p></div>")
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON-ready data: every gear's result, the steps, the spread and the mean step.
+
+        Returns
+        -------
+        dict
+            ``name``, ``input``, ``output``, ``gears`` (each gear's ``to_dict()``: ratio,
+            efficiencies in drive and coast, element torques, ...), ``steps`` (φ = i_k/i_(k+1),
+            keyed ``"k→k+1"``), ``spread`` and ``mean_step``.
+        """
         return {
             "name": self.name, "input": self.input, "output": self.output,
             "gears": [g.to_dict() for g in self.gears],

@@ -307,7 +307,34 @@ class Transmission:
 
     def analyze_all(self, *, input_speed: float | str = 1000.0, input_torque: float | str = 100.0
                     ) -> TransmissionAnalysis:
-        """:meth:`analyze` every gear (units as there); returns a :class:`TransmissionAnalysis`."""
+        """:meth:`analyze` every gear of the schedule, in schedule order.
+
+        Parameters
+        ----------
+        input_speed : float, str or pint.Quantity, default 1000
+            1/min, or with a unit (``"2000 U/min"``), as in :meth:`analyze`.
+        input_torque : float, str or pint.Quantity, default 100
+            N·m at the input in drive, or with a unit, as in :meth:`analyze`.
+
+        Returns
+        -------
+        TransmissionAnalysis
+            Every gear's result, with steps, spread and mean step.
+
+        Raises
+        ------
+        ModelError
+            A zero or non-finite speed, or a torque that is not positive.
+        UnitError
+            A unit that does not fit the quantity.
+
+        Examples
+        --------
+        >>> from epicyclic.transmission.library import build
+        >>> analysis = build("simpson_c4").analyze_all()
+        >>> [round(g.ratio, 2) for g in analysis.gears]
+        [2.46, 1.46, 1.0, -2.18]
+        """
         results = tuple(self.analyze(g, input_speed=input_speed, input_torque=input_torque) for g in self.schedule)
         return TransmissionAnalysis(self.name, self.input, self.output, results)
 
@@ -320,11 +347,24 @@ class Transmission:
     def from_file(cls, path, *, overrides: Sequence[str] = ()) -> Transmission:
         """Read a train file (TOML) with a ``[transmission]`` table.
 
-        Uses :func:`epicyclic.io.load_train_file`; ``overrides`` are its
-        ``KEY=VALUE`` overrides (the CLI's ``--set``).
+        Uses :func:`epicyclic.io.load_train_file`.
+
+        Parameters
+        ----------
+        path : str or Path
+            The TOML file (layout in ``docs/file-format.md``).
+        overrides : sequence of str, default ()
+            ``KEY=VALUE`` overrides applied before the file is read (the CLI's ``--set``).
+
+        Returns
+        -------
+        Transmission
+            Named by the file's title; its loss models come along.
 
         Raises
         ------
+        InputFileError
+            The file cannot be read or is invalid (the message names file and key).
         ShiftScheduleError
             The file has no ``[transmission]`` table.
         """
