@@ -85,7 +85,23 @@ class GivenLosses:
     def drag_loss(self, name: str, speeds: np.ndarray, points: slice = slice(None)) -> np.ndarray:
         """Power lost by the given torques of element ``name``, W: −Σ T ω (≥ 0 for opposing torques).
 
-        ``speeds`` are those of the points ``points`` (a slice of all points).
+        Parameters
+        ----------
+        name : str
+            The element whose loss torques are meant; an element without any loses nothing.
+        speeds : ndarray (shafts, points)
+            Every shaft's speed, 1/min, in the train's shaft order, at the points ``points``.
+        points : slice, default all
+            Which of the batch's points ``speeds`` holds (the batch solver works in blocks).
+
+        Returns
+        -------
+        ndarray (points,)
+            The drag loss, W, at each point.
+
+        References
+        ----------
+        ISO/TR 14179-2:2001 (no-load losses as torques that oppose the motion: P = T·ω).
         """
         torques = self.element_torques.get(name)
         if torques is None:
@@ -101,8 +117,27 @@ class GivenLosses:
     def split(self, k: int, rolling_loss: np.ndarray, points: slice = slice(None)) -> dict[str, np.ndarray]:
         """The rolling loss of lever ``k`` by source (log shares of its factors).
 
-        ``rolling_loss`` is that of the points ``points`` (a slice of all points); every slice
-        reports the same sources.
+        The factors multiply to the lever's η0, so each factor's share of ln η0 is its share of the
+        loss P_w (1 − η0^w), whatever their order.
+
+        Parameters
+        ----------
+        k : int
+            Index of the lever (set or stage) among the train's levers.
+        rolling_loss : ndarray (points,)
+            The lever's rolling loss, W, at the points ``points``.
+        points : slice, default all
+            Which of the batch's points ``rolling_loss`` holds; every slice reports the same sources.
+
+        Returns
+        -------
+        dict of str to ndarray
+            Source (``"mesh"``, ``"bearing"``, ...) → its part of the loss, W; the parts add up to
+            ``rolling_loss``.
+
+        References
+        ----------
+        Brandenberger 1952, eqs. 3' and 7 (the loss P_w (1 − η0^w)).
         """
         logs = {s: np.log(self.factors[s][k, points]) for s in self._sources[k]}
         if not logs:
@@ -122,7 +157,23 @@ def given_losses(mats: TrainMatrices, efficiencies: Mapping[str, Mapping[str, ob
                  loss_torques: Mapping[str, Mapping[str, object]] | None, points: int) -> GivenLosses | None:
     """Resolve ``efficiencies`` (element → source → η) and ``loss_torques`` (element → shaft → N·m).
 
-    Values are numbers or arrays of ``points`` values.  Returns None when nothing is given.
+    Parameters
+    ----------
+    mats : TrainMatrices
+        The train's equations (its levers and shafts).
+    efficiencies : mapping element → mapping source → float or array, or None
+        Efficiency factors by source whose product replaces a set's or stage's η0; sets and stages
+        not named keep their own η0 as the source ``"mesh"``.
+    loss_torques : mapping element → mapping shaft → float or array, or None
+        Torques (N·m) an element puts on shafts against their motion (drag), with their reactions.
+    points : int
+        Number of operating points; every value is a number or an array of ``points`` values.
+
+    Returns
+    -------
+    GivenLosses or None
+        The factors, their product per lever and point, the shafts' loss torques (in all and per
+        element); None when nothing is given.
 
     Raises
     ------
@@ -181,7 +232,20 @@ def given_losses(mats: TrainMatrices, efficiencies: Mapping[str, Mapping[str, ob
 
 
 def with_efficiencies(train: GearTrain, efficiencies: Mapping[str, float]) -> GearTrain:
-    """``train`` with the efficiencies of some sets and stages replaced (element name → η0)."""
+    """``train`` with the efficiencies of some sets and stages replaced.
+
+    Parameters
+    ----------
+    train : GearTrain
+    efficiencies : mapping element name → float
+        The new η0 of planetary sets (stationary efficiency) and gear stages; other names are ignored.
+
+    Returns
+    -------
+    GearTrain
+        A copy with the new efficiencies, or ``train`` itself where none changes (so that the
+        solver's caches, keyed by the train, are reused).
+    """
     elements = []
     for element in train.elements:
         eta = efficiencies.get(element.name)
