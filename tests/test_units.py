@@ -218,3 +218,20 @@ def test_pint_default_registry_misreadings_are_named():
     with pytest.raises(UnitError, match=r"reads 'U' as enzyme_unit; give the speed as a string \('1500 U/min'\)"):
         to_core(ureg.Quantity(1500, "U/min"), "speed")
     assert to_core(ureg.Quantity(3, "metric_horsepower"), "power") == pytest.approx(2206.49625, rel=1e-12)
+
+
+def test_a_list_of_pint_quantities_or_strings_beside_them_is_converted_one_by_one():
+    """numpy cannot make an array of pint quantities (it asks them for a dimensionless number) nor of a
+    string beside a quantity: each value is converted by its own unit, and a ragged list names its index."""
+    import pint
+
+    from epicyclic.units import to_core_array
+
+    other = pint.UnitRegistry()
+    assert to_core_array(["1000 rpm", 2000 * other("rpm")], "speed", field="speeds.sun").tolist() == [1000.0, 2000.0]
+    converted = to_core_array([1000 * other("rpm"), 2000 * other("rad/s")], "speed", field="speeds.sun")
+    assert converted.tolist() == pytest.approx([1000.0, 2000.0 * 30.0 / math.pi], rel=1e-15)
+    with pytest.raises(UnitError, match=r"speeds\.sun\[0\]: .*not a speed"):
+        to_core_array([1000 * other("N*m")], "speed", field="speeds.sun")
+    with pytest.raises(UnitError, match=r"speeds\.sun\[0\]"):
+        to_core_array([[1, 2], [3]], "speed", field="speeds.sun")

@@ -576,7 +576,10 @@ def to_core_array(values: object, quantity: str, *, field: str = "values") -> np
         factor = to_core(1.0 * values.units, quantity, field=field)  # type: ignore[attr-defined]
         values = values.magnitude  # type: ignore[attr-defined]
     try:
-        array = np.asarray(values)
+        try:
+            array = np.asarray(values)
+        except (TypeError, ValueError):  # pint quantities or strings beside numbers: one by one below
+            array = np.asarray(values, dtype=object)
         if array.dtype.kind not in "iuf":  # strings, quantities, booleans: one by one below
             array = np.asarray(values, dtype=object)
     except (TypeError, ValueError):  # ragged nesting
