@@ -122,3 +122,21 @@ def test_the_warning_names_both_states_and_stays_deferred():
     roots = [t for t, _ in closed_form(1.02, 0.95, 1000.0, 990.0, -10.0 * math.copysign(1.0, n_carrier))]
     other = [t for t in roots if t != pytest.approx(sol.torque("s"), rel=1e-9)]
     assert len(roots) == 2 and f"s {other[0]:.6g} N·m" in warning
+
+
+def test_a_reversal_exactly_at_the_locking_limit_is_no_second_state_in_solve_and_batch():
+    """Found by tests/solver/test_edges_hypothesis.py: a plus set with i0 = η0 = 0.625 in a loop with a
+    stage. Reversing the set's w gives i0/η0 = 1: c = 1 − i0·η0^−w is 0 exactly (Brandenberger 1952, text
+    to Bild 9: the self-locking limit), computed as −4.4e-16 by the Sherman–Morrison ratio. The batch
+    took that round-off as c < 0 and flagged the point ambiguous while solve did not warn; the reversed
+    pattern's equations are singular there, so no second state exists and neither may say so."""
+    from epicyclic import GearStage
+
+    train = GearTrain([PlanetarySet("P", "sun", "ring", "carrier", 0.625, 0.625),
+                       GearStage("G", "sun", "ring", 0.75, 0.75)])
+    op = OperatingPoint(speeds={"sun": 10.0}, torques={"carrier": 1.0}, drives=["sun"], loads=["carrier"])
+    solution = solve(train, op)
+    assert not any("friction state is not unique" in w for w in solution.warnings)
+    batch = solve_batch(train, speeds={"sun": np.array([10.0])}, torques={"carrier": np.array([1.0])},
+                        drives=["sun"], loads=["carrier"])
+    assert not batch.ambiguous[0]

@@ -34,6 +34,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from ..errors import EpicyclicError
+from ..results.zero import ZERO_TOLERANCE
 from .assembly import TrainMatrices
 from .evaluate import evaluate
 from .self_locking import SELF_LOCKING_MARGIN
@@ -73,12 +74,19 @@ def reversal_ratios(solver: TorqueSolver, shift: np.ndarray | None = None,
     """
     gains, deltas = _gains(solver)
     if shift is None:
-        return 1.0 + deltas * np.diag(gains)
+        return _flushed(deltas * np.diag(gains))
     levers, points = shift.shape
     m = np.eye(levers)[None] + shift.T[:, :, None] * gains[None]  # (points, levers, levers): I + D G
     own = np.linalg.solve(np.transpose(m, (0, 2, 1)), np.broadcast_to(gains.T, m.shape))  # (G M⁻¹)ᵀ
     diagonal = np.einsum("pkk->kp", own)
-    return 1.0 + (deltas[:, None] if flips is None else flips) * diagonal
+    return _flushed((deltas[:, None] if flips is None else flips) * diagonal)
+
+
+def _flushed(term: np.ndarray) -> np.ndarray:
+    """c = 1 + term, exactly 0 where it is round-off of 0: the reversed pattern is then at the
+    self-locking limit (its equations singular, its torques unbounded), which is no second state."""
+    ratio = 1.0 + term
+    return np.where(np.abs(ratio) <= ZERO_TOLERANCE * (1.0 + np.abs(term)), 0.0, ratio)
 
 
 def reversible_levers(solver: TorqueSolver) -> tuple[int, ...]:
