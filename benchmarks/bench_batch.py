@@ -19,7 +19,7 @@ import time
 import numpy as np
 
 from epicyclic import OperatingPoint, solve
-from epicyclic.demo import PS, brandenberger_1952
+from epicyclic.demo import brandenberger_1952
 from epicyclic.solver.batch import solve_batch
 
 

@@ -108,7 +108,6 @@ def check_coaxiality(geometry: SetGeometry, tolerance: float = 1e-3) -> Coaxiali
     SDP/SI D785, eqs. (13-5) z_c = z_a + 2 z_b and (13-6) a_x1 = a_x2.
     """
     meshes = {m.name: m.center_distance for m in geometry.meshes}
-    g = geometry.gears
     if geometry.kind == "double":
         a1, a12, a2 = (m.center_distance for m in geometry.meshes)
         low, high = abs(a1 - a2), a1 + a2

@@ -34,7 +34,7 @@ import numpy as np
 
 from ..errors import NonFiniteResultError
 from ..results.solution import RPM_TO_RAD_S
-from ..results.zero import ZERO_TOLERANCE, clean_array
+from ..results.zero import ZERO_TOLERANCE
 from ..model.elements import HOUSING
 from .assembly import TrainMatrices
 from .linear import span

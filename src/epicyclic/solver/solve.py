@@ -30,11 +30,10 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 from types import MappingProxyType
 
-import numpy as np
 
 from ..errors import (ContradictionError, EpicyclicError, ModelError, NearSingularError, NonFiniteResultError,
                       OperatingPointError, UnderdeterminedError)
-from ..model.elements import HOUSING, Clutch, GearStage
+from ..model.elements import HOUSING, Clutch
 from ..model.operating_point import OperatingPoint
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain

@@ -131,7 +131,6 @@ def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: n
     basis_null = np.swapaxes(vt[:, sets:, :], 1, 2)  # (P, N, d)
     kappa = _det(lmat @ basis_row) * np.linalg.det(np.concatenate([basis_row, basis_null], axis=2))
     funcs = rows @ basis_null  # (P, elements, d)
-    d = basis_null.shape[2]
     cof = _cofactors(funcs, combos)  # (P, T, d)
     det = kappa[:, None, None] * (cof @ np.swapaxes(basis_null, 1, 2))
     # round-off of an exact zero (an output that stands still) is zero, relative to the largest minor
