@@ -133,3 +133,36 @@ def test_errors(brandenberger, kwargs, message):
 def test_bad_suffix(brandenberger, tmp_path):
     with pytest.raises(PlottingError, match=r"suffix '.mp4'; expected one of .svg, .html, .gif"):
         planetary_animation(brandenberger).save(tmp_path / "a.mp4")
+
+
+def test_gif_draws_the_ring_as_an_internal_gear(simple, tmp_path):
+    """The GIF's ring is a rim with inward teeth, as in the SVG: its inside is empty (no filled disk with
+    outward teeth); the pixel between two planets at the planets' axis radius shows the background."""
+    import math
+
+    from epicyclic.plotting._svg import _ring_annulus
+
+    anim = planetary_animation(simple)
+    ring = next(s for s in anim.shapes if s.member == "ring")
+    rim, teeth = (polygon for polygon in _ring_annulus(ring).to_polygons(closed_only=True))
+    radii = [math.hypot(*xy) for xy in teeth]
+    assert max(math.hypot(*xy) for xy in rim) == pytest.approx(ring.radius + 3.5 * ring.module)
+    assert min(radii) < ring.radius < max(radii) < ring.radius + 3.5 * ring.module  # teeth inside the rim
+
+    def area(points):
+        return sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, [*points[1:], points[0]]))
+
+    assert area(rim) * area(teeth) < 0  # wound the other way: a hole under the non-zero fill rule
+    gif = anim.gif(tmp_path / "set.gif")
+    with Image.open(gif) as image:
+        frame = image.convert("RGB")
+        planets = sorted({(s.axis, s.offset) for s in anim.shapes if s.member.startswith("planet")})
+        axis, offset = planets[0]
+        between = math.radians(offset + 180.0 / len(planets))  # halfway to the next planet, frame 0
+        from epicyclic.plotting._gears import extent
+
+        R = extent(anim.shapes)
+        scale = frame.width / (2 * R)
+        x = frame.width / 2 + axis * math.cos(between) * scale
+        y = frame.width / 2 - axis * math.sin(between) * scale
+        assert min(frame.getpixel((int(x), int(y)))) > 240, "the ring's inside is filled"

@@ -39,11 +39,34 @@ def _path(points: list[tuple[float, float]]) -> str:
     return "M " + " L ".join(f"{x:.3f} {y:.3f}" for x, y in points) + " Z"
 
 
-def _ring_path(shape: GearShape) -> str:
-    outline = gear_outline(shape.teeth, shape.radius, internal=True)
+def _rim(shape: GearShape) -> list[tuple[float, float]]:
+    """The outer edge of an internal gear's rim: a circle 3.5 modules beyond the pitch circle."""
     outer = shape.radius + 3.5 * shape.module
-    circle = [(outer * math.cos(2 * math.pi * k / 96), outer * math.sin(2 * math.pi * k / 96)) for k in range(96)]
-    return _path(circle) + " " + _path(outline)
+    return [(outer * math.cos(2 * math.pi * k / 96), outer * math.sin(2 * math.pi * k / 96)) for k in range(96)]
+
+
+def _ring_path(shape: GearShape) -> str:
+    return _path(_rim(shape)) + " " + _path(gear_outline(shape.teeth, shape.radius, internal=True))
+
+
+def _ring_annulus(shape: GearShape):
+    """The internal gear as a matplotlib path: its rim (3.5 modules beyond the pitch circle) and the tooth
+    outline as a hole, wound the other way so that only the ring between them is filled."""
+    from matplotlib.path import Path as MplPath
+
+    inner = gear_outline(shape.teeth, shape.radius, internal=True)
+    outer = _rim(shape)
+    if _signed_area(inner) * _signed_area(outer) > 0:
+        inner = inner[::-1]
+    vertices = [*outer, outer[0], *inner, inner[0]]
+    codes = ([MplPath.MOVETO] + [MplPath.LINETO] * (len(outer) - 1) + [MplPath.CLOSEPOLY]
+             + [MplPath.MOVETO] + [MplPath.LINETO] * (len(inner) - 1) + [MplPath.CLOSEPOLY])
+    return MplPath(vertices, codes)
+
+
+def _signed_area(points: list[tuple[float, float]]) -> float:
+    """Twice the signed area of a closed polygon (> 0 counter-clockwise; the shoelace formula)."""
+    return sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, [*points[1:], points[0]]))
 
 
 def _rotation(anim: Any, member: str, relative_to: str | None = None) -> str:
@@ -151,7 +174,7 @@ def animation_svg(anim: Any) -> str:
 def write_gif(anim: Any, path: Path, dpi: int) -> Path:
     """Render the frames with matplotlib and write them with PillowWriter, ``anim.size`` pixels wide."""
     from matplotlib.animation import FuncAnimation, PillowWriter
-    from matplotlib.patches import Polygon
+    from matplotlib.patches import PathPatch, Polygon
     from matplotlib.transforms import Affine2D
 
     plt = pyplot()
@@ -171,10 +194,13 @@ def write_gif(anim: Any, path: Path, dpi: int) -> Path:
     for shape in anim.shapes:
         colour = COLOURS["planet2"] if shape.step else COLOURS[shape.member]
         internal = shape.member == "ring" and shape.internal
-        outline = gear_outline(shape.teeth, shape.radius, internal=internal)
         dashed = shape.step or (shape.member == "ring" and not shape.internal)
-        patch = Polygon(outline, closed=True, facecolor=colour, alpha=0.35 if internal or dashed else 0.6,
-                        edgecolor="black", lw=lw, ls="--" if dashed else "-")
+        style = {"facecolor": colour, "alpha": 0.35 if internal or dashed else 0.6, "edgecolor": "black",
+                 "lw": lw, "ls": "--" if dashed else "-"}
+        if internal:  # an internal gear: the rim, teeth pointing inwards (as the SVG draws it)
+            patch = PathPatch(_ring_annulus(shape), **style)
+        else:
+            patch = Polygon(gear_outline(shape.teeth, shape.radius), closed=True, **style)
         ax.add_patch(patch)
         mark = ax.plot([0, 0.8 * shape.radius], [0, 0], color="black", lw=1.5 * lw)[0]
         patches.append((shape, (patch, mark)))
