@@ -31,12 +31,14 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"solver", ""},                                   # model → results
     {"analysis", "losses", "transmission", "demo"},   # built on the solver: modes, loss models, gears
     {"explain", "io", "plotting", "synthesis"},       # files, reports and pictures of solutions
-    {"cli", "web"},                                   # the front ends
+    {"cli", "web", "notebook"},                       # the front ends (notebook: Jupyter previews)
     {"__main__"},
 ))
 
 #: Imports that reach up a layer, each lazy (inside the function that needs it) and why it is there.
 REACHING_UP = {
+    ("epicyclic", "epicyclic.notebook"):
+        "import epicyclic registers the Jupyter previews of descriptions in a running IPython",
     ("epicyclic.transmission.transmission", "epicyclic.io"):
         "Transmission.from_file reads a train file (the format lives in io)",
     ("epicyclic.losses.efficiency_map", "epicyclic.plotting.efficiency_map"):

@@ -116,6 +116,50 @@ def caption_lines(anim: Any, width_chars: int) -> list[str]:
     return out
 
 
+def _drawing(shapes: tuple[GearShape, ...], R: float, rotation: Any) -> list[str]:
+    """The SVG elements of the set: central gears, carrier arms, planets; ``rotation(member, relative_to)``
+    gives each member's animateTransform ("" for a still picture)."""
+    out = []
+    for shape in shapes[:2]:  # the central gears, in drawing order
+        member = shape.member
+        out.append(f'<g transform="rotate({shape.phase:.4f})"><g>{_gear(shape, COLOURS[member], R)}'
+                   f'{rotation(member)}</g></g>')
+    out.append("<g>")  # carrier
+    axes = sorted({(s.axis, s.offset) for s in shapes if s.member.startswith("planet")})
+    for axis, offset in axes:
+        x, y = axis * math.cos(math.radians(offset)), axis * math.sin(math.radians(offset))
+        out.append(f'<line x1="0" y1="0" x2="{x:.3f}" y2="{y:.3f}" stroke="{COLOURS["carrier"]}" '
+                   f'stroke-width="{STROKE["arm"] * R:.4g}" stroke-linecap="round" stroke-opacity="0.6"/>')
+    out.append(f'<circle r="{0.05 * R:.3f}" fill="{COLOURS["carrier"]}"/>')
+    for shape in shapes:
+        if not shape.member.startswith("planet"):
+            continue
+        colour = COLOURS[shape.member]
+        out.append(f'<g transform="rotate({shape.offset:.4f}) translate({shape.axis:.4f},0)">'
+                   f'<g transform="rotate({shape.phase - shape.offset:.4f})"><g>'
+                   f'{_gear(shape, colour, R)}{rotation(shape.member, "carrier")}</g></g>'
+                   f'<circle r="{0.02 * R:.3f}" fill="black"/></g>')
+    out.append(rotation("carrier"))
+    out.append("</g></g>")
+    return out
+
+
+def still_svg(shapes: tuple[GearShape, ...], label: str, px: int, lines: list[str]) -> str:
+    """A still SVG of a set's gears (no motion), ``px`` wide, with ``lines`` of text under it."""
+    R = extent(shapes)
+    size = FONT * R
+    height = 2 * R + (1.35 * len(lines) + 0.6) * size
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{-R:.3f} {-R:.3f} {2 * R:.3f} {height:.3f}" '
+           f'width="{px}" height="{px * height / (2 * R):.0f}" role="img" aria-label="{html.escape(label)}">',
+           f"<title>{html.escape(label)}</title>", '<g transform="scale(1,-1)">',
+           *_drawing(shapes, R, lambda member, relative_to=None: "")]  # closes the scale group too
+    for k, text in enumerate(lines):
+        out.append(f'<text x="{-R + size:.3f}" y="{R + 1.3 * size + 1.35 * k * size:.3f}" font-size="{size:.3f}" '
+                   f'font-family="sans-serif">{html.escape(text)}</text>')
+    out.append("</svg>")
+    return "\n".join(out)
+
+
 def animation_svg(anim: Any) -> str:
     """The animated SVG text (see module docs)."""
     R = extent(anim.shapes)
@@ -130,27 +174,7 @@ def animation_svg(anim: Any) -> str:
            f'aria-label="animation of planetary set {html.escape(anim.set_name)}">',
            f"<title>{html.escape(anim.heading or anim.set_name)}</title>",
            '<g transform="scale(1,-1)">']
-    for shape in anim.shapes[:2]:  # the central gears, in drawing order
-        member = shape.member
-        out.append(f'<g transform="rotate({shape.phase:.4f})"><g>{_gear(shape, COLOURS[member], R)}'
-                   f'{_rotation(anim, member)}</g></g>')
-    out.append("<g>")  # carrier
-    axes = sorted({(s.axis, s.offset) for s in anim.shapes if s.member.startswith("planet")})
-    for axis, offset in axes:
-        x, y = axis * math.cos(math.radians(offset)), axis * math.sin(math.radians(offset))
-        out.append(f'<line x1="0" y1="0" x2="{x:.3f}" y2="{y:.3f}" stroke="{COLOURS["carrier"]}" '
-                   f'stroke-width="{STROKE["arm"] * R:.4g}" stroke-linecap="round" stroke-opacity="0.6"/>')
-    out.append(f'<circle r="{0.05 * R:.3f}" fill="{COLOURS["carrier"]}"/>')
-    for shape in anim.shapes:
-        if not shape.member.startswith("planet"):
-            continue
-        colour = COLOURS[shape.member]
-        out.append(f'<g transform="rotate({shape.offset:.4f}) translate({shape.axis:.4f},0)">'
-                   f'<g transform="rotate({shape.phase - shape.offset:.4f})"><g>'
-                   f'{_gear(shape, colour, R)}{_rotation(anim, shape.member, "carrier")}</g></g>'
-                   f'<circle r="{0.02 * R:.3f}" fill="black"/></g>')
-    out.append(_rotation(anim, "carrier"))
-    out.append("</g></g>")
+    out += _drawing(anim.shapes, R, lambda member, relative_to=None: _rotation(anim, member, relative_to))
     y = R + 1.3 * size
     heading = len(anim.heading.split("\n")[0]) if anim.heading else 0
     for k, text in enumerate(lines):
