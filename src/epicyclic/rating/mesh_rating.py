@@ -321,6 +321,8 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("v", _out(v), "m/s", p1("6.1"), "pitch line velocity (relative to the carrier)"),
         Factor("u", u, "1", p2("eq. (2)"), "gear ratio z2/z1"),
         Factor("b", b, "mm", p2("eq. (2)"), "face width"),
+        Factor("d_1", d1, "mm", "ISO 21771:2007", "reference diameter of gear 1"),
+        Factor("m_n", m_n, "mm", "ISO 21771:2007", "normal module"),
         Factor("epsilon_alpha", s["eps_alpha"], "1", "ISO 21771:2007", "transverse contact ratio"),
         Factor("epsilon_beta", s["eps_beta"], "1", "ISO 21771:2007", "overlap ratio"),
         Factor("K_A", ka, "1", p1("6.2"), "application factor (given)"),
