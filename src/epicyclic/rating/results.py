@@ -263,7 +263,24 @@ class TrainRating:
         return all(m.ok for m in self.meshes)
 
     def mesh(self, element: str, mesh: str | None = None) -> MeshRating:
-        """The rating of ``mesh`` of ``element`` (its first mesh if ``mesh`` is None)."""
+        """The rating of ``mesh`` of ``element`` (its first mesh if ``mesh`` is None).
+
+        Parameters
+        ----------
+        element : str
+            The set or stage.
+        mesh : str, optional
+            The mesh's name (``sun-planet``, ``planet-ring``, ``mesh 1 (20/40)``).
+
+        Returns
+        -------
+        MeshRating
+
+        Raises
+        ------
+        RatingError
+            No such mesh; the message lists the rated ones.
+        """
         for m in self.meshes:
             if m.element == element and (mesh is None or m.mesh == mesh):
                 return m
