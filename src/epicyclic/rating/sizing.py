@@ -118,7 +118,7 @@ def smallest_module(solution, set_name: str, spec: RatingSpec, *, face_width: fl
     >>> spec = RatingSpec(material="18CrNiMo7-6", flank_roughness=3, root_roughness=10, viscosity_40=220)
     >>> result = smallest_module(sol, "P", spec, face_width_ratio=0.6)
     >>> result.module, [m for m, *_ in result.tried]
-    (2.25, [0.5, 0.55, 0.6, 0.7, 0.8, 0.9, 1.0, 1.125, 1.25, 1.375, 1.5, 1.75, 2.0, 2.25]
+    (2.25, [0.5, 0.55, 0.6, 0.7, 0.8, 0.9, 1.0, 1.125, 1.25, 1.375, 1.5, 1.75, 2.0, 2.25])
     """
     from .train import _set_meshes
 
