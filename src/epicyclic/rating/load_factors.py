@@ -172,7 +172,7 @@ def mesh_stiffness(c_prime: float, contact_ratio: float, line_load):
     ----------
     ISO 6336-1:2006, 9.3.1 (eq. 70, low loads) and 9.3.2 (c_γα = c'(0.75 ε_α + 0.25), c_γβ = 0.85 c_γα).
     """
-    scale = np.minimum(1.0, np.asarray(line_load, dtype=float) / 100.0)
+    scale = np.clip(np.asarray(line_load, dtype=float) / 100.0, 1e-9, 1.0)  # no zero stiffness at zero load
     c = c_prime * scale
     c_ga = c * (0.75 * contact_ratio + 0.25)
     return c, c_ga, 0.85 * c_ga
