@@ -246,7 +246,7 @@ def dynamic_factor(speed, teeth1: int, c_gamma_alpha, c_prime, reduced_mass_: fl
         m_red, kg/mm.
     line_load : float or ndarray
         K_A F_t / b, N/mm.
-    f_pb_eff, f_f_eff : float
+    f_pb_eff, f_f_eff : float or ndarray
         Effective base pitch and profile form deviations after running-in, µm.
     eps_gamma : float
         Total contact ratio ε_γ.
@@ -336,7 +336,7 @@ def transverse_load_factors(force_per_width, c_gamma_alpha, f_pb_eff: float, eps
         F_tH/b = F_t K_A K_v K_Hβ / b, N/mm.
     c_gamma_alpha : float or ndarray
         N/(mm µm).
-    f_pb_eff : float
+    f_pb_eff : float or ndarray
         f_pb − y_α, µm.
     eps_alpha, eps_gamma : float
         Transverse and total contact ratio.
