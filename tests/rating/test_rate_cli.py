@@ -12,7 +12,7 @@ from epicyclic.io.reader import InputFileError
 from epicyclic.rating import RatingError
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-RATED = str(EXAMPLES / "geometry_simple_set_rating.toml")
+RATED = str(EXAMPLES / "rating" / "simple_set.toml")
 runner = CliRunner()
 
 
