@@ -111,3 +111,18 @@ def test_internal_mesh_uses_the_difference_of_curvatures():
     r = rated(500.0, 30.0, RING)
     assert r.internal and r.gears[1]["Z_D"] == 1.0
     assert r.gears[1].factors["Y_F"].name.endswith("(rack (basic rack))")
+
+
+def test_damage_over_cases_is_miner_on_the_life_factor_curves():
+    inp = MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), spec())
+    r = rate_mesh(inp, np.array([2000.0, 3000.0]), np.array([500.0, 500.0]), hours=1000.0)
+    g = r.gears[0]
+    d_h, d_f = g.damage([400.0, 600.0])
+    expected = 0.0
+    for k, hours in enumerate((400.0, 600.0)):
+        ratio = g["sigma_H"][k] / (g["sigma_HG"][k] / g["Z_NT"][k])
+        expected += g["N_L"][k] / 1000.0 * hours / g.pitting_curve.cycles_to_failure(ratio)
+    assert 0 < d_h < math.inf and d_h == pytest.approx(expected, rel=1e-12) and 0 < d_f < math.inf
+    # the whole required life at one case: D = 1 exactly where S_H = 1 ... and D < 1 where S_H > 1
+    one = rate_mesh(inp, 3000.0, 500.0, hours=1000.0).gears[0]
+    assert (one.damage(1000.0)[0] < 1.0) == (one.S_H > 1.0)

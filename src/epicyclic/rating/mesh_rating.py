@@ -316,7 +316,8 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
             Factor("sigma_FP", _out(sigma_fg / spec.S_Fmin), "N/mm^2", p3("eq. (4)"), "permissible root stress"),
             Factor("S_F", _out(_safety(sigma_fg, sigma_f)), "1", p3("eq. (5)"), "safety factor for bending"),
         ]
-        gears.append(GearRating(name, {x.symbol: x for x in f}, spec.S_Hmin, spec.S_Fmin))
+        gears.append(GearRating(name, {x.symbol: x for x in f}, spec.S_Hmin, spec.S_Fmin, s["Z_curves"][i],
+                                s["Y_curves"][i], float(hours)))
     p1, p2 = (lambda w: clause(1, year, w)), (lambda w: clause(2, year, w))
     p3 = lambda w: clause(3, year, w)  # noqa: E731
     mesh_factors = [
