@@ -115,7 +115,7 @@ def test_internal_mesh_uses_the_difference_of_curvatures():
 
 def test_damage_over_cases_is_miner_on_the_life_factor_curves():
     inp = MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), spec())
-    r = rate_mesh(inp, np.array([2000.0, 3000.0]), np.array([500.0, 500.0]), hours=1000.0)
+    r = rate_mesh(inp, np.array([400.0, 700.0]), np.array([500.0, 500.0]), hours=1000.0)
     g = r.gears[0]
     d_h, d_f = g.damage([400.0, 600.0])
     expected = 0.0
@@ -124,5 +124,5 @@ def test_damage_over_cases_is_miner_on_the_life_factor_curves():
         expected += g["N_L"][k] / 1000.0 * hours / g.pitting_curve.cycles_to_failure(ratio)
     assert 0 < d_h < math.inf and d_h == pytest.approx(expected, rel=1e-12) and 0 < d_f < math.inf
     # the whole required life at one case: D = 1 exactly where S_H = 1 ... and D < 1 where S_H > 1
-    one = rate_mesh(inp, 3000.0, 500.0, hours=1000.0).gears[0]
+    one = rate_mesh(inp, 700.0, 500.0, hours=1000.0).gears[0]
     assert (one.damage(1000.0)[0] < 1.0) == (one.S_H > 1.0)
