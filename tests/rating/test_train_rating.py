@@ -77,3 +77,17 @@ def test_the_8hp_example_in_every_gear():
 def test_geometry_without_face_width_is_refused():
     with pytest.raises(RatingError, match="face width"):
         mesh_inputs({"P": SetGeometry.create(SET, 3.0)}, SPEC)
+
+
+def test_double_planet_set_has_three_meshes_with_one_force_and_one_velocity():
+    # lossless, unshifted: every mesh carries F_t = 2000 T_sun/(N d_sun) at one pitch line velocity
+    p = PlanetarySet.double_planet("D", sun="in", ring="r", carrier="out", z_sun=30, z_planet_sun=17,
+                                   z_planet_ring=18, z_ring=90, planets=3)
+    sol = solve(GearTrain([p, Brake("B", "out")]), OperatingPoint(speeds={"in": 1000}, torques={"in": 100},
+                                                                 drives=["in"], loads=["r"]))
+    rating = rate_solution(sol, {"D": SetGeometry.create(p, 2.0, face_width=20.0)}, SPEC)
+    assert [m.mesh for m in rating.meshes] == ["sun-planet1", "planet1-planet2", "planet2-ring"]
+    for m in rating.meshes:
+        assert m["F_t"] == pytest.approx(2000 * 100 / 3 / 60, rel=1e-9)
+        assert m["v"] == pytest.approx(math.pi * 60 * 1000 / 60000, rel=1e-9)
+    assert [g["Y_M"] for g in rating.meshes[1].gears] == [0.7, 0.7]     # both planets are idlers
