@@ -17,8 +17,8 @@ RING = MeshGeometry(GearGeometry(24, BasicRack(2.0), 0.2), GearGeometry(72, Basi
 
 
 def spec(**kw):
-    base = dict(material="18CrNiMo7-6", flank_roughness=3.0, root_roughness=10.0, viscosity_40=100.0,
-                K_Hbeta=1.2, application_factor=1.0)
+    base = {"material": "18CrNiMo7-6", "flank_roughness": 3.0, "root_roughness": 10.0, "viscosity_40": 100.0,
+            "K_Hbeta": 1.2, "application_factor": 1.0}
     base.update(kw)
     return RatingSpec(**base)
 

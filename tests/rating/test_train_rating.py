@@ -8,7 +8,13 @@ import pytest
 from epicyclic import Brake, GearStage, GearTrain, OperatingPoint, PlanetarySet, solve
 from epicyclic.geometry import BasicRack, SetGeometry, StageGeometry
 from epicyclic.io import load_train_file
-from epicyclic.rating import RatingError, RatingSpec, mesh_inputs, rate_batch, rate_solution
+from epicyclic.rating import (
+    RatingError,
+    RatingSpec,
+    mesh_inputs,
+    rate_batch,
+    rate_solution,
+)
 from epicyclic.solver.batch import solve_batch
 
 SPEC = RatingSpec(material="18CrNiMo7-6", flank_roughness=3.0, root_roughness=10.0, viscosity_40=100.0)

@@ -36,10 +36,18 @@ import math
 
 import numpy as np
 
-from .errors import RatingError, warn_validity
+from .errors import RatingError
 
-__all__ = ["single_stiffness", "mesh_stiffness", "dynamic_factor", "face_load_factors", "transverse_load_factors",
-           "deviations", "reduced_mass", "basic_rack_factor"]
+__all__ = [
+    "basic_rack_factor",
+    "deviations",
+    "dynamic_factor",
+    "face_load_factors",
+    "mesh_stiffness",
+    "reduced_mass",
+    "single_stiffness",
+    "transverse_load_factors",
+]
 
 _Q = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
 
@@ -366,23 +374,3 @@ def transverse_load_factors(force_per_width, c_gamma_alpha, f_pb_eff: float, eps
     del edition
     return k_h, k_f
 
-
-def check_line_load(line_load, clause: str = "ISO 6336-1:2006, 6.3.1") -> None:
-    """Warn where K_A F_t/b < 50 N/mm (below the range K_v method B is made for).
-
-    Parameters
-    ----------
-    line_load : float or ndarray
-        K_A F_t / b, N/mm.
-    clause : str
-        The clause the warning names.
-
-    References
-    ----------
-    ISO 6336-1:2006, 6.3.1 (method B for K_A F_t/b ≥ 50 N/mm ... the factors are
-    computed with the load as it is below).
-    """
-    low = np.asarray(line_load, dtype=float)
-    if np.any(low < 50.0):
-        warn_validity(f"line load K_A F_t/b = {float(np.min(low)):.3g} N/mm is below 50 N/mm; "
-                      "K_v, K_Hbeta and K_Halpha are computed with it as it is (uncertain at light loads).", clause)

@@ -19,9 +19,16 @@ import html
 
 import numpy as np
 
-
-__all__ = ["summary_rows", "mesh_rows", "text_report", "markdown_report", "html_section", "html_document",
-           "SUMMARY_HEAD", "FACTOR_HEAD"]
+__all__ = [
+    "FACTOR_HEAD",
+    "SUMMARY_HEAD",
+    "html_document",
+    "html_section",
+    "markdown_report",
+    "mesh_rows",
+    "summary_rows",
+    "text_report",
+]
 
 SUMMARY_HEAD = ["element", "mesh", "gear", "sigma_H [N/mm^2]", "sigma_HP [N/mm^2]", "S_H", "sigma_F [N/mm^2]",
                 "sigma_FP [N/mm^2]", "S_F", "ok"]

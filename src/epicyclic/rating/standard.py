@@ -30,7 +30,7 @@ from __future__ import annotations
 
 from .errors import RatingError
 
-__all__ = ["EDITIONS", "DEFAULT_EDITION", "edition", "clause"]
+__all__ = ["DEFAULT_EDITION", "EDITIONS", "clause", "edition"]
 
 #: The editions of ISO 6336 that can be chosen.
 EDITIONS = ("2006", "2019")
