@@ -97,3 +97,15 @@ def test_double_planet_set_has_three_meshes_with_one_force_and_one_velocity():
         assert m["F_t"] == pytest.approx(2000 * 100 / 3 / 60, rel=1e-9)
         assert m["v"] == pytest.approx(math.pi * 60 * 1000 / 60000, rel=1e-9)
     assert [g["Y_M"] for g in rating.meshes[1].gears] == [0.7, 0.7]     # both planets are idlers
+
+
+def test_internal_stage_mesh_and_a_ring_that_drives():
+    # a ring (driving, 60 teeth) drives a pinion (20): gear 1 of the mesh is the pinion, its torque 1/3
+    stage = GearStage.from_teeth("G", "in", "out", [(60, 20, "internal")])
+    point = OperatingPoint(speeds={"in": 600}, torques={"in": 300}, drives=["in"], loads=["out"])
+    rating = rate_solution(solve(GearTrain([stage]), point),
+                           {"G": StageGeometry(stage, BasicRack(2.0), face_width=25.0)}, SPEC)
+    (mesh,) = rating.meshes
+    assert mesh.internal and [g.gear for g in mesh.gears] == ["driven", "driving"]
+    assert mesh["F_t"] == pytest.approx(2000 * 300 / 120)                   # at the ring's pitch circle
+    assert mesh["v"] == pytest.approx(math.pi * 120 * 600 / 60000)
