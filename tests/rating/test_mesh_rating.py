@@ -155,3 +155,20 @@ def test_stresses_and_safeties_are_the_products_of_their_factors(mesh):
                    * q["Y_M"])
         assert q["S_F"] == pytest.approx(limit_f / q["sigma_F"], rel=1e-12)
         assert q["sigma_FP"] == pytest.approx(limit_f / g.S_Fmin, rel=1e-12)
+
+
+@pytest.mark.parametrize("internal", [False, True])
+def test_nominal_contact_stress_is_hertz_at_the_pitch_point(internal):
+    # Hertz, two cylinders of radii ρ1, ρ2 (ρ2 concave for a ring): p = √(F_n E* / (π b R)),
+    # 1/R = 1/ρ1 ± 1/ρ2, ρ = r sin α_t, F_n = F_t / cos α_t, 1/E* = Σ (1 − ν²)/E (Johnson, Contact Mechanics, 4.2)
+    rack = BasicRack(3.0)
+    mesh = (MeshGeometry(GearGeometry(25, rack), GearGeometry(75, rack, internal=True)) if internal
+            else MeshGeometry(GearGeometry(25, rack), GearGeometry(50, rack)))
+    r = rated(400.0, 30.0, mesh)
+    alpha = math.radians(20)
+    rho1, rho2 = (g.reference_diameter / 2 * math.sin(alpha) for g in (mesh.gear1, mesh.gear2))
+    inv_r = 1 / rho1 - 1 / rho2 if internal else 1 / rho1 + 1 / rho2
+    e_star = 1 / (2 * (1 - 0.3 ** 2) / 206000.0)
+    f_n = 2000 * 400.0 / mesh.gear1.reference_diameter / math.cos(alpha)
+    hertz = math.sqrt(f_n * e_star * inv_r / (math.pi * 30.0))
+    assert r["sigma_H0"] / r["Z_epsilon"] == pytest.approx(hertz, rel=1e-12)
