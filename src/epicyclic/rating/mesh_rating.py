@@ -190,7 +190,8 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["Y_beta"] = root.helix_factor(beta, eps_b, year)
     eps_an = eps_a / math.cos(beta_b) ** 2
     s["Y_DT"] = root.deep_tooth_factor(eps_an, spec.accuracy_grade)
-    s["Y_B"] = 1.0
+    s["Y_B"] = [root.rim_factor(spec.rim_of(inp.element, name), abs(g.root_diameter - g.tip_diameter) / 2,
+                                rack.module, g.internal) for name, g in zip(inp.gears, (g1, g2))]
     s["Y_delta"] = [root.relative_notch_sensitivity(f.q_s, m.treatment, m.yield_strength) for f, m in zip(forms, mats)]
     s["Y_R"] = [root.relative_surface_factor(rz_root, m.treatment) for m in mats]
     s["Y_X"] = [root.size_factor(rack.module, m.treatment) for m in mats]
@@ -283,7 +284,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         sigma_h = z_bd * sigma_h0 * np.sqrt(load_h)
         sigma_hg = mat.sigma_Hlim * z_nt * s["Z_L"] * z_v * s["Z_R"] * s["Z_W"] * 1.0
         form = s["forms"][i]
-        sigma_f0 = f_t / (b * m_n) * form.Y_F * form.Y_S * s["Y_beta"] * s["Y_B"] * s["Y_DT"]
+        sigma_f0 = f_t / (b * m_n) * form.Y_F * form.Y_S * s["Y_beta"] * s["Y_B"][i] * s["Y_DT"]
         sigma_f = sigma_f0 * ka * kg * k_v * k_fb * k_fa
         sigma_fg = (mat.sigma_Flim * root.Y_ST * y_nt * s["Y_delta"][i] * s["Y_R"][i] * s["Y_X"][i]
                     * s["Y_M"][i])
@@ -300,6 +301,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
             Factor("Y_F", form.Y_F, "1", p3("6.2" if not mesh.gear2.internal or i == 0 else "6.3"),
                    f"tooth form factor ({form.method})"),
             Factor("Y_S", form.Y_S, "1", p3("7.2, eq. (41)"), "stress correction factor"),
+            Factor("Y_B", s["Y_B"][i], "1", p3("7.4"), "rim thickness factor"),
             Factor("s_Fn", form.s_Fn, "mm", p3("eq. (12)"), "tooth root chord at the critical section"),
             Factor("h_Fe", form.h_Fe, "mm", p3("eq. (20)"), "bending moment arm"),
             Factor("rho_F", form.rho_F, "mm", p3("eq. (13)"), "root fillet radius at the critical section"),
@@ -355,7 +357,6 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("Z_W", s["Z_W"], "1", p2("12"), "work hardening factor"),
         Factor("Z_X", 1.0, "1", p2("13"), "size factor (pitting)"),
         Factor("Y_beta", s["Y_beta"], "1", p3("7.3"), "helix angle factor (root)"),
-        Factor("Y_B", s["Y_B"], "1", p3("7.4"), "rim thickness factor (solid gears)"),
         Factor("Y_DT", s["Y_DT"], "1", p3("7.5"), "deep tooth factor"),
     ]
     method_c = (f"K_Hbeta by method C from F_betax = 1.33 f_sh + f_Hbeta "
