@@ -60,12 +60,17 @@ def _running_in_alpha(m: Material, deviation: float, velocity):
     return np.where(v > 10.0, min(y, 6400.0 / m.sigma_Hlim), np.where(v > 5.0, min(y, 12800.0 / m.sigma_Hlim), y))
 
 
-def _running_in_beta(m: Material, f_beta):
+def _running_in_beta(m: Material, f_beta, velocity):
+    """y_β by material, with the limits of the pitch line velocity (ISO 6336-1, 7.6.3)."""
+    v = np.asarray(velocity, dtype=float)
     if m.surface_hardened:
         return np.minimum(0.15 * f_beta, 6.0)
     if m.treatment in ("GG", "GGG(ferr)"):
-        return np.minimum(0.55 * f_beta, 45.0)
-    return np.minimum(320.0 / m.sigma_Hlim * f_beta, 25600.0 / m.sigma_Hlim)
+        y = 0.55 * f_beta
+        return np.where(v > 10.0, np.minimum(y, 22.0), np.where(v > 5.0, np.minimum(y, 45.0), y))
+    y = 320.0 / m.sigma_Hlim * f_beta
+    return np.where(v > 10.0, np.minimum(y, 12800.0 / m.sigma_Hlim),
+                    np.where(v > 5.0, np.minimum(y, 25600.0 / m.sigma_Hlim), y))
 
 
 @dataclass(frozen=True)
@@ -264,7 +269,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     f_m = line * k_v
     f_bx = np.maximum.reduce([np.full(f_m.shape, 1.33 * spec.shaft_deflection + s["f_Hbeta"]), 0.005 * f_m,
                               np.full(f_m.shape, 0.5 * s["f_Hbeta"])])
-    y_b = 0.5 * (_running_in_beta(mats[0], f_bx) + _running_in_beta(mats[1], f_bx))
+    y_b = 0.5 * (_running_in_beta(mats[0], f_bx, v) + _running_in_beta(mats[1], f_bx, v))
     k_hb, k_fb = load_factors.face_load_factors(spec.K_Hbeta, f_m, c_gb, f_bx, y_b, b, s["tooth_height"])
     k_ha, k_fa = load_factors.transverse_load_factors(f_m * k_hb, c_ga, f_pb_eff, s["eps_alpha"],
                                                        s["eps_gamma"], s["Z_eps"], year)
