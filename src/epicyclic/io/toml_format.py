@@ -60,7 +60,7 @@ from .source import InputFileError, parse_toml, read_source
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant"}
+             "operating_point", "transmission", "lubricant", "rating"}
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
                    "mesh_efficiencies", "planets", "geometry", "losses"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
@@ -153,6 +153,8 @@ class TrainFile:
         The elements' ``geometry`` tables (see ``docs/file-format.md``).
     losses : mapping element → ElementLosses
         The elements' ``losses`` tables (mesh friction, planet bearings, drag).
+    rating : RatingSpec or None
+        The ``[rating]`` table (ISO 6336 inputs, :mod:`epicyclic.io.rating_format`), None without one.
     """
 
     source: str
@@ -165,6 +167,7 @@ class TrainFile:
     gear: str | None = None
     geometry: Mapping[str, Any] = field(default_factory=dict)
     losses: Mapping[str, Any] = field(default_factory=dict)
+    rating: Any = None
 
     @property
     def operating_train(self) -> GearTrain:
@@ -362,8 +365,14 @@ class _Reader(TableReader):
         if "operating_point" in data:
             op, gear = self.read_operating_point(
                 self.table(data["operating_point"], "[operating_point]"), train, transmission)
+        rating = None
+        if "rating" in data:  # the rating package is imported only for a file that has the table
+            from .rating_format import read_rating
+
+            lubricant_table = data.get("lubricant") if isinstance(data.get("lubricant"), dict) else None
+            rating = read_rating(self, data["rating"], lubricant_table)
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
-                         MappingProxyType(geometry), MappingProxyType(losses))
+                         MappingProxyType(geometry), MappingProxyType(losses), rating)
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")
