@@ -29,7 +29,7 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"model"},                                        # the description: elements, train, operating point
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results
-    {"analysis", "losses", "transmission", "demo"},   # built on the solver: modes, loss models, gears
+    {"analysis", "losses", "rating", "transmission", "demo"},  # built on the solver: modes, losses, rating, gears
     {"explain", "io", "plotting", "synthesis"},       # files, reports and pictures of solutions
     {"cli", "web"},                                   # the front ends
     {"__main__"},
