@@ -392,6 +392,10 @@ class BearingRating:
         X and Y of P = X F_r + Y F_a.
     exponent : float, optional
         p; default by type (3 ball, 10/3 roller).
+    external_load : float, default 0
+        A constant radial load added to the load from the tooth forces (weight, an
+        unbalanced pull, a belt), N; for central bearings, whose gear load is zero with
+        equally spaced planets.
 
     Examples
     --------
@@ -410,6 +414,7 @@ class BearingRating:
     radial_factor: float = 1.0
     axial_factor: float = 0.0
     exponent: float | None = None
+    external_load: float = 0.0
 
     def __post_init__(self) -> None:
         if self.type not in BEARING_KINDS:
@@ -424,7 +429,7 @@ class BearingRating:
         if e is not None and (isinstance(e, bool) or not isinstance(e, (int, float)) or not 0 <= e <= 1):
             raise BearingLifeError(f"bearing: contamination e_C must lie in [0, 1] (ISO 281 Table 13), got {e!r}.")
         reliability_factor(self.reliability)
-        for name in ("radial_factor", "axial_factor"):
+        for name in ("radial_factor", "axial_factor", "external_load"):
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v < 0:
                 raise BearingLifeError(f"bearing: {name} must be a number >= 0, got {v!r}.")
@@ -503,4 +508,5 @@ class BearingRating:
                 "d_m": None if self.pitch_diameter is None else {"value": self.pitch_diameter, "unit": "mm"},
                 "nu": None if self.viscosity is None else {"value": self.viscosity, "unit": "mm^2/s"},
                 "e_C": self.contamination, "reliability": {"value": self.reliability, "unit": "%"},
-                "X": self.radial_factor, "Y": self.axial_factor}
+                "X": self.radial_factor, "Y": self.axial_factor,
+                "external_load": {"value": self.external_load, "unit": "N"}}
