@@ -1,9 +1,49 @@
-"""Load capacity: tooth rating (ISO 6336), bearing life (ISO 281) and duty cycles."""
+"""Tooth load capacity of every mesh: ISO 6336 Method B, editions 2006 and 2019.
+
+Public API (stable):
+
+* :mod:`~epicyclic.rating.life_factors` — Z_NT, Y_NT S–N curves by material treatment
+  (:class:`SNCurve`, :func:`pitting_curve`, :func:`bending_curve`, :func:`pitting_life_factor`,
+  :func:`bending_life_factor`) and the Palmgren–Miner sums :func:`pitting_damage`,
+  :func:`bending_damage`;
+* result objects :class:`Factor`, :class:`GearRating`, :class:`MeshRating`, :class:`TrainRating`
+  (:mod:`~epicyclic.rating.results`);
+* :mod:`~epicyclic.rating.standard` — the edition (``"2006"`` / ``"2019"``);
+* bearing life per ISO 281:2007 (:mod:`~epicyclic.rating.bearing_life`: :class:`BearingRating`) and
+  duty cycles (:mod:`~epicyclic.rating.duty_cycle`: :class:`DutyCycle` of :class:`LoadCase` s;
+  :func:`analyse_duty_cycle` → :class:`DutyCycleResult`).
+
+References
+----------
+ISO 6336-1, -2, -3, -5 (2006 and 2019 editions; part 5: 2016); ISO 6336-6:2019 (damage sums);
+ISO 281:2007 (bearing rating life).
+"""
 
 from .bearing_life import BearingLifeError, BearingRating
 from .duty_analysis import analyse_duty_cycle
 from .duty_cycle import DutyCycle, DutyCycleError, LoadCase
 from .duty_result import BearingLife, DutyCycleResult
+from .errors import RatingError, RatingWarning
+from .life_factors import (
+    TREATMENTS,
+    SNCurve,
+    bending_curve,
+    bending_damage,
+    bending_life_factor,
+    miner_damage,
+    pitting_curve,
+    pitting_damage,
+    pitting_life_factor,
+)
+from .results import Factor, GearRating, MeshRating, TrainRating
+from .standard import DEFAULT_EDITION, EDITIONS, edition
 
-__all__ = ["BearingLifeError", "BearingRating", "BearingLife", "DutyCycle", "DutyCycleError", "DutyCycleResult",
-           "LoadCase", "analyse_duty_cycle"]
+__all__ = [
+    "RatingError", "RatingWarning",
+    "TREATMENTS", "SNCurve", "bending_curve", "bending_damage", "bending_life_factor", "miner_damage",
+    "pitting_curve", "pitting_damage", "pitting_life_factor",
+    "Factor", "GearRating", "MeshRating", "TrainRating",
+    "DEFAULT_EDITION", "EDITIONS", "edition",
+    "BearingLifeError", "BearingRating", "BearingLife", "DutyCycle", "DutyCycleError", "DutyCycleResult",
+    "LoadCase", "analyse_duty_cycle",
+]

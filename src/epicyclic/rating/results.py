@@ -1,0 +1,252 @@
+"""Result objects of a tooth load capacity rating: factors, gears, meshes, a train.
+
+* :class:`Factor` — one ISO 6336 quantity: symbol, value (a number, or one per load
+  case), unit, the clause it comes from;
+* :class:`GearRating` — one gear of a mesh: flank (σ_H, σ_HP, S_H) and root (σ_F,
+  σ_FP, S_F) with their factors and the load cycles N_L;
+* :class:`MeshRating` — one mesh: the load factors and the two gears, the lowest
+  safeties, whether they meet S_Hmin / S_Fmin;
+* :class:`TrainRating` — every mesh of every rated element of a train at one
+  operating point (or over load cases).
+
+Each renders itself (``table()``, ``to_dict()``, ``_repr_html_``); ``to_dict`` keys
+are the ISO symbols (``S_H``, ``sigma_HP``, ``K_Hbeta``, ``Y_F`` ...) each as
+``{"value", "unit", "clause"}``, never NaN or infinity (an unbounded safety is
+``None`` with a note).
+
+References
+----------
+ISO 6336-1:2019, clause 4 (symbols and units); ISO 6336-2:2019; ISO 6336-3:2019.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+
+__all__ = ["Factor", "GearRating", "MeshRating", "TrainRating", "json_value"]
+
+
+def json_value(value):
+    """A number or array as JSON data: floats, lists of floats, ``None`` for NaN/±inf.
+
+    Parameters
+    ----------
+    value : float, int, bool, str or numpy.ndarray
+        The value to convert.
+
+    Returns
+    -------
+    float, list, str, bool or None
+
+    References
+    ----------
+    RFC 8259, section 6 (JSON numbers have no NaN or infinity).
+
+    Examples
+    --------
+    >>> json_value(float("inf")), json_value(np.array([1.0, 2.0]))
+    (None, [1.0, 2.0])
+    """
+    if isinstance(value, (bool, str)) or value is None:
+        return value
+    array = np.asarray(value, dtype=float)
+    if array.ndim == 0:
+        number = float(array)
+        return number if math.isfinite(number) else None
+    return [json_value(v) for v in array]
+
+
+@dataclass(frozen=True)
+class Factor:
+    """One quantity of the rating with its unit and source.
+
+    Parameters
+    ----------
+    symbol : str
+        ISO symbol in ASCII (``K_v``, ``Z_H``, ``sigma_H``, ``S_F``).
+    value : float or numpy.ndarray
+        The value, or one per load case.
+    unit : str
+        ``"1"`` for a factor, ``"N/mm^2"``, ``"mm"``, ``"N"``, ``"m/s"``, ...
+    clause : str
+        Where the standard defines it, e.g. ``"ISO 6336-2:2019, 6.1"``.
+    name : str
+        What it is in words.
+
+    References
+    ----------
+    ISO 6336-1:2019, clause 4.
+    """
+
+    symbol: str
+    value: Any
+    unit: str = "1"
+    clause: str = ""
+    name: str = ""
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"value", "unit", "clause", "name"}`` (JSON-safe)."""
+        return {"value": json_value(self.value), "unit": self.unit, "clause": self.clause, "name": self.name}
+
+
+def _factors(factors: Mapping[str, Factor]) -> Mapping[str, Factor]:
+    return MappingProxyType(dict(factors))
+
+
+@dataclass(frozen=True)
+class GearRating:
+    """Flank and root of one gear of a mesh.
+
+    Attributes
+    ----------
+    gear : str
+        The gear's name in its set or stage (``sun``, ``planet``, ``ring``, ``gear 1``).
+    factors : mapping symbol → Factor
+        Y_F, Y_S, Y_β, ..., sigma_F0, sigma_F, sigma_FP, S_F, Z_NT, sigma_H, sigma_HP, S_H, N_L ...
+    S_Hmin, S_Fmin : float
+        The minimum safeties it is checked against.
+    """
+
+    gear: str
+    factors: Mapping[str, Factor]
+    S_Hmin: float
+    S_Fmin: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "factors", _factors(self.factors))
+
+    def __getitem__(self, symbol: str):
+        return self.factors[symbol].value
+
+    @property
+    def S_H(self):
+        """Safety against pitting of the flank (number or one per case)."""
+        return self.factors["S_H"].value
+
+    @property
+    def S_F(self):
+        """Safety against tooth-root breakage (number or one per case)."""
+        return self.factors["S_F"].value
+
+    @property
+    def ok(self) -> bool:
+        """Whether S_H ≥ S_Hmin and S_F ≥ S_Fmin (in every case)."""
+        return bool(np.all(np.asarray(self.S_H) >= self.S_Hmin) and np.all(np.asarray(self.S_F) >= self.S_Fmin))
+
+    def to_dict(self) -> dict[str, Any]:
+        """Each factor by its symbol, ``S_Hmin``, ``S_Fmin`` and ``ok``."""
+        out: dict[str, Any] = {s: f.to_dict() for s, f in self.factors.items()}
+        out.update(S_Hmin=self.S_Hmin, S_Fmin=self.S_Fmin, ok=self.ok)
+        return out
+
+
+@dataclass(frozen=True)
+class MeshRating:
+    """The rating of one mesh: load factors, both gears, the lowest safeties.
+
+    Attributes
+    ----------
+    element : str
+        The set or stage the mesh belongs to.
+    mesh : str
+        The mesh's name (``sun-planet``, ``planet-ring``, ``mesh 1 (20/40)``).
+    standard : str
+        ``"ISO 6336:2006"`` or ``"ISO 6336:2019"``.
+    method : str
+        ``"B"`` (factors by method B; K_Hβ by method C or given, stated in its factor).
+    factors : mapping symbol → Factor
+        The mesh's own factors and data: F_t, v, u, K_A, K_gamma, K_v, K_Hbeta, K_Fbeta,
+        K_Halpha, K_Falpha, Z_H, Z_E, Z_epsilon, Z_beta, sigma_H0, Z_L, Z_v, Z_R ...
+    gears : tuple of GearRating
+        Gear 1 (the external pinion or planet) and gear 2.
+    internal : bool
+        Gear 2 is internal (a ring).
+    notes : tuple of str
+        What the rating assumed (defaults taken, clamps applied).
+    """
+
+    element: str
+    mesh: str
+    standard: str
+    method: str
+    factors: Mapping[str, Factor]
+    gears: tuple[GearRating, GearRating]
+    internal: bool = False
+    notes: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "factors", _factors(self.factors))
+
+    def __getitem__(self, symbol: str):
+        return self.factors[symbol].value
+
+    @property
+    def S_H(self):
+        """Lowest pitting safety of the two gears (number or one per case)."""
+        return np.minimum(self.gears[0].S_H, self.gears[1].S_H)
+
+    @property
+    def S_F(self):
+        """Lowest root safety of the two gears (number or one per case)."""
+        return np.minimum(self.gears[0].S_F, self.gears[1].S_F)
+
+    @property
+    def ok(self) -> bool:
+        """Whether both gears meet their minimum safeties."""
+        return all(g.ok for g in self.gears)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON data: element, mesh, standard, method, factors by ISO symbol, gears, ok, notes."""
+        return {"element": self.element, "mesh": self.mesh, "standard": self.standard, "method": self.method,
+                "internal": self.internal, "factors": {s: f.to_dict() for s, f in self.factors.items()},
+                "gears": {g.gear: g.to_dict() for g in self.gears},
+                "S_H": json_value(self.S_H), "S_F": json_value(self.S_F), "ok": self.ok, "notes": list(self.notes)}
+
+
+@dataclass(frozen=True)
+class TrainRating:
+    """Every rated mesh of a train at one operating point (or over load cases).
+
+    Attributes
+    ----------
+    meshes : tuple of MeshRating
+    gear : str or None
+        The transmission gear it was rated in.
+    standard : str
+    life_hours : float
+        The required life the life factors are for, h.
+    skipped : mapping element → reason
+        Elements with geometry that could not be rated (and why).
+    """
+
+    meshes: tuple[MeshRating, ...]
+    gear: str | None = None
+    standard: str = ""
+    life_hours: float = 0.0
+    skipped: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}))
+
+    @property
+    def ok(self) -> bool:
+        """Whether every mesh meets its minimum safeties."""
+        return all(m.ok for m in self.meshes)
+
+    def mesh(self, element: str, mesh: str | None = None) -> MeshRating:
+        """The rating of ``mesh`` of ``element`` (its first mesh if ``mesh`` is None)."""
+        for m in self.meshes:
+            if m.element == element and (mesh is None or m.mesh == mesh):
+                return m
+        known = ", ".join(f"{m.element}: {m.mesh}" for m in self.meshes)
+        from .errors import RatingError
+
+        raise RatingError(f"rating: no mesh {mesh!r} of {element!r}; rated meshes are {known or 'none'}.")
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON data: standard, gear, life, ok and one entry per mesh."""
+        return {"standard": self.standard, "method": "B", "gear": self.gear, "life_hours": self.life_hours,
+                "ok": self.ok, "meshes": [m.to_dict() for m in self.meshes], "skipped": dict(self.skipped)}
