@@ -68,6 +68,10 @@ from . import synthesize as _synthesize  # noqa: E402
 
 app.command("synthesize")(_synthesize.synthesize)
 
+from . import duty as _duty  # noqa: E402
+
+app.command("duty")(_duty.duty)
+
 from . import serve as _serve  # noqa: E402
 
 app.command("serve")(_serve.serve)
