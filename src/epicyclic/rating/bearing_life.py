@@ -254,11 +254,13 @@ def life_modification_factor(viscosity_ratio: object, load_ratio: object, kind: 
         b = np.where(band, b_ball if kind == "ball" else b_roller, b)
         c = np.where(band, exponent, c)
         lower = upper
+    # the lubrication term vanishes at kappa = 0.1 (a_ISO = 0.1); the constants' rounding makes it -7e-5
+    # there for roller bearings, so it is taken as >= 0
     if kind == "ball":
-        bracket = 1.0 - (2.5671 - b / kappa ** c) ** 0.83 * ratio ** (1.0 / 3.0)
+        bracket = 1.0 - np.maximum(2.5671 - b / kappa ** c, 0.0) ** 0.83 * ratio ** (1.0 / 3.0)
         power = -9.3
     else:
-        bracket = 1.0 - (1.5859 - b / kappa ** c) * ratio ** 0.4
+        bracket = 1.0 - np.maximum(1.5859 - b / kappa ** c, 0.0) * ratio ** 0.4
         power = -9.185
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         value = np.where(bracket > 0, 0.1 * np.where(bracket > 0, bracket, 1.0) ** power, A_ISO_LIMIT)
