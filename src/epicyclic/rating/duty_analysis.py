@@ -42,6 +42,7 @@ from ..losses.solve import solve_batch_with_losses
 from ..model.train import GearTrain
 from ..transmission.errors import UnknownGearError
 from .bearing_life import BearingRating
+from .bearing_loads import set_loads, unit_forces
 from .duty_cycle import DutyCycle, DutyCycleError
 from .duty_result import BearingLife, CaseEnergy, DutyCycleResult
 
@@ -129,7 +130,7 @@ def _planet_speed(geometry: SetGeometry, body_gear: str, n_sun, n_carrier):
     pset = geometry.planetary_set
     k = pset.teeth.planet_factors  # type: ignore[union-attr]
     factor = k[geometry.planet_gear_names.index(body_gear)] if pset.teeth.kind == "double" else k[0]  # type: ignore[union-attr]
-    return abs(factor * (n_sun - n_carrier))
+    return np.abs(factor * (n_sun - n_carrier))
 
 
 def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
@@ -224,50 +225,92 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
     return DutyCycleResult(duty, energy, lives, per_hour=per_hour, title=title or train.name)
 
 
+def _shared_sets(train_g, present, geometry) -> set[str]:
+    """The sets of ``present`` that share a planet body with another (a geometric property: one check)."""
+    view = _CaseSolution(train_g, {s: _Element("planetary set", {"sun": 1.0, "ring": 1.0, "carrier": 0.0})
+                                   for s in present})
+    forces = share_planets({s: planetary_forces(view, s, geometry[s]) for s in present},
+                           {s: geometry[s] for s in present})
+    return {s for s in present if any(b.shared_with for b in forces[s].bodies)}
+
+
+def _case_by_case(train_g, batch, members, shared, geometry):
+    """Bodies' (gear, index, force, axial, shared_with) and central forces of the sets that share planets,
+    one :func:`planetary_forces` per case (their loads are not of the separable form of bearing_loads)."""
+    out: dict[str, list] = {s: [] for s in shared}
+    for j in range(len(members)):
+        view = _CaseSolution(train_g, {s: _Element("planetary set", {
+            p: float(batch.port_torques[(s, p)].reshape(-1)[j]) for p in ("sun", "ring", "carrier")}) for s in shared})
+        forces = share_planets({s: planetary_forces(view, s, geometry[s]) for s in shared},
+                               {s: geometry[s] for s in shared})
+        for s in shared:
+            out[s].append(forces[s])
+    return out
+
+
 def _bearing_lives(duty, solved, where, geometry, bearings) -> tuple[BearingLife, ...]:
     count = len(duty)
     sets = [name for name in geometry if isinstance(geometry[name], SetGeometry)]
-    loads: dict[tuple[str, str], np.ndarray] = {}
+    radial: dict[tuple[str, str], np.ndarray] = {}
     axial: dict[tuple[str, str], np.ndarray] = {}
     speeds: dict[tuple[str, str], np.ndarray] = {}
-    claimed: dict[tuple, tuple[str, str]] = {}
-    order: list[tuple[str, str, str, str]] = []  # (set, position label, role, body gear)
-    for k, (key, j) in enumerate(where):
+    order: list[tuple[str, str, str]] = []  # (set, position label, role)
+    claimed: dict[tuple, str] = {}
+
+    def slot(s: str, label: str, role: str) -> tuple[str, str]:
+        key = (s, label)
+        if key not in radial:
+            radial[key], axial[key], speeds[key] = np.zeros(count), np.zeros(count), np.zeros(count)
+            order.append((s, label, role))
+        return key
+
+    units: dict[str, dict] = {}  # the unit-torque forces of each set: geometry only, the same in every gear
+    sharing: dict[frozenset, set[str]] = {}
+    members: dict[tuple, list[int]] = {}
+    for k, (key, _) in enumerate(where):
+        members.setdefault(key, []).append(k)
+    for key, cases in members.items():
         train_g, batch = solved[key]
         names = {e.name for e in train_g.elements}
         present = [s for s in sets if s in names]
-        view = _CaseSolution(train_g, {s: _Element("planetary set", {
-            p: float(batch.port_torques[(s, p)].reshape(-1)[j]) for p in ("sun", "ring", "carrier")}) for s in present})
-        forces = {s: planetary_forces(view, s, geometry[s]) for s in present}
-        forces = share_planets(forces, {s: geometry[s] for s in present})
-        n = {shaft: float(v.reshape(-1)[j]) for shaft, v in batch.speeds.items()}
+        if frozenset(present) not in sharing:
+            sharing[frozenset(present)] = _shared_sets(train_g, present, geometry) if len(present) > 1 else set()
+        shared = sharing[frozenset(present)]
+        by_case = _case_by_case(train_g, batch, cases, shared, geometry) if shared else {}
+        idx = np.array(cases)
+        n = {shaft: np.asarray(v).reshape(-1) for shaft, v in batch.speeds.items()}
         for s in present:
             ratings = bearings.get(s, {})
+            if not ratings:
+                continue
             pset = geometry[s].planetary_set
+            if s in by_case:
+                forces = by_case[s]
+                bodies = [(b.gear, b.index, b.shared_with) for b in forces[0].bodies]
+                force = np.array([[f.bodies[b].bearing_force for f in forces] for b in range(len(bodies))])
+                thrust = np.array([[f.bodies[b].bearing_axial for f in forces] for b in range(len(bodies))])
+                central = {r: np.array([f.central_forces[r] for f in forces]) for r in CENTRAL_ROLES}
+            else:
+                if s not in units:
+                    units[s] = unit_forces(train_g, s, geometry[s])
+                loads = set_loads(train_g, s, geometry[s], batch.port_torques[(s, "sun")].reshape(-1),
+                                  batch.port_torques[(s, "ring")].reshape(-1), units=units[s])
+                bodies = [(g, i, ()) for g, i in zip(loads.gears, loads.indices)]
+                force, thrust, central = loads.bearing, loads.axial, loads.central
             if "planet" in ratings:
-                for body in forces[s].bodies:
-                    body_key = (tuple(sorted({s, *body.shared_with})), body.index, body.gear if not body.shared_with
-                                else "")
-                    owner = claimed.setdefault(body_key, (s, body.gear))
-                    if owner[0] != s:
+                for b, (gear, index, shared_with) in enumerate(bodies):
+                    owner = claimed.setdefault((tuple(sorted({s, *shared_with})), index, "" if shared_with else gear), s)
+                    if owner != s:
                         continue  # a shared planet's bearing is rated once, by the first set with a rating
-                    label = f"planet {body.index + 1}" + (f" ({body.gear})" if pset.teeth.kind == "double" else "")
-                    slot = (s, label)
-                    if slot not in loads:
-                        loads[slot], axial[slot], speeds[slot] = np.zeros(count), np.zeros(count), np.zeros(count)
-                        order.append((s, label, "planet", body.gear))
-                    loads[slot][k] = body.bearing_load
-                    axial[slot][k] = body.bearing_axial
-                    speeds[slot][k] = _planet_speed(geometry[s], body.gear, n[pset.sun], n[pset.carrier])
+                    label = f"planet {index + 1}" + (f" ({gear})" if pset.teeth.kind == "double" else "")
+                    at = slot(s, label, "planet")
+                    radial[at][idx] = np.hypot(force[b][:, 0], force[b][:, 1])
+                    axial[at][idx] = thrust[b]
+                    speeds[at][idx] = _planet_speed(geometry[s], gear, n[pset.sun], n[pset.carrier])
             for role in CENTRAL_ROLES:
-                if role not in ratings:
-                    continue
-                slot = (s, role)
-                if slot not in loads:
-                    loads[slot], axial[slot], speeds[slot] = np.zeros(count), np.zeros(count), np.zeros(count)
-                    order.append((s, role, role, ""))
-                fx, fy = forces[s].central_forces[role]
-                loads[slot][k] = float(np.hypot(fx, fy)) + ratings[role].external_load
-                speeds[slot][k] = abs(n[getattr(pset, role)])
-    return tuple(BearingLife(s, label, role, bearings[s][role], loads[(s, label)], axial[(s, label)],
-                             speeds[(s, label)], duty.shares) for s, label, role, _ in order)
+                if role in ratings:
+                    at = slot(s, role, role)
+                    radial[at][idx] = np.hypot(central[role][:, 0], central[role][:, 1]) + ratings[role].external_load
+                    speeds[at][idx] = np.abs(n[getattr(pset, role)])
+    return tuple(BearingLife(s, label, role, bearings[s][role], radial[(s, label)], axial[(s, label)],
+                             speeds[(s, label)], duty.shares) for s, label, role in order)
