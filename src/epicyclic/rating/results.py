@@ -95,6 +95,11 @@ class Factor:
         return {"value": json_value(self.value), "unit": self.unit, "clause": self.clause, "name": self.name}
 
 
+def _short(value) -> str:
+    array = np.asarray(value, dtype=float)
+    return f"{float(np.min(array)):.3f}" if array.size else "-"
+
+
 def _factors(factors: Mapping[str, Factor]) -> Mapping[str, Factor]:
     return MappingProxyType(dict(factors))
 
@@ -186,6 +191,10 @@ class MeshRating:
     def __getitem__(self, symbol: str):
         return self.factors[symbol].value
 
+    def __repr__(self) -> str:
+        return (f"MeshRating({self.element}: {self.mesh}, {self.standard}, S_H {_short(self.S_H)}, "
+                f"S_F {_short(self.S_F)}, ok {self.ok})")
+
     @property
     def S_H(self):
         """Lowest pitting safety of the two gears (number or one per case)."""
@@ -207,6 +216,23 @@ class MeshRating:
                 "internal": self.internal, "factors": {s: f.to_dict() for s, f in self.factors.items()},
                 "gears": {g.gear: g.to_dict() for g in self.gears},
                 "S_H": json_value(self.S_H), "S_F": json_value(self.S_F), "ok": self.ok, "notes": list(self.notes)}
+
+    def table(self) -> str:
+        """This mesh's factors as a plain-text table (a safety below its minimum ends in ``!``)."""
+        from .report import text_report
+
+        return text_report(TrainRating((self,), standard=self.standard))
+
+    def _repr_html_(self) -> str:
+        from .report import html_section
+
+        return html_section(TrainRating((self,), standard=self.standard))
+
+    def explain(self, gear: int = 0) -> str:
+        """The worked rating of this mesh, equation by equation (:func:`~epicyclic.rating.worked.worked_rating`)."""
+        from .worked import worked_rating
+
+        return worked_rating(self, gear)
 
 
 @dataclass(frozen=True)
@@ -237,7 +263,24 @@ class TrainRating:
         return all(m.ok for m in self.meshes)
 
     def mesh(self, element: str, mesh: str | None = None) -> MeshRating:
-        """The rating of ``mesh`` of ``element`` (its first mesh if ``mesh`` is None)."""
+        """The rating of ``mesh`` of ``element`` (its first mesh if ``mesh`` is None).
+
+        Parameters
+        ----------
+        element : str
+            The set or stage.
+        mesh : str, optional
+            The mesh's name (``sun-planet``, ``planet-ring``, ``mesh 1 (20/40)``).
+
+        Returns
+        -------
+        MeshRating
+
+        Raises
+        ------
+        RatingError
+            No such mesh; the message lists the rated ones.
+        """
         for m in self.meshes:
             if m.element == element and (mesh is None or m.mesh == mesh):
                 return m
@@ -250,3 +293,21 @@ class TrainRating:
         """JSON data: standard, gear, life, ok and one entry per mesh."""
         return {"standard": self.standard, "method": "B", "gear": self.gear, "life_hours": self.life_hours,
                 "ok": self.ok, "meshes": [m.to_dict() for m in self.meshes], "skipped": dict(self.skipped)}
+
+    def table(self) -> str:
+        """The rating as plain text: a summary and every mesh's factors."""
+        from .report import text_report
+
+        return text_report(self)
+
+    def _repr_html_(self) -> str:
+        from .report import html_section
+
+        return html_section(self)
+
+    def __repr__(self) -> str:
+        worst = min((float(np.min(m.S_H)) for m in self.meshes), default=float("nan"))
+        worst_f = min((float(np.min(m.S_F)) for m in self.meshes), default=float("nan"))
+        return (f"TrainRating({len(self.meshes)} meshes, {self.standard}, gear {self.gear}, "
+                f"min S_H {worst:.3f}, min S_F {worst_f:.3f}, ok {self.ok})")
+
