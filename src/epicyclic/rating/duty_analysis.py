@@ -136,7 +136,7 @@ def _planet_speed(geometry: SetGeometry, body_gear: str, n_sun, n_carrier):
 def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
                        losses: Mapping[str, Any] | None = None, geometry: Mapping[str, Any] | None = None,
                        bearings: Mapping[str, Mapping[str, BearingRating]] | None = None,
-                       title: str = "") -> DutyCycleResult:
+                       rating=None, title: str = "") -> DutyCycleResult:
     """Energies, losses by source, cycle efficiency and bearing lives of ``train`` over ``duty``.
 
     Parameters
@@ -153,6 +153,10 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
         Gear geometry (``TrainFile.geometry``), needed for the bearing loads.
     bearings : mapping element → mapping position → BearingRating, optional
         Bearing ratings by set and position (``planet``, ``sun``, ``ring``, ``carrier``).
+    rating : RatingSpec, optional
+        Tooth rating inputs (``TrainFile.rating``): with them, the flank and root damage sums of
+        every gear (:mod:`~epicyclic.rating.duty_damage`); a cycle of shares then runs for
+        ``rating.life`` hours.
     title : str, optional
         For the report.
 
@@ -222,7 +226,19 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
                                for e, parts in sources.items()}),
     )
     lives = _bearing_lives(duty, solved, where, geometry, bearings) if bearings else ()
-    return DutyCycleResult(duty, energy, lives, per_hour=per_hour, title=title or train.name)
+    damage: tuple = ()
+    if rating is not None:
+        if not geometry:
+            raise DutyCycleError("duty cycle: the tooth damage sums need the gear geometry; add 'geometry' tables.")
+        from .duty_damage import gear_damages
+
+        members: dict[tuple, list[int]] = {}
+        for k, (key, _) in enumerate(where):  # type: ignore[misc]
+            members.setdefault(key, []).append(k)
+        case_hours = duty.hours if duty.hours is not None else duty.shares * rating.life
+        damage = gear_damages([(solved[key][1], m) for key, m in members.items()], count, case_hours, geometry,
+                              rating)
+    return DutyCycleResult(duty, energy, lives, per_hour=per_hour, title=title or train.name, damage=damage)
 
 
 def _shared_sets(train_g, present, geometry) -> set[str]:

@@ -187,8 +187,9 @@ class DutyCycleResult:
     per_hour : bool
         True for a cycle of shares without total hours: energies are per hour of the cycle.
     title : str
-    damage : tuple
-        Damage sums per gear (objects with ``to_dict()`` and ``rows()``), empty without tooth ratings.
+    damage : tuple of GearDamage
+        Flank and root damage sums per gear of every mesh
+        (:class:`~epicyclic.rating.duty_damage.GearDamage`), empty without a tooth rating.
     """
 
     duty: DutyCycle
@@ -278,8 +279,11 @@ class DutyCycleResult:
             out.append((f"energy lost by element and source, {self._energy_unit}", head, rows))
         if self.bearings:
             out.append(("bearing rating life over the cycle (ISO 281:2007)", self._BEARING_HEAD, self._bearing_rows()))
-        for item in self.damage:
-            out.append(item.section())
+        if self.damage:
+            from .duty_damage import DAMAGE_HEAD
+
+            out.append(("Palmgren-Miner damage sums of the teeth over the cycle (ISO 6336-6; D < 1: lasts)",
+                        DAMAGE_HEAD, [d.row() for d in self.damage]))
         return out
 
     def table(self) -> str:
