@@ -111,12 +111,39 @@ def _values(factor, count: int) -> np.ndarray:
     return np.broadcast_to(np.asarray(factor.value, dtype=float), (count,)).copy()
 
 
+@dataclass(frozen=True)
+class _AllCases:
+    """The cases of several batch solutions (one per gear) as one, in the duty cycle's order: what
+    :func:`~epicyclic.rating.train.rate_batch` reads (the train's elements, port torques, shaft speeds)."""
+
+    train: Any
+    port_torques: Any
+    speeds: Any
+
+
+def _all_cases(groups, count: int) -> _AllCases:
+    ports: dict[tuple[str, str], np.ndarray] = {}
+    speeds: dict[str, np.ndarray] = {}
+    train = None
+    for batch, members in groups:
+        idx = np.asarray(members)
+        train = batch.train if train is None else train
+        for key, value in batch.port_torques.items():
+            ports.setdefault(key, np.zeros(count))[idx] = np.asarray(value).reshape(-1)
+        for shaft, value in batch.speeds.items():
+            speeds.setdefault(shaft, np.zeros(count))[idx] = np.asarray(value).reshape(-1)
+    return _AllCases(train, ports, speeds)
+
+
 def gear_damages(groups, count: int, hours: np.ndarray, geometry, spec) -> tuple[GearDamage, ...]:
     """Damage sums of every gear over the cases of all groups.
 
+    All cases are rated in one :func:`~epicyclic.rating.train.rate_batch` call (the gears of a
+    transmission differ in their shift elements only, not in their sets and stages).
+
     Parameters
     ----------
-    groups : iterable of (BatchSolution, sequence of int)
+    groups : sequence of (BatchSolution, sequence of int)
         Each batch solution and the indices of the duty cycle's cases it holds.
     count : int
         Number of cases.
@@ -138,29 +165,22 @@ def gear_damages(groups, count: int, hours: np.ndarray, geometry, spec) -> tuple
     planned = mesh_inputs(geometry, spec)
     curves = {(p.input.element, p.input.name): (p.input.static["Z_curves"], p.input.static["Y_curves"])
               for p in planned[0]}
-    data: dict[tuple[str, str, str], dict[str, np.ndarray]] = {}
+    data: dict[tuple[str, str, str], dict[str, Any]] = {}
     order: list[tuple[str, str, str]] = []
-    for batch, members in groups:
-        idx = np.asarray(members)
-        rating = rate_batch(batch, geometry, spec, planned=planned)
-        size = len(idx)
-        for mesh in rating.meshes:
-            for k, gear in enumerate(mesh.gears):
-                key = (mesh.element, mesh.mesh, gear.gear, k)
-                if key[:3] not in data:
-                    data[key[:3]] = {q: np.zeros(count) for q in ("cycles", "sigma_H", "sigma_F", "fr", "rr")}
-                    data[key[:3]]["k"] = k  # type: ignore[assignment]
-                    order.append(key[:3])
-                f = gear.factors
-                d = data[key[:3]]
-                d["sigma_H"][idx] = _values(f["sigma_H"], size)
-                d["sigma_F"][idx] = _values(f["sigma_F"], size)
-                ref_h = _values(f["sigma_HG"], size) / _values(f["Z_NT"], size)
-                ref_f = _values(f["sigma_FG"], size) / _values(f["Y_NT"], size)
-                d["fr"][idx] = d["sigma_H"][idx] / ref_h
-                d["rr"][idx] = d["sigma_F"][idx] / ref_f
+    rating = rate_batch(_all_cases(groups, count), geometry, spec, planned=planned)
+    for mesh in rating.meshes:
+        for k, gear in enumerate(mesh.gears):
+            key = (mesh.element, mesh.mesh, gear.gear)
+            f = gear.factors
+            sigma_h, sigma_f = _values(f["sigma_H"], count), _values(f["sigma_F"], count)
+            data[key] = {
+                "k": k, "sigma_H": sigma_h, "sigma_F": sigma_f,
+                "fr": sigma_h / (_values(f["sigma_HG"], count) / _values(f["Z_NT"], count)),
+                "rr": sigma_f / (_values(f["sigma_FG"], count) / _values(f["Y_NT"], count)),
                 # N_L = 60 L_h n c over the rating's life: per hour N_L / L_h, times the case's hours
-                d["cycles"][idx] = _values(f["N_L"], size) / spec.life * hours[idx]
+                "cycles": _values(f["N_L"], count) / spec.life * hours,
+            }
+            order.append(key)
     out = []
     for element, mesh, gear in order:
         d = data[(element, mesh, gear)]
