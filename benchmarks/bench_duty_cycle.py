@@ -16,7 +16,7 @@ their ratio.  A second pair of runs adds the tooth rating (ISO 6336 Method B of 
 :func:`~epicyclic.rating.train.rate_batch` per gear; the loop, one :func:`~epicyclic.rating.train.rate_solution`
 per case (the damage sums compared to 1e-7).
 
-Run:  .venv/bin/python benchmarks/bench_duty_cycle.py [cases]
+Run:  .venv/bin/python benchmarks/bench_duty_cycle.py [cases [repeats]]   (best of repeats, default 100 3)
 """
 
 from __future__ import annotations
@@ -32,7 +32,11 @@ from epicyclic.geometry import planetary_forces, share_planets
 from epicyclic.io import load_train_file
 from epicyclic.losses import solve_with_losses
 from epicyclic.rating import DutyCycle, LoadCase, analyse_duty_cycle
-from epicyclic.rating.bearing_life import basic_rating_life, rating_life_hours, spectrum_life
+from epicyclic.rating.bearing_life import (
+    basic_rating_life,
+    rating_life_hours,
+    spectrum_life,
+)
 from epicyclic.rating.life_factors import miner_damage
 from epicyclic.rating.spec import RatingSpec
 from epicyclic.rating.train import mesh_inputs, rate_solution
@@ -96,7 +100,7 @@ def main(cases: int = 100, repeats: int = 3) -> None:
     warnings.simplefilter("ignore", RuntimeWarning)  # K_v at standstill divides by zero (no effect on D)
     f = load_train_file(EXAMPLE)
     duty = duty_cycle(f, cases)
-    kwargs = dict(schedule=f.transmission, losses=f.losses, geometry=f.geometry, bearings=f.bearings)
+    kwargs = {"schedule": f.transmission, "losses": f.losses, "geometry": f.geometry, "bearings": f.bearings}
     analyse_duty_cycle(f.train, duty_cycle(f, 9), **kwargs)  # warm-up
     best_vector = best_loop = float("inf")
     for _ in range(repeats):
@@ -138,4 +142,4 @@ def main(cases: int = 100, repeats: int = 3) -> None:
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 100)
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 100, int(sys.argv[2]) if len(sys.argv) > 2 else 3)

@@ -16,8 +16,17 @@ from epicyclic import Brake, GearTrain, OperatingPoint, PlanetarySet
 from epicyclic.geometry import SetGeometry
 from epicyclic.io import load_train_file
 from epicyclic.losses import solve_with_losses
-from epicyclic.rating import BearingRating, DutyCycle, DutyCycleError, LoadCase, analyse_duty_cycle
-from epicyclic.rating.bearing_life import basic_rating_life, rating_life_hours, spectrum_life
+from epicyclic.rating import (
+    BearingRating,
+    DutyCycle,
+    DutyCycleError,
+    LoadCase,
+    analyse_duty_cycle,
+)
+from epicyclic.rating.bearing_life import (
+    basic_rating_life,
+    rating_life_hours,
+)
 from epicyclic.transmission.errors import UnknownGearError
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

@@ -17,7 +17,16 @@ from typing import Annotated
 
 import typer
 
-from ._common import FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded, load
+from ._common import (
+    FormatOption,
+    OutOption,
+    OutputFormat,
+    SetOption,
+    check_finite,
+    emit,
+    guarded,
+    load,
+)
 
 __all__ = ["duty"]
 

@@ -54,8 +54,15 @@ from ..transmission.errors import UnknownGearError
 from ..units import to_core
 from .reader import at_key
 
-__all__ = ["BEARING_KEYS", "BEARING_POSITIONS", "DUTY_KEYS", "CASE_KEYS", "read_bearings", "read_duty_cycle",
-           "analyse_file_duty_cycle"]
+__all__ = [
+    "BEARING_KEYS",
+    "BEARING_POSITIONS",
+    "CASE_KEYS",
+    "DUTY_KEYS",
+    "analyse_file_duty_cycle",
+    "read_bearings",
+    "read_duty_cycle",
+]
 
 BEARING_POSITIONS = ("planet", "sun", "ring", "carrier")
 BEARING_KEYS = {"type", "dynamic_load_rating", "fatigue_load_limit", "pitch_diameter", "viscosity",
@@ -76,11 +83,13 @@ _DIMENSIONAL = {
 def _dimensional(reader, value: object, key: str, where: str) -> float:
     unit, target, what = _DIMENSIONAL[key]
     if isinstance(value, str) and any(c.isalpha() for c in value):
-        from ..unit_registry import registry
+        from pint.errors import PintError
+
+        from ..units import UnitError, _parse  # the project's unit grammar (never pint's own parser)
 
         try:
-            number = float(registry().Quantity(value).to(target).magnitude)
-        except Exception:  # pint raises several kinds (undefined unit, dimensionality, syntax)
+            number = float(_parse(value, key, "power").to(target).magnitude)
+        except (UnitError, PintError):  # a unit the grammar refuses, or of another dimension
             raise reader.error(at_key(where, key), f"expected {what} (a plain number is {unit}), "
                                                    f"got {short(value)}.") from None
     else:

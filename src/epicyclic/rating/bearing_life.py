@@ -66,9 +66,21 @@ import numpy as np
 
 from ..errors import ModelError
 
-__all__ = ["BearingLifeError", "BearingRating", "BEARING_KINDS", "LIFE_EXPONENT", "RELIABILITY_FACTOR",
-           "A_ISO_LIMIT", "basic_rating_life", "rating_life_hours", "reference_viscosity",
-           "life_modification_factor", "reliability_factor", "equivalent_load", "spectrum_life"]
+__all__ = [
+    "A_ISO_LIMIT",
+    "BEARING_KINDS",
+    "LIFE_EXPONENT",
+    "RELIABILITY_FACTOR",
+    "BearingLifeError",
+    "BearingRating",
+    "basic_rating_life",
+    "equivalent_load",
+    "life_modification_factor",
+    "rating_life_hours",
+    "reference_viscosity",
+    "reliability_factor",
+    "spectrum_life",
+]
 
 
 class BearingLifeError(ModelError):

@@ -30,6 +30,7 @@ ISO 21771:2007 (α_wt, β_w).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
@@ -40,7 +41,7 @@ from ..geometry.forces import planetary_forces
 from ..geometry.set_geometry import SetGeometry
 from ..model.train import GearTrain
 
-__all__ = ["SetLoads", "set_loads", "unit_forces"]
+__all__ = ["SetLoads", "set_loads", "solution_view", "unit_forces"]
 
 
 @dataclass(frozen=True)
@@ -82,8 +83,26 @@ class SetLoads:
     central: Any
 
 
+def solution_view(train: GearTrain, torques: Mapping[str, Mapping[str, float]]) -> Any:
+    """What :func:`~epicyclic.geometry.planetary_forces` reads of a Solution: sets at given port torques.
+
+    Parameters
+    ----------
+    train : GearTrain
+        The train the sets belong to.
+    torques : mapping set → mapping port → float
+        Port torques (``sun``, ``ring``, ``carrier``) of each set, N·m.
+
+    Returns
+    -------
+    object
+        With ``train`` and ``elements[set].torques`` / ``.kind``.
+    """
+    return _Unit(train, {name: _Element("planetary set", dict(t)) for name, t in torques.items()})
+
+
 def _unit(train: GearTrain, name: str, geometry: SetGeometry, t_sun: float, t_ring: float):
-    view = _Unit(train, {name: _Element("planetary set", {"sun": t_sun, "ring": t_ring, "carrier": 0.0})})
+    view = solution_view(train, {name: {"sun": t_sun, "ring": t_ring, "carrier": 0.0}})
     return planetary_forces(view, name, geometry)
 
 

@@ -29,7 +29,6 @@ Brandenberger 1952, eqs. 3', 7 (losses in the direction of the rolling power).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
@@ -42,32 +41,16 @@ from ..losses.solve import solve_batch_with_losses
 from ..model.train import GearTrain
 from ..transmission.errors import UnknownGearError
 from .bearing_life import BearingRating
-from .bearing_loads import set_loads, unit_forces
+from .bearing_loads import set_loads, solution_view, unit_forces
 from .duty_cycle import DutyCycle, DutyCycleError
 from .duty_result import BearingLife, CaseEnergy, DutyCycleResult
 
-__all__ = ["analyse_duty_cycle", "CENTRAL_ROLES", "BEARING_ROLES"]
+__all__ = ["BEARING_ROLES", "CENTRAL_ROLES", "analyse_duty_cycle"]
 
 #: The central members of a set whose bearings turn relative to the housing.
 CENTRAL_ROLES = ("sun", "ring", "carrier")
 #: Bearing positions of a planetary set.
 BEARING_ROLES = ("planet", *CENTRAL_ROLES)
-
-
-@dataclass(frozen=True)
-class _Element:
-    """What :func:`~epicyclic.geometry.planetary_forces` reads of one element of a solution."""
-
-    kind: str
-    torques: Mapping[str, float]
-
-
-@dataclass(frozen=True)
-class _CaseSolution:
-    """One case of a batch solution, as :func:`~epicyclic.geometry.planetary_forces` reads a Solution."""
-
-    train: GearTrain
-    elements: Mapping[str, _Element]
 
 
 def _signature(case) -> tuple:
@@ -243,8 +226,7 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
 
 def _shared_sets(train_g, present, geometry) -> set[str]:
     """The sets of ``present`` that share a planet body with another (a geometric property: one check)."""
-    view = _CaseSolution(train_g, {s: _Element("planetary set", {"sun": 1.0, "ring": 1.0, "carrier": 0.0})
-                                   for s in present})
+    view = solution_view(train_g, {s: {"sun": 1.0, "ring": 1.0, "carrier": 0.0} for s in present})
     forces = share_planets({s: planetary_forces(view, s, geometry[s]) for s in present},
                            {s: geometry[s] for s in present})
     return {s for s in present if any(b.shared_with for b in forces[s].bodies)}
@@ -255,8 +237,8 @@ def _case_by_case(train_g, batch, members, shared, geometry):
     one :func:`planetary_forces` per case (their loads are not of the separable form of bearing_loads)."""
     out: dict[str, list] = {s: [] for s in shared}
     for j in range(len(members)):
-        view = _CaseSolution(train_g, {s: _Element("planetary set", {
-            p: float(batch.port_torques[(s, p)].reshape(-1)[j]) for p in ("sun", "ring", "carrier")}) for s in shared})
+        view = solution_view(train_g, {s: {p: float(batch.port_torques[(s, p)].reshape(-1)[j])
+                                           for p in ("sun", "ring", "carrier")} for s in shared})
         forces = share_planets({s: planetary_forces(view, s, geometry[s]) for s in shared},
                                {s: geometry[s] for s in shared})
         for s in shared:

@@ -30,7 +30,7 @@ import numpy as np
 from ..errors import ModelError
 from ..model.operating_point import OperatingPoint
 
-__all__ = ["DutyCycleError", "LoadCase", "DutyCycle", "SHARE_TOLERANCE"]
+__all__ = ["SHARE_TOLERANCE", "DutyCycle", "DutyCycleError", "LoadCase"]
 
 #: How far the time shares may sum from 1.
 SHARE_TOLERANCE = 1e-6

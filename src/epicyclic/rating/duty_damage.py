@@ -43,7 +43,7 @@ import numpy as np
 from .life_factors import SNCurve, miner_damage
 from .train import mesh_inputs, rate_batch
 
-__all__ = ["GearDamage", "DAMAGE_HEAD", "gear_damages"]
+__all__ = ["DAMAGE_HEAD", "GearDamage", "gear_damages"]
 
 DAMAGE_HEAD = ["set", "mesh", "gear", "D flank", "D root", "max sigma_H [N/mm^2]", "max sigma_F [N/mm^2]",
                "cycles"]

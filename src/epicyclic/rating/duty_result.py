@@ -22,10 +22,16 @@ from typing import Any
 import numpy as np
 
 from ..geometry._render import html_table, text_table
-from .bearing_life import BearingRating, basic_rating_life, equivalent_load, rating_life_hours, spectrum_life
+from .bearing_life import (
+    BearingRating,
+    basic_rating_life,
+    equivalent_load,
+    rating_life_hours,
+    spectrum_life,
+)
 from .duty_cycle import DutyCycle
 
-__all__ = ["CaseEnergy", "BearingLife", "DutyCycleResult", "SOURCE_ORDER"]
+__all__ = ["SOURCE_ORDER", "BearingLife", "CaseEnergy", "DutyCycleResult"]
 
 #: Report order of the loss sources (the losses' own; others follow alphabetically).
 SOURCE_ORDER = ("mesh", "bearing", "drag", "spin")
@@ -261,8 +267,8 @@ class DutyCycleResult:
                 for e, parts in self.lost_by_element().items()]
         return head, rows
 
-    _BEARING_HEAD = ["set", "bearing", "type", "C [N]", "p", "P_eq [N]", "n_mean [1/min]", "L10 [1e6 rev]",
-                     "L10h [h]", "Lnmh [h]", "notes"]
+    _BEARING_HEAD = ("set", "bearing", "type", "C [N]", "p", "P_eq [N]", "n_mean [1/min]", "L10 [1e6 rev]",
+                     "L10h [h]", "Lnmh [h]", "notes")
 
     def _bearing_rows(self) -> list[list[object]]:
         return [[b.element, b.position, b.rating.type, f"{b.rating.dynamic_load_rating:.0f}",
@@ -278,7 +284,8 @@ class DutyCycleResult:
         if rows:
             out.append((f"energy lost by element and source, {self._energy_unit}", head, rows))
         if self.bearings:
-            out.append(("bearing rating life over the cycle (ISO 281:2007)", self._BEARING_HEAD, self._bearing_rows()))
+            out.append(("bearing rating life over the cycle (ISO 281:2007)", list(self._BEARING_HEAD),
+                        self._bearing_rows()))
         if self.damage:
             from .duty_damage import DAMAGE_HEAD
 
