@@ -281,6 +281,6 @@ def analyse_file_duty_cycle(train_file):
         return analyse_duty_cycle(train_file.train, train_file.duty_cycle, schedule=train_file.transmission,
                                   losses=train_file.losses, geometry=train_file.geometry,
                                   bearings=train_file.bearings, rating=getattr(train_file, "rating", None),
-                                  title=train_file.title)
+                                  spin=getattr(train_file, "spin", None), title=train_file.title)
     except EpicyclicError as exc:
         raise locate_error(exc, train_file.source, None, "[duty_cycle]") from None

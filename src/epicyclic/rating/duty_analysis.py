@@ -88,7 +88,7 @@ def _check_bearings(bearings, geometry, train: GearTrain) -> None:
                                      f"{type(rating).__name__}.")
 
 
-def _solve_groups(train, duty, schedule, losses):
+def _solve_groups(train, duty, schedule, losses, spin=None):
     """Batch solutions by group and, per case, (group key, index in the group)."""
     groups: dict[tuple, list[int]] = {}
     for k, case in enumerate(duty.cases):
@@ -102,8 +102,11 @@ def _solve_groups(train, duty, schedule, losses):
         arrays = {group: {shaft: np.array([getattr(c.operating_point, group)[shaft] for c in cases])
                           for shaft in getattr(first, group)} for group in ("speeds", "torques", "powers")}
         models = {name: m for name, m in losses.items() if name in {e.name for e in train_g.elements}}
+        # spin losses (clutch drag, pump, churning, seals) where the loss package has them: by gear and input
+        extra = {} if spin is None else {"spin": spin, "gear": cases[0].gear,
+                                         "input": getattr(schedule, "input", None)}
         solved[key] = (train_g, solve_batch_with_losses(train_g, models, drives=first.drives, loads=first.loads,
-                                                        **arrays))
+                                                        **arrays, **extra))
         for j, k in enumerate(members):
             where[k] = (key, j)
     return solved, where
@@ -119,7 +122,7 @@ def _planet_speed(geometry: SetGeometry, body_gear: str, n_sun, n_carrier):
 def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
                        losses: Mapping[str, Any] | None = None, geometry: Mapping[str, Any] | None = None,
                        bearings: Mapping[str, Mapping[str, BearingRating]] | None = None,
-                       rating=None, title: str = "") -> DutyCycleResult:
+                       rating=None, spin=None, title: str = "") -> DutyCycleResult:
     """Energies, losses by source, cycle efficiency and bearing lives of ``train`` over ``duty``.
 
     Parameters
@@ -140,6 +143,10 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
         Tooth rating inputs (``TrainFile.rating``): with them, the flank and root damage sums of
         every gear (:mod:`~epicyclic.rating.duty_damage`); a cycle of shares then runs for
         ``rating.life`` hours.
+    spin : SpinLosses, optional
+        Load-independent spin losses (``TrainFile.spin`` where the loss package has them), passed to
+        :func:`~epicyclic.losses.solve_batch_with_losses` with each case's gear; their sources join
+        the energy lost by source.
     title : str, optional
         For the report.
 
@@ -182,7 +189,7 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
         raise DutyCycleError(f"analyse_duty_cycle: duty must be a DutyCycle, got {type(duty).__name__}.")
     _check_gears(duty, schedule)
     _check_bearings(bearings, geometry, train)
-    solved, where = _solve_groups(train, duty, schedule, losses)
+    solved, where = _solve_groups(train, duty, schedule, losses, spin)
     count = len(duty)
     per_hour = duty.hours is None
     hours = duty.shares if per_hour else duty.hours
