@@ -210,6 +210,9 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
             for source, value in parts.items():
                 sources.setdefault(element, {}).setdefault(source, np.zeros(count))[k] = float(
                     np.asarray(value).reshape(-1)[j])
+    for parts in sources.values():  # a loss of round-off size (1e-9 of the power in) is no loss: shown as 0
+        for source, value in parts.items():
+            parts[source] = np.where(np.abs(value) <= 1e-9 * np.abs(p_in), 0.0, value)
     energy = CaseEnergy(
         input=p_in * hours / 1000.0, output=np.abs(p_out) * hours / 1000.0,
         lost=MappingProxyType({e: MappingProxyType({s: v * hours / 1000.0 for s, v in parts.items()})
