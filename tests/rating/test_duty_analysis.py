@@ -154,3 +154,20 @@ def test_energy_balance_and_bounds(cases, eta0):
     assert np.all(res.energy.total_lost >= -1e-12 * res.energy.input)
     assert res.cycle_efficiency <= 1 + 1e-12
     assert res.energy.input - res.energy.output == pytest.approx(res.energy.total_lost, rel=1e-9, abs=1e-9)
+
+
+def test_double_planet_bearings_turn_at_their_own_relative_speeds():
+    # n_p - n_c = k (n_s - n_c) per planet gear: k = -z_s/z_p1 and +z_s/z_p2 (Teeth.planet_factors; Willis)
+    pset = PlanetarySet.double_planet("P", sun="in", ring="out", carrier="c", z_sun=30, z_planet_sun=19,
+                                      z_planet_ring=21, z_ring=90)
+    train = GearTrain([pset, Brake("B", "c")])
+    geometry = {"P": SetGeometry.create(pset, module=2.0)}
+    cycle = DutyCycle((LoadCase("a", _op(3000.0, 50.0), share=1.0),))
+    res = analyse_duty_cycle(train, cycle, geometry=geometry,
+                             bearings={"P": {"planet": BearingRating("needle roller", 1e4)}})
+    assert len(res.bearings) == 2 * pset.planets
+    first, second = res.bearings[0], res.bearings[1]
+    assert first.position.endswith("(planet1)") and second.position.endswith("(planet2)")
+    assert first.speeds[0] == pytest.approx(30 / 19 * 3000.0, rel=1e-9)  # carrier held
+    assert second.speeds[0] == pytest.approx(30 / 21 * 3000.0, rel=1e-9)
+    assert first.radial[0] > 0 and second.radial[0] > 0

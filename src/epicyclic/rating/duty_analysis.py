@@ -38,6 +38,7 @@ from ..geometry.forces import planetary_forces
 from ..geometry.set_geometry import SetGeometry
 from ..geometry.shared_planets import share_planets
 from ..losses.solve import solve_batch_with_losses
+from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
 from ..transmission.errors import UnknownGearError
 from .bearing_life import BearingRating
@@ -71,7 +72,7 @@ def _check_gears(duty: DutyCycle, schedule) -> None:
 
 
 def _check_bearings(bearings, geometry, train: GearTrain) -> None:
-    sets = {e.name for e in train.elements if getattr(e, "teeth", None) is not None or hasattr(e, "carrier")}
+    sets = {e.name for e in train.elements if isinstance(e, PlanetarySet)}
     for element, roles in bearings.items():
         if element not in sets:
             raise DutyCycleError(f"bearings: the train has no planetary set {element!r}; bearing ratings belong to "
