@@ -11,7 +11,7 @@ from epicyclic.io import load_train_file
 from epicyclic.rating import DutyCycle, LoadCase, analyse_duty_cycle
 from epicyclic.rating.train import rate_solution
 
-EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "geometry_simple_set_rating.toml"
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "rating" / "simple_set.toml"
 
 
 def _run(f, hours, op=None):

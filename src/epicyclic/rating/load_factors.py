@@ -172,7 +172,7 @@ def mesh_stiffness(c_prime: float, contact_ratio: float, line_load):
     ----------
     ISO 6336-1:2006, 9.3.1 (eq. 70, low loads) and 9.3.2 (c_γα = c'(0.75 ε_α + 0.25), c_γβ = 0.85 c_γα).
     """
-    scale = np.minimum(1.0, np.asarray(line_load, dtype=float) / 100.0)
+    scale = np.clip(np.asarray(line_load, dtype=float) / 100.0, 1e-9, 1.0)  # no zero stiffness at zero load
     c = c_prime * scale
     c_ga = c * (0.75 * contact_ratio + 0.25)
     return c, c_ga, 0.85 * c_ga
@@ -246,7 +246,7 @@ def dynamic_factor(speed, teeth1: int, c_gamma_alpha, c_prime, reduced_mass_: fl
         m_red, kg/mm.
     line_load : float or ndarray
         K_A F_t / b, N/mm.
-    f_pb_eff, f_f_eff : float
+    f_pb_eff, f_f_eff : float or ndarray
         Effective base pitch and profile form deviations after running-in, µm.
     eps_gamma : float
         Total contact ratio ε_γ.
@@ -336,7 +336,7 @@ def transverse_load_factors(force_per_width, c_gamma_alpha, f_pb_eff: float, eps
         F_tH/b = F_t K_A K_v K_Hβ / b, N/mm.
     c_gamma_alpha : float or ndarray
         N/(mm µm).
-    f_pb_eff : float
+    f_pb_eff : float or ndarray
         f_pb − y_α, µm.
     eps_alpha, eps_gamma : float
         Transverse and total contact ratio.

@@ -48,12 +48,16 @@ from .tooth_form import ToothForm, external_tooth_form, internal_tooth_form
 __all__ = ["MeshInput", "rate_mesh"]
 
 
-def _running_in_alpha(m: Material, f_pb: float) -> float:
+def _running_in_alpha(m: Material, deviation: float, velocity):
+    """y_α (or y_f with f_fα) by material, with the limits of the pitch line velocity (ISO 6336-1, 8.3.4)."""
+    v = np.asarray(velocity, dtype=float)
     if m.surface_hardened:
-        return min(0.075 * f_pb, 3.0)
+        return np.full(v.shape, min(0.075 * deviation, 3.0))
     if m.treatment in ("GG", "GGG(ferr)"):
-        return min(0.275 * f_pb, 22.0)
-    return min(160.0 / m.sigma_Hlim * f_pb, 10800.0 / m.sigma_Hlim)
+        y = 0.275 * deviation
+        return np.where(v > 10.0, min(y, 11.0), np.where(v > 5.0, min(y, 22.0), y))
+    y = 160.0 / m.sigma_Hlim * deviation
+    return np.where(v > 10.0, min(y, 6400.0 / m.sigma_Hlim), np.where(v > 5.0, min(y, 12800.0 / m.sigma_Hlim), y))
 
 
 def _running_in_beta(m: Material, f_beta):
@@ -175,10 +179,7 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     dev = [load_factors.deviations(spec.accuracy_grade, g.reference_diameter, rack.module, b) for g in (g1, g2)]
     f_pb = max(d["f_pt"] for d in dev) * math.cos(at)
     f_fa = max(d["f_falpha"] for d in dev)
-    y_a = 0.5 * (_running_in_alpha(mats[0], f_pb) + _running_in_alpha(mats[1], f_pb))
-    s.update(f_pb=f_pb, f_falpha=f_fa, y_alpha=y_a, f_Hbeta=max(d["f_Hbeta"] for d in dev),
-             f_pb_eff=max(0.0, f_pb - y_a), f_f_eff=max(0.0, f_fa - 0.075 * f_fa if mats[0].surface_hardened
-                                                         else f_fa - y_a))
+    s.update(f_pb=f_pb, f_falpha=f_fa, f_Hbeta=max(d["f_Hbeta"] for d in dev))
     d_m = [(g.tip_diameter + g.root_diameter) / 2 for g in (g1, g2)]
     s["m_red"] = load_factors.reduced_mass(
         d_m[0], g1.base_diameter, d_m[1], g2.base_diameter, mats[0].density, mats[1].density,
@@ -252,17 +253,19 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     f_t = 2000.0 * t1 / d1
     v = math.pi * d1 * n1 / 60000.0
     line = ka * kg * f_t / b
+    mats = s["materials"]
+    y_a = 0.5 * (_running_in_alpha(mats[0], s["f_pb"], v) + _running_in_alpha(mats[1], s["f_pb"], v))
+    y_f = 0.5 * (_running_in_alpha(mats[0], s["f_falpha"], v) + _running_in_alpha(mats[1], s["f_falpha"], v))
+    f_pb_eff, f_f_eff = np.maximum(0.0, s["f_pb"] - y_a), np.maximum(0.0, s["f_falpha"] - y_f)
     c_p, c_ga, c_gb = load_factors.mesh_stiffness(s["c_prime_th"], s["eps_alpha"], line)
     k_v, resonance, n_e1 = load_factors.dynamic_factor(
-        n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, s["f_pb_eff"], s["f_f_eff"], s["eps_gamma"],
-        spec.tip_relief)
+        n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, f_pb_eff, f_f_eff, s["eps_gamma"], spec.tip_relief)
     f_m = line * k_v
     f_bx = np.maximum.reduce([np.full(f_m.shape, 1.33 * spec.shaft_deflection + s["f_Hbeta"]), 0.005 * f_m,
                               np.full(f_m.shape, 0.5 * s["f_Hbeta"])])
-    mats = s["materials"]
     y_b = 0.5 * (_running_in_beta(mats[0], f_bx) + _running_in_beta(mats[1], f_bx))
     k_hb, k_fb = load_factors.face_load_factors(spec.K_Hbeta, f_m, c_gb, f_bx, y_b, b, s["tooth_height"])
-    k_ha, k_fa = load_factors.transverse_load_factors(f_m * k_hb, c_ga, s["f_pb_eff"], s["eps_alpha"],
+    k_ha, k_fa = load_factors.transverse_load_factors(f_m * k_hb, c_ga, f_pb_eff, s["eps_alpha"],
                                                        s["eps_gamma"], s["Z_eps"], year)
     u = s["u"]
     ratio = (u - 1.0) / u if mesh.internal else (u + 1.0) / u
@@ -333,6 +336,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("N", _out(resonance), "1", p1("6.3, eq. (13)"), "resonance ratio"),
         Factor("K_v", _out(k_v), "1", p1("6.3 (method B)"), "dynamic factor"),
         Factor("f_pb", s["f_pb"], "um", "ISO 1328-1:2013, 5.2", "transverse base pitch deviation"),
+        Factor("y_alpha", _out(y_a), "um", p1("8.3.4"), "running-in allowance (pitch)"),
         Factor("F_betax", _out(f_bx), "um", p1("7.6 (method C)"), "initial equivalent misalignment"),
         Factor("K_Hbeta", _out(k_hb), "1", p1("7.6 (method C)" if spec.K_Hbeta is None else "7 (given)"),
                "face load factor (contact)"),

@@ -169,6 +169,17 @@ class RatingSpec:
     def material_of(self, element: str, gear: str) -> Material:
         """The material of ``gear`` of ``element`` (``"P1:ring"``, then ``"ring"``, then the one for all).
 
+        Parameters
+        ----------
+        element : str
+            The set or stage.
+        gear : str
+            The gear's name in it (``sun``, ``planet``, ``ring``, ``driving`` ...).
+
+        Returns
+        -------
+        Material
+
         Raises
         ------
         RatingError
@@ -187,7 +198,17 @@ class RatingSpec:
         raise _missing("material", "a material of the data file for every gear, see docs/rating.md")
 
     def required(self, key: str) -> float:
-        """``flank_roughness``, ``root_roughness`` or ``viscosity_40``; an error naming the key if absent."""
+        """``flank_roughness``, ``root_roughness`` or ``viscosity_40``; an error naming the key if absent.
+
+        Parameters
+        ----------
+        key : str
+            One of the three keys.
+
+        Returns
+        -------
+        float
+        """
         value = getattr(self, key)
         if value is None:
             meaning = {"flank_roughness": "R_z of the tooth flanks in µm, for Z_R",

@@ -1,0 +1,113 @@
+"""One mesh: closed-form scalings (hypothesis), vectorised = per case, bad input, JSON."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from epicyclic.geometry import BasicRack, GearGeometry, MeshGeometry
+from epicyclic.rating import MeshInput, RatingError, RatingSpec, material, rate_mesh
+
+RACK = BasicRack(4.0)
+PAIR = MeshGeometry(GearGeometry(19, RACK, 0.5), GearGeometry(104, RACK, 0.15)).with_tip_shortening()
+RING = MeshGeometry(GearGeometry(24, BasicRack(2.0), 0.2), GearGeometry(72, BasicRack(2.0), 0.2, internal=True))
+
+
+def spec(**kw):
+    base = dict(material="18CrNiMo7-6", flank_roughness=3.0, root_roughness=10.0, viscosity_40=100.0,
+                K_Hbeta=1.2, application_factor=1.0)
+    base.update(kw)
+    return RatingSpec(**base)
+
+
+def rated(torque, width=48.0, mesh=PAIR, speed=1e-3, **kw):
+    return rate_mesh(MeshInput("pair", mesh, width, ("pinion", "wheel"), spec(**kw)), torque, speed)
+
+
+def test_the_independent_implementation_shares_the_nominal_values():
+    # hanslhansl/din3990 tests/test_1.py: P = 55 kW at 980 1/min, b = 48.64 mm: F_t = 14103.4187 N, v = 3.8998 m/s
+    r = rated(55000 / (980 * math.pi / 30), 48.64, speed=980)
+    assert r["F_t"] == pytest.approx(14103.41869503906, rel=1e-12)
+    assert r["v"] == pytest.approx(3.89976368065613, rel=1e-12)
+    assert r["Z_H"] == pytest.approx(2.3959406670899934, rel=1e-12)
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.floats(2000.0, 20000.0), st.floats(1.2, 4.0))
+def test_pitting_safety_scales_with_one_over_root_torque(torque, factor):
+    # K_v = 1 (at rest), K_Hβ given, K_Hα at its lower limit 1 at these loads: S_H ∝ 1/√T, S_F ∝ 1/T
+    a, b = rated(torque), rated(torque * factor)
+    for ga, gb in zip(a.gears, b.gears):
+        assert gb.S_H == pytest.approx(ga.S_H / math.sqrt(factor), rel=1e-6)
+        assert gb.S_F == pytest.approx(ga.S_F / factor, rel=1e-6)
+
+
+@pytest.mark.parametrize("mesh", [PAIR, RING], ids=["external", "internal"])
+def test_doubling_the_face_width_halves_the_root_stress(mesh):
+    narrow, wide = rated(3000.0, 30.0, mesh), rated(3000.0, 60.0, mesh)
+    for gn, gw in zip(narrow.gears, wide.gears):
+        assert gw["sigma_F0"] == pytest.approx(gn["sigma_F0"] / 2, rel=1e-12)
+        assert 0.45 < gw["sigma_F"] / gn["sigma_F"] < 0.55
+        assert gw["sigma_H"] / gn["sigma_H"] == pytest.approx(1 / math.sqrt(2), rel=0.03)
+
+
+def test_vectorised_cases_equal_the_per_case_loop():
+    inp = MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), spec(K_Hbeta=None, application_factor=1.25))
+    torques, speeds = np.linspace(200.0, 4000.0, 7), np.linspace(10.0, 6000.0, 7)
+    batch = rate_mesh(inp, torques, speeds)
+    for k, (t, n) in enumerate(zip(torques, speeds)):
+        one = rate_mesh(inp, t, n)
+        for symbol, f in one.factors.items():
+            assert np.asarray(batch.factors[symbol].value).reshape(-1)[k if np.ndim(batch.factors[symbol].value)
+                                                                     else 0] == pytest.approx(f.value, rel=1e-12)
+        for gb, go in zip(batch.gears, one.gears):
+            assert gb.S_H[k] == pytest.approx(go.S_H, rel=1e-12) and gb.S_F[k] == pytest.approx(go.S_F, rel=1e-12)
+
+
+def test_editions_differ_only_where_the_standard_does():
+    helical = MeshGeometry(GearGeometry(23, BasicRack(3.0, helix_angle=15), 0.0),
+                           GearGeometry(61, BasicRack(3.0, helix_angle=15), 0.0)).with_tip_shortening()
+    old, new = (rated(800.0, 40.0, helical, standard=s) for s in ("2006", "2019"))
+    assert new["Y_beta"] == pytest.approx(old["Y_beta"] / math.cos(math.radians(15)) ** 3)
+    assert new.gears[0].S_H == pytest.approx(old.gears[0].S_H, rel=1e-12)
+    assert new.gears[0].S_F < old.gears[0].S_F
+    assert old.standard == "ISO 6336:2006" and new.factors["Y_beta"].clause.startswith("ISO 6336-3:2019")
+
+
+def test_zero_load_has_unbounded_safety_and_clean_json():
+    r = rated(0.0)
+    assert math.isinf(r.gears[0].S_H)
+    text = json.dumps(r.to_dict(), allow_nan=False)
+    assert '"S_H": {"value": null' in text
+
+
+@pytest.mark.parametrize(("missing", "message"), [
+    ("material", r"rating\.material is missing .* '18CrNiMo7-6'"),
+    ("flank_roughness", r"rating\.flank_roughness is missing .* 3\.0"),
+    ("root_roughness", r"rating\.root_roughness is missing .* 10\.0"),
+    ("viscosity_40", r"rating\.viscosity_40 is missing .*viscosity_40 = 100\.0"),
+])
+def test_missing_input_names_the_key_and_the_default(missing, message):
+    with pytest.raises(RatingError, match=message):
+        MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), spec(**{missing: None}))
+
+
+def test_material_per_gear_and_bad_values():
+    s = spec(material={"pinion": "18CrNiMo7-6", "wheel": "42CrMo4"})
+    r = rate_mesh(MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), s), 2000.0, 500.0)
+    assert r.gears[1]["sigma_Hlim"] < r.gears[0]["sigma_Hlim"] and r["Z_W"] > 1.0
+    with pytest.raises(RatingError, match="no entry for gear 'wheel'"):
+        MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), spec(material={"pinion": material("16MnCr5")}))
+    with pytest.raises(RatingError, match="standard"):
+        spec(standard="1996")
+    with pytest.raises(RatingError, match="S_Fmin"):
+        spec(S_Fmin=0)
+
+
+def test_internal_mesh_uses_the_difference_of_curvatures():
+    r = rated(500.0, 30.0, RING)
+    assert r.internal and r.gears[1]["Z_D"] == 1.0
+    assert r.gears[1].factors["Y_F"].name.endswith("(rack (basic rack))")
