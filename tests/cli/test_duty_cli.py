@@ -52,3 +52,16 @@ def test_bad_input_exits_2_with_one_line(tmp_path):
     assert result.exit_code == 2 and "no gear '9'" in result.output and "Traceback" not in result.output
     result = runner.invoke(app, ["duty", str(EXAMPLE), "--set", "duty_cycle.hours=-1"])
     assert result.exit_code == 2 and "total hours > 0" in result.output
+
+
+def test_rated_example_gives_damage_sums_and_modified_lives():
+    rated = Path(__file__).resolve().parents[2] / "examples" / "rating" / "simple_set_duty_cycle.toml"
+    result = runner.invoke(app, ["duty", str(rated), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert {(d["mesh"], d["gear"]) for d in data["damage"]} == {
+        ("sun-planet", "sun"), ("sun-planet", "planet"), ("planet-ring", "planet"), ("planet-ring", "ring")}
+    assert all(0 <= d["D_H"] < 1 and 0 <= d["D_F"] < 1 for d in data["damage"])  # the design lasts the cycle
+    planet = data["bearings"][0]
+    assert planet["Lnmh"]["value"] > planet["L10h"]["value"]  # clean oil, kappa > 1: a_ISO > 1
+    assert 0.98 < data["cycle"]["efficiency"] < 1.0

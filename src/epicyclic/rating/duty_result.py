@@ -251,11 +251,11 @@ class DutyCycleResult:
         rows: list[list[object]] = []
         for k, case in enumerate(self.duty.cases):
             eta = self.case_efficiency[k]
-            rows.append([case.name, case.gear or "-", f"{durations[k]:.4g}", f"{self.energy.input[k]:.4g}",
+            rows.append([case.name, case.gear or "-", f"{durations[k]:.6g}", f"{self.energy.input[k]:.4g}",
                          f"{self.energy.output[k]:.4g}", *[f"{by_source[s][k]:.4g}" for s in sources],
                          "-" if not math.isfinite(eta) else f"{eta:.4f}"])
         eta = self.cycle_efficiency
-        rows.append(["cycle", "", f"{np.sum(durations):.4g}", f"{self.input_energy:.4g}",
+        rows.append(["cycle", "", f"{np.sum(durations):.6g}", f"{self.input_energy:.4g}",
                      f"{self.output_energy:.4g}", *[f"{float(np.sum(by_source[s])):.4g}" for s in sources],
                      "-" if not math.isfinite(eta) else f"{eta:.4f}"])
         return head, rows
