@@ -38,7 +38,7 @@ def test_skf_calculation_example_1():
 @pytest.mark.parametrize("kind, exponent", [("cylindrical roller", 10 / 3), ("needle roller", 10 / 3),
                                             ("tapered roller", 10 / 3), ("deep groove ball", 3.0)])
 def test_life_exponent_by_type(kind, exponent):
-    # ISO 281:2007, eq. 1: p = 3 for ball bearings, 10/3 for roller bearings
+    # ISO 281:2007, 5.3 and 7.3: p = 3 for ball bearings, 10/3 for roller bearings
     assert BearingRating(kind, 1e4).life_exponent == pytest.approx(exponent)
 
 
@@ -58,7 +58,7 @@ def test_no_load_or_no_rotation_is_an_infinite_life():
 
 
 def test_reference_viscosity_iso_281_eq_13():
-    # ISO 281:2007, eq. 13: nu1 = 45000 n^-0.83 dm^-0.5 below 1000 r/min, 4500 n^-0.5 dm^-0.5 from 1000
+    # ISO 281:2007, 9.3.3: nu1 = 45000 n^-0.83 dm^-0.5 below 1000 r/min, 4500 n^-0.5 dm^-0.5 from 1000
     assert float(reference_viscosity(3000.0, 72.5)) == pytest.approx(4500 / math.sqrt(3000 * 72.5), rel=1e-12)
     assert float(reference_viscosity(500.0, 100.0)) == pytest.approx(45000 * 500 ** -0.83 / 10.0, rel=1e-12)
     # the two branches meet within 3 % at 1000 r/min (Figure 7 is one curve)
@@ -69,7 +69,7 @@ def test_reference_viscosity_iso_281_eq_13():
 @pytest.mark.parametrize("kind", ["ball", "roller"])
 @pytest.mark.parametrize("edge", [0.4, 1.0])
 def test_a_iso_bands_join_continuously(kind, edge):
-    # ISO 281:2007, eqs. 8/9: the constants of the three kappa bands make a_ISO continuous at 0.4 and 1
+    # ISO 281:2007, 9.3 (radial ball and roller bearings): the constants of the three kappa bands make a_ISO continuous at 0.4 and 1
     # (a check on the transcribed constants: 2.2649/0.4^0.054381 = 2.38062 and 1.9987/0.4^0.19087 = 2.38069,
     # equal to the standard's 5 digits; the exponent -9.3 magnifies that rounding to < 1e-3 in a_ISO)
     below, above = life_modification_factor([edge * (1 - 1e-12), edge], 0.3, kind)
@@ -121,7 +121,7 @@ def test_reliability_factor_table_12():
 @given(loads=st.lists(st.floats(100.0, 5e4), min_size=1, max_size=6),
        data=st.data(), exponent=st.sampled_from([3.0, 10 / 3]))
 def test_equivalent_load_and_spectrum_life_agree(loads, data, exponent):
-    # ISO 281:2007, 5.3: L_h from P_eq and the mean speed equals 1/Σ(q_i/L_h,i)
+    # Palmgren-Miner (SKF, Rolling bearings 2013, variable operating conditions): L_h from P_eq and the mean speed equals 1/Σ(q_i/L_h,i)
     n = len(loads)
     speeds = data.draw(st.lists(st.floats(10.0, 1e4), min_size=n, max_size=n))
     weights = data.draw(st.lists(st.floats(0.01, 1.0), min_size=n, max_size=n))

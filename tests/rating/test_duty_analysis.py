@@ -43,7 +43,7 @@ def _op(n, t):
 def test_planet_bearing_load_and_speed_closed_form():
     # Queitsch part I, eq. (26): each planet bearing of a simple set carries 2 F_t, F_t = 2000 T_sun/(N d_sun)
     # (lossless, spur, d_sun = m z = 60 mm); it turns at n_p - n_c = -(z_s/z_p)(n_s - n_c), n_c = n_s/(1 + 78/30).
-    # Over two cases of equal time: L10h = 1/Σ(q_i/L10h_i) (ISO 281:2007, 5.3).
+    # Over two cases of equal time: L10h = 1/Σ(q_i/L10h_i) (Palmgren-Miner, SKF Rolling bearings 2013: variable operating conditions).
     rating = BearingRating("needle roller", 15e3)
     cycle = DutyCycle((LoadCase("a", _op(3000.0, 100.0), hours=600.0), LoadCase("b", _op(1000.0, 250.0),
                                                                                  hours=600.0)))

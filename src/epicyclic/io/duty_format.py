@@ -9,7 +9,7 @@ central members ``sun``, ``ring``, ``carrier``)::
     fatigue_load_limit = "14 kN"       # C_u  } the modified life L_nm = a1 a_ISO L10:
     pitch_diameter = 45.0              # d_m, mm  } give all four,
     viscosity = "15 mm^2/s"            # nu at operating temperature } or none
-    contamination = 0.5                # e_C (ISO 281 Table 13)      }
+    contamination = 0.5                # e_C (ISO 281 clause 9)      }
     reliability = 90                   # %, ISO 281 Table 12 (default 90)
     radial_factor = 1.0                # X of P = X F_r + Y F_a (default 1)
     axial_factor = 0.0                 # Y (default 0)

@@ -1,7 +1,7 @@
 """Rating life of rolling bearings (ISO 281:2007): L10, L10h and the modified life L_nm.
 
 The basic rating life of a bearing under the equivalent dynamic load P, in
-millions of revolutions (ISO 281:2007, eq. 1 and 4.1):
+millions of revolutions (ISO 281:2007, 5.3 and 7.3):
 
 .. math:: L_{10} = \\left(\\frac{C}{P}\\right)^p, \\qquad
           L_{10h} = \\frac{10^6}{60\\,n}\\,L_{10}
@@ -11,13 +11,13 @@ for roller bearings, and n the speed of the rotating ring relative to the
 stationary one (1/min): a planet bearing turns at the planet's speed relative
 to the carrier, a central bearing at its shaft's speed relative to the housing.
 
-The modified rating life for reliability 100 − n % (ISO 281:2007, eq. 2):
+The modified rating life for reliability 100 − n % (ISO 281:2007, clause 9):
 
 .. math:: L_{nm} = a_1\\,a_{ISO}\\,L_{10}
 
 where a_1 is the reliability factor (Table 12) and a_ISO the life
 modification factor from the viscosity ratio κ = ν/ν1 and the fatigue-load
-ratio e_C C_u/P (eqs. 8–11, radial bearings): for radial ball bearings
+ratio e_C C_u/P (9.3, radial bearings): for radial ball bearings
 
 .. math:: a_{ISO} = 0.1\\left[1 - \\left(2.5671 - \\frac{b}{\\kappa^{c}}\\right)^{0.83}
           \\left(\\frac{e_C C_u}{P}\\right)^{1/3}\\right]^{-9.3}
@@ -31,15 +31,15 @@ with (b, c) = (2.2649, 0.054381) for 0.1 ≤ κ < 0.4, (1.9987, 0.19087) for
 with b = 1.3993, 1.2348, 1.2348 in the same bands.  κ above 4 counts as 4;
 a_ISO is limited to 50.  Below κ = 0.1 the equations do not apply: the life is
 refused (an error), not extrapolated.  The reference viscosity (ISO 281:2007,
-eq. 13 / Figure 7) is
+9.3.3) is
 
 .. math:: \\nu_1 = 45000\\,n^{-0.83}\\,d_m^{-0.5} \\;(n < 1000), \\qquad
           \\nu_1 = 4500\\,n^{-0.5}\\,d_m^{-0.5} \\;(n \\ge 1000)
 
 (ν1 in mm²/s, n in 1/min, d_m = (d + D)/2 in mm).
 
-Over a load spectrum with time shares q_i (Palmgren–Miner for bearings,
-ISO 281:2007 clause 5.3 / ISO/TR 1281-1):
+Over a load spectrum with time shares q_i (Palmgren–Miner for bearings; SKF,
+*Rolling bearings* (2013), "Life calculation with variable operating conditions"):
 
 .. math:: P_{eq} = \\left(\\frac{\\sum q_i n_i P_i^p}{\\sum q_i n_i}\\right)^{1/p}, \\qquad
           L_{h} = \\left(\\sum_i \\frac{q_i}{L_{h,i}}\\right)^{-1}
@@ -52,7 +52,7 @@ the X/Y tables of ISO 281 (which depend on F_a/C_0) are not.
 
 References
 ----------
-ISO 281:2007, *Rolling bearings — Dynamic load ratings and rating life*, eqs. 1, 2, 8–11, 13, Table 12;
+ISO 281:2007, *Rolling bearings — Dynamic load ratings and rating life*, 5.3, 7.3, clause 9, Table 12;
 SKF, *Rolling bearings* (catalogue 10000, 2013), "Selecting bearing size", Calculation example 1;
 ISO/TR 1281-2:2008 (background of a_ISO).
 """
@@ -99,14 +99,14 @@ BEARING_KINDS = {
     "tapered roller": "roller",
     "spherical roller": "roller",
 }
-#: Life exponent p by kind (ISO 281:2007, eq. 1).
+#: Life exponent p by kind (ISO 281:2007, 5.3 and 7.3).
 LIFE_EXPONENT = {"ball": 3.0, "roller": 10.0 / 3.0}
 #: Reliability (%) → life modification factor a_1 (ISO 281:2007, Table 12).
 RELIABILITY_FACTOR = {90.0: 1.0, 95.0: 0.64, 96.0: 0.55, 97.0: 0.47, 98.0: 0.37, 99.0: 0.25, 99.2: 0.22,
                       99.4: 0.19, 99.6: 0.16, 99.8: 0.12, 99.9: 0.093, 99.92: 0.087, 99.94: 0.08, 99.95: 0.077}
-#: Upper limit of a_ISO (ISO 281:2007, 9.3.1).
+#: Upper limit of a_ISO (ISO 281:2007, 9.3).
 A_ISO_LIMIT = 50.0
-#: The viscosity-ratio bands of eqs. 8–11: (upper κ, b ball, b roller, c).
+#: The viscosity-ratio bands of the a_ISO equations (9.3): (upper κ, b ball, b roller, c).
 _KAPPA_BANDS = ((0.4, 2.2649, 1.3993, 0.054381), (1.0, 1.9987, 1.2348, 0.19087), (math.inf, 1.9987, 1.2348, 0.071739))
 
 
@@ -119,7 +119,7 @@ def _positive(value: object, field: str, unit: str, *, allow_none: bool = False)
 
 
 def basic_rating_life(dynamic_load_rating: float, load: object, exponent: float) -> np.ndarray:
-    """Basic rating life L10 = (C/P)^p, millions of revolutions (ISO 281:2007, eq. 1).
+    """Basic rating life L10 = (C/P)^p, millions of revolutions (ISO 281:2007, 5.3 and 7.3).
 
     Parameters
     ----------
@@ -144,7 +144,7 @@ def basic_rating_life(dynamic_load_rating: float, load: object, exponent: float)
 
     References
     ----------
-    ISO 281:2007, eq. 1; SKF, *Rolling bearings* (2013), Calculation example 1.
+    ISO 281:2007, 5.3 and 7.3; SKF, *Rolling bearings* (2013), Calculation example 1.
     """
     p = np.abs(np.asarray(load, dtype=float))
     with np.errstate(divide="ignore", over="ignore"):
@@ -152,7 +152,7 @@ def basic_rating_life(dynamic_load_rating: float, load: object, exponent: float)
 
 
 def rating_life_hours(life: object, speed: object) -> np.ndarray:
-    """Rating life in operating hours, L_h = 10^6 L / (60 n) (ISO 281:2007, 4.1).
+    """Rating life in operating hours, L_h = 10^6 L / (60 n) (ISO 281:2007; SKF calculation example 1).
 
     Parameters
     ----------
@@ -173,7 +173,7 @@ def rating_life_hours(life: object, speed: object) -> np.ndarray:
 
     References
     ----------
-    ISO 281:2007, 4.1 (L10h); SKF, *Rolling bearings* (2013), Calculation example 1 (940 h).
+    ISO 281:2007 (L10h); SKF, *Rolling bearings* (2013), Calculation example 1 (940 h).
     """
     n = np.abs(np.asarray(speed, dtype=float))
     life = np.asarray(life, dtype=float)
@@ -182,7 +182,7 @@ def rating_life_hours(life: object, speed: object) -> np.ndarray:
 
 
 def reference_viscosity(speed: object, pitch_diameter: float) -> np.ndarray:
-    """Reference kinematic viscosity ν1 for adequate lubrication, mm²/s (ISO 281:2007, eq. 13).
+    """Reference kinematic viscosity ν1 for adequate lubrication, mm²/s (ISO 281:2007, 9.3.3).
 
     Parameters
     ----------
@@ -203,7 +203,7 @@ def reference_viscosity(speed: object, pitch_diameter: float) -> np.ndarray:
 
     References
     ----------
-    ISO 281:2007, eq. 13 (Figure 7).
+    ISO 281:2007, 9.3.3 (viscosity ratio).
     """
     n = np.abs(np.asarray(speed, dtype=float))
     with np.errstate(divide="ignore"):
@@ -213,7 +213,7 @@ def reference_viscosity(speed: object, pitch_diameter: float) -> np.ndarray:
 
 
 def life_modification_factor(viscosity_ratio: object, load_ratio: object, kind: str) -> np.ndarray:
-    """a_ISO of radial bearings from κ and e_C C_u/P (ISO 281:2007, eqs. 8–11; see the module text).
+    """a_ISO of radial bearings from κ and e_C C_u/P (ISO 281:2007, 9.3; see the module text).
 
     Parameters
     ----------
@@ -243,7 +243,7 @@ def life_modification_factor(viscosity_ratio: object, load_ratio: object, kind: 
 
     References
     ----------
-    ISO 281:2007, eqs. 8 (radial ball) and 9 (radial roller), 9.3.1 (a_ISO ≤ 50).
+    ISO 281:2007, 9.3 (radial ball and radial roller bearings; a_ISO ≤ 50).
     """
     if kind not in LIFE_EXPONENT:
         raise BearingLifeError(f"life_modification_factor: kind must be 'ball' or 'roller', got {kind!r}.")
@@ -253,7 +253,7 @@ def life_modification_factor(viscosity_ratio: object, load_ratio: object, kind: 
         low = float(np.nanmin(kappa)) if kappa.size else float("nan")
         raise BearingLifeError(
             f"life_modification_factor: the viscosity ratio kappa = nu/nu1 must be at least 0.1 (ISO 281:2007, "
-            f"9.3.3: below it the equations do not apply), got {low:.3g}; use a more viscous oil or give no "
+            f"9.3: below it the equations do not apply), got {low:.3g}; use a more viscous oil or give no "
             "'viscosity' to get the basic life L10 only.")
     if np.any(~np.isfinite(ratio)) or np.any(ratio < 0):
         raise BearingLifeError(f"life_modification_factor: e_C C_u/P must be >= 0, got {ratio!r}.")
@@ -341,7 +341,7 @@ def equivalent_load(loads: object, speeds: object, shares: object, exponent: flo
 
     References
     ----------
-    ISO 281:2007, 5.3 (variable load); ISO/TR 1281-1:2008, 6.4.
+    SKF, *Rolling bearings* (2013), "Life calculation with variable operating conditions"; Palmgren 1924.
     """
     p = np.abs(np.asarray(loads, dtype=float))
     weight = np.abs(np.asarray(speeds, dtype=float)) * np.asarray(shares, dtype=float)
@@ -373,7 +373,8 @@ def spectrum_life(lives: object, shares: object) -> float:
 
     References
     ----------
-    ISO 281:2007, 5.3; Palmgren 1924 (linear damage accumulation).
+    Palmgren 1924, Miner 1945 (linear damage accumulation); SKF, *Rolling bearings* (2013), "Life
+    calculation with variable operating conditions".
     """
     life = np.asarray(lives, dtype=float)
     q = np.asarray(shares, dtype=float)
@@ -399,7 +400,7 @@ class BearingRating:
     viscosity : float, optional
         Kinematic viscosity of the oil at operating temperature, mm²/s.
     contamination : float, optional
-        e_C in [0, 1] (ISO 281:2007, Table 13).
+        e_C in [0, 1] (ISO 281:2007, clause 9: typical values by cleanliness).
     reliability : float, default 90
         %, one of ISO 281 Table 12.
     radial_factor, axial_factor : float, default 1 and 0
@@ -441,7 +442,7 @@ class BearingRating:
         _positive(self.exponent, "exponent p", "3 ball, 10/3 roller", allow_none=True)
         e = self.contamination
         if e is not None and (isinstance(e, bool) or not isinstance(e, (int, float)) or not 0 <= e <= 1):
-            raise BearingLifeError(f"bearing: contamination e_C must lie in [0, 1] (ISO 281 Table 13), got {e!r}.")
+            raise BearingLifeError(f"bearing: contamination e_C must lie in [0, 1] (ISO 281 clause 9), got {e!r}.")
         reliability_factor(self.reliability)
         for name in ("radial_factor", "axial_factor", "external_load"):
             v = getattr(self, name)
@@ -473,7 +474,7 @@ class BearingRating:
         return self.fatigue_load_limit is not None
 
     def equivalent_dynamic_load(self, radial: object, axial: object = 0.0) -> np.ndarray:
-        """P = X F_r + Y F_a, N (ISO 281:2007, 6.2).
+        """P = X F_r + Y F_a, N (ISO 281:2007, 5.2 and 7.2).
 
         Parameters
         ----------

@@ -21,7 +21,7 @@ life over the spectrum (:class:`~epicyclic.rating.duty_result.BearingLife`).
 
 References
 ----------
-ISO 281:2007, eqs. 1, 2 and 5.3 (life under variable load); Palmgren 1924, Miner 1945;
+ISO 281:2007, 5.3, 7.3 and clause 9; Palmgren 1924, Miner 1945 (life under variable load);
 Queitsch part I, eqs. (23)–(26) (planet bearing load from the tooth forces);
 Brandenberger 1952, eqs. 3', 7 (losses in the direction of the rolling power).
 """
@@ -165,7 +165,7 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
 
     References
     ----------
-    ISO 281:2007, eq. 1 and 5.3; Queitsch part I, eqs. (23)–(26); Brandenberger 1952, eq. 7.
+    ISO 281:2007, 5.3 and 7.3; Queitsch part I, eqs. (23)–(26); Brandenberger 1952, eq. 7.
 
     Examples
     --------

@@ -8,7 +8,7 @@ Infinity).
 
 References
 ----------
-ISO 281:2007, eqs. 1, 2 and 5.3; Palmgren 1924, Miner 1945.
+ISO 281:2007, 5.3, 7.3 and clause 9; Palmgren 1924, Miner 1945.
 """
 
 from __future__ import annotations
