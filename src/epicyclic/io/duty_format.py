@@ -85,7 +85,10 @@ def _dimensional(reader, value: object, key: str, where: str) -> float:
     if isinstance(value, str) and any(c.isalpha() for c in value):
         from pint.errors import PintError
 
-        from ..units import UnitError, _parse  # the project's unit grammar (never pint's own parser)
+        from ..units import (  # the project's unit grammar (never pint's own parser)
+            UnitError,
+            _parse,
+        )
 
         try:
             number = float(_parse(value, key, "power").to(target).magnitude)
