@@ -11,7 +11,9 @@ from pathlib import Path
 import pytest
 
 from .test_bad_input_corpus import Bad
-from .test_bad_input_corpus import test_bad_input_gives_one_clear_line_and_exit_2 as check_bad_input
+from .test_bad_input_corpus import (
+    test_bad_input_gives_one_clear_line_and_exit_2 as check_bad_input,
+)
 
 EXAMPLE = (Path(__file__).resolve().parents[2] / "examples" / "zf_8hp70_geometry.toml").read_text(encoding="utf-8")
 
