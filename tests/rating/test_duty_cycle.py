@@ -65,3 +65,21 @@ def test_from_operating_points_as_a_rexs_load_spectrum_maps():
     with pytest.raises(DutyCycleError, match="not both"):
         DutyCycle.from_operating_points(ops, hours=[1.0, 1.0], shares=[0.5, 0.5])
     assert cycle.to_dict()["cases"][1]["speeds"] == {"in": 3000.0}
+
+
+def test_from_rexs_load_cases():
+    # the shape of epicyclic.exchange.operating.RexsLoadCase (branch rexs): id, gear, duration_fraction,
+    # to_operating_point(); REXS gives fractions of the gear unit's time, no hours
+    from types import SimpleNamespace
+
+    cases = [SimpleNamespace(id=k, gear=g, duration_fraction=f, to_operating_point=lambda: OP)
+             for k, g, f in ((3, "1", 0.2), (7, "2", 0.8))]
+    cycle = DutyCycle.from_load_cases(cases, total_hours=500.0)
+    assert cycle.names == ("load case 3", "load case 7") and [c.gear for c in cycle.cases] == ["1", "2"]
+    assert cycle.hours.tolist() == pytest.approx([100.0, 400.0])
+    cases[1].duration_fraction = None
+    with pytest.raises(DutyCycleError, match="load case\\(s\\) 7 give no load_duration_fraction"):
+        DutyCycle.from_load_cases(cases)
+    cases[1].duration_fraction = 0.5
+    with pytest.raises(DutyCycleError, match="sum to 0.7"):
+        DutyCycle.from_load_cases(cases)

@@ -228,6 +228,54 @@ class DutyCycle:
         cases = [LoadCase(n, op, g, **{key: d}) for n, op, g, d in zip(names, points, gears, durations)]
         return cls(tuple(cases), total_hours, name)
 
+    @classmethod
+    def from_load_cases(cls, load_cases, *, total_hours: float | None = None,
+                        name: str = "load spectrum") -> DutyCycle:
+        """A cycle from the load cases of a REXS ``load_spectrum`` (or anything shaped like them).
+
+        Each load case needs ``to_operating_point()``, ``duration_fraction`` (its time share, 0 … 1),
+        ``gear`` (a gear name or None) and ``id`` (the REXS load case id); the case is named
+        ``load case <id>``.
+
+        Parameters
+        ----------
+        load_cases : iterable
+            E.g. ``epicyclic.exchange.operating.RexsLoadCase`` objects of one spectrum.
+        total_hours : float, optional
+            The spectrum's hours (REXS gives only fractions).
+        name : str, default "load spectrum"
+
+        Returns
+        -------
+        DutyCycle
+
+        Raises
+        ------
+        DutyCycleError
+            A load case without a duration fraction (the message names its id), fractions not
+            summing to 1, and the errors of the constructor.
+
+        Examples
+        --------
+        >>> from types import SimpleNamespace
+        >>> from epicyclic import OperatingPoint
+        >>> op = OperatingPoint(speeds={"in": 1500}, torques={"in": 80}, drives=["in"], loads=["out"])
+        >>> cases = [SimpleNamespace(id=k, gear=None, duration_fraction=f, to_operating_point=lambda: op)
+        ...          for k, f in ((1, 0.25), (2, 0.75))]
+        >>> DutyCycle.from_load_cases(cases, total_hours=4000.0).hours.tolist()
+        [1000.0, 3000.0]
+        """
+        cases = list(load_cases)
+        missing = [getattr(c, "id", k + 1) for k, c in enumerate(cases) if getattr(c, "duration_fraction", None) is None]
+        if missing:
+            raise DutyCycleError(f"load spectrum: load case(s) {', '.join(map(str, missing))} give no "
+                                 "load_duration_fraction; a duty cycle needs the time share of every case.")
+        return cls.from_operating_points(
+            [c.to_operating_point() for c in cases], shares=[float(c.duration_fraction) for c in cases],
+            gears=[getattr(c, "gear", None) for c in cases],
+            names=[f"load case {getattr(c, 'id', k + 1)}" for k, c in enumerate(cases)],
+            total_hours=total_hours, name=name)
+
     def __len__(self) -> int:
         return len(self.cases)
 
