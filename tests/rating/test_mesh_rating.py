@@ -17,8 +17,8 @@ RING = MeshGeometry(GearGeometry(24, BasicRack(2.0), 0.2), GearGeometry(72, Basi
 
 
 def spec(**kw):
-    base = dict(material="18CrNiMo7-6", flank_roughness=3.0, root_roughness=10.0, viscosity_40=100.0,
-                K_Hbeta=1.2, application_factor=1.0)
+    base = {"material": "18CrNiMo7-6", "flank_roughness": 3.0, "root_roughness": 10.0, "viscosity_40": 100.0,
+            "K_Hbeta": 1.2, "application_factor": 1.0}
     base.update(kw)
     return RatingSpec(**base)
 
@@ -111,3 +111,64 @@ def test_internal_mesh_uses_the_difference_of_curvatures():
     r = rated(500.0, 30.0, RING)
     assert r.internal and r.gears[1]["Z_D"] == 1.0
     assert r.gears[1].factors["Y_F"].name.endswith("(rack (basic rack))")
+
+
+def test_damage_over_cases_is_miner_on_the_life_factor_curves():
+    inp = MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), spec())
+    r = rate_mesh(inp, np.array([400.0, 700.0]), np.array([500.0, 500.0]), hours=1000.0)
+    g = r.gears[0]
+    d_h, d_f = g.damage([400.0, 600.0])
+    expected = 0.0
+    for k, hours in enumerate((400.0, 600.0)):
+        ratio = g["sigma_H"][k] / (g["sigma_HG"][k] / g["Z_NT"][k])
+        expected += g["N_L"][k] / 1000.0 * hours / g.pitting_curve.cycles_to_failure(ratio)
+    assert 0 < d_h < math.inf and d_h == pytest.approx(expected, rel=1e-12) and 0 < d_f < math.inf
+    # the whole required life at one case: D = 1 exactly where S_H = 1 ... and D < 1 where S_H > 1
+    one = rate_mesh(inp, 700.0, 500.0, hours=1000.0).gears[0]
+    assert (one.damage(1000.0)[0] < 1.0) == (one.S_H > 1.0)
+
+
+@pytest.mark.parametrize("mesh", [PAIR, RING], ids=["external", "internal"])
+def test_stresses_and_safeties_are_the_products_of_their_factors(mesh):
+    # ISO 6336-2 eqs. (1)-(4), ISO 6336-3 eqs. (1)-(5), factor by factor from the reported values
+    r = rate_mesh(MeshInput("pair", mesh, 30.0, ("pinion", "wheel"), spec(K_Hbeta=None, application_factor=1.4),
+                            load_sharing=1.15), 800.0, 2500.0)
+    m = r.factors
+    f = {k: v.value for k, v in m.items()}
+    u = f["u"]
+    ratio = (u - 1) / u if mesh.internal else (u + 1) / u
+    assert f["F_t"] == pytest.approx(2000 * 800 / mesh.gear1.reference_diameter)
+    sigma_h0 = f["Z_H"] * f["Z_E"] * f["Z_epsilon"] * f["Z_beta"] * math.sqrt(f["F_t"] / (f["d_1"] * f["b"]) * ratio)
+    assert f["sigma_H0"] == pytest.approx(sigma_h0, rel=1e-12)
+    load_h = f["K_A"] * f["K_gamma"] * f["K_v"] * f["K_Hbeta"] * f["K_Halpha"]
+    load_f = f["K_A"] * f["K_gamma"] * f["K_v"] * f["K_Fbeta"] * f["K_Falpha"]
+    assert f["K_gamma"] == 1.15 and f["K_A"] == 1.4
+    for g, zbd in zip(r.gears, ("Z_B", "Z_D")):
+        q = {k: v.value for k, v in g.factors.items()}
+        assert q["sigma_H"] == pytest.approx(q[zbd] * sigma_h0 * math.sqrt(load_h), rel=1e-12)
+        limit_h = q["sigma_Hlim"] * q["Z_NT"] * f["Z_L"] * f["Z_v"] * f["Z_R"] * f["Z_W"] * f["Z_X"]
+        assert q["S_H"] == pytest.approx(limit_h / q["sigma_H"], rel=1e-12)
+        assert q["sigma_HP"] == pytest.approx(limit_h / g.S_Hmin, rel=1e-12)
+        sigma_f0 = f["F_t"] / (f["b"] * f["m_n"]) * q["Y_F"] * q["Y_S"] * f["Y_beta"] * f["Y_B"] * f["Y_DT"]
+        assert q["sigma_F"] == pytest.approx(sigma_f0 * load_f, rel=1e-12)
+        limit_f = (q["sigma_Flim"] * q["Y_ST"] * q["Y_NT"] * q["Y_deltarelT"] * q["Y_RrelT"] * q["Y_X"]
+                   * q["Y_M"])
+        assert q["S_F"] == pytest.approx(limit_f / q["sigma_F"], rel=1e-12)
+        assert q["sigma_FP"] == pytest.approx(limit_f / g.S_Fmin, rel=1e-12)
+
+
+@pytest.mark.parametrize("internal", [False, True])
+def test_nominal_contact_stress_is_hertz_at_the_pitch_point(internal):
+    # Hertz, two cylinders of radii ρ1, ρ2 (ρ2 concave for a ring): p = √(F_n E* / (π b R)),
+    # 1/R = 1/ρ1 ± 1/ρ2, ρ = r sin α_t, F_n = F_t / cos α_t, 1/E* = Σ (1 − ν²)/E (Johnson, Contact Mechanics, 4.2)
+    rack = BasicRack(3.0)
+    mesh = (MeshGeometry(GearGeometry(25, rack), GearGeometry(75, rack, internal=True)) if internal
+            else MeshGeometry(GearGeometry(25, rack), GearGeometry(50, rack)))
+    r = rated(400.0, 30.0, mesh)
+    alpha = math.radians(20)
+    rho1, rho2 = (g.reference_diameter / 2 * math.sin(alpha) for g in (mesh.gear1, mesh.gear2))
+    inv_r = 1 / rho1 - 1 / rho2 if internal else 1 / rho1 + 1 / rho2
+    e_star = 1 / (2 * (1 - 0.3 ** 2) / 206000.0)
+    f_n = 2000 * 400.0 / mesh.gear1.reference_diameter / math.cos(alpha)
+    hertz = math.sqrt(f_n * e_star * inv_r / (math.pi * 30.0))
+    assert r["sigma_H0"] / r["Z_epsilon"] == pytest.approx(hertz, rel=1e-12)

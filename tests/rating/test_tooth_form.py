@@ -13,7 +13,12 @@ import math
 import pytest
 
 from epicyclic.rating import RatingError, RatingWarning
-from epicyclic.rating.tooth_form import Cutter, external_tooth_form, internal_tooth_form, stress_correction
+from epicyclic.rating.tooth_form import (
+    Cutter,
+    external_tooth_form,
+    internal_tooth_form,
+    stress_correction,
+)
 
 A20 = math.radians(20)
 

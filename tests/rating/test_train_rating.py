@@ -8,7 +8,13 @@ import pytest
 from epicyclic import Brake, GearStage, GearTrain, OperatingPoint, PlanetarySet, solve
 from epicyclic.geometry import BasicRack, SetGeometry, StageGeometry
 from epicyclic.io import load_train_file
-from epicyclic.rating import RatingError, RatingSpec, mesh_inputs, rate_batch, rate_solution
+from epicyclic.rating import (
+    RatingError,
+    RatingSpec,
+    mesh_inputs,
+    rate_batch,
+    rate_solution,
+)
 from epicyclic.solver.batch import solve_batch
 
 SPEC = RatingSpec(material="18CrNiMo7-6", flank_roughness=3.0, root_roughness=10.0, viscosity_40=100.0)
@@ -77,3 +83,29 @@ def test_the_8hp_example_in_every_gear():
 def test_geometry_without_face_width_is_refused():
     with pytest.raises(RatingError, match="face width"):
         mesh_inputs({"P": SetGeometry.create(SET, 3.0)}, SPEC)
+
+
+def test_double_planet_set_has_three_meshes_with_one_force_and_one_velocity():
+    # lossless, unshifted: every mesh carries F_t = 2000 T_sun/(N d_sun) at one pitch line velocity
+    p = PlanetarySet.double_planet("D", sun="in", ring="r", carrier="out", z_sun=30, z_planet_sun=17,
+                                   z_planet_ring=18, z_ring=90, planets=3)
+    sol = solve(GearTrain([p, Brake("B", "out")]), OperatingPoint(speeds={"in": 1000}, torques={"in": 100},
+                                                                 drives=["in"], loads=["r"]))
+    rating = rate_solution(sol, {"D": SetGeometry.create(p, 2.0, face_width=20.0)}, SPEC)
+    assert [m.mesh for m in rating.meshes] == ["sun-planet1", "planet1-planet2", "planet2-ring"]
+    for m in rating.meshes:
+        assert m["F_t"] == pytest.approx(2000 * 100 / 3 / 60, rel=1e-9)
+        assert m["v"] == pytest.approx(math.pi * 60 * 1000 / 60000, rel=1e-9)
+    assert [g["Y_M"] for g in rating.meshes[1].gears] == [0.7, 0.7]     # both planets are idlers
+
+
+def test_internal_stage_mesh_and_a_ring_that_drives():
+    # a ring (driving, 60 teeth) drives a pinion (20): gear 1 of the mesh is the pinion, its torque 1/3
+    stage = GearStage.from_teeth("G", "in", "out", [(60, 20, "internal")])
+    point = OperatingPoint(speeds={"in": 600}, torques={"in": 300}, drives=["in"], loads=["out"])
+    rating = rate_solution(solve(GearTrain([stage]), point),
+                           {"G": StageGeometry(stage, BasicRack(2.0), face_width=25.0)}, SPEC)
+    (mesh,) = rating.meshes
+    assert mesh.internal and [g.gear for g in mesh.gears] == ["driven", "driving"]
+    assert mesh["F_t"] == pytest.approx(2000 * 300 / 120)                   # at the ring's pitch circle
+    assert mesh["v"] == pytest.approx(math.pi * 120 * 600 / 60000)

@@ -14,12 +14,22 @@ from __future__ import annotations
 import json
 import warnings
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
-from ._common import FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded, load, \
-    report_title, solved
+from ._common import (
+    FormatOption,
+    OutOption,
+    OutputFormat,
+    SetOption,
+    check_finite,
+    emit,
+    guarded,
+    load,
+    report_title,
+    solved,
+)
 
 __all__ = ["rate", "rate_file"]
 
@@ -100,9 +110,9 @@ def rate(
     file: Annotated[Path, typer.Argument(help="Train description (.toml) with [rating] and geometry tables.")],
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
-    gear: Annotated[Optional[str], typer.Option(
+    gear: Annotated[str | None, typer.Option(
         "--gear", "-g", help="Rate in this gear of the \\[transmission] schedule ('all': every gear).")] = None,
-    explain: Annotated[Optional[str], typer.Option(
+    explain: Annotated[str | None, typer.Option(
         "--explain", help="Print the worked rating of one mesh: ELEMENT:MESH[:GEAR], e.g. P1:sun-planet:planet.")]
         = None,
     set_: SetOption = None,

@@ -34,8 +34,18 @@ import numpy as np
 
 from .errors import warn_validity
 
-__all__ = ["zone_factor", "elasticity_factor", "contact_ratio_factor", "helix_factor", "single_pair_factors",
-           "lubricant_factor", "speed_factor", "roughness_factor", "work_hardening_factor", "pitch_curvature"]
+__all__ = [
+    "contact_ratio_factor",
+    "elasticity_factor",
+    "helix_factor",
+    "lubricant_factor",
+    "pitch_curvature",
+    "roughness_factor",
+    "single_pair_factors",
+    "speed_factor",
+    "work_hardening_factor",
+    "zone_factor",
+]
 
 
 def zone_factor(alpha_t: float, alpha_wt: float, beta_b: float) -> float:

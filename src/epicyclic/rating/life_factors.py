@@ -41,6 +41,7 @@ ISO 6336-6:2019, clause 5 (Palmgren–Miner rule for a load spectrum).
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -49,8 +50,17 @@ import numpy as np
 
 from .errors import RatingError
 
-__all__ = ["SNCurve", "TREATMENTS", "pitting_curve", "bending_curve", "pitting_life_factor",
-           "bending_life_factor", "pitting_damage", "bending_damage", "miner_damage"]
+__all__ = [
+    "TREATMENTS",
+    "SNCurve",
+    "bending_curve",
+    "bending_damage",
+    "bending_life_factor",
+    "miner_damage",
+    "pitting_curve",
+    "pitting_damage",
+    "pitting_life_factor",
+]
 
 #: Material treatments by their ISO 6336-5 symbols, what each means.
 TREATMENTS = {
@@ -181,7 +191,7 @@ class SNCurve:
         if ratio > self.static_factor:
             return 0.0
         pts = self.points
-        for (n0, f0), (n1, f1) in zip(pts, pts[1:]):
+        for (n0, f0), (n1, f1) in itertools.pairwise(pts):
             if f1 <= ratio <= f0 and f0 != f1:
                 t = (math.log10(ratio) - math.log10(f0)) / (math.log10(f1) - math.log10(f0))
                 return 10.0 ** (math.log10(n0) + t * (math.log10(n1) - math.log10(n0)))

@@ -19,7 +19,7 @@ value per load case) and return the same shape: a duty cycle is rated in one cal
 * K_Hα, K_Fα, method B (ISO 6336-1, 8.3): F_tH = F_t K_A K_v K_Hβ; for ε_γ ≤ 2
   K_Hα = ε_γ/2 (0.9 + 0.4 c_γα (f_pb − y_α)/(F_tH/b)), otherwise
   0.9 + 0.4 √(2(ε_γ − 1)/ε_γ) c_γα (f_pb − y_α)/(F_tH/b); limited to 1 … ε_γ/(ε_α Z_ε²)
-  (K_Fα: 2006 up to ε_γ/(0.25 ε_α + 0.75), 2019 the same as K_Hα).
+  (K_Fα up to ε_γ/(0.25 ε_α + 0.75), the ε_γ/(ε_α Y_ε) of eq. (76)).
 * Pitch and profile deviations from the accuracy grade Q (ISO 1328-1:2013, 5.2):
   f_pt = (0.001 d + 0.4 m_n + 5) 2^((Q−5)/2), f_fα = (2.5 √m_n + 0.17 √d + 0.5) 2^((Q−5)/2),
   f_Hβ = (0.07 √d + 0.45 √b + 3) 2^((Q−5)/2) µm; f_pb = f_pt cos α_t.
@@ -36,10 +36,18 @@ import math
 
 import numpy as np
 
-from .errors import RatingError, warn_validity
+from .errors import RatingError
 
-__all__ = ["single_stiffness", "mesh_stiffness", "dynamic_factor", "face_load_factors", "transverse_load_factors",
-           "deviations", "reduced_mass", "basic_rack_factor"]
+__all__ = [
+    "basic_rack_factor",
+    "deviations",
+    "dynamic_factor",
+    "face_load_factors",
+    "mesh_stiffness",
+    "reduced_mass",
+    "single_stiffness",
+    "transverse_load_factors",
+]
 
 _Q = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
 
@@ -328,7 +336,7 @@ def face_load_factors(k_hbeta_given, force_per_width, c_gamma_beta, misalignment
 
 def transverse_load_factors(force_per_width, c_gamma_alpha, f_pb_eff: float, eps_alpha: float, eps_gamma: float,
                             z_eps: float, edition: str):
-    """(K_Hα, K_Fα) by method B, limited to 1 … ε_γ/(ε_α Z_ε²) (K_Fα 2006: … ε_γ/(ε_α Y_ε)).
+    """(K_Hα, K_Fα) by method B, limited to 1 … ε_γ/(ε_α Z_ε²) (K_Fα: 1 … ε_γ/(ε_α Y_ε)).
 
     Parameters
     ----------
@@ -343,7 +351,7 @@ def transverse_load_factors(force_per_width, c_gamma_alpha, f_pb_eff: float, eps
     z_eps : float
         Z_ε.
     edition : str
-        ``"2006"`` or ``"2019"``.
+        ``"2006"`` or ``"2019"`` (the same here: the limit of K_Fα is kept in both).
 
     Returns
     -------
@@ -351,7 +359,7 @@ def transverse_load_factors(force_per_width, c_gamma_alpha, f_pb_eff: float, eps
 
     References
     ----------
-    ISO 6336-1:2006, 8.3.2, eqs. (73)–(76) (Y_ε = 0.25 + 0.75/ε_αn in the K_Fα limit);
+    ISO 6336-1:2006, 8.3.2, eqs. (73)–(76) (Y_ε = 0.25 + 0.75/ε_α in the K_Fα limit);
     ISO 6336-1:2019, 8.3.
     """
     w = np.maximum(np.asarray(force_per_width, dtype=float), 1e-9)
@@ -361,30 +369,8 @@ def transverse_load_factors(force_per_width, c_gamma_alpha, f_pb_eff: float, eps
     else:
         k = 0.9 + 0.4 * math.sqrt(2.0 * (eps_gamma - 1.0) / eps_gamma) * term
     k_h = np.clip(k, 1.0, eps_gamma / (eps_alpha * z_eps ** 2))
-    if edition == "2006":
-        y_eps = 0.25 + 0.75 / eps_alpha
-        k_f = np.clip(k, 1.0, eps_gamma / (eps_alpha * y_eps))
-    else:
-        k_f = k_h
+    y_eps = 0.25 + 0.75 / eps_alpha
+    k_f = np.clip(k, 1.0, eps_gamma / (eps_alpha * y_eps))
+    del edition
     return k_h, k_f
 
-
-def check_line_load(line_load, clause: str = "ISO 6336-1:2006, 6.3.1") -> None:
-    """Warn where K_A F_t/b < 50 N/mm (below the range K_v method B is made for).
-
-    Parameters
-    ----------
-    line_load : float or ndarray
-        K_A F_t / b, N/mm.
-    clause : str
-        The clause the warning names.
-
-    References
-    ----------
-    ISO 6336-1:2006, 6.3.1 (method B for K_A F_t/b ≥ 50 N/mm ... the factors are
-    computed with the load as it is below).
-    """
-    low = np.asarray(line_load, dtype=float)
-    if np.any(low < 50.0):
-        warn_validity(f"line load K_A F_t/b = {float(np.min(low)):.3g} N/mm is below 50 N/mm; "
-                      "K_v, K_Hbeta and K_Halpha are computed with it as it is (uncertain at light loads).", clause)

@@ -33,7 +33,7 @@ from typing import Any
 from .errors import RatingError, warn_validity
 from .life_factors import TREATMENTS
 
-__all__ = ["Material", "material", "material_names", "QUALITIES", "DEFAULT_QUALITY", "allowable_stress_numbers"]
+__all__ = ["DEFAULT_QUALITY", "QUALITIES", "Material", "allowable_stress_numbers", "material", "material_names"]
 
 #: Material quality grades of ISO 6336-5 (low, medium, high demands on production and testing).
 QUALITIES = ("ML", "MQ", "ME")

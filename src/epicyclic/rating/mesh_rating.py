@@ -258,7 +258,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     y_f = 0.5 * (_running_in_alpha(mats[0], s["f_falpha"], v) + _running_in_alpha(mats[1], s["f_falpha"], v))
     f_pb_eff, f_f_eff = np.maximum(0.0, s["f_pb"] - y_a), np.maximum(0.0, s["f_falpha"] - y_f)
     c_p, c_ga, c_gb = load_factors.mesh_stiffness(s["c_prime_th"], s["eps_alpha"], line)
-    k_v, resonance, n_e1 = load_factors.dynamic_factor(
+    k_v, resonance, _ = load_factors.dynamic_factor(
         n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, f_pb_eff, f_f_eff, s["eps_gamma"], spec.tip_relief)
     f_m = line * k_v
     f_bx = np.maximum.reduce([np.full(f_m.shape, 1.33 * spec.shaft_deflection + s["f_Hbeta"]), 0.005 * f_m,
@@ -316,9 +316,10 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
             Factor("sigma_FP", _out(sigma_fg / spec.S_Fmin), "N/mm^2", p3("eq. (4)"), "permissible root stress"),
             Factor("S_F", _out(_safety(sigma_fg, sigma_f)), "1", p3("eq. (5)"), "safety factor for bending"),
         ]
-        gears.append(GearRating(name, {x.symbol: x for x in f}, spec.S_Hmin, spec.S_Fmin))
+        gears.append(GearRating(name, {x.symbol: x for x in f}, spec.S_Hmin, spec.S_Fmin, s["Z_curves"][i],
+                                s["Y_curves"][i], float(hours)))
     p1, p2 = (lambda w: clause(1, year, w)), (lambda w: clause(2, year, w))
-    p3 = lambda w: clause(3, year, w)  # noqa: E731
+    p3 = lambda w: clause(3, year, w)
     mesh_factors = [
         Factor("F_t", _out(f_t), "N", p1("6.1"), "nominal tangential force at the reference circle"),
         Factor("v", _out(v), "m/s", p1("6.1"), "pitch line velocity (relative to the carrier)"),
@@ -357,8 +358,8 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("Y_B", s["Y_B"], "1", p3("7.4"), "rim thickness factor (solid gears)"),
         Factor("Y_DT", s["Y_DT"], "1", p3("7.5"), "deep tooth factor"),
     ]
-    notes = tuple(spec.notes) + ((f"K_Hbeta by method C from F_betax = 1.33 f_sh + f_Hbeta "
-                                  f"(f_Hbeta = {s['f_Hbeta']:.1f} um, grade {spec.accuracy_grade})",)
-                                 if spec.K_Hbeta is None else ())
+    method_c = (f"K_Hbeta by method C from F_betax = 1.33 f_sh + f_Hbeta "
+                f"(f_Hbeta = {s['f_Hbeta']:.1f} um, grade {spec.accuracy_grade})")
+    notes = tuple(spec.notes) + ((method_c,) if spec.K_Hbeta is None else ())
     return MeshRating(inp.element, mesh.name, f"ISO 6336:{year}", "B", {x.symbol: x for x in mesh_factors},
                       (gears[0], gears[1]), mesh.internal, notes)

@@ -19,9 +19,16 @@ import html
 
 import numpy as np
 
-
-__all__ = ["summary_rows", "mesh_rows", "text_report", "markdown_report", "html_section", "html_document",
-           "SUMMARY_HEAD", "FACTOR_HEAD"]
+__all__ = [
+    "FACTOR_HEAD",
+    "SUMMARY_HEAD",
+    "html_document",
+    "html_section",
+    "markdown_report",
+    "mesh_rows",
+    "summary_rows",
+    "text_report",
+]
 
 SUMMARY_HEAD = ["element", "mesh", "gear", "sigma_H [N/mm^2]", "sigma_HP [N/mm^2]", "S_H", "sigma_F [N/mm^2]",
                 "sigma_FP [N/mm^2]", "S_F", "ok"]
@@ -36,8 +43,10 @@ def _fmt(value) -> str:
     number = float(array.reshape(-1)[0]) if array.ndim else float(array)
     if not np.isfinite(number):
         return "unbounded"
-    if number == 0 or 1e-3 <= abs(number) < 1e6:
-        return f"{number:.4g}" if abs(number) >= 1000 else f"{number:.4f}".rstrip("0").rstrip(".") or "0"
+    if number == 0 or 1e-3 <= abs(number) < 1000:
+        return f"{number:.4f}".rstrip("0").rstrip(".") or "0"
+    if 1000 <= abs(number) < 1e7:
+        return f"{number:.1f}"
     return f"{number:.4g}"
 
 
@@ -177,7 +186,7 @@ def _html_rows(rows, safety_columns) -> str:
         for i, c in enumerate(r):
             bad = c.endswith(" !") and i in safety_columns
             text = html.escape(c[:-2] if bad else c)
-            cells.append(f"<td class='below'>{text}</td>" if bad else f"<td>{text}</td>")
+            cells.append(f"<td class='below' style='{_RED}'>{text}</td>" if bad else f"<td>{text}</td>")
         out.append("<tr>" + "".join(cells) + "</tr>")
     return "".join(out)
 
@@ -206,7 +215,7 @@ def html_section(rating, *, details: bool = True) -> str:
     if details:
         fhead = "".join(f"<th>{esc(h)}</th>" for h in FACTOR_HEAD)
         for m in rating.meshes:
-            cls = "" if m.ok else " class='below'"
+            cls = "" if m.ok else f" class='below' style='{_RED}'"
             parts.append(f"<h3{cls}>{esc(_title(m))}</h3><table><thead><tr>{fhead}</tr></thead><tbody>"
                          f"{_html_rows(mesh_rows(m), (3, 4))}</tbody></table>")
             parts.extend(f"<p class='note'>{esc(n)}</p>" for n in m.notes)
@@ -214,6 +223,7 @@ def html_section(rating, *, details: bool = True) -> str:
     return "".join(parts)
 
 
+_RED = "color:#b00020;font-weight:bold"  # inline too: the analyze report's style sheet has no .below
 _CSS = ("body{font-family:system-ui,sans-serif;margin:2em;color:#222}table{border-collapse:collapse;margin:1em 0}"
         "td,th{border:1px solid #ccc;padding:2px 6px;font-size:90%}th{background:#f3f3f3}"
         ".below{color:#b00020;font-weight:bold}.note{color:#555;font-size:90%}")

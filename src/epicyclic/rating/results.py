@@ -116,12 +116,19 @@ class GearRating:
         Y_F, Y_S, Y_β, ..., sigma_F0, sigma_F, sigma_FP, S_F, Z_NT, sigma_H, sigma_HP, S_H, N_L ...
     S_Hmin, S_Fmin : float
         The minimum safeties it is checked against.
+    pitting_curve, bending_curve : SNCurve, optional
+        The Z_NT and Y_NT curves of its material (for :meth:`damage`).
+    life_hours : float, default 0
+        The required life N_L is counted over, h.
     """
 
     gear: str
     factors: Mapping[str, Factor]
     S_Hmin: float
     S_Fmin: float
+    pitting_curve: Any = None
+    bending_curve: Any = None
+    life_hours: float = 0.0
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "factors", _factors(self.factors))
@@ -143,6 +150,47 @@ class GearRating:
     def ok(self) -> bool:
         """Whether S_H ≥ S_Hmin and S_F ≥ S_Fmin (in every case)."""
         return bool(np.all(np.asarray(self.S_H) >= self.S_Hmin) and np.all(np.asarray(self.S_F) >= self.S_Fmin))
+
+    def damage(self, hours) -> tuple[float, float]:
+        """Palmgren–Miner damage (D_H of the flank, D_F of the root) over the rated load cases.
+
+        Parameters
+        ----------
+        hours : float or array_like
+            Hours spent in each load case (one per case of the rating, or one number).
+
+        Returns
+        -------
+        tuple of float
+            (D_H, D_F); the gear is expected to last while both are below 1 (∞ where a case
+            exceeds the static strength).
+
+        Raises
+        ------
+        ValueError
+            The rating has no S–N curves or no life (not made by :func:`~epicyclic.rating.rate_mesh`).
+
+        References
+        ----------
+        ISO 6336-6:2019, clause 5 (Palmgren–Miner); the life factors of ISO 6336-2, -3.
+        """
+        from .life_factors import miner_damage
+
+        if self.pitting_curve is None or self.bending_curve is None or not self.life_hours > 0:
+            raise ValueError("damage: this GearRating has no S-N curves or life; rate it with rate_mesh.")
+        n_l = np.atleast_1d(np.asarray(self["N_L"], dtype=float))
+        h = np.broadcast_to(np.asarray(hours, dtype=float), n_l.shape)
+        cycles = n_l / self.life_hours * h
+        out = []
+        for stress, limit, factor, curve in (("sigma_H", "sigma_HG", "Z_NT", self.pitting_curve),
+                                              ("sigma_F", "sigma_FG", "Y_NT", self.bending_curve)):
+            sigma = np.broadcast_to(np.asarray(self[stress], dtype=float), n_l.shape)
+            reference = np.broadcast_to(np.asarray(self[limit], dtype=float) / np.asarray(self[factor]), n_l.shape)
+            total = 0.0
+            for s_i, r_i, n_i in zip(sigma, reference, cycles):
+                total += miner_damage([(float(s_i), float(n_i))], curve, float(r_i))
+            out.append(total)
+        return out[0], out[1]
 
     def to_dict(self) -> dict[str, Any]:
         """Each factor by its symbol, ``S_Hmin``, ``S_Fmin`` and ``ok``."""

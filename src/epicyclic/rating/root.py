@@ -32,8 +32,17 @@ import math
 
 from .errors import warn_validity
 
-__all__ = ["helix_factor", "rim_factor", "deep_tooth_factor", "relative_notch_sensitivity",
-           "relative_surface_factor", "size_factor", "slip_layer", "REVERSED_BENDING", "Y_ST"]
+__all__ = [
+    "REVERSED_BENDING",
+    "Y_ST",
+    "deep_tooth_factor",
+    "helix_factor",
+    "relative_notch_sensitivity",
+    "relative_surface_factor",
+    "rim_factor",
+    "size_factor",
+    "slip_layer",
+]
 
 #: Y_ST, the stress correction factor of the reference test gear.
 Y_ST = 2.0

@@ -44,7 +44,7 @@ from .materials import Material, material
 from .standard import DEFAULT_EDITION, edition
 from .tooth_form import Cutter
 
-__all__ = ["RatingSpec", "DEFAULTS", "SUGGESTED"]
+__all__ = ["DEFAULTS", "SUGGESTED", "RatingSpec"]
 
 DEFAULTS: Mapping[str, Any] = MappingProxyType({
     "standard": DEFAULT_EDITION, "application_factor": 1.0, "life": 20000.0, "S_Hmin": 1.0, "S_Fmin": 1.4,

@@ -14,9 +14,8 @@ clause names             2006 numbering                         2019 numbering (
 
 Method B of part 3 uses Y_F and Y_S for the load at the outer point of single
 pair tooth contact in both editions; the contact ratio factor Y_ε of the 1996
-edition is not part of it (it survives only in the upper limit of K_Fα of the
-2006 edition, which this package keeps for 2006 and drops for 2019, where
-K_Fα = K_Hα is bounded by ε_γ/(ε_α Z_ε²)).  Everything else (K_v method B, K_Hα,
+edition is not part of it (it survives in the upper limit ε_γ/(ε_α Y_ε) of K_Fα,
+ISO 6336-1:2006 eq. (76), which is kept for both editions here).  Everything else (K_v method B, K_Hα,
 Z_H, Z_E, Z_ε, Z_B/Z_D, Z_L, Z_v, Z_R, the 30° tangent tooth form, Y_S,
 Y_δrelT, Y_RrelT, Y_X and the life factors Z_NT, Y_NT) is computed the same for
 both editions here.
@@ -31,7 +30,7 @@ from __future__ import annotations
 
 from .errors import RatingError
 
-__all__ = ["EDITIONS", "DEFAULT_EDITION", "edition", "clause"]
+__all__ = ["DEFAULT_EDITION", "EDITIONS", "clause", "edition"]
 
 #: The editions of ISO 6336 that can be chosen.
 EDITIONS = ("2006", "2019")

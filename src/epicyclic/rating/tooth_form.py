@@ -46,7 +46,7 @@ from typing import Any
 
 from .errors import RatingError, warn_validity
 
-__all__ = ["ToothForm", "Cutter", "external_tooth_form", "internal_tooth_form", "stress_correction"]
+__all__ = ["Cutter", "ToothForm", "external_tooth_form", "internal_tooth_form", "stress_correction"]
 
 
 @dataclass(frozen=True)

@@ -36,7 +36,7 @@ from .mesh_rating import MeshInput, rate_mesh
 from .results import TrainRating
 from .spec import RatingSpec
 
-__all__ = ["PlannedMesh", "mesh_inputs", "rate_solution", "rate_batch"]
+__all__ = ["PlannedMesh", "mesh_inputs", "rate_batch", "rate_solution"]
 
 Loads = Callable[[Mapping[str, np.ndarray], Mapping[str, np.ndarray]], tuple[np.ndarray, np.ndarray]]
 
@@ -81,7 +81,7 @@ def _set_meshes(name: str, geometry: SetGeometry, spec: RatingSpec) -> list[Plan
         d_w_central = d_w[0] if first == central else d_w[1]
         d_w1 = d_w[0]
         if central in ("sun", "ring"):
-            def loads(torques, speeds, central=central, d_c=d_w_central, d_w1=d_w1, first=first):
+            def loads(torques, speeds, central=central, d_c=d_w_central, d_w1=d_w1, first=first, z=z):
                 f_tw = 2000.0 * np.abs(torques[central]) / (n * d_c)
                 relative = np.asarray(speeds[central]) - np.asarray(speeds["carrier"])
                 n1 = relative if first == central else relative * z[central] / z[first]
@@ -91,7 +91,7 @@ def _set_meshes(name: str, geometry: SetGeometry, spec: RatingSpec) -> list[Plan
             r_ring = ring_mesh.operating_pitch_diameters[0] / 2.0    # planet 2 in the ring mesh
             r_12 = d_w[1] / 2.0
 
-            def loads(torques, speeds, r_ring=r_ring, r_12=r_12, d_w1=d_w1, ring_mesh=ring_mesh):
+            def loads(torques, speeds, r_ring=r_ring, r_12=r_12, d_w1=d_w1, ring_mesh=ring_mesh, z=z):
                 f_ring = 2000.0 * np.abs(torques["ring"]) / (n * ring_mesh.operating_pitch_diameters[1])
                 f_tw = f_ring * r_ring / r_12
                 relative = np.asarray(speeds["sun"]) - np.asarray(speeds["carrier"])
