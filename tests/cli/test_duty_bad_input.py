@@ -45,6 +45,9 @@ DUTY = [
         "Table 12"),
     Bad("duty: unknown bearing position", "duty", _swap("[planetary.bearings.carrier]", "[planetary.bearings.shaft]"),
         "unknown key 'shaft'"),
+    Bad("duty: a case the solver refuses", "duty",
+        _swap('speeds = { in = "1200 1/min" }', 'speeds = { in = "1200 1/min", out = "1 1/min" }'),
+        "[[duty_cycle.case]] #12 'reverse': the given speeds contradict"),
     Bad("duty: kappa below the standard", "duty", _swap('viscosity = "8.8 mm^2/s"', 'viscosity = "0.5 mm^2/s"'),
         "at least 0.1"),
 ]

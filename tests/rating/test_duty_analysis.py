@@ -133,6 +133,16 @@ def test_bad_input():
         analyse_duty_cycle(TRAIN, ok, geometry=GEOMETRY, bearings={"P": {"pin": BearingRating("needle roller", 1e4)}})
 
 
+def test_a_case_the_solver_refuses_is_named_and_keeps_its_error_class():
+    from epicyclic.errors import ContradictionError
+
+    bad = OperatingPoint(speeds={"in": 1000.0, "out": 1000.0}, torques={"in": 10.0}, drives=["in"], loads=["out"])
+    cycle = DutyCycle((LoadCase("a", _op(3000.0, 100.0), share=0.5), LoadCase("b", bad, share=0.5)))
+    with pytest.raises(ContradictionError, match="duty cycle, case 'b': .*contradict") as info:
+        analyse_duty_cycle(TRAIN, cycle)
+    assert info.value.duty_case == 1
+
+
 def test_a_bearing_that_never_turns_has_no_life_number_in_json():
     cycle = DutyCycle((LoadCase("a", _op(3000.0, 100.0), share=1.0),))
     res = analyse_duty_cycle(TRAIN, cycle, geometry=GEOMETRY,

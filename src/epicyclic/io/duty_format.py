@@ -272,7 +272,7 @@ def analyse_file_duty_cycle(train_file):
         The file has no ``[duty_cycle]`` table.
     """
     from ..rating.duty_analysis import analyse_duty_cycle
-    from .located import locate_error
+    from .located import locate_error, located
     from .source import InputFileError
 
     if train_file.duty_cycle is None:
@@ -286,4 +286,9 @@ def analyse_file_duty_cycle(train_file):
                                   bearings=train_file.bearings, rating=getattr(train_file, "rating", None),
                                   spin=getattr(train_file, "spin", None), title=train_file.title)
     except EpicyclicError as exc:
+        k = getattr(exc, "duty_case", None)
+        if k is not None:  # a case the solver refuses: located at its own table
+            name = train_file.duty_cycle.cases[k].name
+            raise located(exc, train_file.source, f"[[duty_cycle.case]] #{k + 1} {short(name, 40)}",
+                          f"duty cycle, case {name!r}") from None
         raise locate_error(exc, train_file.source, None, "[duty_cycle]") from None

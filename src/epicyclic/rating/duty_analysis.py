@@ -28,16 +28,18 @@ Brandenberger 1952, eqs. 3', 7 (losses in the direction of the rolling power).
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Mapping
 from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
+from ..errors import EpicyclicError
 from ..geometry.forces import planetary_forces
 from ..geometry.set_geometry import SetGeometry
 from ..geometry.shared_planets import share_planets
-from ..losses.solve import solve_batch_with_losses
+from ..losses.solve import solve_batch_with_losses, solve_with_losses
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
 from ..transmission.errors import UnknownGearError
@@ -106,11 +108,34 @@ def _solve_groups(train, duty, schedule, losses, spin=None):
         # spin losses (clutch drag, pump, churning, seals) where the loss package has them: by gear and input
         extra = {} if spin is None else {"spin": spin, "gear": cases[0].gear,
                                          "input": getattr(schedule, "input", None)}
-        solved[key] = (train_g, solve_batch_with_losses(train_g, models, drives=first.drives, loads=first.loads,
-                                                        **arrays, **extra))
+        try:
+            batch = solve_batch_with_losses(train_g, models, drives=first.drives, loads=first.loads, **arrays,
+                                            **extra)
+        except EpicyclicError as exc:
+            raise _case_error(exc, duty, members, train_g, models, extra) from None
+        solved[key] = (train_g, batch)
         for j, k in enumerate(members):
             where[k] = (key, j)
     return solved, where
+
+
+def _case_error(exc: EpicyclicError, duty: DutyCycle, members, train_g, models, extra) -> EpicyclicError:
+    """The error of the first case of a group that fails alone (scalar solve), naming the case.
+
+    The error keeps its class and fields; ``duty_case`` is the case's index (the file reader
+    locates it at its ``[[duty_cycle.case]]`` table).
+    """
+    failed, index = exc, members[0]
+    for k in members:
+        try:
+            solve_with_losses(train_g, duty.cases[k].operating_point, models, **extra)
+        except EpicyclicError as alone:
+            failed, index = alone, k
+            break
+    new = copy.copy(failed)
+    new.args = (f"duty cycle, case {duty.cases[index].name!r}: {failed}",)
+    new.duty_case = index  # type: ignore[attr-defined]
+    return new
 
 
 def _planet_speed(geometry: SetGeometry, body_gear: str, n_sun, n_carrier):
