@@ -23,10 +23,12 @@ import numpy as np
 
 from ..geometry._render import html_table, text_table
 from .bearing_life import (
+    BearingLifeError,
     BearingRating,
     basic_rating_life,
     equivalent_load,
     rating_life_hours,
+    reference_viscosity,
     spectrum_life,
 )
 from .duty_cycle import DutyCycle
@@ -116,6 +118,21 @@ class BearingLife:
     axial: np.ndarray
     speeds: np.ndarray
     shares: np.ndarray
+    factors: np.ndarray = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        # a1 a_ISO per case, now: a viscosity ratio below the standard's range is an input error of this
+        # bearing, named here (not when the result is rendered)
+        try:
+            factors = self.rating.life_factor(self.loads, self.speeds)
+        except BearingLifeError as exc:
+            n = np.abs(self.speeds)[(np.abs(self.loads) > 0) & (np.abs(self.speeds) > 0)]
+            slowest = float(np.min(n))  # the smallest kappa: nu1 grows as the speed falls
+            raise BearingLifeError(
+                f"bearing {self.position} of {self.element!r} (key 'bearings.{self.role}.viscosity'): {exc} At "
+                f"{slowest:.0f} 1/min nu1 = {float(reference_viscosity(slowest, self.rating.pitch_diameter)):.3g} "
+                f"mm^2/s (ISO 281 9.3.3), nu = {self.rating.viscosity:g} mm^2/s.") from None
+        object.__setattr__(self, "factors", factors)
 
     @property
     def loads(self) -> np.ndarray:
@@ -154,7 +171,7 @@ class BearingLife:
         """L_nmh = 1/Σ(q_i/(a_1 a_ISO,i L10h_i)), h; None without the modified-life inputs."""
         if not self.rating.modified:
             return None
-        return spectrum_life(self.case_hours * self.rating.life_factor(self.loads, self.speeds), self.shares)
+        return spectrum_life(self.case_hours * self.factors, self.shares)
 
     @property
     def notes(self) -> tuple[str, ...]:
