@@ -75,8 +75,12 @@ def test_root_factors():
     assert root.relative_surface_factor(10.0, "Eh") == pytest.approx(1.674 - 0.529 * 11 ** 0.1)
     assert root.size_factor(10, "Eh") == pytest.approx(0.95) and root.size_factor(40, "V") == 0.85
     assert root.deep_tooth_factor(2.3, 4) == pytest.approx(-0.666 * 2.3 + 2.366)
-    assert root.deep_tooth_factor(2.3, 6) == 1.0 and root.rim_factor(None) == 1.0
-    assert root.rim_factor(1.0) == pytest.approx(1.6 * math.log(2.242))
+    assert root.deep_tooth_factor(2.3, 6) == 1.0 and root.rim_factor(None, 4.5, 2.0) == 1.0
+    assert root.rim_factor(4.5, 4.5, 2.0) == pytest.approx(1.6 * math.log(2.242))      # s_R/h_t = 1
+    assert root.rim_factor(5.4, 4.5, 2.0) == 1.0 and root.rim_factor(7.0, 4.5, 2.0, internal=True) == 1.0
+    assert root.rim_factor(5.0, 4.5, 2.0, internal=True) == pytest.approx(1.15 * math.log(8.324 / 2.5))
+    with pytest.warns(RatingWarning, match="ISO 6336-3:2006, 7.4"):
+        assert root.rim_factor(2.0, 4.5, 2.0, internal=True) == pytest.approx(1.15 * math.log(8.324 / 1.75))
 
 
 def test_stiffness_and_deviations():

@@ -107,6 +107,14 @@ def test_material_per_gear_and_bad_values():
         spec(S_Fmin=0)
 
 
+def test_a_thin_ring_rim_raises_the_root_stress():
+    solid = rated(500.0, 30.0, RING)
+    thin = rated(500.0, 30.0, RING, rim_thickness={"wheel": 5.0})            # s_R/m_n = 2.5
+    assert thin.gears[1]["Y_B"] == pytest.approx(1.15 * math.log(8.324 / 2.5))
+    assert thin.gears[1]["sigma_F"] == pytest.approx(solid.gears[1]["sigma_F"] * thin.gears[1]["Y_B"], rel=1e-12)
+    assert thin.gears[0]["Y_B"] == 1.0 and thin.gears[0]["sigma_F"] == solid.gears[0]["sigma_F"]
+
+
 def test_internal_mesh_uses_the_difference_of_curvatures():
     r = rated(500.0, 30.0, RING)
     assert r.internal and r.gears[1]["Z_D"] == 1.0
@@ -149,7 +157,7 @@ def test_stresses_and_safeties_are_the_products_of_their_factors(mesh):
         limit_h = q["sigma_Hlim"] * q["Z_NT"] * f["Z_L"] * f["Z_v"] * f["Z_R"] * f["Z_W"] * f["Z_X"]
         assert q["S_H"] == pytest.approx(limit_h / q["sigma_H"], rel=1e-12)
         assert q["sigma_HP"] == pytest.approx(limit_h / g.S_Hmin, rel=1e-12)
-        sigma_f0 = f["F_t"] / (f["b"] * f["m_n"]) * q["Y_F"] * q["Y_S"] * f["Y_beta"] * f["Y_B"] * f["Y_DT"]
+        sigma_f0 = f["F_t"] / (f["b"] * f["m_n"]) * q["Y_F"] * q["Y_S"] * f["Y_beta"] * q["Y_B"] * f["Y_DT"]
         assert q["sigma_F"] == pytest.approx(sigma_f0 * load_f, rel=1e-12)
         limit_f = (q["sigma_Flim"] * q["Y_ST"] * q["Y_NT"] * q["Y_deltarelT"] * q["Y_RrelT"] * q["Y_X"]
                    * q["Y_M"])

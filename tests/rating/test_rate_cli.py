@@ -107,3 +107,10 @@ def test_file_format_keys():
         loads_train_file(RATING_FILE.format(lubricant="", rating='material = "Unobtainium"'))
     own = loads_train_file(RATING_FILE.format(lubricant="", rating="[rating.lubricant]\nviscosity_40 = 68.0"))
     assert own.rating.viscosity_40 == 68.0
+
+
+def test_rim_thickness_from_the_file():
+    f = loads_train_file(RATING_FILE.format(lubricant="[lubricant]\nviscosity_40 = 150.0",
+                                            rating='rim_thickness = { ring = 7.5, "P:sun" = 20.0 }'))
+    assert f.rating.rim_of("P", "ring") == 7.5 and f.rating.rim_of("P", "sun") == 20.0
+    assert f.rating.rim_of("Q", "sun") is None and f.rating.rim_of("P", "planet") is None

@@ -16,6 +16,7 @@
     K_Hbeta = 1.3                         # given; otherwise method C with shaft_deflection (µm)
     load_sharing = 1.15                   # K_γ of every set (default: the set geometry's, else by planets)
     cutter = { teeth = 24, profile_shift = 0.0, addendum = 1.25, tip_radius = 0.25 }   # internal gears
+    rim_thickness = { ring = 12.0 }       # s_R below the root, mm (Y_B); others solid
     long_life = "standard"                # or "optimum"
     [rating.lubricant]
     viscosity_40 = 35.0                   # mm²/s (or in the top-level [lubricant])
@@ -45,7 +46,8 @@ __all__ = ["RATING_KEYS", "read_rating"]
 
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
                "root_roughness", "material", "quality", "K_Hbeta", "shaft_deflection", "load_sharing",
-               "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials"}
+               "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
+               "rim_thickness"}
 _NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "flank_roughness", "root_roughness", "K_Hbeta",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
 _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
@@ -136,6 +138,10 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
             values["cutter"] = Cutter(reader.integer(reader.require(ct, "teeth", c_where), "teeth", c_where), **kwargs)
         except EpicyclicError as exc:
             raise reader.wrap(c_where, exc) from None
+    if "rim_thickness" in table:
+        r_where = at_key(where, "rim_thickness")
+        rims = reader.table(table["rim_thickness"], r_where)
+        values["rim_thickness"] = {k: reader.number(v, k, r_where) for k, v in rims.items()}
     oil = dict(lubricant or {})
     if "lubricant" in table:
         own = reader.table(table["lubricant"], "[rating.lubricant]")

@@ -60,12 +60,17 @@ def _running_in_alpha(m: Material, deviation: float, velocity):
     return np.where(v > 10.0, min(y, 6400.0 / m.sigma_Hlim), np.where(v > 5.0, min(y, 12800.0 / m.sigma_Hlim), y))
 
 
-def _running_in_beta(m: Material, f_beta):
+def _running_in_beta(m: Material, f_beta, velocity):
+    """y_β by material, with the limits of the pitch line velocity (ISO 6336-1, 7.6.3)."""
+    v = np.asarray(velocity, dtype=float)
     if m.surface_hardened:
         return np.minimum(0.15 * f_beta, 6.0)
     if m.treatment in ("GG", "GGG(ferr)"):
-        return np.minimum(0.55 * f_beta, 45.0)
-    return np.minimum(320.0 / m.sigma_Hlim * f_beta, 25600.0 / m.sigma_Hlim)
+        y = 0.55 * f_beta
+        return np.where(v > 10.0, np.minimum(y, 22.0), np.where(v > 5.0, np.minimum(y, 45.0), y))
+    y = 320.0 / m.sigma_Hlim * f_beta
+    return np.where(v > 10.0, np.minimum(y, 12800.0 / m.sigma_Hlim),
+                    np.where(v > 5.0, np.minimum(y, 25600.0 / m.sigma_Hlim), y))
 
 
 @dataclass(frozen=True)
@@ -190,7 +195,8 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["Y_beta"] = root.helix_factor(beta, eps_b, year)
     eps_an = eps_a / math.cos(beta_b) ** 2
     s["Y_DT"] = root.deep_tooth_factor(eps_an, spec.accuracy_grade)
-    s["Y_B"] = 1.0
+    s["Y_B"] = [root.rim_factor(spec.rim_of(inp.element, name), abs(g.root_diameter - g.tip_diameter) / 2,
+                                rack.module, g.internal) for name, g in zip(inp.gears, (g1, g2))]
     s["Y_delta"] = [root.relative_notch_sensitivity(f.q_s, m.treatment, m.yield_strength) for f, m in zip(forms, mats)]
     s["Y_R"] = [root.relative_surface_factor(rz_root, m.treatment) for m in mats]
     s["Y_X"] = [root.size_factor(rack.module, m.treatment) for m in mats]
@@ -263,7 +269,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     f_m = line * k_v
     f_bx = np.maximum.reduce([np.full(f_m.shape, 1.33 * spec.shaft_deflection + s["f_Hbeta"]), 0.005 * f_m,
                               np.full(f_m.shape, 0.5 * s["f_Hbeta"])])
-    y_b = 0.5 * (_running_in_beta(mats[0], f_bx) + _running_in_beta(mats[1], f_bx))
+    y_b = 0.5 * (_running_in_beta(mats[0], f_bx, v) + _running_in_beta(mats[1], f_bx, v))
     k_hb, k_fb = load_factors.face_load_factors(spec.K_Hbeta, f_m, c_gb, f_bx, y_b, b, s["tooth_height"])
     k_ha, k_fa = load_factors.transverse_load_factors(f_m * k_hb, c_ga, f_pb_eff, s["eps_alpha"],
                                                        s["eps_gamma"], s["Z_eps"], year)
@@ -283,7 +289,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         sigma_h = z_bd * sigma_h0 * np.sqrt(load_h)
         sigma_hg = mat.sigma_Hlim * z_nt * s["Z_L"] * z_v * s["Z_R"] * s["Z_W"] * 1.0
         form = s["forms"][i]
-        sigma_f0 = f_t / (b * m_n) * form.Y_F * form.Y_S * s["Y_beta"] * s["Y_B"] * s["Y_DT"]
+        sigma_f0 = f_t / (b * m_n) * form.Y_F * form.Y_S * s["Y_beta"] * s["Y_B"][i] * s["Y_DT"]
         sigma_f = sigma_f0 * ka * kg * k_v * k_fb * k_fa
         sigma_fg = (mat.sigma_Flim * root.Y_ST * y_nt * s["Y_delta"][i] * s["Y_R"][i] * s["Y_X"][i]
                     * s["Y_M"][i])
@@ -300,6 +306,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
             Factor("Y_F", form.Y_F, "1", p3("6.2" if not mesh.gear2.internal or i == 0 else "6.3"),
                    f"tooth form factor ({form.method})"),
             Factor("Y_S", form.Y_S, "1", p3("7.2, eq. (41)"), "stress correction factor"),
+            Factor("Y_B", s["Y_B"][i], "1", p3("7.4"), "rim thickness factor"),
             Factor("s_Fn", form.s_Fn, "mm", p3("eq. (12)"), "tooth root chord at the critical section"),
             Factor("h_Fe", form.h_Fe, "mm", p3("eq. (20)"), "bending moment arm"),
             Factor("rho_F", form.rho_F, "mm", p3("eq. (13)"), "root fillet radius at the critical section"),
@@ -355,7 +362,6 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("Z_W", s["Z_W"], "1", p2("12"), "work hardening factor"),
         Factor("Z_X", 1.0, "1", p2("13"), "size factor (pitting)"),
         Factor("Y_beta", s["Y_beta"], "1", p3("7.3"), "helix angle factor (root)"),
-        Factor("Y_B", s["Y_B"], "1", p3("7.4"), "rim thickness factor (solid gears)"),
         Factor("Y_DT", s["Y_DT"], "1", p3("7.5"), "deep tooth factor"),
     ]
     method_c = (f"K_Hbeta by method C from F_betax = 1.33 f_sh + f_Hbeta "

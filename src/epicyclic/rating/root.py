@@ -6,7 +6,8 @@ symbol     formula                                                            cl
 Y_β        2006: 1 − ε_β β/120° (ε_β ≤ 1, β ≤ 30° taken at the limits)         7.3, eq. (42)
            2019: (1 − ε_β β/120°) / cos³β
 Y_B        1 for a solid gear or a rim s_R/h_t ≥ 1.2; 1.6 ln(2.242 h_t/s_R)   7.4
-           for 0.5 < s_R/h_t < 1.2
+           for 0.5 < s_R/h_t < 1.2; internal: 1.15 ln(8.324 m_n/s_R) below
+           s_R/m_n = 3.5
 Y_DT       1 (accuracy grade > 4 or ε_αn ≤ 2.05); grade ≤ 4: 2.366 −          7.5
            0.666 ε_αn up to 2.5, 0.9 beyond
 Y_ST       2.0 (stress correction factor of the reference test gear)          11
@@ -82,29 +83,53 @@ def helix_factor(beta: float, eps_beta: float, edition: str) -> float:
     return y
 
 
-def rim_factor(rim_ratio: float | None) -> float:
-    """Y_B from s_R/h_t (None: a solid gear, 1).
+def rim_factor(rim_thickness: float | None, tooth_height: float, module: float, internal: bool = False) -> float:
+    """Y_B from the rim thickness s_R below the root (None: a solid gear, 1).
 
     Parameters
     ----------
-    rim_ratio : float or None
-        Rim thickness below the root over tooth height, s_R/h_t.
+    rim_thickness : float or None
+        s_R, mm.
+    tooth_height : float
+        h_t, mm (external gears).
+    module : float
+        m_n, mm (internal gears).
+    internal : bool, default False
 
     Returns
     -------
     float
+        External: 1 for s_R/h_t ≥ 1.2, else 1.6 ln(2.242 h_t/s_R) (down to s_R/h_t = 0.5);
+        internal: 1 for s_R/m_n ≥ 3.5, else 1.15 ln(8.324 m_n/s_R) (down to s_R/m_n = 1.75).
 
     References
     ----------
-    ISO 6336-3:2006, 7.4, eqs. (43)–(44) (external gears; internal gears: the same here).
+    ISO 6336-3:2006, 7.4, eqs. (43)–(44); below the lower limits a warning and the value there.
+
+    Examples
+    --------
+    >>> rim_factor(None, 4.5, 2.0), round(rim_factor(3.0, 4.5, 2.0), 4), round(rim_factor(5.0, 4.5, 2.0, True), 4)
+    (1.0, 1.9405, 1.3833)
     """
-    if rim_ratio is None or rim_ratio >= 1.2:
+    if rim_thickness is None:
         return 1.0
-    if rim_ratio <= 0.5:
-        warn_validity(f"rim ratio s_R/h_t = {rim_ratio:g} <= 0.5 is outside the method; Y_B at 0.5 is used.",
+    if internal:
+        ratio = rim_thickness / module
+        if ratio >= 3.5:
+            return 1.0
+        if ratio < 1.75:
+            warn_validity(f"rim s_R/m_n = {ratio:.3g} of an internal gear is below 1.75, outside the method; "
+                          "Y_B at 1.75 is used.", "ISO 6336-3:2006, 7.4")
+            ratio = 1.75
+        return 1.15 * math.log(8.324 / ratio)
+    ratio = rim_thickness / tooth_height
+    if ratio >= 1.2:
+        return 1.0
+    if ratio < 0.5:
+        warn_validity(f"rim s_R/h_t = {ratio:.3g} is below 0.5, outside the method; Y_B at 0.5 is used.",
                       "ISO 6336-3:2006, 7.4")
-        rim_ratio = 0.5
-    return 1.6 * math.log(2.242 / rim_ratio)
+        ratio = 0.5
+    return 1.6 * math.log(2.242 / ratio)
 
 
 def deep_tooth_factor(eps_alpha_n: float, grade: int) -> float:

@@ -18,6 +18,7 @@ tool_tip_radius         0.25                        ρ_fP* of the basic rack (IS
 long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``"optimum"``: 1.0)
 pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
 tip_relief              0                           C_a for K_v, µm
+rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
 ======================  ==========================  =============================================
 
 Required (an error names the key and the value it would suggest): ``material`` (a
@@ -106,6 +107,11 @@ class RatingSpec:
     pitting_permitted : bool, default False
     tip_relief : float, default 0
         C_a, µm.
+    notes : tuple of str, default ()
+        Remarks carried into every mesh rating.
+    rim_thickness : mapping gear → float, optional
+        Rim thickness s_R below the root per gear name (``ring``, ``"P1:ring"``), mm, for Y_B;
+        gears not named are solid (Y_B = 1).
 
     Raises
     ------
@@ -137,6 +143,7 @@ class RatingSpec:
     pitting_permitted: bool = False
     tip_relief: float = 0.0
     notes: tuple[str, ...] = field(default=(), compare=False)
+    rim_thickness: Mapping[str, float] | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "standard", edition(self.standard))
@@ -159,6 +166,11 @@ class RatingSpec:
                               "the default is 6.")
         if self.long_life not in ("standard", "optimum"):
             raise RatingError(f"rating.long_life must be 'standard' or 'optimum', got {self.long_life!r}.")
+        if self.rim_thickness is not None:
+            rims = dict(self.rim_thickness)
+            for key, value in rims.items():
+                rims[key] = _number(value, f"rim_thickness.{key}")
+            object.__setattr__(self, "rim_thickness", MappingProxyType(rims))
         if isinstance(self.material, str):
             object.__setattr__(self, "material", material(self.material))
         elif isinstance(self.material, Mapping):
@@ -197,6 +209,23 @@ class RatingSpec:
                               f"or '{element}:{gear}'.")
         raise _missing("material", "a material of the data file for every gear, see docs/rating.md")
 
+    def rim_of(self, element: str, gear: str) -> float | None:
+        """The rim thickness s_R of ``gear`` of ``element`` in mm, None for a solid gear.
+
+        Parameters
+        ----------
+        element : str
+            The set or stage.
+        gear : str
+            The gear's name in it.
+
+        Returns
+        -------
+        float or None
+        """
+        rims = self.rim_thickness or {}
+        return rims.get(f"{element}:{gear}", rims.get(gear))
+
     def required(self, key: str) -> float:
         """``flank_roughness``, ``root_roughness`` or ``viscosity_40``; an error naming the key if absent.
 
@@ -229,4 +258,5 @@ class RatingSpec:
                 "flank_roughness": self.flank_roughness, "root_roughness": self.root_roughness,
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
                 "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,
-                "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats}
+                "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,
+                "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None}

@@ -88,7 +88,7 @@ def worked_rating(mesh, gear: int = 0) -> str:
        q["Y_F"], "", "Y_F")
     eq(f"Y_S = (1.2 + 0.13 L) q_s^(1/(1.21 + 2.3/L))  (ρ_F = {q['rho_F']:.4f} mm)", q["Y_S"], "", "Y_S")
     eq(f"σ_F0 = F_t/(b m_n) Y_F Y_S Y_β Y_B Y_DT = {m['F_t']:.6g}/({m['b']:g} · {m['m_n']:g}) · {q['Y_F']:.4f} · "
-       f"{q['Y_S']:.4f} · {m['Y_beta']:.4f} · {m['Y_B']:.4f} · {m['Y_DT']:.4f}", q["sigma_F0"], "N/mm²", "sigma_F0")
+       f"{q['Y_S']:.4f} · {m['Y_beta']:.4f} · {q['Y_B']:.4f} · {m['Y_DT']:.4f}", q["sigma_F0"], "N/mm²", "sigma_F0")
     eq(f"σ_F = σ_F0 K_A K_γ K_v K_Fβ K_Fα = {q['sigma_F0']:.2f} · {m['K_A']:.3f} · {m['K_gamma']:.3f} · "
        f"{m['K_v']:.4f} · {m['K_Fbeta']:.4f} · {m['K_Falpha']:.4f}", q["sigma_F"], "N/mm²", "sigma_F")
     eq(f"σ_FG = σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X Y_M = {q['sigma_Flim']:g} · {q['Y_ST']:g} · {q['Y_NT']:.4f} · "
