@@ -181,3 +181,13 @@ def test_double_planet_bearings_turn_at_their_own_relative_speeds():
     assert first.speeds[0] == pytest.approx(30 / 19 * 3000.0, rel=1e-9)  # carrier held
     assert second.speeds[0] == pytest.approx(30 / 21 * 3000.0, rel=1e-9)
     assert first.radial[0] > 0 and second.radial[0] > 0
+
+
+def test_renderings_escape_names():
+    cycle = DutyCycle((LoadCase("a|<b>", _op(3000.0, 100.0), share=1.0),), total_hours=10.0)
+    res = analyse_duty_cycle(TRAIN, cycle, geometry=GEOMETRY,
+                             bearings={"P": {"planet": BearingRating("needle roller", 1e4)}})
+    assert "a\\|&lt;b>" in res.markdown()
+    assert "<b>" not in res._repr_html_() and "a|&lt;b&gt;" in res._repr_html_()
+    assert res.html().startswith("<!DOCTYPE html>") and "a|<b>" in res.table()
+    assert "DutyCycleResult" in repr(res) and "3 bearings" in repr(res)
