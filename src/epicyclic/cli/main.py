@@ -72,6 +72,10 @@ from . import rate as _rate  # noqa: E402
 
 app.command("rate")(_rate.rate)
 
+from . import duty as _duty  # noqa: E402
+
+app.command("duty")(_duty.duty)
+
 from . import serve as _serve  # noqa: E402
 
 app.command("serve")(_serve.serve)

@@ -60,9 +60,9 @@ from .source import InputFileError, parse_toml, read_source
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant", "rating"}
+             "operating_point", "transmission", "lubricant", "rating", "duty_cycle"}
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
-                   "mesh_efficiencies", "planets", "geometry", "losses"}
+                   "mesh_efficiencies", "planets", "geometry", "losses", "bearings"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
                "double": {"kind", "sun", "planet_sun", "planet_ring", "ring"},
                "stepped": {"kind", "sun", "planet_sun", "planet_ring", "ring", "ring_internal", "module_ratio"},
@@ -155,6 +155,10 @@ class TrainFile:
         The elements' ``losses`` tables (mesh friction, planet bearings, drag).
     rating : RatingSpec or None
         The ``[rating]`` table (ISO 6336 inputs, :mod:`epicyclic.io.rating_format`), None without one.
+    bearings : mapping element → mapping position → BearingRating
+        The sets' ``bearings`` tables (ISO 281 rating inputs; ``docs/file-format.md``).
+    duty_cycle : DutyCycle or None
+        The ``[duty_cycle]`` table.
     """
 
     source: str
@@ -168,6 +172,8 @@ class TrainFile:
     geometry: Mapping[str, Any] = field(default_factory=dict)
     losses: Mapping[str, Any] = field(default_factory=dict)
     rating: Any = None
+    bearings: Mapping[str, Any] = field(default_factory=dict)
+    duty_cycle: Any = None
 
     @property
     def operating_train(self) -> GearTrain:
@@ -371,8 +377,23 @@ class _Reader(TableReader):
 
             lubricant_table = data.get("lubricant") if isinstance(data.get("lubricant"), dict) else None
             rating = read_rating(self, data["rating"], lubricant_table)
+        bearings, duty = {}, None
+        if "duty_cycle" in data or any("bearings" in t for t in tables["planetary"] if isinstance(t, dict)):
+            from . import duty_format  # only for a file that has them
+
+            for k, table in enumerate(tables["planetary"]):
+                if "bearings" in table:
+                    where = self.element_where("planetary", k, table)
+                    if table["name"] not in geometry:
+                        raise self.error(at_key(where, "bearings"), "the bearing loads come from the tooth forces: "
+                                                                    "add a 'geometry' table (module, ...).")
+                    bearings[table["name"]] = MappingProxyType(
+                        duty_format.read_bearings(self, table["bearings"], where, table.get("losses")))
+            if "duty_cycle" in data:
+                duty = duty_format.read_duty_cycle(self, data["duty_cycle"], train, transmission, op, self.units)
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
-                         MappingProxyType(geometry), MappingProxyType(losses), rating)
+                         MappingProxyType(geometry), MappingProxyType(losses), rating,
+                         bearings=MappingProxyType(bearings), duty_cycle=duty)
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")

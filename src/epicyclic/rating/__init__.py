@@ -13,13 +13,22 @@ Public API (stable):
   :func:`rate_solution` / :func:`rate_batch` (every mesh of a solved train, one point or a
   :class:`~epicyclic.solver.batch.BatchSolution`), :func:`mesh_inputs`;
 * :func:`smallest_module` (sizing);
-* :mod:`~epicyclic.rating.standard` — the edition (``"2006"`` / ``"2019"``).
+* :mod:`~epicyclic.rating.standard` — the edition (``"2006"`` / ``"2019"``);
+* bearing life per ISO 281:2007 (:mod:`~epicyclic.rating.bearing_life`: :class:`BearingRating`) and
+  duty cycles (:mod:`~epicyclic.rating.duty_cycle`: :class:`DutyCycle` of :class:`LoadCase` s;
+  :func:`analyse_duty_cycle` → :class:`DutyCycleResult`, with :class:`BearingLife` and the tooth
+  damage sums of :mod:`~epicyclic.rating.duty_damage`).
 
 References
 ----------
-ISO 6336-1, -2, -3 (2006 and 2019 editions); ISO 6336-5:2016; ISO 6336-6:2019 (damage sums).
+ISO 6336-1, -2, -3 (2006 and 2019 editions); ISO 6336-5:2016; ISO 6336-6:2019 (damage sums);
+ISO 281:2007 (bearing rating life).
 """
 
+from .bearing_life import BearingLifeError, BearingRating
+from .duty_analysis import analyse_duty_cycle
+from .duty_cycle import DutyCycle, DutyCycleError, LoadCase
+from .duty_result import BearingLife, DutyCycleResult
 from .errors import RatingError, RatingWarning
 from .life_factors import (
     TREATMENTS,
@@ -45,9 +54,16 @@ __all__ = [
     "DEFAULT_EDITION",
     "EDITIONS",
     "TREATMENTS",
+    "BearingLife",
+    "BearingLifeError",
+    "BearingRating",
     "Cutter",
+    "DutyCycle",
+    "DutyCycleError",
+    "DutyCycleResult",
     "Factor",
     "GearRating",
+    "LoadCase",
     "Material",
     "MeshInput",
     "MeshRating",
@@ -57,6 +73,7 @@ __all__ = [
     "SNCurve",
     "SizingResult",
     "TrainRating",
+    "analyse_duty_cycle",
     "bending_curve",
     "bending_damage",
     "bending_life_factor",
