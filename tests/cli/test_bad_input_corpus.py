@@ -578,7 +578,7 @@ CORPUS: list[Bad] = [
     Bad("bearing type unknown", "analyze", sub("friction = 0.05", "bearing = { bore = 20, type = 'plain' }", LOSS),
         "bearing type"),
     Bad("two rings not coaxial", "analyze", sub(TEETH, "teeth = { kind = 'two_rings', first = 81, planet_first = 27, "
-                                                "planet_second = 20, second = 78 }"), "cannot be coaxial"),
+                                                "planet_second = 16, second = 78 }"), "cannot be coaxial"),
     Bad("two suns module ratio 0", "analyze", sub(TEETH, "teeth = { kind = 'two_suns', first = 30, planet_first = 20, "
                                                   "planet_second = 24, second = 26, module_ratio = 0 }"),
         "module_ratio"),
@@ -586,7 +586,8 @@ CORPUS: list[Bad] = [
                                               "planet_ring = 18, ring = 86 }"), "module_ratio = 0.735"),
     Bad("teeth kind wolfrom", "analyze", sub("{ sun = 30", "{ kind = 'wolfrom', sun = 30"), "'two_rings'"),
     # ---- fit, forces
-    Bad("fit without geometry", "fit", GOOD, "no element has a geometry table"),
+    Bad("fit without geometry or tooth counts", "fit", sub(TEETH, "stationary_ratio = -2.6"),
+        "no element has a geometry table"),
     Bad("fit --out is the input", "fit", GEO, "is the input file", ("{file}", "--out", "{file}")),
     Bad("fit --planets 0", "fit", GEO, "--planets", ("{file}", "--planets", "0"), usage=True),
     Bad("fit --planets 1000", "fit", GEO, "--planets", ("{file}", "--planets", "1000"), usage=True),

@@ -49,11 +49,27 @@ def test_forces_table_json_and_equilibrium():
     assert "forces of 'P4'" in result.output
 
 
-def test_fit_and_forces_need_geometry():
-    for command in ("fit", "forces"):
-        result = runner.invoke(app, [command, str(EXAMPLES / "simple_set_ring_held_sun_drives.toml")])
-        assert result.exit_code == 2
-        assert "no element has a geometry table" in result.output and "module" in result.output
+def test_forces_needs_geometry_and_fit_checks_tooth_counts_without_it():
+    example = str(EXAMPLES / "simple_set_ring_held_sun_drives.toml")
+    result = runner.invoke(app, ["forces", example])
+    assert result.exit_code == 2
+    assert "no element has a geometry table" in result.output and "module" in result.output
+    # fit: what the tooth counts decide (coaxiality of standard gears, assembly), said to be counts only
+    result = runner.invoke(app, ["fit", example])
+    assert result.exit_code == 0, result.output
+    assert "from tooth counts only" in result.output and "assembly" in result.output
+
+
+def test_fit_without_geometry_says_how_far_counts_are_off(tmp_path):
+    # z_ring - z_sun - 2 z_planet = +3: accepted, profile shift must close it (issue 19)
+    path = tmp_path / "p.toml"
+    path.write_text("[[planetary]]\nname = 'P'\nsun = 'a'\nring = 'housing'\ncarrier = 'c'\n"
+                    "teeth = { sun = 20, planet = 37, ring = 97 }\nplanets = 3\n", encoding="utf-8")
+    data = json.loads(runner.invoke(app, ["fit", str(path), "-f", "json"]).output)
+    checks = {c["condition"]: c for c in data["fitting"]["P"]["fitting"]["checks"]}
+    assert checks["coaxiality"]["severity"] == "warning" and not checks["coaxiality"]["passed"]
+    assert "= +3" in checks["coaxiality"]["message"] and "profile shift must close it" in checks["coaxiality"]["message"]
+    assert checks["assembly"]["passed"] and checks["assembly"]["ticks"] == 117
 
 
 def test_search_matches_the_library_in_every_format(tmp_path):

@@ -25,11 +25,17 @@ from ._common import (FormatOption, OutOption, OutputFormat, SetOption, check_fi
 __all__ = ["fit", "forces", "search", "parse_range", "parse_tolerance"]
 
 
-def _load(file: Path, gear: str | None, overrides: list[str] | None):
-    """The train file with ``--set`` and ``--gear`` applied; an error if it has no geometry table."""
+def _load(file: Path, gear: str | None, overrides: list[str] | None, *, tooth_counts: bool = False):
+    """The train file with ``--set`` and ``--gear`` applied; an error if it has no geometry table.
+
+    ``tooth_counts``: a file whose sets have tooth counts but no geometry table is enough (``fit``).
+    """
     from ..errors import ModelError
+    from ..model import PlanetarySet
 
     train_file = load(file, gear, overrides)
+    if tooth_counts and any(isinstance(e, PlanetarySet) and e.teeth is not None for e in train_file.train.elements):
+        return train_file
     if not train_file.geometry:
         raise ModelError(
             f"{file}: no element has a geometry table; add one to a [[planetary]] or [[gear]] element, e.g. "
@@ -81,12 +87,19 @@ def fit(
     undercut: Annotated[Undercut, typer.Option(help="Undercut limit.")] = Undercut.theoretical,
     set_: SetOption = None,
 ) -> None:
-    """Fitting of every set with geometry: coaxiality, assembly and phasing, neighbours, undercut, interference."""
-    from ..io.geometry_report import geometry_results
+    """Fitting of every set with geometry: coaxiality, assembly and phasing, neighbours, undercut, interference.
 
-    train_file = _load(file, None, set_)
+    Sets without a geometry table get what their tooth counts decide: coaxiality of standard gears (how far the
+    counts are off, for profile shift to close) and the assembly of equally spaced planets.
+    """
+    from ..io.geometry_report import geometry_results, tooth_count_results
+
+    train_file = _load(file, None, set_, tooth_counts=True)
     results = geometry_results(train_file.geometry, None, planets=planets, allow_unequal=allow_unequal,
                                min_clearance=min_clearance, undercut=undercut.value)
+    with_geometry = {r.name for r in results}
+    results += tuple(r for r in tooth_count_results(train_file.train, planets=planets, allow_unequal=allow_unequal)
+                     if r.name not in with_geometry)
     emit(_render(results, format, f"fitting of {train_file.title or train_file.train.name}", "fitting"), out)
 
 

@@ -120,12 +120,21 @@ class FittingReport:
 
     Attributes
     ----------
-    geometry : SetGeometry
+    geometry : SetGeometry or None
+        None for a report from tooth counts alone (:func:`~epicyclic.geometry.check_tooth_counts`).
     checks : tuple of Check
+    name : str
+        The set's name where ``geometry`` is None.
     """
 
-    geometry: SetGeometry
+    geometry: SetGeometry | None
     checks: tuple[Check, ...] = field(default_factory=tuple)
+    name: str = ""
+
+    @property
+    def set_name(self) -> str:
+        """The set's name."""
+        return self.geometry.planetary_set.name if self.geometry is not None else self.name
 
     @property
     def passed(self) -> bool:
@@ -147,7 +156,7 @@ class FittingReport:
         if self.failures:
             lines = "; ".join(c.message for c in self.failures)
             raise FittingError(
-                f"set {self.geometry.planetary_set.name!r} does not fit ({len(self.failures)} condition(s)): {lines}",
+                f"set {self.set_name!r} does not fit ({len(self.failures)} condition(s)): {lines}",
                 self.failures,
             )
 
@@ -160,7 +169,7 @@ class FittingReport:
             ``set``, ``passed`` (no error-level condition fails) and ``checks``
             (:meth:`Check.to_dict` of each, in the order they were made).
         """
-        return {"set": self.geometry.planetary_set.name, "passed": self.passed,
+        return {"set": self.set_name, "passed": self.passed, "from_tooth_counts_only": self.geometry is None,
                 "checks": [c.to_dict() for c in self.checks]}
 
     def _rows(self) -> list[list[object]]:
@@ -178,15 +187,16 @@ class FittingReport:
         str
         """
         return text_table(["condition", "result", "numbers"], self._rows(),
-                          title=f"fitting of {self.geometry.planetary_set.name!r}: "
-                                + ("passes" if self.passed else "FAILS"))
+                          title=f"fitting of {self.set_name!r}"
+                                + (" from tooth counts only (no geometry table)" if self.geometry is None else "")
+                                + ": " + ("passes" if self.passed else "FAILS"))
 
     def _repr_html_(self) -> str:
         return html_table(["condition", "result", "numbers"], self._rows(),
-                          title=f"fitting of {self.geometry.planetary_set.name}")
+                          title=f"fitting of {self.set_name}")
 
     def __repr__(self) -> str:
-        return f"FittingReport({self.geometry.planetary_set.name!r}, passed={self.passed}, " \
+        return f"FittingReport({self.set_name!r}, passed={self.passed}, " \
                f"failures={[c.condition for c in self.failures]})"
 
 

@@ -28,7 +28,7 @@ from typing import Any
 
 from ..geometry import SetGeometry, check_fitting, planetary_forces, share_planets, stage_forces
 
-__all__ = ["GeometryResult", "geometry_results", "geometry_dict", "geometry_text", "geometry_markdown",
+__all__ = ["GeometryResult", "geometry_results", "tooth_count_results", "geometry_dict", "geometry_text", "geometry_markdown",
            "geometry_html"]
 
 
@@ -43,6 +43,8 @@ class GeometryResult:
 
     @property
     def kind(self) -> str:
+        if self.geometry is None:
+            return "planetary set (tooth counts only)"
         return "planetary set" if isinstance(self.geometry, SetGeometry) else "gear stage"
 
 
@@ -79,11 +81,34 @@ def geometry_results(geometry: Mapping[str, Any], solution=None, *, planets: int
     return tuple(replace(r, forces=shared.get(r.name, r.forces)) for r in out)
 
 
+def tooth_count_results(train, *, planets: int | None = None,
+                        allow_unequal: bool = False) -> tuple[GeometryResult, ...]:
+    """Coaxiality of standard gears and assembly of every set with tooth counts (no geometry table).
+
+    Parameters
+    ----------
+    train : Train
+        The file's train.
+    planets, allow_unequal
+        As in :func:`~epicyclic.geometry.check_tooth_counts`.
+
+    Returns
+    -------
+    tuple of GeometryResult
+        ``geometry`` None, ``fitting`` the tooth-count report, one per set with tooth counts.
+    """
+    from ..geometry import check_tooth_counts
+    from ..model import PlanetarySet
+
+    return tuple(GeometryResult(e.name, None, check_tooth_counts(e, planets, allow_unequal=allow_unequal))
+                 for e in train.elements if isinstance(e, PlanetarySet) and e.teeth is not None)
+
+
 def geometry_dict(results: tuple[GeometryResult, ...]) -> dict[str, Any] | None:
     """The ``"geometry"`` section of the JSON report (None without geometry)."""
     if not results:
         return None
-    return {r.name: {"kind": r.kind, "geometry": r.geometry.to_dict(),
+    return {r.name: {"kind": r.kind, "geometry": None if r.geometry is None else r.geometry.to_dict(),
                      "fitting": None if r.fitting is None else r.fitting.to_dict(),
                      "forces": None if r.forces is None else r.forces.to_dict()} for r in results}
 
@@ -93,7 +118,7 @@ def geometry_text(results: tuple[GeometryResult, ...], *, show_geometry: bool = 
     mesh tables (``epicyclic forces``)."""
     blocks = []
     for r in results:
-        if show_geometry:
+        if show_geometry and r.geometry is not None:
             blocks.append(r.geometry.table())
         if r.fitting is not None:
             blocks.append(r.fitting.table())
@@ -115,7 +140,7 @@ def geometry_markdown(results: tuple[GeometryResult, ...], *, show_geometry: boo
     parts = [f"## {heading}"]
     for r in results:
         parts.append(f"### {r.kind} {r.name}".replace("<", "&lt;"))
-        if show_geometry:
+        if show_geometry and r.geometry is not None:
             parts.append(_markdown_table(r.geometry.table()))
         if r.fitting is not None:
             parts.append(_markdown_table(r.fitting.table()))
@@ -132,7 +157,7 @@ def geometry_html(results: tuple[GeometryResult, ...], *, show_geometry: bool = 
     parts = [f"<h2>{html.escape(heading)}</h2>"]
     for r in results:
         parts.append(f"<h3>{html.escape(r.kind)} {html.escape(r.name)}</h3>")
-        if show_geometry:
+        if show_geometry and r.geometry is not None:
             parts.append(r.geometry._repr_html_())
         if r.fitting is not None:
             parts.append(r.fitting._repr_html_())
