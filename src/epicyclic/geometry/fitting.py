@@ -52,7 +52,8 @@ from .checks import (
 )
 from .errors import GeometryError, expect_type
 from .gear import MeshGeometry
-from .involute import inv, profile_shift_sum
+from .coaxiality import check_coaxiality, coaxiality_tolerance
+from .involute import inv
 from .set_geometry import SetGeometry, gear_label
 from .undercut import check_undercut, min_profile_shift, undercut_limit
 
@@ -65,6 +66,7 @@ __all__ = [
     "InterferenceCheck",
     "FittingReport",
     "check_coaxiality",
+    "coaxiality_tolerance",
     "check_assembly",
     "check_neighbours",
     "check_undercut",
@@ -79,83 +81,6 @@ __all__ = [
 
 #: Numerical margin (mm) below which a clearance counts as contact.
 _EPS_MM = 1e-9
-
-
-# ---------------------------------------------------------------------- coaxiality
-def check_coaxiality(geometry: SetGeometry, tolerance: float = 1e-3) -> CoaxialityCheck:
-    """Coaxiality of the set: both meshes' planet axes on one circle (centre distances in mm).
-
-    A set with one planet per mesh chain (simple, stepped, two suns/rings) is coaxial
-    when the sun-side and ring-side meshes run at the same operating centre distance;
-    a double-planet set when the three centre distances close a triangle.  A failing
-    check suggests the ring's profile shift that would make it coaxial.
-
-    Parameters
-    ----------
-    geometry : SetGeometry
-        The set's gears and meshes.
-    tolerance : float, default 1e-3
-        Largest accepted difference of the centre distances, mm.
-
-    Returns
-    -------
-    CoaxialityCheck
-        ``passed``, a message with the numbers and the fix, the centre distances
-        (mm) and the suggested ``x_ring``.
-
-    References
-    ----------
-    SDP/SI D785, eqs. (13-5) z_c = z_a + 2 z_b and (13-6) a_x1 = a_x2.
-    """
-    meshes = {m.name: m.center_distance for m in geometry.meshes}
-    if geometry.kind == "double":
-        a1, a12, a2 = (m.center_distance for m in geometry.meshes)
-        low, high = abs(a1 - a2), a1 + a2
-        diff = max(0.0, low - a12, a12 - high)
-        passed = diff == 0.0 and a12 > low + tolerance and a12 < high - tolerance
-        if passed:
-            gamma = math.degrees(math.acos((a1 * a1 + a2 * a2 - a12 * a12) / (2 * a1 * a2)))
-            message = (
-                f"planet1 axis at r = {a1:.3f} mm, planet2 axis at r = {a2:.3f} mm, {gamma:.2f}° apart; "
-                f"the planet1-planet2 centre distance {a12:.3f} mm closes the triangle"
-            )
-        else:
-            message = (
-                f"double planets cannot be placed: planet1-planet2 centre distance {a12:.3f} mm must lie "
-                f"strictly between |a1 - a2| = {low:.3f} mm and a1 + a2 = {high:.3f} mm; change the planet "
-                "tooth counts or the ring/sun tooth counts"
-            )
-        return CoaxialityCheck("coaxiality", passed, message, "error", MappingProxyType(meshes), diff, tolerance,
-                               MappingProxyType({}))
-    sun_mesh, ring_mesh = geometry.sun_mesh, geometry.ring_mesh
-    a_s, a_r = sun_mesh.center_distance, ring_mesh.center_distance
-    diff = a_r - a_s
-    suggestion: dict[str, float] = {}
-    if abs(diff) <= tolerance:
-        message = f"{sun_mesh.name} and {ring_mesh.name} both run at a_w = {a_s:.4f} mm (difference {diff:+.4f} mm)"
-        return CoaxialityCheck("coaxiality", True, message, "error", MappingProxyType(meshes), diff, tolerance,
-                               MappingProxyType(suggestion))
-    rack = ring_mesh.rack
-    planet, ring = ring_mesh.gear1, ring_mesh.gear2
-    z_sum = ring.teeth - planet.teeth if ring.internal else ring.teeth + planet.teeth
-    try:
-        needed = profile_shift_sum(a_s, z_sum, rack.module, rack.alpha_n, rack.beta)
-        suggestion["x_ring"] = needed + planet.profile_shift if ring.internal else needed - planet.profile_shift
-    except ValueError:
-        pass
-    ring_label = geometry.gear_label("ring")
-    hint = (f"set x_{ring_label} = {suggestion['x_ring']:.4f} (other shifts kept)" if suggestion
-            else "change the tooth counts")
-    if geometry.kind == "simple":
-        zs, zp, zr = (geometry.planetary_set.teeth.sun, geometry.planetary_set.teeth.planet[0],  # type: ignore[union-attr]
-                      geometry.planetary_set.teeth.ring)  # type: ignore[union-attr]
-        hint += f"; for standard gears z_ring = z_sun + 2 z_planet = {zs + 2 * zp} (given {zr})"
-    message = (
-        f"not coaxial: {sun_mesh.name} a_w = {a_s:.4f} mm but {ring_mesh.name} a_w = {a_r:.4f} mm "
-        f"(differ by {abs(diff):.4f} mm > {tolerance} mm); {hint}"
-    )
-    return CoaxialityCheck("coaxiality", False, message, "error", MappingProxyType(meshes), diff, tolerance,
-                           MappingProxyType(suggestion))
 
 
 # ---------------------------------------------------------------------- assembly
@@ -482,7 +407,8 @@ def check_interference(geometry: SetGeometry) -> tuple[InterferenceCheck, ...]:
             message = (
                 f"{mesh.name}: {', '.join(bad)} interference (margins: involute {inv_m:+.4f}, trochoid "
                 f"{tro_m:+.4f} rad, trimming {trim_m:+.4f} rad); {'; '.join(_WHY_INTERFERENCE[b] for b in bad)} "
-                f"(planet {z1}, ring {z2} teeth): {', '.join(fixes)}, raise x_{ring} or shorten the ring's addendum"
+                f"(planet {z1}, ring {z2} teeth): {', '.join(fixes)}, enlarge the ring's tip circle (x_{ring} more "
+                f"negative in the ISO 21771 sign) or shorten the ring's addendum"
             )
         out.append(InterferenceCheck("interference", not bad, message, "warning", mesh.name, inv_m, tro_m, trim_m))
     return tuple(out)
@@ -495,7 +421,7 @@ def check_fitting(
     allow_unequal: bool = False,
     min_clearance: float = 0.0,
     undercut: Literal["theoretical", "practical"] = "theoretical",
-    tolerance: float = 1e-3,
+    tolerance: float | None = None,
 ) -> FittingReport:
     """Run every fitting condition (number of planets from the set unless given).
 
@@ -511,8 +437,10 @@ def check_fitting(
         Smallest tip clearance between neighbouring planets, mm.
     undercut : {"theoretical", "practical"}
         Undercut limit z_min = 2/sin²α (theoretical) or 5/6 of it (practical).
-    tolerance : float, default 1e-3
-        Allowed difference of the centre distances for coaxiality, mm.
+    tolerance : float, optional
+        Allowed difference of the centre distances for coaxiality, mm; default the
+        geometry's ``center_distance_tolerance`` or :func:`coaxiality_tolerance`
+        (scaled with the module and the digits of the shifts).
 
     Returns
     -------

@@ -2,27 +2,33 @@
 
 Units: lengths in mm, angles in degrees at the interface (radians inside).
 Tooth counts and diameters are positive for internal gears too; an internal
-gear is flagged ``internal=True`` (the KHK / SDP-SI convention: a positive
-profile shift of an internal gear moves its teeth outward, i.e. enlarges the
-tip circle and the centre distance).
+gear is flagged ``internal=True``.
+
+Profile shift of an internal gear: the ISO 21771 / DIN 3960 sign (also KISSsoft's
+and REXS's).  ISO writes an internal gear with z < 0, so its coefficient keeps the
+meaning "material added toward the tooth tip side of the rack": a *negative* x of
+an internal gear enlarges its tip circle and the centre distance.  Handbooks in
+the KHK / SDP-SI tradition use the opposite sign (x_KHK = −x_ISO);
+:func:`iso_profile_shift` converts.  ``GearGeometry.profile_shift`` is always ISO.
 
 Formulas (normal module m_n, helix angle β, transverse module
 m_t = m_n / cos β, transverse pressure angle tan α_t = tan α_n / cos β):
 
 ============================  ==============================  ==============================
-quantity                      external gear                   internal gear
+quantity                      external gear                   internal gear (x ISO)
 ============================  ==============================  ==============================
 reference diameter d          z m_t                           z m_t
 base diameter d_b             d cos α_t                       d cos α_t
-tip diameter d_a              d + 2 m_n (h_a* + x − k)        d − 2 m_n (h_a* − x)
-root diameter d_f             d − 2 m_n (h_f* − x)            d + 2 m_n (h_f* + x)
+tip diameter d_a              d + 2 m_n (h_a* + x − k)        d − 2 m_n (h_a* + x − k)
+root diameter d_f             d − 2 m_n (h_f* − x)            d + 2 m_n (h_f* − x)
 ============================  ==============================  ==============================
 
 References
 ----------
-ISO 21771:2007 (cylindrical involute gears: concepts and geometry).
-SDP/SI, *Elements of Metric Gear Technology* (D785), section 5.1, Table 5-1
-(profile-shifted internal gear).  Queitsch, Formelzeichen (d_0, r_g, r_b, h_k).
+ISO 21771:2007 (cylindrical involute gears: concepts and geometry; internal gears
+with z < 0); DIN 3960:1987.  SDP/SI, *Elements of Metric Gear Technology* (D785),
+section 5.1, Table 5-1 (profile-shifted internal gear, KHK sign).  Queitsch,
+Formelzeichen (d_0, r_g, r_b, h_k).
 """
 
 from __future__ import annotations
@@ -40,7 +46,54 @@ from .involute import (
     transverse_pressure_angle,
 )
 
-__all__ = ["BasicRack", "GearGeometry", "MeshGeometry"]
+__all__ = ["BasicRack", "GearGeometry", "MeshGeometry", "SHIFT_CONVENTIONS", "iso_profile_shift"]
+
+#: Sign conventions of an internal gear's profile shift: ISO 21771 (default) and KHK / SDP-SI.
+SHIFT_CONVENTIONS = {
+    "iso": "ISO 21771 / DIN 3960 (KISSsoft, REXS): x < 0 of an internal gear enlarges its tip circle",
+    "khk": "KHK / SDP-SI: x > 0 of an internal gear enlarges its tip circle (x_KHK = -x_ISO)",
+}
+
+
+def iso_profile_shift(x: float, internal: bool, convention: str = "iso") -> float:
+    """The ISO 21771 profile-shift coefficient of a gear given in ``convention``.
+
+    External gears have one sign in both conventions; an internal gear's KHK value
+    is the negative of its ISO value.
+
+    Parameters
+    ----------
+    x : float
+        The coefficient as given.
+    internal : bool
+        Whether the gear is internal.
+    convention : {"iso", "khk"}
+        The convention ``x`` is written in.
+
+    Returns
+    -------
+    float
+        x in the ISO 21771 sign.
+
+    Raises
+    ------
+    GeometryError
+        An unknown convention.
+
+    Examples
+    --------
+    >>> iso_profile_shift(0.516, internal=True, convention="khk"), iso_profile_shift(0.5, internal=False, convention="khk")
+    (-0.516, 0.5)
+
+    References
+    ----------
+    ISO 21771:2007 (internal gears: z < 0, inv α_wt = inv α_t + 2 tan α_n (x1 + x2)/(z1 + z2));
+    SDP/SI D785, Table 5-1 (inv α_w = 2 tan α (x2 − x1)/(z2 − z1) + inv α).
+    """
+    if convention not in SHIFT_CONVENTIONS:
+        raise GeometryError(f"internal_shift_convention must be one of {', '.join(map(repr, SHIFT_CONVENTIONS))}, "
+                            f"got {convention!r}.")
+    return -x if (internal and convention == "khk") else x
 
 
 def _positive(value: object, name: str, owner: str) -> float:
@@ -152,7 +205,8 @@ class GearGeometry:
         Number of teeth z (positive, also for internal gears).
     rack : BasicRack
     profile_shift : float, default 0
-        Profile-shift coefficient x (KHK convention for internal gears).
+        Profile-shift coefficient x, ISO 21771 sign (an internal gear's x < 0 enlarges
+        its tip circle; :func:`iso_profile_shift` converts a KHK value).
     internal : bool, default False
     tip_shortening : float, default 0
         Tip-shortening coefficient k ≥ 0 (external gears; see
@@ -160,8 +214,8 @@ class GearGeometry:
 
     References
     ----------
-    ISO 21771:2007; SDP/SI D785, Table 5-1 (internal gear: d_a2 = d_2 − 2 m (1 − x_2),
-    d_f2 = d_a2 + 2 h).
+    ISO 21771:2007 (internal gear, x ISO: d_a2 = d_2 − 2 m (h_a* + x_2));
+    SDP/SI D785, Table 5-1 (the same with x_KHK = −x_ISO: d_a2 = d_2 − 2 m (1 − x_2)).
 
     Examples
     --------
@@ -211,7 +265,7 @@ class GearGeometry:
         """d_a, mm (for an internal gear the smaller, inner circle of its tips)."""
         m, r = self.rack.module, self.rack
         if self.internal:
-            return self.reference_diameter - 2.0 * m * (r.addendum - self.profile_shift)
+            return self.reference_diameter - 2.0 * m * (r.addendum + self.profile_shift - self.tip_shortening)
         return self.reference_diameter + 2.0 * m * (r.addendum + self.profile_shift - self.tip_shortening)
 
     @property
@@ -219,7 +273,7 @@ class GearGeometry:
         """d_f, mm (for an internal gear the larger, outer circle of its roots)."""
         m, r = self.rack.module, self.rack
         if self.internal:
-            return self.reference_diameter + 2.0 * m * (r.dedendum + self.profile_shift)
+            return self.reference_diameter + 2.0 * m * (r.dedendum - self.profile_shift)
         return self.reference_diameter - 2.0 * m * (r.dedendum - self.profile_shift)
 
     @property
@@ -370,7 +424,7 @@ class MeshGeometry:
             total = profile_shift_sum(center_distance, z_sum, rack.module, rack.alpha_n, rack.beta)
         except ValueError as exc:
             raise GeometryError(f"MeshGeometry.at_center_distance: {exc}") from None
-        x2 = total + x1 if internal else total - x1
+        x2 = -(total + x1) if internal else total - x1  # ISO sign of an internal gear 2
         return cls(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2, internal=internal), name)
 
     @property
@@ -388,8 +442,9 @@ class MeshGeometry:
 
     @property
     def _x_sum(self) -> float:
+        # x2 − x1 in the KHK sign of the internal pair's formula = −(x1 + x2) with ISO's x2
         g1, g2 = self.gear1, self.gear2
-        return g2.profile_shift - g1.profile_shift if self.internal else g1.profile_shift + g2.profile_shift
+        return -(g2.profile_shift + g1.profile_shift) if self.internal else g1.profile_shift + g2.profile_shift
 
     @property
     def reference_center_distance(self) -> float:

@@ -34,7 +34,8 @@ from ..model.planetary import PlanetarySet, Teeth
 from ..model.teeth import TWO_CENTRAL_NAMES
 from ._render import html_table, text_table
 from .errors import GeometryError
-from .gear import BasicRack, GearGeometry, MeshGeometry
+from .tolerances import parse_center_distance_tolerance
+from .gear import SHIFT_CONVENTIONS, BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
 
 __all__ = ["SetGeometry", "planet_names", "gear_label", "TWO_CENTRAL_NAMES"]
 
@@ -76,8 +77,9 @@ class SetGeometry:
         Module (normal module), pressure angle, helix angle, addendum and
         dedendum factors.
     x_sun, x_ring : float, default 0
-        Profile-shift coefficients of the central gears (KHK convention for an
-        internal ring: positive x enlarges its tip circle).
+        Profile-shift coefficients of the central gears, in the sign of
+        ``internal_shift_convention`` for an internal gear (ISO 21771: a negative x
+        of a ring enlarges its tip circle).
     x_planet : float or sequence of float, default 0
         Profile shift of the planet gear(s), one per planet gear of the kind
         (a single number is used for all).
@@ -93,6 +95,14 @@ class SetGeometry:
     load_sharing : float, optional
         Load-sharing factor K_γ ≥ 1 for the design forces (default: by number
         of planets, :func:`~epicyclic.geometry.forces.default_load_sharing`).
+    internal_shift_convention : {"iso", "khk"}, default "iso"
+        The sign in which an internal gear's profile shift is given: ``"iso"``
+        (ISO 21771, DIN 3960, KISSsoft, REXS) or ``"khk"`` (KHK / SDP-SI handbooks,
+        x_KHK = −x_ISO).  :attr:`gears` always hold the ISO value; reports state it.
+    center_distance_tolerance : float or str, optional
+        The housing's centre-distance allowance for the coaxiality check: ± mm, or an
+        ISO 286 js field such as ``"js7"`` (DIN 3964).  Default: the effect of the
+        shifts' printed digits (:func:`~epicyclic.geometry.coaxiality.coaxiality_tolerance`).
 
     References
     ----------
@@ -119,6 +129,8 @@ class SetGeometry:
     tip_shortening: bool = True
     face_width: float | Mapping[str, float] | None = None
     load_sharing: float | None = None
+    internal_shift_convention: str = "iso"
+    center_distance_tolerance: float | str | None = None
     gears: Mapping[str, GearGeometry] = field(init=False, repr=False, compare=False)
     meshes: tuple[MeshGeometry, ...] = field(init=False, repr=False, compare=False)
 
@@ -158,11 +170,21 @@ class SetGeometry:
         planet_racks = [self.rack] * len(names)
         if teeth.kind == "stepped":
             planet_racks[1] = ring_rack
+        convention = self.internal_shift_convention
+        iso_profile_shift(0.0, False, convention)  # raises on an unknown convention
+
+        def central(x, internal: bool) -> float:
+            if isinstance(x, bool) or not isinstance(x, (int, float)):
+                return x  # GearGeometry names the bad value
+            return iso_profile_shift(x, internal, convention)
+
         gears: dict[str, GearGeometry] = {
-            "sun": GearGeometry(teeth.sun, self.rack, self.x_sun, internal=teeth.sun_internal)}
+            "sun": GearGeometry(teeth.sun, self.rack, central(self.x_sun, teeth.sun_internal),
+                                internal=teeth.sun_internal)}
         for name, z, x, rk in zip(names, teeth.planet, xp, planet_racks):
             gears[name] = GearGeometry(z, rk, x)
-        gears["ring"] = GearGeometry(teeth.ring, ring_rack, self.x_ring, internal=teeth.ring_internal)
+        gears["ring"] = GearGeometry(teeth.ring, ring_rack, central(self.x_ring, teeth.ring_internal),
+                                     internal=teeth.ring_internal)
 
         pairs = _mesh_pairs(teeth.kind, names)
         meshes = [_mesh(gears, a, b, teeth) for a, b in pairs]
@@ -176,6 +198,12 @@ class SetGeometry:
         object.__setattr__(self, "gears", MappingProxyType(gears))
         object.__setattr__(self, "meshes", tuple(meshes))
         object.__setattr__(self, "face_width", _face_widths(self.face_width, tuple(gears), owner))
+        if self.center_distance_tolerance is not None:
+            try:
+                object.__setattr__(self, "center_distance_tolerance",
+                                   parse_center_distance_tolerance(self.center_distance_tolerance))
+            except GeometryError as exc:
+                raise GeometryError(f"{owner}: {exc}") from None
         k_gamma = self.load_sharing
         if k_gamma is not None and (isinstance(k_gamma, bool) or not isinstance(k_gamma, (int, float))
                                     or not math.isfinite(k_gamma) or k_gamma < 1.0):
@@ -199,6 +227,8 @@ class SetGeometry:
         tip_shortening: bool = True,
         face_width: float | Mapping[str, float] | None = None,
         load_sharing: float | None = None,
+        internal_shift_convention: str = "iso",
+        center_distance_tolerance: float | str | None = None,
     ) -> SetGeometry:
         """Build the geometry from plain numbers (module and face width in mm, angles in degrees).
 
@@ -223,6 +253,10 @@ class SetGeometry:
             Face width b, mm (needed for mesh losses).
         load_sharing : float, optional
             K_γ ≥ 1 for the design forces (default by number of planets).
+        internal_shift_convention : {"iso", "khk"}, default "iso"
+            Sign of an internal gear's profile shift as given (ISO 21771 or KHK).
+        center_distance_tolerance : float or str, optional
+            ± mm or a js field (``"js7"``) for the coaxiality check.
 
         Returns
         -------
@@ -246,7 +280,7 @@ class SetGeometry:
         """
         rack = BasicRack(module, pressure_angle, helix_angle, addendum, dedendum)
         return cls(planetary_set, rack, x_sun, x_ring, x_planet, ring_module, tip_shortening,  # type: ignore[arg-type]
-                   face_width, load_sharing)
+                   face_width, load_sharing, internal_shift_convention, center_distance_tolerance)
 
     # ------------------------------------------------------------------ properties
     @property
@@ -331,6 +365,9 @@ class SetGeometry:
                 "dedendum": self.rack.dedendum,
                 "ring_module": self.ring_module,
             },
+            "internal_shift_convention": self.internal_shift_convention,
+            "profile_shift_sign": SHIFT_CONVENTIONS["iso"] + " (gears' profile_shift; the input was "
+                                  + self.internal_shift_convention.upper() + ")",
             "gears": {n: g.to_dict() for n, g in self.gears.items()},
             "meshes": [m.to_dict() for m in self.meshes],
         }
@@ -357,16 +394,24 @@ class SetGeometry:
         ]
         return headers, rows
 
+    @property
+    def shift_convention_note(self) -> str:
+        """One line on the sign of the internal gears' profile shifts in the tables (ISO 21771) and as given."""
+        given = "" if self.internal_shift_convention == "iso" else " (given as KHK, x_ISO = -x_KHK)"
+        return f"x: ISO 21771 sign, an internal gear's x < 0 enlarges its tip circle{given}"
+
     def table(self) -> str:
         """Gears and meshes as a text table (mm, degrees)."""
         title = (
             f"{self.planetary_set.teeth.arrangement} set {self.planetary_set.name!r}: m_n = {self.rack.module} mm, "
-            f"alpha_n = {self.rack.pressure_angle} deg, beta = {self.rack.helix_angle} deg"
+            f"alpha_n = {self.rack.pressure_angle} deg, beta = {self.rack.helix_angle} deg; "
+            f"{self.shift_convention_note}"
         )
         return text_table(*self._rows(), title=title) + "\n\n" + text_table(*self._mesh_rows())
 
     def _repr_html_(self) -> str:
-        return html_table(*self._rows(), title=f"set {self.planetary_set.name}") + html_table(*self._mesh_rows())
+        return html_table(*self._rows(), title=f"set {self.planetary_set.name} ({self.shift_convention_note})") \
+            + html_table(*self._mesh_rows())
 
     def __repr__(self) -> str:
         centres = ", ".join(f"{m.name} a_w={m.center_distance:.3f}" for m in self.meshes)

@@ -21,7 +21,7 @@ from typing import Any
 from ..model.elements import GearStage
 from ._render import html_table, text_table
 from .errors import GeometryError
-from .gear import BasicRack, GearGeometry, MeshGeometry
+from .gear import BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
 
 __all__ = ["StageGeometry"]
 
@@ -50,6 +50,9 @@ class StageGeometry:
         Face width of each mesh, mm (one for all, or one per mesh).
     tip_shortening : bool, default True
         Shorten the tips of external pairs (ISO 21771).
+    internal_shift_convention : {"iso", "khk"}, default "iso"
+        Sign of an internal gear's profile shift as given (ISO 21771 or KHK, x_KHK = −x_ISO);
+        the meshes hold ISO values.
 
     Examples
     --------
@@ -67,6 +70,7 @@ class StageGeometry:
     profile_shifts: Sequence[tuple[float, float]] = ()
     face_width: float | Sequence[float] | None = None
     tip_shortening: bool = True
+    internal_shift_convention: str = "iso"
     meshes: tuple[MeshGeometry, ...] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -80,6 +84,7 @@ class StageGeometry:
                 "GearStage.from_teeth (in a file: 'meshes' instead of 'ratio')."
             )
         count = len(stage.meshes)
+        iso_profile_shift(0.0, False, self.internal_shift_convention)  # raises on an unknown convention
         racks = _per_mesh(self.rack, count, "rack", owner)
         if not all(isinstance(r, BasicRack) for r in racks):
             raise GeometryError(f"{owner}: rack must be a BasicRack or one per mesh.")
@@ -100,8 +105,11 @@ class StageGeometry:
             name = f"mesh {k + 1} ({z1}/{z2})"
             if kind == "internal":
                 small, large = ((z1, x1), (z2, x2)) if z1 < z2 else ((z2, x2), (z1, x1))
+                x_large = large[1]
+                if isinstance(x_large, (int, float)) and not isinstance(x_large, bool):
+                    x_large = iso_profile_shift(x_large, True, self.internal_shift_convention)
                 mesh = MeshGeometry(GearGeometry(small[0], rack, small[1]),
-                                    GearGeometry(large[0], rack, large[1], internal=True), name)
+                                    GearGeometry(large[0], rack, x_large, internal=True), name)
             else:
                 mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2), name)
                 if self.tip_shortening:
@@ -129,6 +137,7 @@ class StageGeometry:
     def to_dict(self) -> dict[str, Any]:
         """Plain data (mm, degrees)."""
         return {"stage": self.stage.name, "face_width": None if self.face_width is None else list(self.face_width),
+                "internal_shift_convention": self.internal_shift_convention,
                 "meshes": [m.to_dict() for m in self.meshes]}
 
     def _rows(self) -> list[list[object]]:
@@ -146,7 +155,9 @@ class StageGeometry:
         -------
         str
         """
-        return text_table(self._HEAD, self._rows(), title=f"stage {self.stage.name!r}")
+        given = "" if self.internal_shift_convention == "iso" else " (given as KHK, x_ISO = -x_KHK)"
+        return text_table(self._HEAD, self._rows(), title=f"stage {self.stage.name!r} (profile shift: ISO 21771 "
+                                                          f"sign{given})")
 
     def _repr_html_(self) -> str:
         return html_table(self._HEAD, self._rows(), title=f"stage {self.stage.name}")

@@ -9,6 +9,8 @@ Per ``[[planetary]]`` and ``[[gear]]`` element::
     addendum = 1.0                       # h_a* (default 1)
     dedendum = 1.25                      # h_f* (default 1.25)
     profile_shift = { sun = 0.438, planet = 0.0426, ring = 0.0 }   # by gear name (default 0)
+    internal_shift_convention = "iso"    # sign of an internal gear's x: "iso" (ISO 21771, default) or "khk"
+    center_distance_tolerance = "js7"    # coaxiality: ± mm or an ISO 286 js field (DIN 3964)
     face_width = 38.0                    # mm, or one per gear name
     ring_module = 2.0                    # stepped sets: module of the second mesh
     planets = 3                          # number of planets (or the element's 'planets')
@@ -58,8 +60,9 @@ from .reader import at_key
 __all__ = ["GEOMETRY_KEYS", "LOSSES_KEYS", "LUBRICANT_KEYS", "module_ratio", "read_lubricant", "read_extras"]
 
 GEOMETRY_KEYS = {"module", "pressure_angle", "helix_angle", "addendum", "dedendum", "profile_shift", "face_width",
-                 "ring_module", "planets", "load_sharing", "tip_shortening"}
-_STAGE_GEOMETRY_KEYS = GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing"}
+                 "ring_module", "planets", "load_sharing", "tip_shortening", "internal_shift_convention",
+                 "center_distance_tolerance"}
+_STAGE_GEOMETRY_KEYS = GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing", "center_distance_tolerance"}
 LOSSES_KEYS = {"friction", "roughness", "bearing", "drag"}
 _STAGE_LOSSES_KEYS = LOSSES_KEYS - {"bearing"}
 LUBRICANT_KEYS = {"viscosity", "lubricant_factor"}
@@ -178,6 +181,32 @@ def _gear_values(reader, value, names: tuple[str, ...], key: str, where: str, de
     return {name: number for name in names}
 
 
+def _convention(reader, table, where: str) -> str:
+    """``internal_shift_convention``: "iso" (default) or "khk"."""
+    value = table.get("internal_shift_convention", "iso")
+    if not isinstance(value, str) or value.strip().lower() not in ("iso", "khk"):
+        raise reader.error(at_key(where, "geometry.internal_shift_convention"),
+                           f"expected \"iso\" (ISO 21771, DIN 3960, KISSsoft, REXS: an internal gear's x < 0 "
+                           f"enlarges its tip circle) or \"khk\" (KHK / SDP-SI handbooks, the opposite sign), "
+                           f"got {short(value)}.")
+    return value.strip().lower()
+
+
+def _cd_tolerance(reader, table, where: str):
+    """``center_distance_tolerance``: ± mm or an ISO 286 js field, or None."""
+    if "center_distance_tolerance" not in table:
+        return None
+    from ..geometry.tolerances import parse_center_distance_tolerance
+
+    value = table["center_distance_tolerance"]
+    try:
+        return parse_center_distance_tolerance(value)
+    except EpicyclicError:
+        raise reader.error(at_key(where, "geometry.center_distance_tolerance"),
+                           f"expected a positive number of mm or an ISO 286 js field \"js5\" … \"js11\" "
+                           f"(DIN 3964), got {short(value)}.") from None
+
+
 def _set_geometry(reader, table, pset: PlanetarySet, element_table, where: str):
     reader.check_keys(table, GEOMETRY_KEYS, where)
     if pset.teeth is None:
@@ -225,7 +254,8 @@ def _set_geometry(reader, table, pset: PlanetarySet, element_table, where: str):
     planet_shifts = tuple(shifts[n] for n in names[1:-1])
     geometry = SetGeometry(pset, rack, shifts["sun"], shifts["ring"],
                            planet_shifts if len(planet_shifts) > 1 else planet_shifts[0], ring_module, tip,
-                           widths, load_sharing)
+                           widths, load_sharing, _convention(reader, table, where),
+                           _cd_tolerance(reader, table, where))
     return pset, geometry
 
 
@@ -251,7 +281,8 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
         widths = ([_positive(reader, v, f"geometry.face_width[{k}]", where, "mm") for k, v in enumerate(value)]
                   if isinstance(value, list) else _positive(reader, value, "geometry.face_width", where, "mm"))
     tip = reader.boolean(table, "tip_shortening", where, True)
-    return StageGeometry(stage, racks if per_mesh else racks[0], pairs, widths, tip)
+    return StageGeometry(stage, racks if per_mesh else racks[0], pairs, widths, tip,
+                         _convention(reader, table, where))
 
 
 # ---------------------------------------------------------------------- losses
