@@ -92,9 +92,11 @@ class SetGeometry:
         Face width b in mm, one for all gears or one per gear name (``sun``,
         ``planet``, ``ring``, ...); a mesh's width is the smaller of its two
         gears'.  Needed for mesh losses (load per face width).
-    load_sharing : float, optional
-        Load-sharing factor K_γ ≥ 1 for the design forces (default: by number
-        of planets, :func:`~epicyclic.geometry.forces.default_load_sharing`).
+    load_sharing : float or str, optional
+        Load-sharing factor K_γ ≥ 1 for the design forces, or a mounting
+        (``"floating_sun"``, ``"flexible_pins"``, ``"abs"``) for the tabulated value
+        (:func:`~epicyclic.geometry.load_sharing.tabulated_load_sharing`); default by number
+        of planets, :func:`~epicyclic.geometry.load_sharing.default_load_sharing`.
     internal_shift_convention : {"iso", "khk"}, default "iso"
         The sign in which an internal gear's profile shift is given: ``"iso"``
         (ISO 21771, DIN 3960, KISSsoft, REXS) or ``"khk"`` (KHK / SDP-SI handbooks,
@@ -205,7 +207,13 @@ class SetGeometry:
             except GeometryError as exc:
                 raise GeometryError(f"{owner}: {exc}") from None
         k_gamma = self.load_sharing
-        if k_gamma is not None and (isinstance(k_gamma, bool) or not isinstance(k_gamma, (int, float))
+        if isinstance(k_gamma, str):
+            from .load_sharing import MOUNTINGS
+
+            if k_gamma not in MOUNTINGS:
+                raise GeometryError(f"{owner}: load_sharing must be a number >= 1 or one of "
+                                    f"{', '.join(map(repr, MOUNTINGS))} (tabulated K_gamma), got {k_gamma!r}.")
+        elif k_gamma is not None and (isinstance(k_gamma, bool) or not isinstance(k_gamma, (int, float))
                                     or not math.isfinite(k_gamma) or k_gamma < 1.0):
             raise GeometryError(f"{owner}: load_sharing (K_gamma) must be a number >= 1, got {k_gamma!r}.")
 

@@ -14,7 +14,7 @@ Per ``[[planetary]]`` and ``[[gear]]`` element::
     face_width = 38.0                    # mm, or one per gear name
     ring_module = 2.0                    # stepped sets: module of the second mesh
     planets = 3                          # number of planets (or the element's 'planets')
-    load_sharing = 1.0                   # K_γ (default by number of planets)
+    load_sharing = 1.0                   # K_γ, or "floating_sun" / "flexible_pins" / "abs" for the tables
     tip_shortening = true
 
     [planetary.losses]
@@ -244,7 +244,15 @@ def _set_geometry(reader, table, pset: PlanetarySet, element_table, where: str):
                                f"says {pset.planets}; give the number once.")
         pset = replace(pset, planets=planets)
     load_sharing = None
-    if "load_sharing" in table:
+    if isinstance(table.get("load_sharing"), str):
+        from ..geometry.load_sharing import MOUNTINGS
+
+        load_sharing = table["load_sharing"]
+        if load_sharing not in MOUNTINGS:
+            raise reader.error(at_key(where, "geometry.load_sharing"),
+                               f"expected K_gamma >= 1 or a mounting for the tabulated value "
+                               f"({', '.join(repr(m) for m in MOUNTINGS)}), got {short(load_sharing)}.")
+    elif "load_sharing" in table:
         load_sharing = reader.number(table["load_sharing"], "geometry.load_sharing", where)
         if load_sharing < 1.0:
             raise reader.error(at_key(where, "geometry.load_sharing"),
