@@ -16,7 +16,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from .set_geometry import SetGeometry
 
 __all__ = ["Check", "CoaxialityCheck", "AssemblyCheck", "NeighbourCheck", "UndercutCheck", "InterferenceCheck",
-           "FittingReport"]
+           "TipThicknessCheck", "ContactRatioCheck", "BacklashCheck", "FittingReport"]
 
 
 @dataclass(frozen=True)
@@ -115,13 +115,45 @@ class InterferenceCheck(Check):
 
 
 @dataclass(frozen=True)
+class TipThicknessCheck(Check):
+    """Tip thickness of one gear: s_an in mm and as a multiple of the module, against the limits."""
+
+    gear: str
+    tip_thickness: float
+    module: float
+    error_limit: float
+    warning_limit: float
+
+
+@dataclass(frozen=True)
+class ContactRatioCheck(Check):
+    """Contact ratios of one mesh: ε_α, ε_β (None without face width) and ε_γ."""
+
+    mesh: str
+    transverse: float
+    overlap: float | None
+    total: float
+
+
+@dataclass(frozen=True)
+class BacklashCheck(Check):
+    """Normal backlash j_bn of one mesh at its centre distance, mm (< 0: the teeth jam)."""
+
+    mesh: str
+    backlash: float
+    center_distance: float
+    given: bool
+
+
+@dataclass(frozen=True)
 class FittingReport:
     """All fitting conditions of one set.
 
     Attributes
     ----------
-    geometry : SetGeometry or None
-        None for a report from tooth counts alone (:func:`~epicyclic.geometry.check_tooth_counts`).
+    geometry : SetGeometry, StageGeometry or None
+        None for a report from tooth counts alone (:func:`~epicyclic.geometry.check_tooth_counts`);
+        a StageGeometry for a fixed-axis stage (:func:`~epicyclic.geometry.working.check_stage`).
     checks : tuple of Check
     name : str
         The set's name where ``geometry`` is None.
@@ -133,8 +165,11 @@ class FittingReport:
 
     @property
     def set_name(self) -> str:
-        """The set's name."""
-        return self.geometry.planetary_set.name if self.geometry is not None else self.name
+        """The set's (or stage's) name."""
+        if self.geometry is None:
+            return self.name
+        owner = getattr(self.geometry, "planetary_set", None) or getattr(self.geometry, "stage", None)
+        return owner.name
 
     @property
     def passed(self) -> bool:

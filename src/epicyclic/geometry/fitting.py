@@ -32,6 +32,10 @@ undercut
 internal interference
     Involute, trochoid and trimming interference of each internal mesh
     (SDP/SI D785 section 5.2), reported as warnings.
+contact ratio, tip thickness, backlash
+    ε_γ ≥ 1 (continuous contact), s_an ≥ 0.2 m_n (a warning below 0.4 m_n) and
+    j_bn ≥ 0 at the centre distance as built (:mod:`epicyclic.geometry.working`):
+    a design that cannot run never passes.
 """
 
 from __future__ import annotations
@@ -56,6 +60,7 @@ from .coaxiality import check_coaxiality, coaxiality_tolerance
 from .involute import inv
 from .set_geometry import SetGeometry, gear_label
 from .undercut import check_undercut, min_profile_shift, undercut_limit
+from .working import check_backlash, check_contact_ratio, check_tip_thickness
 
 __all__ = [
     "Check",
@@ -475,5 +480,8 @@ def check_fitting(
         check_neighbours(geometry, n, angles, min_clearance),
         *check_undercut(geometry, undercut),
         *check_interference(geometry),
+        *check_contact_ratio(geometry.meshes, geometry.mesh_face_widths()),
+        *check_tip_thickness(geometry.gears, geometry.gear_label),
+        *check_backlash(geometry.meshes),
     ]
     return FittingReport(geometry, tuple(checks))

@@ -38,6 +38,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from ..limits import MAX_TOOTH_HEIGHT_FACTOR, MODULE_RANGE
+from .conventions import SHIFT_CONVENTIONS, iso_profile_shift
 from .errors import GeometryError
 from .involute import (
     center_distance_from_angle,
@@ -47,54 +48,6 @@ from .involute import (
 )
 
 __all__ = ["BasicRack", "GearGeometry", "MeshGeometry", "SHIFT_CONVENTIONS", "iso_profile_shift"]
-
-#: Sign conventions of an internal gear's profile shift: ISO 21771 (default) and KHK / SDP-SI.
-SHIFT_CONVENTIONS = {
-    "iso": "ISO 21771 / DIN 3960 (KISSsoft, REXS): x < 0 of an internal gear enlarges its tip circle",
-    "khk": "KHK / SDP-SI: x > 0 of an internal gear enlarges its tip circle (x_KHK = -x_ISO)",
-}
-
-
-def iso_profile_shift(x: float, internal: bool, convention: str = "iso") -> float:
-    """The ISO 21771 profile-shift coefficient of a gear given in ``convention``.
-
-    External gears have one sign in both conventions; an internal gear's KHK value
-    is the negative of its ISO value.
-
-    Parameters
-    ----------
-    x : float
-        The coefficient as given.
-    internal : bool
-        Whether the gear is internal.
-    convention : {"iso", "khk"}
-        The convention ``x`` is written in.
-
-    Returns
-    -------
-    float
-        x in the ISO 21771 sign.
-
-    Raises
-    ------
-    GeometryError
-        An unknown convention.
-
-    Examples
-    --------
-    >>> iso_profile_shift(0.516, internal=True, convention="khk"), iso_profile_shift(0.5, internal=False, convention="khk")
-    (-0.516, 0.5)
-
-    References
-    ----------
-    ISO 21771:2007 (internal gears: z < 0, inv α_wt = inv α_t + 2 tan α_n (x1 + x2)/(z1 + z2));
-    SDP/SI D785, Table 5-1 (inv α_w = 2 tan α (x2 − x1)/(z2 − z1) + inv α).
-    """
-    if convention not in SHIFT_CONVENTIONS:
-        raise GeometryError(f"internal_shift_convention must be one of {', '.join(map(repr, SHIFT_CONVENTIONS))}, "
-                            f"got {convention!r}.")
-    return -x if (internal and convention == "khk") else x
-
 
 def _positive(value: object, name: str, owner: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
@@ -211,6 +164,10 @@ class GearGeometry:
     tip_shortening : float, default 0
         Tip-shortening coefficient k ≥ 0 (external gears; see
         :attr:`MeshGeometry.tip_shortening`).
+    thickness_allowance : float, default 0
+        Upper tooth-thickness allowance A_sn ≤ 0, mm (normal section; ISO 21771 /
+        DIN 3967): the tool is fed in by A_sn/(2 tan α_n), so the gear is generated
+        with x_E = x + A_sn/(2 m_n tan α_n) and the mesh gets backlash.
 
     References
     ----------
@@ -232,6 +189,7 @@ class GearGeometry:
     profile_shift: float = 0.0
     internal: bool = False
     tip_shortening: float = 0.0
+    thickness_allowance: float = 0.0
 
     def __post_init__(self) -> None:
         z = self.teeth
@@ -249,6 +207,17 @@ class GearGeometry:
             raise GeometryError(f"GearGeometry: tip_shortening must be a number >= 0, got {k!r}.")
         object.__setattr__(self, "profile_shift", float(x))
         object.__setattr__(self, "tip_shortening", float(k))
+        allowance = self.thickness_allowance
+        if isinstance(allowance, bool) or not isinstance(allowance, (int, float)) or not math.isfinite(allowance) \
+                or allowance > 0 or allowance < -self.rack.module:
+            raise GeometryError(f"GearGeometry: thickness_allowance (A_sn, mm) must lie in [-m_n, 0] "
+                                f"(thinner teeth give backlash), got {allowance!r}.")
+        object.__setattr__(self, "thickness_allowance", float(allowance))
+
+    @property
+    def generating_profile_shift(self) -> float:
+        """x_E = x + A_sn / (2 m_n tan α_n), the shift the gear is cut with (ISO 21771, DIN 3960)."""
+        return self.profile_shift + self.thickness_allowance / (2.0 * self.rack.module * math.tan(self.rack.alpha_n))
 
     @property
     def reference_diameter(self) -> float:
@@ -289,6 +258,7 @@ class GearGeometry:
             "internal": self.internal,
             "profile_shift": self.profile_shift,
             "tip_shortening": self.tip_shortening,
+            "thickness_allowance": self.thickness_allowance,
             "reference_diameter": self.reference_diameter,
             "base_diameter": self.base_diameter,
             "tip_diameter": self.tip_diameter,
@@ -307,11 +277,16 @@ class MeshGeometry:
         must share the basic rack (module, pressure angle, helix angle).
     name : str, optional
         A label such as ``"sun-planet"``.
+    working_center_distance : float, optional
+        The centre distance the pair is built at, mm.  Default: the backlash-free
+        one that the profile shifts give.  Given, α_wt and the pitch circles follow
+        from it (cos α_wt = a cos α_t / a_w) and :attr:`backlash` from the shifts
+        and thickness allowances.
 
     Notes
     -----
-    The pair runs without backlash at the operating centre distance that the
-    profile shifts give (ISO 21771).  For an external pair the tip-shortening
+    Without ``working_center_distance`` the pair runs without backlash at the operating
+    centre distance that the profile shifts give (ISO 21771).  For an external pair the tip-shortening
     coefficient ``k = x1 + x2 − y`` with ``y = (a_w − a)/m_n`` is reported;
     apply it to the tips (``SetGeometry`` does) to keep the standard tip
     clearance.
@@ -334,9 +309,14 @@ class MeshGeometry:
     gear1: GearGeometry
     gear2: GearGeometry
     name: str = ""
+    working_center_distance: float | None = None
 
     def __post_init__(self) -> None:
         owner = f"MeshGeometry {self.name!r}" if self.name else "MeshGeometry"
+        given = self.working_center_distance
+        if given is not None and (isinstance(given, bool) or not isinstance(given, (int, float))
+                                  or not math.isfinite(given) or given <= 0):
+            raise GeometryError(f"{owner}: working_center_distance must be a positive number of mm, got {given!r}.")
         for label in ("gear1", "gear2"):
             if not isinstance(getattr(self, label), GearGeometry):
                 raise GeometryError(f"{owner}: {label} must be a GearGeometry.")
@@ -362,6 +342,11 @@ class MeshGeometry:
         except ValueError:
             alpha_wt = -1.0
         if not 0.0 < alpha_wt < math.pi / 2:
+            if given is not None:
+                raise GeometryError(
+                    f"{owner}: the centre distance {given!r} mm is below a cos α_t = "
+                    f"{self.reference_center_distance * math.cos(self.rack.alpha_t):.4f} mm; no involute mesh runs there."
+                )
             raise GeometryError(
                 f"{owner}: the profile-shift sum {self._x_sum:+.4f} gives no operating pressure angle for "
                 f"z = {self.gear1.teeth}/{self.gear2.teeth} (inv α_wt would be negative); raise the shifts."
@@ -453,7 +438,12 @@ class MeshGeometry:
 
     @property
     def alpha_wt(self) -> float:
-        """Operating transverse pressure angle, rad."""
+        """Operating transverse pressure angle, rad (from the given centre distance where there is one)."""
+        if self.working_center_distance is not None:
+            ratio = self.reference_center_distance * math.cos(self.rack.alpha_t) / self.working_center_distance
+            if not 0.0 < ratio < 1.0:
+                raise ValueError("no operating pressure angle")
+            return math.acos(ratio)
         return float(operating_pressure_angle(self._x_sum, self._z_sum, self.rack.alpha_n, self.rack.alpha_t))
 
     @property
@@ -463,8 +453,29 @@ class MeshGeometry:
 
     @property
     def center_distance(self) -> float:
-        """Operating centre distance a_w, mm."""
+        """Operating centre distance a_w, mm (the given one, else the backlash-free one of the shifts)."""
+        if self.working_center_distance is not None:
+            return float(self.working_center_distance)
         return float(center_distance_from_angle(self.reference_center_distance, self.rack.alpha_t, self.alpha_wt))
+
+    @property
+    def backlash(self) -> float:
+        """Normal backlash j_bn in the line of action, mm (< 0: the teeth jam at this centre distance).
+
+        j_bn = 2 m_n sin α_n (Σx(a_w) − Σx_E), with Σx(a_w) the backlash-free shift sum
+        at the centre distance and Σx_E the generating shifts (ISO 21771, z < 0 for an
+        internal gear).  Zero for a pair at its own backlash-free distance without
+        thickness allowances.
+
+        References
+        ----------
+        ISO 21771:2007, eqs. (62), (63): Σx_E = Σx − j_bn / (2 m_n sin α_n).
+        """
+        rack, g1, g2 = self.rack, self.gear1, self.gear2
+        need = profile_shift_sum(self.center_distance, self._z_sum, rack.module, rack.alpha_n, rack.beta)
+        need = -need if self.internal else need  # ISO sum x1 + x2 with z2 < 0
+        have = g1.generating_profile_shift + g2.generating_profile_shift
+        return 2.0 * rack.module * math.sin(rack.alpha_n) * (need - have)
 
     @property
     def center_distance_modification(self) -> float:
@@ -534,6 +545,8 @@ class MeshGeometry:
             "center_distance_modification": self.center_distance_modification,
             "tip_shortening": self.tip_shortening,
             "contact_ratio": self.contact_ratio,
+            "working_center_distance_given": self.working_center_distance is not None,
+            "backlash": self.backlash,
         }
 
     def __repr__(self) -> str:

@@ -11,11 +11,13 @@ Per ``[[planetary]]`` and ``[[gear]]`` element::
     profile_shift = { sun = 0.438, planet = 0.0426, ring = 0.0 }   # by gear name (default 0)
     internal_shift_convention = "iso"    # sign of an internal gear's x: "iso" (ISO 21771, default) or "khk"
     center_distance_tolerance = "js7"    # coaxiality: ± mm or an ISO 286 js field (DIN 3964)
+    center_distance = 56.8               # the carrier's centre distance as built, mm (backlash from it)
+    thickness_allowance = -0.05          # A_sn ≤ 0, mm: one number or one per gear name
     face_width = 38.0                    # mm, or one per gear name
     ring_module = 2.0                    # stepped sets: module of the second mesh
     planets = 3                          # number of planets (or the element's 'planets')
     load_sharing = 1.0                   # K_γ, or "floating_sun" / "flexible_pins" / "abs" for the tables
-    tip_shortening = true
+    tip_shortening = true                # or the coefficient k per gear: { sun = 0.05, planet = 0.02 }
 
     [planetary.losses]
     friction = "schlenk"                 # or a number: μ of every mesh
@@ -29,8 +31,9 @@ Per ``[[planetary]]`` and ``[[gear]]`` element::
 
 A ``[[gear]]`` stage built from ``meshes`` takes the same geometry keys with a
 value per mesh where it differs (``module = [2.0, 2.5]``), ``profile_shift`` as
-``[[x_driving, x_driven], ...]`` and ``face_width`` as one number or one per
-mesh.  Every problem names the file, the element, the key, what was expected
+``[[x_driving, x_driven], ...]``, ``face_width`` and ``center_distance`` as one
+number or one per mesh, and ``idlers = [1]`` for an idler gear (mesh 1's driven
+gear drives mesh 2: one gear, one geometry).  Every problem names the file, the element, the key, what was expected
 and what was given (``docs/file-format.md``).
 """
 
@@ -61,8 +64,9 @@ __all__ = ["GEOMETRY_KEYS", "LOSSES_KEYS", "LUBRICANT_KEYS", "module_ratio", "re
 
 GEOMETRY_KEYS = {"module", "pressure_angle", "helix_angle", "addendum", "dedendum", "profile_shift", "face_width",
                  "ring_module", "planets", "load_sharing", "tip_shortening", "internal_shift_convention",
-                 "center_distance_tolerance"}
-_STAGE_GEOMETRY_KEYS = GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing", "center_distance_tolerance"}
+                 "center_distance_tolerance", "center_distance", "thickness_allowance"}
+_STAGE_GEOMETRY_KEYS = (GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing", "center_distance_tolerance",
+                                         "thickness_allowance"}) | {"idlers"}
 LOSSES_KEYS = {"friction", "roughness", "bearing", "drag"}
 _STAGE_LOSSES_KEYS = LOSSES_KEYS - {"bearing"}
 LUBRICANT_KEYS = {"viscosity", "lubricant_factor"}
@@ -258,12 +262,32 @@ def _set_geometry(reader, table, pset: PlanetarySet, element_table, where: str):
             raise reader.error(at_key(where, "geometry.load_sharing"),
                                f"expected K_gamma >= 1 (1 = equal sharing), "
                                f"got {short(table['load_sharing'])}.")
-    tip = reader.boolean(table, "tip_shortening", where, True)
+    if isinstance(table.get("tip_shortening"), dict):
+        tip = _gear_values(reader, table["tip_shortening"], user, "tip_shortening", where, 0.0)
+        tip = {back[k]: v for k, v in tip.items()}
+        for name, k in tip.items():
+            if k < 0:
+                raise reader.error(at_key(where, "geometry.tip_shortening"),
+                                   f"expected a tip-shortening coefficient k >= 0 for {name}, got {short(k)}.")
+    else:
+        tip = reader.boolean(table, "tip_shortening", where, True)
+    center = None
+    if "center_distance" in table:
+        center = _positive(reader, table["center_distance"], "geometry.center_distance", where, "mm")
+    allowance = None
+    if "thickness_allowance" in table:
+        allowance = _gear_values(reader, table["thickness_allowance"], user, "thickness_allowance", where, 0.0)
+        allowance = {back[k]: v for k, v in allowance.items()}
+        for name, a in allowance.items():
+            if not -rack.module <= a <= 0:
+                raise reader.error(at_key(where, "geometry.thickness_allowance"),
+                                   f"expected a tooth-thickness allowance A_sn in [-m_n, 0] mm for {name} "
+                                   f"(negative: thinner teeth, backlash), got {short(a)}.")
     planet_shifts = tuple(shifts[n] for n in names[1:-1])
     geometry = SetGeometry(pset, rack, shifts["sun"], shifts["ring"],
                            planet_shifts if len(planet_shifts) > 1 else planet_shifts[0], ring_module, tip,
                            widths, load_sharing, _convention(reader, table, where),
-                           _cd_tolerance(reader, table, where))
+                           _cd_tolerance(reader, table, where), center, allowance)
     return pset, geometry
 
 
@@ -289,8 +313,22 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
         widths = ([_positive(reader, v, f"geometry.face_width[{k}]", where, "mm") for k, v in enumerate(value)]
                   if isinstance(value, list) else _positive(reader, value, "geometry.face_width", where, "mm"))
     tip = reader.boolean(table, "tip_shortening", where, True)
+    idlers = table.get("idlers", [])
+    if not isinstance(idlers, list) or not all(isinstance(k, int) and not isinstance(k, bool) and 1 <= k < count
+                                               for k in idlers):
+        raise reader.error(at_key(where, "geometry.idlers"),
+                           f"expected a list of mesh numbers 1 … {count - 1} whose driven gear drives the next mesh "
+                           f"(one idler gear), got {short(idlers)}.")
+    center = None
+    if "center_distance" in table:
+        value = table["center_distance"]
+        center = ([_positive(reader, v, f"geometry.center_distance[{k}]", where, "mm") for k, v in enumerate(value)]
+                  if isinstance(value, list) else _positive(reader, value, "geometry.center_distance", where, "mm"))
+        if isinstance(center, list) and len(center) != count:
+            raise reader.error(at_key(where, "geometry.center_distance"),
+                               f"expected one centre distance per mesh ({count}), got {len(center)}.")
     return StageGeometry(stage, racks if per_mesh else racks[0], pairs, widths, tip,
-                         _convention(reader, table, where))
+                         _convention(reader, table, where), tuple(idlers), center)
 
 
 # ---------------------------------------------------------------------- losses

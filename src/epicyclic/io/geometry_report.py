@@ -27,6 +27,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from ..geometry import SetGeometry, check_fitting, planetary_forces, share_planets, stage_forces
+from ..geometry.working import check_stage
 
 __all__ = ["GeometryResult", "geometry_results", "tooth_count_results", "geometry_dict", "geometry_text", "geometry_markdown",
            "geometry_html"]
@@ -72,8 +73,10 @@ def geometry_results(geometry: Mapping[str, Any], solution=None, *, planets: int
                 angles = fitting.checks[1].angles if not fitting.checks[1].equally_spaced and \
                     fitting.checks[1].passed else None
                 forces = planetary_forces(solution, name, shape, angles=angles)
-        elif solution is not None and name in solution.elements:
-            forces = stage_forces(solution, name, shape)
+        else:
+            fitting = check_stage(shape)
+            if solution is not None and name in solution.elements:
+                forces = stage_forces(solution, name, shape)
         out.append(GeometryResult(name, shape, fitting, forces))
     # a planet that several sets share is one body: its bearing carries the meshes of all of them
     set_forces = {r.name: r.forces for r in out if r.kind == "planetary set" and r.forces is not None}
