@@ -116,7 +116,7 @@ def forces(
     from ..io.geometry_report import geometry_dict, geometry_results
 
     train_file = _load(file, gear, set_)
-    results = geometry_results(train_file.geometry, solved(train_file, file))
+    results = geometry_results(train_file.geometry, solved(train_file, file), losses=train_file.losses)
     check_finite(geometry_dict(results), file, "forces")
     emit(_render(results, format, f"forces of {report_title(train_file)}", "forces"), out)
 

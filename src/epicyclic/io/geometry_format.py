@@ -48,16 +48,10 @@ from ..errors import EpicyclicError
 from ..geometry import BasicRack, SetGeometry, StageGeometry
 from ..geometry.set_geometry import TWO_CENTRAL_NAMES, planet_names
 from ..limits import MODULE_RANGE
-from ..losses import (
-    ConstantFriction,
-    DragTorque,
-    ElementLosses,
-    Lubricant,
-    PlanetBearing,
-    SchlenkFriction,
-)
+from ..losses import Lubricant
 from ..model import GearStage, PlanetarySet
 from ..text import short
+from .losses_format import LOSSES_KEYS, read_losses
 from .reader import at_key
 
 __all__ = ["GEOMETRY_KEYS", "LOSSES_KEYS", "LUBRICANT_KEYS", "module_ratio", "read_lubricant", "read_extras"]
@@ -67,11 +61,7 @@ GEOMETRY_KEYS = {"module", "pressure_angle", "helix_angle", "addendum", "dedendu
                  "center_distance_tolerance", "center_distance", "thickness_allowance"}
 _STAGE_GEOMETRY_KEYS = (GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing", "center_distance_tolerance",
                                          "thickness_allowance"}) | {"idlers"}
-LOSSES_KEYS = {"friction", "roughness", "bearing", "drag"}
-_STAGE_LOSSES_KEYS = LOSSES_KEYS - {"bearing"}
 LUBRICANT_KEYS = {"viscosity", "lubricant_factor"}
-_BEARING_KEYS = {"bore", "type", "friction"}
-_DRAG_KEYS = {"member", "coefficients", "relative_to"}
 
 
 def _positive(reader, value: object, key: str, where: str, unit: str) -> float:
@@ -127,7 +117,7 @@ def read_extras(reader, kind: str, table: Mapping[str, Any], element, where: str
         l_where = f"{where}, table 'losses'"
         l_table = reader.table(table["losses"], l_where)
         try:
-            losses = _losses(reader, kind, l_table, element, geometry, table, lubricant, l_where)
+            losses = read_losses(reader, kind, l_table, element, geometry, table, lubricant, l_where)
         except EpicyclicError as exc:
             if _located(exc):
                 raise
@@ -329,97 +319,3 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
                                f"expected one centre distance per mesh ({count}), got {len(center)}.")
     return StageGeometry(stage, racks if per_mesh else racks[0], pairs, widths, tip,
                          _convention(reader, table, where), tuple(idlers), center)
-
-
-# ---------------------------------------------------------------------- losses
-def _friction(reader, table, lubricant: Lubricant | None, where: str):
-    if "friction" not in table:
-        if "roughness" in table:
-            raise reader.error(where, "key 'roughness' is for friction = \"schlenk\"; give 'friction' too.")
-        return None
-    value = table["friction"]
-    if isinstance(value, str):
-        if value.strip().lower() != "schlenk":
-            raise reader.error(at_key(where, "losses.friction"),
-                               f"expected a coefficient such as 0.05 or \"schlenk\" "
-                               f"(ISO/TR 14179-2), got {short(value)}.")
-        if lubricant is None:
-            raise reader.error(where, "friction = \"schlenk\" needs the oil: add a top-level [lubricant] table with "
-                                      "'viscosity' (mPa*s at the operating temperature).")
-        if "roughness" not in table:
-            raise reader.error(where, "friction = \"schlenk\" needs the flank roughness: add 'roughness' (R_a, um, "
-                                      "mean of both flanks), e.g. roughness = 0.4.")
-        return SchlenkFriction(lubricant, _positive(reader, table["roughness"], "losses.roughness", where, "um"))
-    if "roughness" in table:
-        raise reader.error(where, "key 'roughness' is for friction = \"schlenk\"; a given coefficient needs none.")
-    mu = reader.number(value, "losses.friction", where)
-    if not 0.0 <= mu < 1.0:
-        raise reader.error(at_key(where, "losses.friction"),
-                           f"expected a coefficient of friction in [0, 1) "
-                           f"(typically 0.03-0.08), got {short(value)}.")
-    return ConstantFriction(mu)
-
-
-def _bearing(reader, value, where: str) -> PlanetBearing:
-    b_where = f"{where}, key 'bearing'"
-    table = reader.table(value, b_where)
-    reader.check_keys(table, _BEARING_KEYS, b_where)
-    bore = _positive(reader, reader.require(table, "bore", b_where), "losses.bearing.bore", where, "mm")
-    if "type" in table and "friction" in table:
-        raise reader.error(b_where, "give the bearing 'type' or its 'friction' coefficient, not both.")
-    if "friction" in table:
-        return PlanetBearing(bore, reader.number(table["friction"], "losses.bearing.friction", where))
-    kind = table.get("type", "needle roller")
-    if not isinstance(kind, str):
-        raise reader.error(at_key(b_where, "type"),
-                           f"expected a bearing type such as \"needle roller\", got {short(kind)}.")
-    return PlanetBearing(bore, kind)
-
-
-def _drag(reader, value, where: str) -> tuple[DragTorque, ...]:
-    if isinstance(value, dict):
-        value = [value]
-    if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
-        raise reader.error(at_key(where, "losses.drag"),
-                           f"expected a table or array of tables such as "
-                           f"[{{ member = \"carrier\", coefficients = [0.0, 2e-5] }}], got {short(value)}.")
-    out = []
-    for k, term in enumerate(value):
-        d_where = f"{where}, drag[{k}]"
-        reader.check_keys(term, _DRAG_KEYS, d_where)
-        member = reader.string(term, "member", d_where)
-        coefficients = reader.require(term, "coefficients", d_where)
-        if not isinstance(coefficients, list) or not coefficients:
-            raise reader.error(at_key(d_where, "coefficients"),
-                               f"expected a list [c0, c1, c2, ...] (N*m, N*m per "
-                               f"1/min, ...), got {short(coefficients)}.")
-        numbers = [reader.number(c, f"drag[{k}].coefficients[{j}]", d_where) for j, c in enumerate(coefficients)]
-        out.append(DragTorque(member, numbers, term.get("relative_to", "housing")))
-    return tuple(out)
-
-
-def _losses(reader, kind, table, element, geometry, element_table, lubricant, where: str) -> ElementLosses:
-    reader.check_keys(table, LOSSES_KEYS if kind == "planetary" else _STAGE_LOSSES_KEYS, where)
-    friction = _friction(reader, table, lubricant, where)
-    own = ("stationary_efficiency", "mesh_efficiencies") if kind == "planetary" else ("efficiency",)
-    given = [k for k in own if k in element_table]
-    if friction is not None:
-        if given:
-            raise reader.error(where, f"key 'losses.friction' computes the mesh efficiency from the geometry; remove "
-                                      f"the element's {given[0]!r} (or the friction).")
-        if geometry is None:
-            raise reader.error(where, "key 'losses.friction' needs the gear geometry: add a 'geometry' table with "
-                                      "module and face_width.")
-        if geometry.face_width is None:
-            raise reader.error(where, "key 'losses.friction' needs the load per face width: add 'face_width' (mm) to "
-                                      "the 'geometry' table.")
-    bearing = _bearing(reader, table["bearing"], where) if "bearing" in table else None
-    if bearing is not None and geometry is None:
-        raise reader.error(where, "key 'losses.bearing' takes the bearing loads from the tooth forces: add a "
-                                  "'geometry' table.")
-    drag = _drag(reader, table["drag"], where) if "drag" in table else ()
-    if geometry is None:
-        return ElementLosses(element, (), None, 1.0, drag)
-    if kind == "planetary":
-        return ElementLosses.for_set(geometry, friction=friction, bearing=bearing, drag=drag)
-    return ElementLosses.for_stage(geometry, friction=friction, drag=drag)

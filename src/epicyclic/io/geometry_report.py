@@ -13,7 +13,8 @@ JSON layout (the ``"geometry"`` key of the report, null without geometry)::
     {element: {"kind": "planetary set" | "gear stage",
                "geometry": SetGeometry.to_dict() | StageGeometry.to_dict(),
                "fitting": FittingReport.to_dict() | null,      # sets only
-               "forces": PlanetaryForces.to_dict() | StageForces.to_dict() | null}}
+               "forces": PlanetaryForces.to_dict() | StageForces.to_dict() | null,
+               "mesh_losses": [MeshLossRow.to_dict(), ...] | null}}      # with a mesh friction model
 
 Lengths in mm, angles in degrees, forces in N, torques in N·m (whatever the
 file's ``[units]``).
@@ -41,6 +42,7 @@ class GeometryResult:
     geometry: Any
     fitting: Any = None
     forces: Any = None
+    mesh_losses: Any = None
 
     @property
     def kind(self) -> str:
@@ -51,7 +53,8 @@ class GeometryResult:
 
 def geometry_results(geometry: Mapping[str, Any], solution=None, *, planets: int | None = None,
                      allow_unequal: bool = False, min_clearance: float = 0.0,
-                     undercut: str = "theoretical") -> tuple[GeometryResult, ...]:
+                     undercut: str = "theoretical", losses: Mapping[str, Any] | None = None
+                     ) -> tuple[GeometryResult, ...]:
     """Fitting of every set and, with a solution, the forces of every element with geometry.
 
     Parameters
@@ -62,6 +65,9 @@ def geometry_results(geometry: Mapping[str, Any], solution=None, *, planets: int
         The solved operating point (forces need it).
     planets, allow_unequal, min_clearance, undercut
         As in :func:`~epicyclic.geometry.check_fitting` (``planets`` overrides every set's).
+    losses : mapping element → ElementLosses, optional
+        ``TrainFile.losses``: with a solution, the per-mesh losses of the elements with a mesh
+        friction model (:func:`~epicyclic.losses.mesh_table.mesh_loss_table`).
     """
     out = []
     for name, shape in geometry.items():
@@ -81,7 +87,15 @@ def geometry_results(geometry: Mapping[str, Any], solution=None, *, planets: int
     # a planet that several sets share is one body: its bearing carries the meshes of all of them
     set_forces = {r.name: r.forces for r in out if r.kind == "planetary set" and r.forces is not None}
     shared = share_planets(set_forces, {name: geometry[name] for name in set_forces})
-    return tuple(replace(r, forces=shared.get(r.name, r.forces)) for r in out)
+    tables = {}
+    if solution is not None and losses:
+        from ..losses.mesh_table import MeshLossTable, mesh_loss_table
+
+        table = mesh_loss_table(solution, losses)
+        for row in table.rows:
+            tables.setdefault(row.element, []).append(row)
+        tables = {k: MeshLossTable(tuple(v)) for k, v in tables.items()}
+    return tuple(replace(r, forces=shared.get(r.name, r.forces), mesh_losses=tables.get(r.name)) for r in out)
 
 
 def tooth_count_results(train, *, planets: int | None = None,
@@ -113,7 +127,8 @@ def geometry_dict(results: tuple[GeometryResult, ...]) -> dict[str, Any] | None:
         return None
     return {r.name: {"kind": r.kind, "geometry": None if r.geometry is None else r.geometry.to_dict(),
                      "fitting": None if r.fitting is None else r.fitting.to_dict(),
-                     "forces": None if r.forces is None else r.forces.to_dict()} for r in results}
+                     "forces": None if r.forces is None else r.forces.to_dict(),
+                     "mesh_losses": None if r.mesh_losses is None else r.mesh_losses.to_dict()} for r in results}
 
 
 def geometry_text(results: tuple[GeometryResult, ...], *, show_geometry: bool = True) -> str:
@@ -127,6 +142,8 @@ def geometry_text(results: tuple[GeometryResult, ...], *, show_geometry: bool = 
             blocks.append(r.fitting.table())
         if r.forces is not None:
             blocks.append(r.forces.table())
+        if r.mesh_losses is not None:
+            blocks.append(r.mesh_losses.table())
     return "\n\n".join(blocks)
 
 
@@ -149,6 +166,8 @@ def geometry_markdown(results: tuple[GeometryResult, ...], *, show_geometry: boo
             parts.append(_markdown_table(r.fitting.table()))
         if r.forces is not None:
             parts.append(_markdown_table(r.forces.table()))
+        if r.mesh_losses is not None:
+            parts.append(_markdown_table(r.mesh_losses.table()))
     return "\n\n".join(parts) + "\n"
 
 
@@ -166,4 +185,6 @@ def geometry_html(results: tuple[GeometryResult, ...], *, show_geometry: bool = 
             parts.append(r.fitting._repr_html_())
         if r.forces is not None:
             parts.append(r.forces._repr_html_())
+        if r.mesh_losses is not None:
+            parts.append(r.mesh_losses._repr_html_())
     return "\n".join(parts)
