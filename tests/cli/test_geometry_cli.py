@@ -188,3 +188,44 @@ def test_every_bundled_design_fits(example):
 def test_geometry_examples_are_found():
     assert {"geometry_simple_set.toml", "geometry_stepped_set.toml", "wolfrom_drive.toml",
             "zf_8hp70_geometry.toml"} <= set(GEOMETRY_EXAMPLES)
+
+
+ONE_PLANET = """
+[[planetary]]
+name = "P"
+sun = "in"
+ring = "ring"
+carrier = "out"
+teeth = { sun = 30, planet = 24, ring = 78 }
+planets = 1
+[planetary.geometry]
+module = 2
+face_width = 20
+[[brake]]
+name = "B"
+shaft = "ring"
+[operating_point]
+speeds = { in = 3000 }
+torques = { in = 10 }
+drives = ["in"]
+loads = ["out"]
+"""
+
+
+def test_one_planet_set_is_valid_in_fit_and_forces(tmp_path):
+    # issue 19: forces refused one planet and fit -f json exited 1 on the unbounded clearance
+    path = tmp_path / "one.toml"
+    path.write_text(ONE_PLANET, encoding="utf-8")
+    result = runner.invoke(app, ["fit", str(path), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    (neighbours,) = [c for c in json.loads(result.output)["fitting"]["P"]["fitting"]["checks"]
+                     if c["condition"] == "neighbours"]
+    assert neighbours["passed"] and neighbours["clearance"] is None
+    assert neighbours["null_reasons"]["clearance"].startswith("one planet")
+    result = runner.invoke(app, ["forces", str(path), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    forces = json.loads(result.output)["forces"]["P"]["forces"]
+    # all of the sun torque goes through the one planet: F_t = 2000 T / d_w = 2000 * 10 / 60 N
+    (body,) = forces["bodies"]
+    sun_mesh = next(m for m in body["meshes"] if m["mesh"] == "sun-planet")
+    assert sun_mesh["tangential"] == pytest.approx(2000 * 10 / 60)

@@ -44,6 +44,18 @@ def _load(file: Path, gear: str | None, overrides: list[str] | None, *, tooth_co
     return train_file
 
 
+def _clearance(value: float, command: str) -> float:
+    """``--min-clearance`` as a finite number of mm ≥ 0 (typer's ``min`` lets nan and inf through)."""
+    import math
+
+    from ..errors import ModelError
+
+    if not math.isfinite(value) or value < 0:
+        raise ModelError(f"{command}: --min-clearance: expected a finite number of mm >= 0 (the least tip clearance "
+                         f"between neighbouring planets), got {value!r}.")
+    return value
+
+
 def _render(results, format: OutputFormat, title: str, what: str) -> str:
     """``fit``: gears, meshes and fitting; ``forces``: the forces only (the gears are what ``fit`` shows)."""
     from dataclasses import replace
@@ -94,6 +106,7 @@ def fit(
     """
     from ..io.geometry_report import geometry_results, tooth_count_results
 
+    _clearance(min_clearance, "fit")
     train_file = _load(file, None, set_, tooth_counts=True)
     results = geometry_results(train_file.geometry, None, planets=planets, allow_unequal=allow_unequal,
                                min_clearance=min_clearance, undercut=undercut.value)
@@ -193,6 +206,7 @@ def search(
     if len({held, driver, driven}) < 3:
         raise ModelError(f"search: --held {held.value}, --driver {driver.value}, --driven {driven.value}: give three "
                          "different members (sun, ring, carrier), e.g. --held ring --driver sun --driven carrier.")
+    _clearance(min_clearance, "search")
     low, high = parse_range(planets, "search: --planets", 1, MAX_PLANETS)
     result = search_teeth(
         ratio, held=held.value, driver=driver.value, driven=driven.value, tolerance=parse_tolerance(tolerance),

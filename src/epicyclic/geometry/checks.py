@@ -5,6 +5,7 @@ See :mod:`epicyclic.geometry.fitting` for the conditions and their sources.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from typing import TYPE_CHECKING, Any
@@ -17,6 +18,10 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = ["Check", "CoaxialityCheck", "AssemblyCheck", "NeighbourCheck", "UndercutCheck", "InterferenceCheck",
            "TipThicknessCheck", "ContactRatioCheck", "BacklashCheck", "FittingReport"]
+
+
+#: Why a check's number is null in JSON (it is infinite: nothing to measure).
+_WHY_NOT_FINITE = {("neighbours", "clearance"): "one planet: no neighbour, the clearance is unbounded"}
 
 
 @dataclass(frozen=True)
@@ -49,9 +54,15 @@ class Check:
         dict
         """
         out: dict[str, Any] = {}
+        reasons: dict[str, str] = {}
         for f in fields(self):
             value = getattr(self, f.name)
+            if isinstance(value, float) and not math.isfinite(value):  # JSON has no inf/nan: null with a reason
+                reasons[f.name] = _WHY_NOT_FINITE.get((self.condition, f.name), f"{value!r}: not a finite number")
+                value = None
             out[f.name] = dict(value) if isinstance(value, Mapping) else (list(value) if isinstance(value, tuple) else value)
+        if reasons:
+            out["null_reasons"] = reasons
         return out
 
     def __str__(self) -> str:

@@ -328,11 +328,21 @@ def check_neighbours(
     """
     if isinstance(planets, bool) or not isinstance(planets, int) or planets < 1:
         raise GeometryError(f"check_neighbours: planets must be a whole number >= 1, got {planets!r}.")
+    if isinstance(min_clearance, bool) or not isinstance(min_clearance, (int, float)) \
+            or not math.isfinite(min_clearance) or min_clearance < 0:
+        raise GeometryError(f"check_neighbours: min_clearance must be a finite number of mm >= 0, got {min_clearance!r}.")
     if angles is None:
         angles = [360.0 * i / planets for i in range(planets)]
     elif len(angles) != planets:
         raise GeometryError(f"check_neighbours: {planets} planets need {planets} angles, got {len(angles)}.")
     clearance = _min_clearance(geometry, angles)
+    if not math.isfinite(clearance):  # one planet: no neighbour to clear
+        n_max = 1
+        while n_max < 200 and _min_clearance(geometry, [360.0 * i / (n_max + 1) for i in range(n_max + 1)]) \
+                - min_clearance > _EPS_MM:
+            n_max += 1
+        message = f"one planet: no neighbour to clear; at most {n_max} fit"
+        return NeighbourCheck("neighbours", True, message, "error", planets, clearance, min_clearance, n_max)
     n_max = 1
     while n_max < 200 and _min_clearance(geometry, [360.0 * i / (n_max + 1) for i in range(n_max + 1)]) - min_clearance > _EPS_MM:
         n_max += 1

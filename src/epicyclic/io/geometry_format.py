@@ -288,6 +288,12 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
     count = len(stage.meshes)
     per_mesh = any(isinstance(table.get(k), list) for k in ("module", "pressure_angle", "helix_angle", "addendum",
                                                              "dedendum"))
+    for key in ("module", "pressure_angle", "helix_angle", "addendum", "dedendum"):
+        value = table.get(key)
+        if isinstance(value, list) and len(value) != count:
+            raise reader.error(at_key(where, f"geometry.{key}"),
+                               f"expected one value per mesh ({count}), got {len(value)}: "
+                               f"{'remove the extra ones' if len(value) > count else 'add the missing ones'}.")
     racks = [_rack(reader, table, where, k if per_mesh else None) for k in range(count)]
     shifts = table.get("profile_shift", [[0.0, 0.0]] * count)
     if not isinstance(shifts, list) or len(shifts) != count or not all(

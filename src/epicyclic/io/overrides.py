@@ -24,6 +24,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from ..errors import ModelError
+from ..limits import MAX_NESTING
 
 __all__ = ["OverrideError", "apply_overrides", "parse_override"]
 
@@ -52,18 +53,33 @@ def parse_override(text: str) -> tuple[tuple[str, ...], Any]:
     key, sep, raw = text.partition("=")
     if not sep or not key.strip():
         raise OverrideError(f"--set {text!r}: expected KEY=VALUE, e.g. --set {_EXAMPLE}.")
+    if any(c in text for c in "\r\n\x00"):
+        raise OverrideError(f"--set {text[:60]!r}: expected one KEY=VALUE on one line (no line breaks), "
+                            f"e.g. --set {_EXAMPLE}.")
+    not_dotted = OverrideError(f"--set {text!r}: {key.strip()!r} is not one dotted key such as "
+                               f"operating_point.speeds.sun (quote parts with dots or spaces).")
     try:
         nested = tomllib.loads(f"{key.strip()} = 0")
     except tomllib.TOMLDecodeError:
-        raise OverrideError(f"--set {text!r}: {key.strip()!r} is not a dotted key such as "
-                            f"operating_point.speeds.sun (quote parts with dots or spaces).") from None
+        raise not_dotted from None
     path: list[str] = []
     while isinstance(nested, dict):
+        if len(nested) != 1:  # e.g. 'a = 1, b' or a table header: more than one key
+            raise not_dotted
         (part, nested), = nested.items()
         path.append(part)
+    if nested != 0:
+        raise not_dotted
+    if len(path) > MAX_NESTING:
+        raise OverrideError(f"--set {text[:60]!r}…: the key has {len(path)} parts; keys nest at most {MAX_NESTING} "
+                            "levels deep, as in a train file (docs/limits.md).")
     try:
-        value = tomllib.loads(f"v = {raw.strip()}")["v"]
+        parsed = tomllib.loads(f"v = {raw.strip()}")
     except tomllib.TOMLDecodeError:
+        parsed = None
+    if parsed is not None and set(parsed) == {"v"}:
+        value = parsed["v"]
+    else:
         value = raw.strip()  # not a TOML value: a bare string such as 2000 rpm
     return tuple(path), value
 
