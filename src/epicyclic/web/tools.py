@@ -410,7 +410,7 @@ _GEOMETRY = (
     Field("helix_angle", "helix angle [°]", "0", low=0, high=45, per_set=True),
     Field("x_sun", "profile shift sun", "0", low=-1.5, high=1.5, per_set=True),
     Field("x_planet", "profile shift planet(s)", "0", kind="numbers", low=-1.5, high=1.5, per_set=True),
-    Field("x_ring", "profile shift ring", "0", low=-1.5, high=1.5, per_set=True),
+    Field("x_ring", "profile shift ring (ISO 21771 sign)", "0", low=-1.5, high=1.5, per_set=True),
 )
 
 TOOLS: dict[str, Tool] = {t.name: t for t in (
