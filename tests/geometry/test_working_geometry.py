@@ -201,3 +201,16 @@ module = 2
                       ("tip_shortening = { sun = -0.1 }", "tip-shortening coefficient k >= 0 for sun")):
         with pytest.raises(InputFileError, match=says):
             loads_train_file(text % bad)
+
+
+@pytest.mark.parametrize("x_iso", [0.0, -0.4, 0.25])
+def test_internal_tooth_is_the_space_of_the_external_gear_with_the_opposite_shift(x_iso):
+    # an internal gear (ISO sign) is the negative of the external gear with x_ext = -x_iso: its tooth
+    # thickness at any diameter is the pitch there minus that gear's tooth (ISO 21771, z < 0)
+    rack = BasicRack(2.5)
+    ring = GearGeometry(78, rack, x_iso, internal=True)
+    external = GearGeometry(78, rack, -x_iso)
+    for d_y in (ring.tip_diameter, ring.reference_diameter, ring.reference_diameter + 3.0):
+        pitch = math.pi * d_y / 78
+        assert tooth_thickness(ring, d_y) == pytest.approx(pitch - tooth_thickness(external, d_y), rel=1e-12)
+    assert tip_thickness(ring) < tooth_thickness(ring, ring.reference_diameter)  # thinner toward its tip
