@@ -8,10 +8,11 @@ ISO 21771:2007 (overlap ratio ε_β, total contact ratio ε_γ).
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from .gear import MeshGeometry
 
-__all__ = ["overlap_ratio"]
+__all__ = ["overlap_ratio", "mesh_data"]
 
 
 def overlap_ratio(mesh: MeshGeometry, face_width: float) -> float:
@@ -43,3 +44,29 @@ def overlap_ratio(mesh: MeshGeometry, face_width: float) -> float:
     ISO 21771:2007, ε_β = b sin β / (π m_n).
     """
     return face_width * math.sin(mesh.rack.beta) / (math.pi * mesh.rack.module)
+
+
+def mesh_data(mesh: MeshGeometry, face_width: float | None) -> dict[str, Any]:
+    """:meth:`MeshGeometry.to_dict` with ``overlap_ratio`` ε_β and ``total_contact_ratio`` ε_γ.
+
+    Parameters
+    ----------
+    mesh : MeshGeometry
+        The mesh.
+    face_width : float or None
+        Its face width b, mm; None leaves ε_β and ε_γ of a helical mesh unknown (None).
+
+    Returns
+    -------
+    dict
+
+    References
+    ----------
+    ISO 21771:2007 (ε_β, ε_γ = ε_α + ε_β).
+    """
+    data = mesh.to_dict()
+    eps_b = overlap_ratio(mesh, face_width) if face_width is not None else (
+        0.0 if mesh.rack.helix_angle == 0 else None)
+    data["overlap_ratio"] = eps_b
+    data["total_contact_ratio"] = None if eps_b is None else mesh.contact_ratio + eps_b
+    return data

@@ -545,6 +545,7 @@ class MeshGeometry:
             "center_distance_modification": self.center_distance_modification,
             "tip_shortening": self.tip_shortening,
             "contact_ratio": self.contact_ratio,
+            "operating_helix_angle": self.operating_helix_angle,
             "working_center_distance_given": self.working_center_distance is not None,
             "backlash": self.backlash,
         }

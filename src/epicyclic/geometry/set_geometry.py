@@ -34,6 +34,7 @@ from ..model.planetary import PlanetarySet, Teeth
 from ..model.teeth import TWO_CENTRAL_NAMES
 from ._render import html_table, text_table
 from .errors import GeometryError
+from .contact import mesh_data
 from .tolerances import parse_center_distance_tolerance
 from .gear import SHIFT_CONVENTIONS, BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
 
@@ -403,7 +404,7 @@ class SetGeometry:
             "profile_shift_sign": SHIFT_CONVENTIONS["iso"] + " (gears' profile_shift; the input was "
                                   + self.internal_shift_convention.upper() + ")",
             "gears": {n: g.to_dict() for n, g in self.gears.items()},
-            "meshes": [m.to_dict() for m in self.meshes],
+            "meshes": [mesh_data(m, b) for m, b in zip(self.meshes, self.mesh_face_widths())],
         }
 
     def gear_label(self, name: str) -> str:

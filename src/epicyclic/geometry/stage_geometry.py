@@ -22,6 +22,7 @@ from ..model.elements import GearStage
 from ._render import html_table, text_table
 from .errors import GeometryError
 from .gear import BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
+from .contact import mesh_data
 
 __all__ = ["StageGeometry"]
 
@@ -183,7 +184,7 @@ class StageGeometry:
         """Plain data (mm, degrees)."""
         return {"stage": self.stage.name, "face_width": None if self.face_width is None else list(self.face_width),
                 "internal_shift_convention": self.internal_shift_convention, "idlers": list(self.idlers),
-                "meshes": [m.to_dict() for m in self.meshes]}
+                "meshes": [mesh_data(m, b) for m, b in zip(self.meshes, self.mesh_face_widths())]}
 
     def mesh_face_widths(self) -> tuple[float | None, ...]:
         """The face width of each mesh (mm), None for all without face widths."""
