@@ -229,3 +229,14 @@ def test_one_planet_set_is_valid_in_fit_and_forces(tmp_path):
     (body,) = forces["bodies"]
     sun_mesh = next(m for m in body["meshes"] if m["mesh"] == "sun-planet")
     assert sun_mesh["tangential"] == pytest.approx(2000 * 10 / 60)
+
+
+def test_search_with_one_planet_writes_no_infinity():
+    # issue 19: one planet has no neighbour; JSON must not carry Infinity
+    result = runner.invoke(app, ["search", "--ratio", "4", "--planets", "1", "-f", "json"])
+    assert result.exit_code == 0, result.output
+    first = json.loads(result.output)["candidates"][0]
+    assert first["planets"] == 1 and first["clearance"] is None and first["clearance_note"].startswith("one planet")
+    assert "Infinity" not in result.output
+    csv_text = runner.invoke(app, ["search", "--ratio", "4", "--planets", "1", "-f", "csv"]).output
+    assert "inf" not in csv_text.splitlines()[1]

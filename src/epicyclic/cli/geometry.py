@@ -217,7 +217,7 @@ def search(
         interference=interference,
     )
     if format is SearchFormat.json:
-        text = json.dumps(result.to_dict(), indent=2, ensure_ascii=False) + "\n"
+        text = json.dumps(result.to_dict(), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
     elif format is SearchFormat.csv:
         text = result.to_csv()
     else:
