@@ -214,3 +214,13 @@ def test_internal_tooth_is_the_space_of_the_external_gear_with_the_opposite_shif
         pitch = math.pi * d_y / 78
         assert tooth_thickness(ring, d_y) == pytest.approx(pitch - tooth_thickness(external, d_y), rel=1e-12)
     assert tip_thickness(ring) < tooth_thickness(ring, ring.reference_diameter)  # thinner toward its tip
+
+
+def test_given_centre_distance_out_of_reach_is_refused():
+    from epicyclic.geometry.errors import GeometryError
+
+    rack = BasicRack(2.0)
+    with pytest.raises(GeometryError, match=r"lies 5e\+299 modules from the reference a = 54.0000 mm"):
+        MeshGeometry(GearGeometry(30, rack), GearGeometry(24, rack), working_center_distance=1e300)
+    with pytest.raises(GeometryError, match=r"below a cos α_t = 50.7434 mm"):
+        MeshGeometry(GearGeometry(30, rack), GearGeometry(24, rack), working_center_distance=50.0)

@@ -49,6 +49,10 @@ from .involute import (
 
 __all__ = ["BasicRack", "GearGeometry", "MeshGeometry", "SHIFT_CONVENTIONS", "iso_profile_shift"]
 
+#: Largest |y| = |a_w − a|/m_n of a given centre distance (beyond it no tooth reaches across).
+_MAX_Y = 5.0
+
+
 def _positive(value: object, name: str, owner: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
         raise GeometryError(f"{owner}: {name} must be a positive number (mm or factor), got {value!r}.")
@@ -341,6 +345,12 @@ class MeshGeometry:
             alpha_wt = self.alpha_wt
         except ValueError:
             alpha_wt = -1.0
+        if given is not None and abs(given - self.reference_center_distance) > _MAX_Y * self.rack.module:
+            raise GeometryError(
+                f"{owner}: the centre distance {given!r} mm lies {abs(given - self.reference_center_distance) / self.rack.module:.3g} "
+                f"modules from the reference a = {self.reference_center_distance:.4f} mm; a mesh runs within "
+                f"±{_MAX_Y:g} modules of it (y = (a_w - a)/m_n)."
+            )
         if not 0.0 < alpha_wt < math.pi / 2:
             if given is not None:
                 raise GeometryError(
