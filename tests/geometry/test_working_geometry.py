@@ -224,3 +224,25 @@ def test_given_centre_distance_out_of_reach_is_refused():
         MeshGeometry(GearGeometry(30, rack), GearGeometry(24, rack), working_center_distance=1e300)
     with pytest.raises(GeometryError, match=r"below a cos α_t = 50.7434 mm"):
         MeshGeometry(GearGeometry(30, rack), GearGeometry(24, rack), working_center_distance=50.0)
+
+
+from hypothesis import assume, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from epicyclic.geometry.errors import GeometryError  # noqa: E402
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.integers(14, 60), st.integers(14, 120), st.floats(-0.3, 0.8), st.floats(-0.3, 0.8),
+       st.floats(-0.2, 0.0), st.floats(-0.2, 0.0), st.booleans())
+def test_backlash_is_the_allowances_at_the_free_distance(z1, z2, x1, x2, a1, a2, internal):
+    # ISO 21771: at the backlash-free centre distance of the nominal shifts, j_bn = -(A_sn1 + A_sn2) cos alpha_n
+    assume(not internal or z2 - z1 >= 10)
+    rack = BasicRack(2.0)
+    try:
+        mesh = MeshGeometry(GearGeometry(z1, rack, x1, thickness_allowance=a1),
+                            GearGeometry(z2, rack, x2, internal=internal, thickness_allowance=a2))
+    except GeometryError:  # shifts without an operating pressure angle
+        assume(False)
+    assert mesh.backlash == pytest.approx(-(a1 + a2) * math.cos(rack.alpha_n), abs=1e-9)
+    assert mesh.backlash >= -1e-12

@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from epicyclic.geometry import BasicRack, GearGeometry, MeshGeometry
+from epicyclic.geometry import BasicRack, GearGeometry, GeometryError, MeshGeometry
 from epicyclic.losses import (
     ConstantFriction,
     LossModelError,
@@ -152,3 +152,23 @@ def test_no_path_of_contact_is_refused():
                                                                                       tip_shortening=1.1))
     with pytest.raises(LossModelError, match="there is no path of contact"):
         tooth_loss_factor(mesh)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.integers(16, 50), st.integers(16, 90), st.floats(-0.2, 1.0), st.floats(-1.0, 0.3), st.floats(0.0, 0.6),
+       st.booleans())
+def test_loss_factor_is_the_path_integral_wherever_the_pitch_point_lies(z1, z2, x1, x2, k2, internal):
+    # invariant: H_V >= 0 and equal to Wimmer's midpoint integral over the actual path, in single or double
+    # contact at the pitch point or beside it (issue 19)
+    rack = BasicRack(2.0)
+    if internal:
+        assume(z2 - z1 >= 12)
+    try:
+        mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2, internal=internal,
+                                                                       tip_shortening=0.0 if internal else k2))
+    except GeometryError:  # no operating pressure angle for these shifts
+        assume(False)
+    assume(sum(addendum_contact_ratios(mesh)) >= 1.05)
+    value = tooth_loss_factor(mesh)
+    assert value >= 0
+    assert value == pytest.approx(tooth_loss_factor_numerical(mesh), rel=1e-4, abs=1e-7)
