@@ -109,12 +109,12 @@ def coaxiality_tolerance(geometry: SetGeometry) -> tuple[float, str]:
     if given is not None:
         return float(given), "the given centre-distance tolerance"
     if geometry.kind == "double":
-        return ABSOLUTE_TOLERANCE_MM, "1 µm"
+        return ABSOLUTE_TOLERANCE_MM, "the 1 µm floor"
     decimals = shift_decimals(_given_shifts(geometry))
     delta = 0.5 * 10.0 ** -decimals
     effect = delta * 2.0 * (_sensitivity(geometry.sun_mesh) + _sensitivity(geometry.ring_mesh))
     if effect <= ABSOLUTE_TOLERANCE_MM:
-        return ABSOLUTE_TOLERANCE_MM, "1 µm"
+        return ABSOLUTE_TOLERANCE_MM, "the 1 µm floor"
     return effect, f"the effect of shifts written to {decimals} decimals at m_n = {geometry.rack.module:g} mm"
 
 

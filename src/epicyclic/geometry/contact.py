@@ -12,7 +12,7 @@ from typing import Any
 
 from .gear import MeshGeometry
 
-__all__ = ["overlap_ratio", "mesh_data"]
+__all__ = ["overlap_ratio", "mesh_data", "micrometres"]
 
 
 def overlap_ratio(mesh: MeshGeometry, face_width: float) -> float:
@@ -70,3 +70,13 @@ def mesh_data(mesh: MeshGeometry, face_width: float | None) -> dict[str, Any]:
     data["overlap_ratio"] = eps_b
     data["total_contact_ratio"] = None if eps_b is None else mesh.contact_ratio + eps_b
     return data
+
+
+def micrometres(length_mm: float) -> float:
+    """A length in µm for a table, round-off below 1 nm shown as 0 (no "-0.0000").
+
+    >>> micrometres(-1e-13), micrometres(0.0301)
+    (0.0, 30.1)
+    """
+    value = 1000.0 * length_mm
+    return 0.0 if abs(value) < 1e-3 else round(value, 9)

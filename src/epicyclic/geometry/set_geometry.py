@@ -34,7 +34,7 @@ from ..model.planetary import PlanetarySet, Teeth
 from ..model.teeth import TWO_CENTRAL_NAMES
 from ._render import html_table, text_table
 from .errors import GeometryError
-from .contact import mesh_data
+from .contact import mesh_data, micrometres
 from .tolerances import parse_center_distance_tolerance
 from .gear import SHIFT_CONVENTIONS, BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
 
@@ -437,7 +437,7 @@ class SetGeometry:
             rows.append([m.name, m.reference_center_distance, m.center_distance, m.operating_pressure_angle,
                          m.operating_helix_angle, *m.operating_pitch_diameters, m.contact_ratio,
                          "-" if eps_b is None else eps_b, "-" if eps_b is None else m.contact_ratio + eps_b,
-                         1000.0 * m.backlash])
+                         micrometres(m.backlash)])
         return headers, rows
 
     @property

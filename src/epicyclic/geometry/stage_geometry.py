@@ -22,7 +22,7 @@ from ..model.elements import GearStage
 from ._render import html_table, text_table
 from .errors import GeometryError
 from .gear import BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
-from .contact import mesh_data
+from .contact import mesh_data, micrometres
 
 __all__ = ["StageGeometry"]
 
@@ -199,7 +199,7 @@ class StageGeometry:
             rows.append([m.name, m.gear1.teeth, m.gear2.teeth, m.rack.module, m.center_distance,
                          m.operating_pressure_angle, m.operating_helix_angle, m.contact_ratio,
                          "-" if eps_b is None else eps_b, "-" if eps_b is None else m.contact_ratio + eps_b,
-                         1000.0 * m.backlash])
+                         micrometres(m.backlash)])
         return rows
 
     _HEAD = ["mesh", "z1", "z2", "m_n [mm]", "a_w [mm]", "alpha_wt [deg]", "beta_w [deg]", "eps_alpha", "eps_beta",

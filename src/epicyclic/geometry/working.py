@@ -240,7 +240,8 @@ def check_backlash(meshes) -> tuple[BacklashCheck, ...]:
         given = mesh.working_center_distance is not None
         at = f"a_w = {mesh.center_distance:.4f} mm" + (" (given)" if given else "")
         if j >= -1e-9:
-            message = f"{mesh.name}: normal backlash j_bn = {max(j, 0.0) * 1000:.1f} µm at {at}"
+            message = f"{mesh.name}: normal backlash j_bn = {max(j, 0.0) * 1000:.1f} µm at {at}" + (
+                "" if given or j > 1e-9 else " (backlash-free: give thickness_allowance or center_distance)")
             out.append(BacklashCheck("backlash", True, message, "error", mesh.name, max(j, 0.0),
                                      mesh.center_distance, given))
         else:
