@@ -29,7 +29,7 @@ import math
 
 from .checks import BacklashCheck, ContactRatioCheck, FittingReport, TipThicknessCheck
 from .contact import overlap_ratio
-from .gear import GearGeometry
+from .gear import GearGeometry, MeshGeometry
 from .involute import inv, inv_inverse
 
 __all__ = ["tooth_thickness", "tip_thickness", "pointed_tip_diameter", "overlap_ratio", "check_tip_thickness",
@@ -218,6 +218,21 @@ def check_contact_ratio(meshes, face_widths=None) -> tuple[ContactRatioCheck, ..
     return tuple(out)
 
 
+def _backlash_free_distance(mesh: MeshGeometry) -> float | None:
+    """The centre distance at which the gears as cut (generating shifts x_E) mesh without backlash, mm."""
+    from dataclasses import replace
+
+    from .errors import GeometryError
+
+    g1, g2 = mesh.gear1, mesh.gear2
+    try:
+        cut = MeshGeometry(replace(g1, profile_shift=g1.generating_profile_shift, thickness_allowance=0.0),
+                           replace(g2, profile_shift=g2.generating_profile_shift, thickness_allowance=0.0))
+    except GeometryError:
+        return None
+    return cut.center_distance
+
+
 def check_backlash(meshes) -> tuple[BacklashCheck, ...]:
     """Backlash of every mesh at its centre distance: an error when the teeth jam (j_bn < 0).
 
@@ -245,9 +260,11 @@ def check_backlash(meshes) -> tuple[BacklashCheck, ...]:
             out.append(BacklashCheck("backlash", True, message, "error", mesh.name, max(j, 0.0),
                                      mesh.center_distance, given))
         else:
+            free = _backlash_free_distance(mesh)
+            where = f" (backlash-free at a_w = {free:.4f} mm)" if free is not None else ""
             message = (f"{mesh.name}: the teeth jam at {at}: j_bn = {j * 1000:.1f} µm < 0; the shifts and thickness "
-                       "allowances need a larger centre distance: lower the profile shifts or thin the teeth "
-                       "(thickness_allowance)")
+                       f"allowances do not fit this centre distance{where}: move it, change the profile shifts or "
+                       "thin the teeth (thickness_allowance)")
             out.append(BacklashCheck("backlash", False, message, "error", mesh.name, j, mesh.center_distance, given))
     return tuple(out)
 
