@@ -505,6 +505,8 @@ CORPUS: list[Bad] = [
     Bad("--set a key 17 levels deep", "analyze", GOOD, "nest at most 16 levels",
         ("{file}", "--set", ".".join(["a"] * 17) + "=1")),
     Bad("--set two words as a key", "analyze", GOOD, "is not one dotted key", ("{file}", "--set", "planetary P=2")),
+    Bad("--set a value nested 3000 deep", "analyze", GOOD, "nests more than 16 levels",
+        ("{file}", "--set", "title=" + "[" * 3000 + "]" * 3000)),
     Bad("--set a line break", "analyze", GOOD, "on one line", ("{file}", "--set", "title=1\nplanetary=2")),
     Bad("--set a table header", "analyze", GOOD, "is not one dotted key", ("{file}", "--set", "[x] y=2")),
     Bad("--set an array as key", "analyze", GOOD, "is not one dotted key", ("{file}", "--set", "x.[y]=2")),

@@ -73,15 +73,44 @@ def parse_override(text: str) -> tuple[tuple[str, ...], Any]:
     if len(path) > MAX_NESTING:
         raise OverrideError(f"--set {text[:60]!r}…: the key has {len(path)} parts; keys nest at most {MAX_NESTING} "
                             "levels deep, as in a train file (docs/limits.md).")
+    too_deep = OverrideError(f"--set {text[:60]!r}…: the value nests more than {MAX_NESTING} levels deep; values "
+                             "nest at most that deep, as in a train file (docs/limits.md).")
+    if _depth(raw) > MAX_NESTING:
+        raise too_deep
     try:
         parsed = tomllib.loads(f"v = {raw.strip()}")
     except tomllib.TOMLDecodeError:
         parsed = None
+    except RecursionError:  # pragma: no cover - _depth refuses such values first
+        raise too_deep from None
     if parsed is not None and set(parsed) == {"v"}:
         value = parsed["v"]
     else:
         value = raw.strip()  # not a TOML value: a bare string such as 2000 rpm
     return tuple(path), value
+
+
+def _depth(raw: str) -> int:
+    """The deepest nesting of [ ] and { } in a value's text, outside quoted strings (linear scan)."""
+    depth = deepest = 0
+    quote = ""
+    escaped = False
+    for char in raw:
+        if quote:
+            if escaped:
+                escaped = False
+            elif char == "\\" and quote == '"':
+                escaped = True
+            elif char == quote:
+                quote = ""
+        elif char in "\"'":
+            quote = char
+        elif char in "[{":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif char in "]}":
+            depth = max(depth - 1, 0)
+    return deepest
 
 
 def _pick(elements: list, part: str, text: str, where: str) -> dict:
