@@ -207,8 +207,9 @@ class GearGeometry:
                 f"GearGeometry: profile_shift must be a number in [-3, 3] (a coefficient, not mm), got {x!r}."
             )
         k = self.tip_shortening
-        if isinstance(k, bool) or not isinstance(k, (int, float)) or not math.isfinite(k) or k < 0:
-            raise GeometryError(f"GearGeometry: tip_shortening must be a number >= 0, got {k!r}.")
+        if isinstance(k, bool) or not isinstance(k, (int, float)) or not math.isfinite(k) or not 0 <= k <= 3:
+            raise GeometryError(f"GearGeometry: tip_shortening must be a coefficient k in [0, 3] (k m_n off the tip), "
+                                f"got {k!r}.")
         object.__setattr__(self, "profile_shift", float(x))
         object.__setattr__(self, "tip_shortening", float(k))
         allowance = self.thickness_allowance

@@ -99,6 +99,10 @@ def _friction(reader, table, lubricant: Lubricant | None, where: str, geometry=N
             raise reader.error(at_key(where, "losses.friction"), f"missing mesh {name!r}; give a friction for "
                                                                  f"every mesh ({', '.join(map(repr, names))}).")
         r = rough.get(name) if rough is not None else roughness
+        if rough is not None and name in rough and not isinstance(v, str):
+            raise reader.error(at_key(where, f"losses.roughness.{name}"),
+                               f"mesh {name!r} has a given coefficient of friction ({short(v)}); roughness is for "
+                               "friction = \"schlenk\": remove it for this mesh.")
         if isinstance(v, str) or r is None:
             out[name] = _one_friction(reader, v, r, lubricant, where, f"losses.friction.{name}")
         else:  # a coefficient for this mesh, roughness given for others
