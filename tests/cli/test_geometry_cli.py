@@ -240,3 +240,13 @@ def test_search_with_one_planet_writes_no_infinity():
     assert "Infinity" not in result.output
     csv_text = runner.invoke(app, ["search", "--ratio", "4", "--planets", "1", "-f", "csv"]).output
     assert "inf" not in csv_text.splitlines()[1]
+
+
+def test_analyze_says_how_far_counts_are_off_without_geometry():
+    # issue 19: the Prius power-split set 30/23/78 misses z_ring = z_sun + 2 z_planet by two teeth; without a
+    # geometry table the report says so and that profile shift must close it (the set is not refused)
+    result = runner.invoke(app, ["analyze", str(EXAMPLES / "toyota_prius_power_split.toml"), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    warnings = json.loads(result.output)["solution"]["warnings"]
+    assert any("'PSD': z_ring - z_sun - 2 z_planet = 78 - 30 - 2*23 = +2" in w and "profile shift must close it" in w
+               for w in warnings)

@@ -352,6 +352,7 @@ def coaxial_note(teeth: Teeth, module_ratio: float = 1.0) -> str | None:
         what = f"the double planets miss their triangle by {abs(mismatch) / 2:g} modules"
     else:
         what = f"the stepped planet's two meshes differ by {mismatch:+g} teeth (m2/m1 = {module_ratio:g})"
-    return (f"{what}: standard gears are not coaxial (their centre distances differ by {abs(mismatch) / 2:g} "
-            "modules); profile shift must close it: give a geometry table (module, profile_shift) and the "
-            "working centre distances decide")
+    modules = abs(mismatch) / 2
+    return (f"{what}: standard gears are not coaxial (their centre distances differ by {modules:g} "
+            f"module{'' if modules == 1 else 's'}); profile shift must close it: give a geometry table (module, "
+            "profile_shift) and the working centre distances decide")
