@@ -49,11 +49,27 @@ def test_forces_table_json_and_equilibrium():
     assert "forces of 'P4'" in result.output
 
 
-def test_fit_and_forces_need_geometry():
-    for command in ("fit", "forces"):
-        result = runner.invoke(app, [command, str(EXAMPLES / "simple_set_ring_held_sun_drives.toml")])
-        assert result.exit_code == 2
-        assert "no element has a geometry table" in result.output and "module" in result.output
+def test_forces_needs_geometry_and_fit_checks_tooth_counts_without_it():
+    example = str(EXAMPLES / "simple_set_ring_held_sun_drives.toml")
+    result = runner.invoke(app, ["forces", example])
+    assert result.exit_code == 2
+    assert "no element has a geometry table" in result.output and "module" in result.output
+    # fit: what the tooth counts decide (coaxiality of standard gears, assembly), said to be counts only
+    result = runner.invoke(app, ["fit", example])
+    assert result.exit_code == 0, result.output
+    assert "from tooth counts only" in result.output and "assembly" in result.output
+
+
+def test_fit_without_geometry_says_how_far_counts_are_off(tmp_path):
+    # z_ring - z_sun - 2 z_planet = +3: accepted, profile shift must close it (issue 19)
+    path = tmp_path / "p.toml"
+    path.write_text("[[planetary]]\nname = 'P'\nsun = 'a'\nring = 'housing'\ncarrier = 'c'\n"
+                    "teeth = { sun = 20, planet = 37, ring = 97 }\nplanets = 3\n", encoding="utf-8")
+    data = json.loads(runner.invoke(app, ["fit", str(path), "-f", "json"]).output)
+    checks = {c["condition"]: c for c in data["fitting"]["P"]["fitting"]["checks"]}
+    assert checks["coaxiality"]["severity"] == "warning" and not checks["coaxiality"]["passed"]
+    assert "= +3" in checks["coaxiality"]["message"] and "profile shift must close it" in checks["coaxiality"]["message"]
+    assert checks["assembly"]["passed"] and checks["assembly"]["ticks"] == 117
 
 
 def test_search_matches_the_library_in_every_format(tmp_path):
@@ -172,3 +188,65 @@ def test_every_bundled_design_fits(example):
 def test_geometry_examples_are_found():
     assert {"geometry_simple_set.toml", "geometry_stepped_set.toml", "wolfrom_drive.toml",
             "zf_8hp70_geometry.toml"} <= set(GEOMETRY_EXAMPLES)
+
+
+ONE_PLANET = """
+[[planetary]]
+name = "P"
+sun = "in"
+ring = "ring"
+carrier = "out"
+teeth = { sun = 30, planet = 24, ring = 78 }
+planets = 1
+[planetary.geometry]
+module = 2
+face_width = 20
+[[brake]]
+name = "B"
+shaft = "ring"
+[operating_point]
+speeds = { in = 3000 }
+torques = { in = 10 }
+drives = ["in"]
+loads = ["out"]
+"""
+
+
+def test_one_planet_set_is_valid_in_fit_and_forces(tmp_path):
+    # issue 19: forces refused one planet and fit -f json exited 1 on the unbounded clearance
+    path = tmp_path / "one.toml"
+    path.write_text(ONE_PLANET, encoding="utf-8")
+    result = runner.invoke(app, ["fit", str(path), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    (neighbours,) = [c for c in json.loads(result.output)["fitting"]["P"]["fitting"]["checks"]
+                     if c["condition"] == "neighbours"]
+    assert neighbours["passed"] and neighbours["clearance"] is None
+    assert neighbours["null_reasons"]["clearance"].startswith("one planet")
+    result = runner.invoke(app, ["forces", str(path), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    forces = json.loads(result.output)["forces"]["P"]["forces"]
+    # all of the sun torque goes through the one planet: F_t = 2000 T / d_w = 2000 * 10 / 60 N
+    (body,) = forces["bodies"]
+    sun_mesh = next(m for m in body["meshes"] if m["mesh"] == "sun-planet")
+    assert sun_mesh["tangential"] == pytest.approx(2000 * 10 / 60)
+
+
+def test_search_with_one_planet_writes_no_infinity():
+    # issue 19: one planet has no neighbour; JSON must not carry Infinity
+    result = runner.invoke(app, ["search", "--ratio", "4", "--planets", "1", "-f", "json"])
+    assert result.exit_code == 0, result.output
+    first = json.loads(result.output)["candidates"][0]
+    assert first["planets"] == 1 and first["clearance"] is None and first["clearance_note"].startswith("one planet")
+    assert "Infinity" not in result.output
+    csv_text = runner.invoke(app, ["search", "--ratio", "4", "--planets", "1", "-f", "csv"]).output
+    assert "inf" not in csv_text.splitlines()[1]
+
+
+def test_analyze_says_how_far_counts_are_off_without_geometry():
+    # issue 19: the Prius power-split set 30/23/78 misses z_ring = z_sun + 2 z_planet by two teeth; without a
+    # geometry table the report says so and that profile shift must close it (the set is not refused)
+    result = runner.invoke(app, ["analyze", str(EXAMPLES / "toyota_prius_power_split.toml"), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    warnings = json.loads(result.output)["solution"]["warnings"]
+    assert any("'PSD': z_ring - z_sun - 2 z_planet = 78 - 30 - 2*23 = +2" in w and "profile shift must close it" in w
+               for w in warnings)

@@ -129,7 +129,7 @@ def test_undercut_published():
     g = SetGeometry.create(simple(12, 18, 48, planets=3), module=2)
     sun = check_undercut(g)[0]
     assert not sun.passed and sun.gear == "sun"
-    assert "raise its profile shift by 0.2981 to x >= 0.2981" in sun.message
+    assert "raise x by 0.2981 to x >= +0.2981" in sun.message
     shifted = SetGeometry.create(simple(12, 18, 48, planets=3), module=2, x_sun=0.3, x_planet=-0.3)
     assert check_undercut(shifted)[0].passed
     with pytest.raises(GeometryError, match="'theoretical' or 'practical'"):

@@ -9,7 +9,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from epicyclic.geometry.errors import GeometryError
-from epicyclic.geometry.gear import BasicRack, GearGeometry, MeshGeometry
+from epicyclic.geometry.gear import BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
 from epicyclic.geometry.involute import inv, inv_inverse, profile_shift_sum
 
 
@@ -44,7 +44,9 @@ def test_profile_shifted_external_pair_khk():
     ],
 )
 def test_operating_centre_distance_published(z1, z2, m, x1, x2, internal, alpha_w, a_w):
+    # the worksheet writes the internal gear's shift in the KHK sign (x2 - x1 = 0.3 widens a_w)
     rack = BasicRack(m)
+    x2 = iso_profile_shift(x2, internal, "khk")
     mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2, internal=internal))
     assert mesh.operating_pressure_angle == pytest.approx(alpha_w, abs=5e-5)
     assert mesh.center_distance == pytest.approx(a_w, abs=5e-5)
@@ -121,3 +123,21 @@ def test_gear_and_mesh_errors():
         MeshGeometry(GearGeometry(8, rack, 0.0), GearGeometry(8, rack, -0.5))
     with pytest.raises(GeometryError, match="cannot be reached"):
         MeshGeometry.at_center_distance(20, 30, rack, 10.0)
+
+
+def test_internal_shift_sign_is_iso_21771():
+    # ISO 21771 / DIN 3960: an internal gear's negative x enlarges its tip circle and the centre distance
+    # (inv a_wt = inv a_t + 2 tan a_n (x1 + x2)/(z1 + z2) with z2 < 0); KHK writes the opposite sign.
+    rack = BasicRack(2)
+    ring = GearGeometry(78, rack, -0.3, internal=True)
+    assert ring.tip_diameter == pytest.approx(156 - 2 * 2 * (1 - 0.3))
+    assert ring.root_diameter == pytest.approx(156 + 2 * 2 * (1.25 + 0.3))
+    iso = MeshGeometry(GearGeometry(24, rack, 0.1), ring)
+    khk = MeshGeometry(GearGeometry(24, rack, 0.1), GearGeometry(78, rack, iso_profile_shift(0.3, True, "khk"),
+                                                                  internal=True))
+    assert iso.center_distance == khk.center_distance > iso.reference_center_distance
+    z_sum = -78 + 24  # ISO writes the internal gear with z < 0
+    inv_w = inv(rack.alpha_t) + 2 * math.tan(rack.alpha_n) * (0.1 - 0.3) / z_sum
+    assert iso.alpha_wt == pytest.approx(inv_inverse(inv_w), abs=1e-12)
+    with pytest.raises(GeometryError, match="internal_shift_convention must be one of 'iso', 'khk'"):
+        iso_profile_shift(0.3, True, "din")

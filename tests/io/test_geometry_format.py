@@ -152,7 +152,7 @@ teeth = {teeth}
                                                                                  r"tooth forces"),
         (_file("", "[lubricant]\nviscosity = -3"), InputFileError, r"\[lubricant\], key 'viscosity': expected a "
                                                                     r"positive number \(mPa\*s\)"),
-        (_file("", "", "{ kind = \"two_rings\", first = 81, planet_first = 27, planet_second = 20, second = 78 }"),
+        (_file("", "", "{ kind = \"two_rings\", first = 81, planet_first = 27, planet_second = 16, second = 78 }"),
          ToothCountError, r"\[\[planetary\]\] #1 'P', key 'teeth': the stepped planet cannot be coaxial"),
         (_file("", "", "{ kind = \"stepped\", sun = 20, planet_sun = 30, planet_ring = 18, ring = 86 }"),
          ToothCountError, r"cannot be coaxial.*module_ratio = 0\.735"),

@@ -37,8 +37,8 @@ def test_parse_override(text, path, value):
     [
         ("no-equals-sign", r"expected KEY=VALUE"),
         ("=3", r"expected KEY=VALUE"),
-        ("a..b=3", r"is not a dotted key"),
-        ("a b=3", r"is not a dotted key"),
+        ("a..b=3", r"is not one dotted key"),
+        ("a b=3", r"is not one dotted key"),
     ],
 )
 def test_malformed_overrides(text, match):

@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from epicyclic.geometry import BasicRack, GearGeometry, MeshGeometry
+from epicyclic.geometry import BasicRack, GearGeometry, GeometryError, MeshGeometry
 from epicyclic.losses import (
     ConstantFriction,
     LossModelError,
@@ -117,3 +117,58 @@ def test_schlenk_rises_with_load_and_falls_with_speed(load, v1, v2, viscosity):
     mu_slow = schlenk_friction(load, lo, 8.0, viscosity, 0.4)
     assert 0 < mu_fast <= mu_slow
     assert schlenk_friction(2 * load, hi, 8.0, viscosity, 0.4) > mu_fast
+
+
+@pytest.mark.parametrize(
+    ("gear1", "gear2"),
+    [
+        # internal mesh whose ring tip (x_ISO = -1.2 enlarges it) lies outside the operating pitch circle:
+        # the ring's addendum never carries, eps_2 < 0
+        ((24, 1.2, 0.0), (78, -1.2, 0.0, True)),
+        # external pair whose wheel tip is shortened below its pitch circle: eps_2 < 0
+        ((30, 0.8, 0.0), (60, -0.8, 0.3, False)),
+        ((30, 0.8, 0.0), (60, -0.8, 0.4, False)),
+    ],
+)
+def test_path_of_contact_beside_the_pitch_point_is_integrated(gear1, gear2):
+    # issue 19: the path integral still holds when the pitch point lies outside the path (no sign change of
+    # the sliding speed); against the independent midpoint integration of Wimmer's definition
+    from epicyclic.losses.tooth_loss import tooth_loss_factor_method
+
+    rack = BasicRack(2.0)
+    z1, x1, k1 = gear1
+    z2, x2, k2, internal = gear2
+    mesh = MeshGeometry(GearGeometry(z1, rack, x1, tip_shortening=k1),
+                        GearGeometry(z2, rack, x2, internal=internal, tip_shortening=k2))
+    eps1, eps2 = addendum_contact_ratios(mesh)
+    assert eps2 < 0 < eps1 + eps2
+    assert tooth_loss_factor_method(mesh) == "path integral (path of contact beside the pitch point)"
+    assert tooth_loss_factor(mesh) == pytest.approx(tooth_loss_factor_numerical(mesh), rel=2e-6)
+
+
+def test_no_path_of_contact_is_refused():
+    rack = BasicRack(2.0)
+    mesh = MeshGeometry(GearGeometry(30, rack, 0.0, tip_shortening=1.1), GearGeometry(60, rack, 0.0,
+                                                                                      tip_shortening=1.1))
+    with pytest.raises(LossModelError, match="there is no path of contact"):
+        tooth_loss_factor(mesh)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.integers(16, 50), st.integers(16, 90), st.floats(-0.2, 1.0), st.floats(-1.0, 0.3), st.floats(0.0, 0.6),
+       st.booleans())
+def test_loss_factor_is_the_path_integral_wherever_the_pitch_point_lies(z1, z2, x1, x2, k2, internal):
+    # invariant: H_V >= 0 and equal to Wimmer's midpoint integral over the actual path, in single or double
+    # contact at the pitch point or beside it (issue 19)
+    rack = BasicRack(2.0)
+    if internal:
+        assume(z2 - z1 >= 12)
+    try:
+        mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2, internal=internal,
+                                                                       tip_shortening=0.0 if internal else k2))
+    except GeometryError:  # no operating pressure angle for these shifts
+        assume(False)
+    assume(sum(addendum_contact_ratios(mesh)) >= 1.05)
+    value = tooth_loss_factor(mesh)
+    assert value >= 0
+    assert value == pytest.approx(tooth_loss_factor_numerical(mesh), rel=1e-4, abs=1e-7)

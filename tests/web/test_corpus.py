@@ -99,7 +99,7 @@ OPTION_FIELDS = {
 
 #: Rows of those commands that the page's forms answer differently, on purpose.
 FORM_DIFFERENT = {
-    "fit without geometry": "the form's fields give the geometry of a set with tooth counts",
+    "fit without geometry or tooth counts": "the form offers only sets with tooth counts, and this file has none",
     "search without --ratio": "the form starts with a ratio",
     "map a transmission without a gear": "the form's gear field starts at the gear the page shows",
 }

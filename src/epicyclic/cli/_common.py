@@ -181,8 +181,29 @@ def solved(train_file, file: Path):
         solution = replace(subject.solution, warnings=(*subject.context.notes, *subject.solution.warnings))
     else:
         solution = train_file.solve()
+    notes = _coaxial_notes(train_file)
+    if notes:
+        from dataclasses import replace
+
+        solution = replace(solution, warnings=(*solution.warnings, *notes))
     check_finite(report_data(solution, train_file.units), file)
     return solution
+
+
+def _coaxial_notes(train_file) -> tuple[str, ...]:
+    """For a simple set without a geometry table whose counts miss z_ring = z_sun + 2 z_planet: how far, and that
+    profile shift must close it (issue 19; with a geometry table `fit` checks the working centre distances)."""
+    from ..model import PlanetarySet
+    from ..model.teeth import coaxial_note
+
+    notes = []
+    for element in train_file.train.elements:
+        if isinstance(element, PlanetarySet) and element.teeth is not None and element.teeth.kind == "simple" \
+                and element.name not in train_file.geometry:
+            note = coaxial_note(element.teeth)
+            if note:
+                notes.append(f"planetary set {element.name!r}: {note}.")
+    return tuple(notes)
 
 
 class OneLineErrors(TyperGroup):

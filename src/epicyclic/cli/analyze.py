@@ -36,7 +36,7 @@ def analyze(
     train_file = load(file, gear, set_)
     solution = solved(train_file, file)
     units, title, source = train_file.units, report_title(train_file), str(file)
-    sections = _GeometrySections(train_file.geometry, solution)
+    sections = _GeometrySections(train_file.geometry, solution, train_file.losses)
     rating = _rating(train_file, solution)
     if format is OutputFormat.json:
         text = json_report(solution, units, title=title, source=source, geometry=sections.json())
@@ -81,13 +81,13 @@ class _GeometrySections:
     The geometry package is imported only for a file that has geometry, so that a plain file starts fast.
     """
 
-    def __init__(self, geometry, solution):
+    def __init__(self, geometry, solution, losses=None):
         self.results = None
         if geometry:
             from ..io import geometry_report
 
             self.report = geometry_report
-            self.results = geometry_report.geometry_results(geometry, solution)
+            self.results = geometry_report.geometry_results(geometry, solution, losses=losses)
 
     def json(self):
         return self.report.geometry_dict(self.results) if self.results else None

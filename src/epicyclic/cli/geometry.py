@@ -25,17 +25,35 @@ from ._common import (FormatOption, OutOption, OutputFormat, SetOption, check_fi
 __all__ = ["fit", "forces", "search", "parse_range", "parse_tolerance"]
 
 
-def _load(file: Path, gear: str | None, overrides: list[str] | None):
-    """The train file with ``--set`` and ``--gear`` applied; an error if it has no geometry table."""
+def _load(file: Path, gear: str | None, overrides: list[str] | None, *, tooth_counts: bool = False):
+    """The train file with ``--set`` and ``--gear`` applied; an error if it has no geometry table.
+
+    ``tooth_counts``: a file whose sets have tooth counts but no geometry table is enough (``fit``).
+    """
     from ..errors import ModelError
+    from ..model import PlanetarySet
 
     train_file = load(file, gear, overrides)
+    if tooth_counts and any(isinstance(e, PlanetarySet) and e.teeth is not None for e in train_file.train.elements):
+        return train_file
     if not train_file.geometry:
         raise ModelError(
             f"{file}: no element has a geometry table; add one to a [[planetary]] or [[gear]] element, e.g. "
             "[planetary.geometry] with module = 2.0 (mm) (see docs/file-format.md)."
         )
     return train_file
+
+
+def _clearance(value: float, command: str) -> float:
+    """``--min-clearance`` as a finite number of mm ≥ 0 (typer's ``min`` lets nan and inf through)."""
+    import math
+
+    from ..errors import ModelError
+
+    if not math.isfinite(value) or value < 0:
+        raise ModelError(f"{command}: --min-clearance: expected a finite number of mm >= 0 (the least tip clearance "
+                         f"between neighbouring planets), got {value!r}.")
+    return value
 
 
 def _render(results, format: OutputFormat, title: str, what: str) -> str:
@@ -81,12 +99,20 @@ def fit(
     undercut: Annotated[Undercut, typer.Option(help="Undercut limit.")] = Undercut.theoretical,
     set_: SetOption = None,
 ) -> None:
-    """Fitting of every set with geometry: coaxiality, assembly and phasing, neighbours, undercut, interference."""
-    from ..io.geometry_report import geometry_results
+    """Fitting of every set with geometry: coaxiality, assembly and phasing, neighbours, undercut, interference.
 
-    train_file = _load(file, None, set_)
+    Sets without a geometry table get what their tooth counts decide: coaxiality of standard gears (how far the
+    counts are off, for profile shift to close) and the assembly of equally spaced planets.
+    """
+    from ..io.geometry_report import geometry_results, tooth_count_results
+
+    _clearance(min_clearance, "fit")
+    train_file = _load(file, None, set_, tooth_counts=True)
     results = geometry_results(train_file.geometry, None, planets=planets, allow_unequal=allow_unequal,
                                min_clearance=min_clearance, undercut=undercut.value)
+    with_geometry = {r.name for r in results}
+    results += tuple(r for r in tooth_count_results(train_file.train, planets=planets, allow_unequal=allow_unequal)
+                     if r.name not in with_geometry)
     emit(_render(results, format, f"fitting of {train_file.title or train_file.train.name}", "fitting"), out)
 
 
@@ -103,7 +129,7 @@ def forces(
     from ..io.geometry_report import geometry_dict, geometry_results
 
     train_file = _load(file, gear, set_)
-    results = geometry_results(train_file.geometry, solved(train_file, file))
+    results = geometry_results(train_file.geometry, solved(train_file, file), losses=train_file.losses)
     check_finite(geometry_dict(results), file, "forces")
     emit(_render(results, format, f"forces of {report_title(train_file)}", "forces"), out)
 
@@ -180,6 +206,7 @@ def search(
     if len({held, driver, driven}) < 3:
         raise ModelError(f"search: --held {held.value}, --driver {driver.value}, --driven {driven.value}: give three "
                          "different members (sun, ring, carrier), e.g. --held ring --driver sun --driven carrier.")
+    _clearance(min_clearance, "search")
     low, high = parse_range(planets, "search: --planets", 1, MAX_PLANETS)
     result = search_teeth(
         ratio, held=held.value, driver=driver.value, driven=driven.value, tolerance=parse_tolerance(tolerance),
@@ -190,7 +217,7 @@ def search(
         interference=interference,
     )
     if format is SearchFormat.json:
-        text = json.dumps(result.to_dict(), indent=2, ensure_ascii=False) + "\n"
+        text = json.dumps(result.to_dict(), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
     elif format is SearchFormat.csv:
         text = result.to_csv()
     else:

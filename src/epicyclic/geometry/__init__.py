@@ -42,6 +42,8 @@ from .set_geometry import SetGeometry
 from .shared_planets import share_planets
 from .stage_forces import StageForces, stage_forces
 from .stage_geometry import StageGeometry
+from .load_sharing import LoadSharing, load_sharing_factor, tabulated_load_sharing
+from .tooth_counts import check_tooth_counts
 from .undercut import check_undercut, min_profile_shift, undercut_limit
 
 __all__ = [
@@ -49,7 +51,8 @@ __all__ = [
     "GearGeometry", "GeometryError", "InterferenceCheck", "MeshForce", "MeshGeometry", "NeighbourCheck",
     "PlanetLoad", "PlanetaryForces", "SetGeometry", "SharedPlanet", "StageForces", "StageGeometry", "ToothSearch", "UndercutCheck", "assembly_ticks",
     "check_assembly", "check_coaxiality", "check_fitting", "check_interference", "check_neighbours",
-    "check_undercut", "default_load_sharing", "inv", "inv_inverse", "max_planets", "mesh_forces",
+    "check_tooth_counts", "check_undercut", "default_load_sharing", "inv", "inv_inverse", "max_planets", "mesh_forces",
     "mesh_phasing", "min_profile_shift", "planetary_forces", "profile_shift_sum", "search_teeth",
     "search_teeth_loops", "share_planets", "stage_forces", "two_shaft_ratio", "undercut_limit",
+    "LoadSharing", "load_sharing_factor", "tabulated_load_sharing",
 ]

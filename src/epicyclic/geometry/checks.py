@@ -5,6 +5,7 @@ See :mod:`epicyclic.geometry.fitting` for the conditions and their sources.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from typing import TYPE_CHECKING, Any
@@ -16,7 +17,11 @@ if TYPE_CHECKING:  # pragma: no cover
     from .set_geometry import SetGeometry
 
 __all__ = ["Check", "CoaxialityCheck", "AssemblyCheck", "NeighbourCheck", "UndercutCheck", "InterferenceCheck",
-           "FittingReport"]
+           "TipThicknessCheck", "ContactRatioCheck", "BacklashCheck", "FittingReport"]
+
+
+#: Why a check's number is null in JSON (it is infinite: nothing to measure).
+_WHY_NOT_FINITE = {("neighbours", "clearance"): "one planet: no neighbour, the clearance is unbounded"}
 
 
 @dataclass(frozen=True)
@@ -49,9 +54,15 @@ class Check:
         dict
         """
         out: dict[str, Any] = {}
+        reasons: dict[str, str] = {}
         for f in fields(self):
             value = getattr(self, f.name)
+            if isinstance(value, float) and not math.isfinite(value):  # JSON has no inf/nan: null with a reason
+                reasons[f.name] = _WHY_NOT_FINITE.get((self.condition, f.name), f"{value!r}: not a finite number")
+                value = None
             out[f.name] = dict(value) if isinstance(value, Mapping) else (list(value) if isinstance(value, tuple) else value)
+        if reasons:
+            out["null_reasons"] = reasons
         return out
 
     def __str__(self) -> str:
@@ -115,17 +126,61 @@ class InterferenceCheck(Check):
 
 
 @dataclass(frozen=True)
+class TipThicknessCheck(Check):
+    """Tip thickness of one gear: s_an in mm and as a multiple of the module, against the limits."""
+
+    gear: str
+    tip_thickness: float
+    module: float
+    error_limit: float
+    warning_limit: float
+
+
+@dataclass(frozen=True)
+class ContactRatioCheck(Check):
+    """Contact ratios of one mesh: ε_α, ε_β (None without face width) and ε_γ."""
+
+    mesh: str
+    transverse: float
+    overlap: float | None
+    total: float
+
+
+@dataclass(frozen=True)
+class BacklashCheck(Check):
+    """Normal backlash j_bn of one mesh at its centre distance, mm (< 0: the teeth jam)."""
+
+    mesh: str
+    backlash: float
+    center_distance: float
+    given: bool
+
+
+@dataclass(frozen=True)
 class FittingReport:
     """All fitting conditions of one set.
 
     Attributes
     ----------
-    geometry : SetGeometry
+    geometry : SetGeometry, StageGeometry or None
+        None for a report from tooth counts alone (:func:`~epicyclic.geometry.check_tooth_counts`);
+        a StageGeometry for a fixed-axis stage (:func:`~epicyclic.geometry.working.check_stage`).
     checks : tuple of Check
+    name : str
+        The set's name where ``geometry`` is None.
     """
 
-    geometry: SetGeometry
+    geometry: SetGeometry | None
     checks: tuple[Check, ...] = field(default_factory=tuple)
+    name: str = ""
+
+    @property
+    def set_name(self) -> str:
+        """The set's (or stage's) name."""
+        if self.geometry is None:
+            return self.name
+        owner = getattr(self.geometry, "planetary_set", None) or getattr(self.geometry, "stage", None)
+        return owner.name
 
     @property
     def passed(self) -> bool:
@@ -147,7 +202,7 @@ class FittingReport:
         if self.failures:
             lines = "; ".join(c.message for c in self.failures)
             raise FittingError(
-                f"set {self.geometry.planetary_set.name!r} does not fit ({len(self.failures)} condition(s)): {lines}",
+                f"set {self.set_name!r} does not fit ({len(self.failures)} condition(s)): {lines}",
                 self.failures,
             )
 
@@ -160,7 +215,7 @@ class FittingReport:
             ``set``, ``passed`` (no error-level condition fails) and ``checks``
             (:meth:`Check.to_dict` of each, in the order they were made).
         """
-        return {"set": self.geometry.planetary_set.name, "passed": self.passed,
+        return {"set": self.set_name, "passed": self.passed, "from_tooth_counts_only": self.geometry is None,
                 "checks": [c.to_dict() for c in self.checks]}
 
     def _rows(self) -> list[list[object]]:
@@ -178,15 +233,16 @@ class FittingReport:
         str
         """
         return text_table(["condition", "result", "numbers"], self._rows(),
-                          title=f"fitting of {self.geometry.planetary_set.name!r}: "
-                                + ("passes" if self.passed else "FAILS"))
+                          title=f"fitting of {self.set_name!r}"
+                                + (" from tooth counts only (no geometry table)" if self.geometry is None else "")
+                                + ": " + ("passes" if self.passed else "FAILS"))
 
     def _repr_html_(self) -> str:
         return html_table(["condition", "result", "numbers"], self._rows(),
-                          title=f"fitting of {self.geometry.planetary_set.name}")
+                          title=f"fitting of {self.set_name}")
 
     def __repr__(self) -> str:
-        return f"FittingReport({self.geometry.planetary_set.name!r}, passed={self.passed}, " \
+        return f"FittingReport({self.set_name!r}, passed={self.passed}, " \
                f"failures={[c.condition for c in self.failures]})"
 
 

@@ -32,6 +32,10 @@ undercut
 internal interference
     Involute, trochoid and trimming interference of each internal mesh
     (SDP/SI D785 section 5.2), reported as warnings.
+contact ratio, tip thickness, backlash
+    ε_γ ≥ 1 (continuous contact), s_an ≥ 0.2 m_n (a warning below 0.4 m_n) and
+    j_bn ≥ 0 at the centre distance as built (:mod:`epicyclic.geometry.working`):
+    a design that cannot run never passes.
 """
 
 from __future__ import annotations
@@ -52,9 +56,11 @@ from .checks import (
 )
 from .errors import GeometryError, expect_type
 from .gear import MeshGeometry
-from .involute import inv, profile_shift_sum
+from .coaxiality import check_coaxiality, coaxiality_tolerance
+from .involute import inv
 from .set_geometry import SetGeometry, gear_label
 from .undercut import check_undercut, min_profile_shift, undercut_limit
+from .working import check_backlash, check_contact_ratio, check_tip_thickness
 
 __all__ = [
     "Check",
@@ -65,6 +71,7 @@ __all__ = [
     "InterferenceCheck",
     "FittingReport",
     "check_coaxiality",
+    "coaxiality_tolerance",
     "check_assembly",
     "check_neighbours",
     "check_undercut",
@@ -79,83 +86,6 @@ __all__ = [
 
 #: Numerical margin (mm) below which a clearance counts as contact.
 _EPS_MM = 1e-9
-
-
-# ---------------------------------------------------------------------- coaxiality
-def check_coaxiality(geometry: SetGeometry, tolerance: float = 1e-3) -> CoaxialityCheck:
-    """Coaxiality of the set: both meshes' planet axes on one circle (centre distances in mm).
-
-    A set with one planet per mesh chain (simple, stepped, two suns/rings) is coaxial
-    when the sun-side and ring-side meshes run at the same operating centre distance;
-    a double-planet set when the three centre distances close a triangle.  A failing
-    check suggests the ring's profile shift that would make it coaxial.
-
-    Parameters
-    ----------
-    geometry : SetGeometry
-        The set's gears and meshes.
-    tolerance : float, default 1e-3
-        Largest accepted difference of the centre distances, mm.
-
-    Returns
-    -------
-    CoaxialityCheck
-        ``passed``, a message with the numbers and the fix, the centre distances
-        (mm) and the suggested ``x_ring``.
-
-    References
-    ----------
-    SDP/SI D785, eqs. (13-5) z_c = z_a + 2 z_b and (13-6) a_x1 = a_x2.
-    """
-    meshes = {m.name: m.center_distance for m in geometry.meshes}
-    if geometry.kind == "double":
-        a1, a12, a2 = (m.center_distance for m in geometry.meshes)
-        low, high = abs(a1 - a2), a1 + a2
-        diff = max(0.0, low - a12, a12 - high)
-        passed = diff == 0.0 and a12 > low + tolerance and a12 < high - tolerance
-        if passed:
-            gamma = math.degrees(math.acos((a1 * a1 + a2 * a2 - a12 * a12) / (2 * a1 * a2)))
-            message = (
-                f"planet1 axis at r = {a1:.3f} mm, planet2 axis at r = {a2:.3f} mm, {gamma:.2f}° apart; "
-                f"the planet1-planet2 centre distance {a12:.3f} mm closes the triangle"
-            )
-        else:
-            message = (
-                f"double planets cannot be placed: planet1-planet2 centre distance {a12:.3f} mm must lie "
-                f"strictly between |a1 - a2| = {low:.3f} mm and a1 + a2 = {high:.3f} mm; change the planet "
-                "tooth counts or the ring/sun tooth counts"
-            )
-        return CoaxialityCheck("coaxiality", passed, message, "error", MappingProxyType(meshes), diff, tolerance,
-                               MappingProxyType({}))
-    sun_mesh, ring_mesh = geometry.sun_mesh, geometry.ring_mesh
-    a_s, a_r = sun_mesh.center_distance, ring_mesh.center_distance
-    diff = a_r - a_s
-    suggestion: dict[str, float] = {}
-    if abs(diff) <= tolerance:
-        message = f"{sun_mesh.name} and {ring_mesh.name} both run at a_w = {a_s:.4f} mm (difference {diff:+.4f} mm)"
-        return CoaxialityCheck("coaxiality", True, message, "error", MappingProxyType(meshes), diff, tolerance,
-                               MappingProxyType(suggestion))
-    rack = ring_mesh.rack
-    planet, ring = ring_mesh.gear1, ring_mesh.gear2
-    z_sum = ring.teeth - planet.teeth if ring.internal else ring.teeth + planet.teeth
-    try:
-        needed = profile_shift_sum(a_s, z_sum, rack.module, rack.alpha_n, rack.beta)
-        suggestion["x_ring"] = needed + planet.profile_shift if ring.internal else needed - planet.profile_shift
-    except ValueError:
-        pass
-    ring_label = geometry.gear_label("ring")
-    hint = (f"set x_{ring_label} = {suggestion['x_ring']:.4f} (other shifts kept)" if suggestion
-            else "change the tooth counts")
-    if geometry.kind == "simple":
-        zs, zp, zr = (geometry.planetary_set.teeth.sun, geometry.planetary_set.teeth.planet[0],  # type: ignore[union-attr]
-                      geometry.planetary_set.teeth.ring)  # type: ignore[union-attr]
-        hint += f"; for standard gears z_ring = z_sun + 2 z_planet = {zs + 2 * zp} (given {zr})"
-    message = (
-        f"not coaxial: {sun_mesh.name} a_w = {a_s:.4f} mm but {ring_mesh.name} a_w = {a_r:.4f} mm "
-        f"(differ by {abs(diff):.4f} mm > {tolerance} mm); {hint}"
-    )
-    return CoaxialityCheck("coaxiality", False, message, "error", MappingProxyType(meshes), diff, tolerance,
-                           MappingProxyType(suggestion))
 
 
 # ---------------------------------------------------------------------- assembly
@@ -398,11 +328,21 @@ def check_neighbours(
     """
     if isinstance(planets, bool) or not isinstance(planets, int) or planets < 1:
         raise GeometryError(f"check_neighbours: planets must be a whole number >= 1, got {planets!r}.")
+    if isinstance(min_clearance, bool) or not isinstance(min_clearance, (int, float)) \
+            or not math.isfinite(min_clearance) or min_clearance < 0:
+        raise GeometryError(f"check_neighbours: min_clearance must be a finite number of mm >= 0, got {min_clearance!r}.")
     if angles is None:
         angles = [360.0 * i / planets for i in range(planets)]
     elif len(angles) != planets:
         raise GeometryError(f"check_neighbours: {planets} planets need {planets} angles, got {len(angles)}.")
     clearance = _min_clearance(geometry, angles)
+    if not math.isfinite(clearance):  # one planet: no neighbour to clear
+        n_max = 1
+        while n_max < 200 and _min_clearance(geometry, [360.0 * i / (n_max + 1) for i in range(n_max + 1)]) \
+                - min_clearance > _EPS_MM:
+            n_max += 1
+        message = f"one planet: no neighbour to clear; at most {n_max} fit"
+        return NeighbourCheck("neighbours", True, message, "error", planets, clearance, min_clearance, n_max)
     n_max = 1
     while n_max < 200 and _min_clearance(geometry, [360.0 * i / (n_max + 1) for i in range(n_max + 1)]) - min_clearance > _EPS_MM:
         n_max += 1
@@ -482,7 +422,8 @@ def check_interference(geometry: SetGeometry) -> tuple[InterferenceCheck, ...]:
             message = (
                 f"{mesh.name}: {', '.join(bad)} interference (margins: involute {inv_m:+.4f}, trochoid "
                 f"{tro_m:+.4f} rad, trimming {trim_m:+.4f} rad); {'; '.join(_WHY_INTERFERENCE[b] for b in bad)} "
-                f"(planet {z1}, ring {z2} teeth): {', '.join(fixes)}, raise x_{ring} or shorten the ring's addendum"
+                f"(planet {z1}, ring {z2} teeth): {', '.join(fixes)}, enlarge the ring's tip circle (x_{ring} more "
+                f"negative in the ISO 21771 sign) or shorten the ring's addendum"
             )
         out.append(InterferenceCheck("interference", not bad, message, "warning", mesh.name, inv_m, tro_m, trim_m))
     return tuple(out)
@@ -495,7 +436,7 @@ def check_fitting(
     allow_unequal: bool = False,
     min_clearance: float = 0.0,
     undercut: Literal["theoretical", "practical"] = "theoretical",
-    tolerance: float = 1e-3,
+    tolerance: float | None = None,
 ) -> FittingReport:
     """Run every fitting condition (number of planets from the set unless given).
 
@@ -511,8 +452,10 @@ def check_fitting(
         Smallest tip clearance between neighbouring planets, mm.
     undercut : {"theoretical", "practical"}
         Undercut limit z_min = 2/sin²α (theoretical) or 5/6 of it (practical).
-    tolerance : float, default 1e-3
-        Allowed difference of the centre distances for coaxiality, mm.
+    tolerance : float, optional
+        Allowed difference of the centre distances for coaxiality, mm; default the
+        geometry's ``center_distance_tolerance`` or :func:`coaxiality_tolerance`
+        (scaled with the module and the digits of the shifts).
 
     Returns
     -------
@@ -547,5 +490,8 @@ def check_fitting(
         check_neighbours(geometry, n, angles, min_clearance),
         *check_undercut(geometry, undercut),
         *check_interference(geometry),
+        *check_contact_ratio(geometry.meshes, geometry.mesh_face_widths()),
+        *check_tip_thickness(geometry.gears, geometry.gear_label),
+        *check_backlash(geometry.meshes),
     ]
     return FittingReport(geometry, tuple(checks))

@@ -53,6 +53,7 @@ from typing import Any
 from ._render import html_table, text_table
 from .errors import GeometryError, expect_type
 from .gear import MeshGeometry
+from .load_sharing import default_load_sharing, tabulated_load_sharing
 from .set_geometry import SetGeometry
 
 __all__ = ["MeshForce", "PlanetLoad", "PlanetaryForces", "planetary_forces", "default_load_sharing",
@@ -61,30 +62,18 @@ __all__ = ["MeshForce", "PlanetLoad", "PlanetaryForces", "planetary_forces", "de
 Vec = tuple[float, float]
 
 
-def default_load_sharing(planets: int) -> float:
-    """Default load-sharing (mesh load) factor K_γ by number of planets.
-
-    ===========  =====
-    planets      K_γ
-    ===========  =====
-    up to 3      1.0
-    4            1.2
-    5            1.3
-    6 and more   1.4
-    ===========  =====
-
-    >>> [default_load_sharing(n) for n in (3, 4, 5, 6, 8)]
-    [1.0, 1.2, 1.3, 1.4, 1.4]
-
-    References
-    ----------
-    ABS (American Bureau of Shipping) rules as tabulated in the FVA-Workbench
-    documentation, attribute "Load sharing factor Kγ" (PMID 6051). Use a measured or
-    AGMA 6123 / ISO 6336 value where one is known.
-    """
-    if isinstance(planets, bool) or not isinstance(planets, int) or planets < 1:
-        raise GeometryError(f"default_load_sharing: planets must be a whole number >= 1, got {planets!r}.")
-    return 1.0 if planets <= 3 else {4: 1.2, 5: 1.3}.get(planets, 1.4)
+def _load_sharing(given, planets: int) -> tuple[object, str]:
+    """(K_γ, where it comes from): a given number beside the IEC 61400-4 table value, a table row, or ABS."""
+    if isinstance(given, str):
+        table = tabulated_load_sharing(planets, given)
+        return table.value, table.source
+    try:
+        table_note = f"; {tabulated_load_sharing(planets).source}: {tabulated_load_sharing(planets).value:g}"
+    except GeometryError:
+        table_note = ""
+    if given is None:
+        return default_load_sharing(planets), "ABS rules default" + table_note
+    return given, "given" + table_note
 
 
 def mesh_forces(torque: float, pitch_diameter: float, mesh: MeshGeometry) -> tuple[float, float, float]:
@@ -326,6 +315,7 @@ class PlanetaryForces:
     carrier_torque_from_forces: float
     members: Mapping[str, tuple[str, str]] = field(default_factory=lambda: MappingProxyType({}))
     shared: tuple[SharedPlanet, ...] = ()
+    load_sharing_source: str = ""
 
     @property
     def housing_torque(self) -> float:
@@ -366,6 +356,7 @@ class PlanetaryForces:
             "set": self.set_name,
             "planets": self.planets,
             "load_sharing_factor": self.load_sharing_factor,
+            "load_sharing_source": self.load_sharing_source,
             "units": {"force": "N", "length": "mm", "torque": "N*m", "angle": "deg"},
             "torques": dict(self.torques),
             "members": {port: {"gear": gear, "shaft": shaft} for port, (gear, shaft) in self.members.items()},
@@ -413,7 +404,8 @@ class PlanetaryForces:
 
     def table(self) -> str:
         """Design forces (× K_γ) per planet and mesh, N; every mesh of planets shared with other sets."""
-        title = (f"forces of {self.set_name!r}: {self.planets} planets, K_gamma = {self.load_sharing_factor:g} "
+        source = f" ({self.load_sharing_source})" if self.load_sharing_source else ""
+        title = (f"forces of {self.set_name!r}: {self.planets} planets, K_gamma = {self.load_sharing_factor:g}{source} "
                  f"(torques {', '.join(f'{self._port(p)} {t:.5g} N*m' for p, t in self.torques.items())})")
         text = text_table(self._HEAD, self._rows(), title=title)
         if self.shared:
@@ -477,9 +469,11 @@ def planetary_forces(
     set_name : str
     geometry : SetGeometry
         Geometry of that set (same tooth counts).
-    load_sharing : float, optional
-        K_γ ≥ 1; default ``geometry.load_sharing``, else :func:`default_load_sharing`
-        of the number of planets.
+    load_sharing : float or str, optional
+        K_γ ≥ 1, or a mounting of :func:`~epicyclic.geometry.load_sharing.tabulated_load_sharing`
+        (``"floating_sun"``, ``"flexible_pins"``, ``"abs"``) for the tabulated value; default
+        ``geometry.load_sharing``, else :func:`default_load_sharing` of the number of planets.
+        The result's ``load_sharing_source`` says where it came from, beside the IEC 61400-4 value.
     angles : sequence of float, optional
         Carrier angles of the planets, degrees (default equally spaced; give the
         angles of :func:`~epicyclic.geometry.fitting.check_assembly` for unequal spacing).
@@ -519,7 +513,7 @@ def planetary_forces(
         angles = [360.0 * i / n for i in range(n)]
     if load_sharing is None:
         load_sharing = geometry.load_sharing
-    k = default_load_sharing(n) if load_sharing is None else load_sharing
+    k, source = _load_sharing(load_sharing, n)
     if isinstance(k, bool) or not isinstance(k, (int, float)) or not math.isfinite(k) or k < 1.0:
         raise GeometryError(f"planetary_forces: load_sharing (K_gamma) must be a number >= 1, got {load_sharing!r}.")
 
@@ -593,5 +587,5 @@ def planetary_forces(
     return PlanetaryForces(
         set_name, n, float(k), MappingProxyType(dict(state.torques)), tuple(bodies),
         MappingProxyType({key: (v[0], v[1]) for key, v in sums.items()}), carrier_torque,
-        MappingProxyType(members),
+        MappingProxyType(members), load_sharing_source=source,
     )

@@ -2,27 +2,33 @@
 
 Units: lengths in mm, angles in degrees at the interface (radians inside).
 Tooth counts and diameters are positive for internal gears too; an internal
-gear is flagged ``internal=True`` (the KHK / SDP-SI convention: a positive
-profile shift of an internal gear moves its teeth outward, i.e. enlarges the
-tip circle and the centre distance).
+gear is flagged ``internal=True``.
+
+Profile shift of an internal gear: the ISO 21771 / DIN 3960 sign (also KISSsoft's
+and REXS's).  ISO writes an internal gear with z < 0, so its coefficient keeps the
+meaning "material added toward the tooth tip side of the rack": a *negative* x of
+an internal gear enlarges its tip circle and the centre distance.  Handbooks in
+the KHK / SDP-SI tradition use the opposite sign (x_KHK = −x_ISO);
+:func:`iso_profile_shift` converts.  ``GearGeometry.profile_shift`` is always ISO.
 
 Formulas (normal module m_n, helix angle β, transverse module
 m_t = m_n / cos β, transverse pressure angle tan α_t = tan α_n / cos β):
 
 ============================  ==============================  ==============================
-quantity                      external gear                   internal gear
+quantity                      external gear                   internal gear (x ISO)
 ============================  ==============================  ==============================
 reference diameter d          z m_t                           z m_t
 base diameter d_b             d cos α_t                       d cos α_t
-tip diameter d_a              d + 2 m_n (h_a* + x − k)        d − 2 m_n (h_a* − x)
-root diameter d_f             d − 2 m_n (h_f* − x)            d + 2 m_n (h_f* + x)
+tip diameter d_a              d + 2 m_n (h_a* + x − k)        d − 2 m_n (h_a* + x − k)
+root diameter d_f             d − 2 m_n (h_f* − x)            d + 2 m_n (h_f* − x)
 ============================  ==============================  ==============================
 
 References
 ----------
-ISO 21771:2007 (cylindrical involute gears: concepts and geometry).
-SDP/SI, *Elements of Metric Gear Technology* (D785), section 5.1, Table 5-1
-(profile-shifted internal gear).  Queitsch, Formelzeichen (d_0, r_g, r_b, h_k).
+ISO 21771:2007 (cylindrical involute gears: concepts and geometry; internal gears
+with z < 0); DIN 3960:1987.  SDP/SI, *Elements of Metric Gear Technology* (D785),
+section 5.1, Table 5-1 (profile-shifted internal gear, KHK sign).  Queitsch,
+Formelzeichen (d_0, r_g, r_b, h_k).
 """
 
 from __future__ import annotations
@@ -32,6 +38,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from ..limits import MAX_TOOTH_HEIGHT_FACTOR, MODULE_RANGE
+from .conventions import SHIFT_CONVENTIONS, iso_profile_shift
 from .errors import GeometryError
 from .involute import (
     center_distance_from_angle,
@@ -40,7 +47,10 @@ from .involute import (
     transverse_pressure_angle,
 )
 
-__all__ = ["BasicRack", "GearGeometry", "MeshGeometry"]
+__all__ = ["BasicRack", "GearGeometry", "MeshGeometry", "SHIFT_CONVENTIONS", "iso_profile_shift"]
+
+#: Largest |y| = |a_w − a|/m_n of a given centre distance (beyond it no tooth reaches across).
+_MAX_Y = 5.0
 
 
 def _positive(value: object, name: str, owner: str) -> float:
@@ -152,16 +162,21 @@ class GearGeometry:
         Number of teeth z (positive, also for internal gears).
     rack : BasicRack
     profile_shift : float, default 0
-        Profile-shift coefficient x (KHK convention for internal gears).
+        Profile-shift coefficient x, ISO 21771 sign (an internal gear's x < 0 enlarges
+        its tip circle; :func:`iso_profile_shift` converts a KHK value).
     internal : bool, default False
     tip_shortening : float, default 0
         Tip-shortening coefficient k ≥ 0 (external gears; see
         :attr:`MeshGeometry.tip_shortening`).
+    thickness_allowance : float, default 0
+        Upper tooth-thickness allowance A_sn ≤ 0, mm (normal section; ISO 21771 /
+        DIN 3967): the tool is fed in by A_sn/(2 tan α_n), so the gear is generated
+        with x_E = x + A_sn/(2 m_n tan α_n) and the mesh gets backlash.
 
     References
     ----------
-    ISO 21771:2007; SDP/SI D785, Table 5-1 (internal gear: d_a2 = d_2 − 2 m (1 − x_2),
-    d_f2 = d_a2 + 2 h).
+    ISO 21771:2007 (internal gear, x ISO: d_a2 = d_2 − 2 m (h_a* + x_2));
+    SDP/SI D785, Table 5-1 (the same with x_KHK = −x_ISO: d_a2 = d_2 − 2 m (1 − x_2)).
 
     Examples
     --------
@@ -178,6 +193,7 @@ class GearGeometry:
     profile_shift: float = 0.0
     internal: bool = False
     tip_shortening: float = 0.0
+    thickness_allowance: float = 0.0
 
     def __post_init__(self) -> None:
         z = self.teeth
@@ -191,10 +207,22 @@ class GearGeometry:
                 f"GearGeometry: profile_shift must be a number in [-3, 3] (a coefficient, not mm), got {x!r}."
             )
         k = self.tip_shortening
-        if isinstance(k, bool) or not isinstance(k, (int, float)) or not math.isfinite(k) or k < 0:
-            raise GeometryError(f"GearGeometry: tip_shortening must be a number >= 0, got {k!r}.")
+        if isinstance(k, bool) or not isinstance(k, (int, float)) or not math.isfinite(k) or not 0 <= k <= 3:
+            raise GeometryError(f"GearGeometry: tip_shortening must be a coefficient k in [0, 3] (k m_n off the tip), "
+                                f"got {k!r}.")
         object.__setattr__(self, "profile_shift", float(x))
         object.__setattr__(self, "tip_shortening", float(k))
+        allowance = self.thickness_allowance
+        if isinstance(allowance, bool) or not isinstance(allowance, (int, float)) or not math.isfinite(allowance) \
+                or allowance > 0 or allowance < -self.rack.module:
+            raise GeometryError(f"GearGeometry: thickness_allowance (A_sn, mm) must lie in [-m_n, 0] "
+                                f"(thinner teeth give backlash), got {allowance!r}.")
+        object.__setattr__(self, "thickness_allowance", float(allowance))
+
+    @property
+    def generating_profile_shift(self) -> float:
+        """x_E = x + A_sn / (2 m_n tan α_n), the shift the gear is cut with (ISO 21771, DIN 3960)."""
+        return self.profile_shift + self.thickness_allowance / (2.0 * self.rack.module * math.tan(self.rack.alpha_n))
 
     @property
     def reference_diameter(self) -> float:
@@ -211,7 +239,7 @@ class GearGeometry:
         """d_a, mm (for an internal gear the smaller, inner circle of its tips)."""
         m, r = self.rack.module, self.rack
         if self.internal:
-            return self.reference_diameter - 2.0 * m * (r.addendum - self.profile_shift)
+            return self.reference_diameter - 2.0 * m * (r.addendum + self.profile_shift - self.tip_shortening)
         return self.reference_diameter + 2.0 * m * (r.addendum + self.profile_shift - self.tip_shortening)
 
     @property
@@ -219,7 +247,7 @@ class GearGeometry:
         """d_f, mm (for an internal gear the larger, outer circle of its roots)."""
         m, r = self.rack.module, self.rack
         if self.internal:
-            return self.reference_diameter + 2.0 * m * (r.dedendum + self.profile_shift)
+            return self.reference_diameter + 2.0 * m * (r.dedendum - self.profile_shift)
         return self.reference_diameter - 2.0 * m * (r.dedendum - self.profile_shift)
 
     @property
@@ -235,6 +263,7 @@ class GearGeometry:
             "internal": self.internal,
             "profile_shift": self.profile_shift,
             "tip_shortening": self.tip_shortening,
+            "thickness_allowance": self.thickness_allowance,
             "reference_diameter": self.reference_diameter,
             "base_diameter": self.base_diameter,
             "tip_diameter": self.tip_diameter,
@@ -253,11 +282,16 @@ class MeshGeometry:
         must share the basic rack (module, pressure angle, helix angle).
     name : str, optional
         A label such as ``"sun-planet"``.
+    working_center_distance : float, optional
+        The centre distance the pair is built at, mm.  Default: the backlash-free
+        one that the profile shifts give.  Given, α_wt and the pitch circles follow
+        from it (cos α_wt = a cos α_t / a_w) and :attr:`backlash` from the shifts
+        and thickness allowances.
 
     Notes
     -----
-    The pair runs without backlash at the operating centre distance that the
-    profile shifts give (ISO 21771).  For an external pair the tip-shortening
+    Without ``working_center_distance`` the pair runs without backlash at the operating
+    centre distance that the profile shifts give (ISO 21771).  For an external pair the tip-shortening
     coefficient ``k = x1 + x2 − y`` with ``y = (a_w − a)/m_n`` is reported;
     apply it to the tips (``SetGeometry`` does) to keep the standard tip
     clearance.
@@ -280,9 +314,14 @@ class MeshGeometry:
     gear1: GearGeometry
     gear2: GearGeometry
     name: str = ""
+    working_center_distance: float | None = None
 
     def __post_init__(self) -> None:
         owner = f"MeshGeometry {self.name!r}" if self.name else "MeshGeometry"
+        given = self.working_center_distance
+        if given is not None and (isinstance(given, bool) or not isinstance(given, (int, float))
+                                  or not math.isfinite(given) or given <= 0):
+            raise GeometryError(f"{owner}: working_center_distance must be a positive number of mm, got {given!r}.")
         for label in ("gear1", "gear2"):
             if not isinstance(getattr(self, label), GearGeometry):
                 raise GeometryError(f"{owner}: {label} must be a GearGeometry.")
@@ -307,7 +346,18 @@ class MeshGeometry:
             alpha_wt = self.alpha_wt
         except ValueError:
             alpha_wt = -1.0
+        if given is not None and abs(given - self.reference_center_distance) > _MAX_Y * self.rack.module:
+            raise GeometryError(
+                f"{owner}: the centre distance {given!r} mm lies {abs(given - self.reference_center_distance) / self.rack.module:.3g} "
+                f"modules from the reference a = {self.reference_center_distance:.4f} mm; a mesh runs within "
+                f"±{_MAX_Y:g} modules of it (y = (a_w - a)/m_n)."
+            )
         if not 0.0 < alpha_wt < math.pi / 2:
+            if given is not None:
+                raise GeometryError(
+                    f"{owner}: the centre distance {given!r} mm is below a cos α_t = "
+                    f"{self.reference_center_distance * math.cos(self.rack.alpha_t):.4f} mm; no involute mesh runs there."
+                )
             raise GeometryError(
                 f"{owner}: the profile-shift sum {self._x_sum:+.4f} gives no operating pressure angle for "
                 f"z = {self.gear1.teeth}/{self.gear2.teeth} (inv α_wt would be negative); raise the shifts."
@@ -370,7 +420,7 @@ class MeshGeometry:
             total = profile_shift_sum(center_distance, z_sum, rack.module, rack.alpha_n, rack.beta)
         except ValueError as exc:
             raise GeometryError(f"MeshGeometry.at_center_distance: {exc}") from None
-        x2 = total + x1 if internal else total - x1
+        x2 = -(total + x1) if internal else total - x1  # ISO sign of an internal gear 2
         return cls(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2, internal=internal), name)
 
     @property
@@ -388,8 +438,9 @@ class MeshGeometry:
 
     @property
     def _x_sum(self) -> float:
+        # x2 − x1 in the KHK sign of the internal pair's formula = −(x1 + x2) with ISO's x2
         g1, g2 = self.gear1, self.gear2
-        return g2.profile_shift - g1.profile_shift if self.internal else g1.profile_shift + g2.profile_shift
+        return -(g2.profile_shift + g1.profile_shift) if self.internal else g1.profile_shift + g2.profile_shift
 
     @property
     def reference_center_distance(self) -> float:
@@ -398,7 +449,12 @@ class MeshGeometry:
 
     @property
     def alpha_wt(self) -> float:
-        """Operating transverse pressure angle, rad."""
+        """Operating transverse pressure angle, rad (from the given centre distance where there is one)."""
+        if self.working_center_distance is not None:
+            ratio = self.reference_center_distance * math.cos(self.rack.alpha_t) / self.working_center_distance
+            if not 0.0 < ratio < 1.0:
+                raise ValueError("no operating pressure angle")
+            return math.acos(ratio)
         return float(operating_pressure_angle(self._x_sum, self._z_sum, self.rack.alpha_n, self.rack.alpha_t))
 
     @property
@@ -408,8 +464,29 @@ class MeshGeometry:
 
     @property
     def center_distance(self) -> float:
-        """Operating centre distance a_w, mm."""
+        """Operating centre distance a_w, mm (the given one, else the backlash-free one of the shifts)."""
+        if self.working_center_distance is not None:
+            return float(self.working_center_distance)
         return float(center_distance_from_angle(self.reference_center_distance, self.rack.alpha_t, self.alpha_wt))
+
+    @property
+    def backlash(self) -> float:
+        """Normal backlash j_bn in the line of action, mm (< 0: the teeth jam at this centre distance).
+
+        j_bn = 2 m_n sin α_n (Σx(a_w) − Σx_E), with Σx(a_w) the backlash-free shift sum
+        at the centre distance and Σx_E the generating shifts (ISO 21771, z < 0 for an
+        internal gear).  Zero for a pair at its own backlash-free distance without
+        thickness allowances.
+
+        References
+        ----------
+        ISO 21771:2007, eqs. (62), (63): Σx_E = Σx − j_bn / (2 m_n sin α_n).
+        """
+        rack, g1, g2 = self.rack, self.gear1, self.gear2
+        need = profile_shift_sum(self.center_distance, self._z_sum, rack.module, rack.alpha_n, rack.beta)
+        need = -need if self.internal else need  # ISO sum x1 + x2 with z2 < 0
+        have = g1.generating_profile_shift + g2.generating_profile_shift
+        return 2.0 * rack.module * math.sin(rack.alpha_n) * (need - have)
 
     @property
     def center_distance_modification(self) -> float:
@@ -479,6 +556,9 @@ class MeshGeometry:
             "center_distance_modification": self.center_distance_modification,
             "tip_shortening": self.tip_shortening,
             "contact_ratio": self.contact_ratio,
+            "operating_helix_angle": self.operating_helix_angle,
+            "working_center_distance_given": self.working_center_distance is not None,
+            "backlash": self.backlash,
         }
 
     def __repr__(self) -> str:

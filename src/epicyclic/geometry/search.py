@@ -161,7 +161,8 @@ class ToothSearch:
     _HEAD = ["z_sun", "z_planet", "z_ring", "N", "ratio", "error [%]", "hunting", "clearance [mm]"]
 
     def _rows(self, limit: int) -> list[list[object]]:
-        return [[c.z_sun, c.z_planet, c.z_ring, c.planets, c.ratio, 100 * c.error, c.hunting, c.clearance]
+        return [[c.z_sun, c.z_planet, c.z_ring, c.planets, c.ratio, 100 * c.error, c.hunting,
+                 c.clearance if math.isfinite(c.clearance) else "no neighbour"]
                 for c in self.candidates[:limit]]
 
     def table(self, limit: int = 20) -> str:
@@ -208,7 +209,8 @@ class ToothSearch:
         """Every candidate as comma-separated values with a header line (error in %, clearance in mm)."""
         head = "z_sun,z_planet,z_ring,planets,ratio,error_percent,hunting,clearance_mm"
         lines = [f"{c.z_sun},{c.z_planet},{c.z_ring},{c.planets},{c.ratio!r},{100 * c.error!r},"
-                 f"{str(c.hunting).lower()},{c.clearance!r}" for c in self.candidates]
+                 f"{str(c.hunting).lower()},{repr(c.clearance) if math.isfinite(c.clearance) else ''}"
+                 for c in self.candidates]
         return "\n".join([head, *lines]) + "\n"
 
     def to_dict(self) -> dict[str, Any]:
@@ -219,11 +221,18 @@ class ToothSearch:
         dict
             ``target``, ``mode`` (``{held, driver, driven}``), ``tolerance`` (relative),
             ``module`` (mm) and ``candidates`` (each with the fields of :class:`Candidate`;
-            clearance in mm), in rank order.
+            clearance in mm, null with ``clearance_note`` for one planet, which has no neighbour),
+            in rank order.
         """
+        rows = []
+        for c in self.candidates:
+            row = c.__dict__.copy()
+            if not math.isfinite(row["clearance"]):  # JSON has no Infinity
+                row["clearance"] = None
+                row["clearance_note"] = "one planet: no neighbour, the clearance is unbounded"
+            rows.append(row)
         return {"target": self.target, "mode": dict(zip(("held", "driver", "driven"), self.mode)),
-                "tolerance": self.tolerance, "module": self.module,
-                "candidates": [c.__dict__.copy() for c in self.candidates]}
+                "tolerance": self.tolerance, "module": self.module, "candidates": rows}
 
     def __repr__(self) -> str:
         best = self.best

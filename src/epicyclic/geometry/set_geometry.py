@@ -34,7 +34,9 @@ from ..model.planetary import PlanetarySet, Teeth
 from ..model.teeth import TWO_CENTRAL_NAMES
 from ._render import html_table, text_table
 from .errors import GeometryError
-from .gear import BasicRack, GearGeometry, MeshGeometry
+from .contact import mesh_data, micrometres
+from .tolerances import parse_center_distance_tolerance
+from .gear import SHIFT_CONVENTIONS, BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
 
 __all__ = ["SetGeometry", "planet_names", "gear_label", "TWO_CENTRAL_NAMES"]
 
@@ -76,23 +78,41 @@ class SetGeometry:
         Module (normal module), pressure angle, helix angle, addendum and
         dedendum factors.
     x_sun, x_ring : float, default 0
-        Profile-shift coefficients of the central gears (KHK convention for an
-        internal ring: positive x enlarges its tip circle).
+        Profile-shift coefficients of the central gears, in the sign of
+        ``internal_shift_convention`` for an internal gear (ISO 21771: a negative x
+        of a ring enlarges its tip circle).
     x_planet : float or sequence of float, default 0
         Profile shift of the planet gear(s), one per planet gear of the kind
         (a single number is used for all).
     ring_module : float, optional
         Normal module of the ring mesh of a stepped set (default: ``rack.module``).
-    tip_shortening : bool, default True
+    tip_shortening : bool or mapping gear → float, default True
         Shorten the tips of external pairs by k m_n (ISO 21771) to keep the
-        standard tip clearance at the shifted centre distance.
+        standard tip clearance at the shifted centre distance; or the tip-shortening
+        coefficient k of each gear as built (missing gears 0).
     face_width : float or mapping gear → float, optional
         Face width b in mm, one for all gears or one per gear name (``sun``,
         ``planet``, ``ring``, ...); a mesh's width is the smaller of its two
         gears'.  Needed for mesh losses (load per face width).
-    load_sharing : float, optional
-        Load-sharing factor K_γ ≥ 1 for the design forces (default: by number
-        of planets, :func:`~epicyclic.geometry.forces.default_load_sharing`).
+    load_sharing : float or str, optional
+        Load-sharing factor K_γ ≥ 1 for the design forces, or a mounting
+        (``"floating_sun"``, ``"flexible_pins"``, ``"abs"``) for the tabulated value
+        (:func:`~epicyclic.geometry.load_sharing.tabulated_load_sharing`); default by number
+        of planets, :func:`~epicyclic.geometry.load_sharing.default_load_sharing`.
+    internal_shift_convention : {"iso", "khk"}, default "iso"
+        The sign in which an internal gear's profile shift is given: ``"iso"``
+        (ISO 21771, DIN 3960, KISSsoft, REXS) or ``"khk"`` (KHK / SDP-SI handbooks,
+        x_KHK = −x_ISO).  :attr:`gears` always hold the ISO value; reports state it.
+    center_distance_tolerance : float or str, optional
+        The housing's centre-distance allowance for the coaxiality check: ± mm, or an
+        ISO 286 js field such as ``"js7"`` (DIN 3964).  Default: the effect of the
+        shifts' printed digits (:func:`~epicyclic.geometry.coaxiality.coaxiality_tolerance`).
+    center_distance : float, optional
+        The carrier's centre distance as built, mm (simple and stepped sets): both meshes
+        run at it (α_wt from it) and get the backlash their shifts and allowances leave
+        (:attr:`MeshGeometry.backlash`; < 0 is a jam, an error of :func:`check_fitting`).
+    thickness_allowance : float or mapping gear → float, optional
+        Tooth-thickness allowance A_sn ≤ 0 of every gear (one number) or per gear, mm.
 
     References
     ----------
@@ -119,6 +139,10 @@ class SetGeometry:
     tip_shortening: bool = True
     face_width: float | Mapping[str, float] | None = None
     load_sharing: float | None = None
+    internal_shift_convention: str = "iso"
+    center_distance_tolerance: float | str | None = None
+    center_distance: float | None = None
+    thickness_allowance: float | Mapping[str, float] | None = None
     gears: Mapping[str, GearGeometry] = field(init=False, repr=False, compare=False)
     meshes: tuple[MeshGeometry, ...] = field(init=False, repr=False, compare=False)
 
@@ -158,26 +182,58 @@ class SetGeometry:
         planet_racks = [self.rack] * len(names)
         if teeth.kind == "stepped":
             planet_racks[1] = ring_rack
-        gears: dict[str, GearGeometry] = {
-            "sun": GearGeometry(teeth.sun, self.rack, self.x_sun, internal=teeth.sun_internal)}
-        for name, z, x, rk in zip(names, teeth.planet, xp, planet_racks):
-            gears[name] = GearGeometry(z, rk, x)
-        gears["ring"] = GearGeometry(teeth.ring, ring_rack, self.x_ring, internal=teeth.ring_internal)
+        convention = self.internal_shift_convention
+        iso_profile_shift(0.0, False, convention)  # raises on an unknown convention
 
+        def central(x, internal: bool) -> float:
+            if isinstance(x, bool) or not isinstance(x, (int, float)):
+                return x  # GearGeometry names the bad value
+            return iso_profile_shift(x, internal, convention)
+
+        all_names = ("sun", *names, "ring")
+        allowance = _per_gear(self.thickness_allowance, all_names, "thickness_allowance", owner, 0.0)
+        gears: dict[str, GearGeometry] = {
+            "sun": GearGeometry(teeth.sun, self.rack, central(self.x_sun, teeth.sun_internal),
+                                internal=teeth.sun_internal, thickness_allowance=allowance["sun"])}
+        for name, z, x, rk in zip(names, teeth.planet, xp, planet_racks):
+            gears[name] = GearGeometry(z, rk, x, thickness_allowance=allowance[name])
+        gears["ring"] = GearGeometry(teeth.ring, ring_rack, central(self.x_ring, teeth.ring_internal),
+                                     internal=teeth.ring_internal, thickness_allowance=allowance["ring"])
+
+        a_given = self.center_distance
+        if a_given is not None and teeth.kind == "double":
+            raise GeometryError(f"{owner}: center_distance applies to simple and stepped sets (one carrier radius); "
+                                "a double-planet set has three centre distances.")
         pairs = _mesh_pairs(teeth.kind, names)
-        meshes = [_mesh(gears, a, b, teeth) for a, b in pairs]
-        if self.tip_shortening:
+        meshes = [_mesh(gears, a, b, teeth, a_given) for a, b in pairs]
+        if isinstance(self.tip_shortening, Mapping):
+            k_given = _per_gear(dict(self.tip_shortening), all_names, "tip_shortening", owner, 0.0)
+            gears = {n: replace(g, tip_shortening=k_given[n]) for n, g in gears.items()}
+            meshes = [_mesh(gears, a, b, teeth, a_given) for a, b in pairs]
+        elif self.tip_shortening:
             k: dict[str, float] = {}
             for (a, b), mesh in zip(pairs, meshes):
                 for g in (a, b):
                     k[g] = max(k.get(g, 0.0), mesh.tip_shortening)
             gears = {n: replace(g, tip_shortening=k.get(n, 0.0)) if not g.internal else g for n, g in gears.items()}
-            meshes = [_mesh(gears, a, b, teeth) for a, b in pairs]
+            meshes = [_mesh(gears, a, b, teeth, a_given) for a, b in pairs]
         object.__setattr__(self, "gears", MappingProxyType(gears))
         object.__setattr__(self, "meshes", tuple(meshes))
         object.__setattr__(self, "face_width", _face_widths(self.face_width, tuple(gears), owner))
+        if self.center_distance_tolerance is not None:
+            try:
+                object.__setattr__(self, "center_distance_tolerance",
+                                   parse_center_distance_tolerance(self.center_distance_tolerance))
+            except GeometryError as exc:
+                raise GeometryError(f"{owner}: {exc}") from None
         k_gamma = self.load_sharing
-        if k_gamma is not None and (isinstance(k_gamma, bool) or not isinstance(k_gamma, (int, float))
+        if isinstance(k_gamma, str):
+            from .load_sharing import MOUNTINGS
+
+            if k_gamma not in MOUNTINGS:
+                raise GeometryError(f"{owner}: load_sharing must be a number >= 1 or one of "
+                                    f"{', '.join(map(repr, MOUNTINGS))} (tabulated K_gamma), got {k_gamma!r}.")
+        elif k_gamma is not None and (isinstance(k_gamma, bool) or not isinstance(k_gamma, (int, float))
                                     or not math.isfinite(k_gamma) or k_gamma < 1.0):
             raise GeometryError(f"{owner}: load_sharing (K_gamma) must be a number >= 1, got {k_gamma!r}.")
 
@@ -199,6 +255,10 @@ class SetGeometry:
         tip_shortening: bool = True,
         face_width: float | Mapping[str, float] | None = None,
         load_sharing: float | None = None,
+        internal_shift_convention: str = "iso",
+        center_distance_tolerance: float | str | None = None,
+        center_distance: float | None = None,
+        thickness_allowance: float | Mapping[str, float] | None = None,
     ) -> SetGeometry:
         """Build the geometry from plain numbers (module and face width in mm, angles in degrees).
 
@@ -217,12 +277,20 @@ class SetGeometry:
             double or stepped set has two).
         ring_module : float, optional
             Stepped sets: module of the second mesh, mm.
-        tip_shortening : bool, default True
-            Shorten the tips of external pairs to keep the tip clearance.
+        tip_shortening : bool or mapping gear → float, default True
+            Shorten the tips of external pairs to keep the tip clearance, or k per gear.
         face_width : float or mapping gear → float, optional
             Face width b, mm (needed for mesh losses).
         load_sharing : float, optional
             K_γ ≥ 1 for the design forces (default by number of planets).
+        internal_shift_convention : {"iso", "khk"}, default "iso"
+            Sign of an internal gear's profile shift as given (ISO 21771 or KHK).
+        center_distance_tolerance : float or str, optional
+            ± mm or a js field (``"js7"``) for the coaxiality check.
+        center_distance : float, optional
+            The carrier's centre distance as built, mm (both meshes run at it).
+        thickness_allowance : float or mapping gear → float, optional
+            A_sn ≤ 0 per gear, mm.
 
         Returns
         -------
@@ -246,7 +314,8 @@ class SetGeometry:
         """
         rack = BasicRack(module, pressure_angle, helix_angle, addendum, dedendum)
         return cls(planetary_set, rack, x_sun, x_ring, x_planet, ring_module, tip_shortening,  # type: ignore[arg-type]
-                   face_width, load_sharing)
+                   face_width, load_sharing, internal_shift_convention, center_distance_tolerance,
+                   center_distance, thickness_allowance)
 
     # ------------------------------------------------------------------ properties
     @property
@@ -331,8 +400,11 @@ class SetGeometry:
                 "dedendum": self.rack.dedendum,
                 "ring_module": self.ring_module,
             },
+            "internal_shift_convention": self.internal_shift_convention,
+            "profile_shift_sign": SHIFT_CONVENTIONS["iso"] + " (gears' profile_shift; the input was "
+                                  + self.internal_shift_convention.upper() + ")",
             "gears": {n: g.to_dict() for n, g in self.gears.items()},
-            "meshes": [m.to_dict() for m in self.meshes],
+            "meshes": [mesh_data(m, b) for m, b in zip(self.meshes, self.mesh_face_widths())],
         }
 
     def gear_label(self, name: str) -> str:
@@ -348,25 +420,44 @@ class SetGeometry:
         ]
         return headers, rows
 
+    def mesh_face_widths(self) -> tuple[float | None, ...]:
+        """The face width of each mesh (mm), None for all without face widths."""
+        if self.face_width is None:
+            return (None,) * len(self.meshes)
+        return tuple(self.mesh_face_width(m) for m in self.meshes)
+
     def _mesh_rows(self) -> tuple[list[str], list[list[object]]]:
-        headers = ["mesh", "a [mm]", "a_w [mm]", "alpha_wt [deg]", "d_w1 [mm]", "d_w2 [mm]", "eps_alpha"]
-        rows = [
-            [m.name, m.reference_center_distance, m.center_distance, m.operating_pressure_angle,
-             *m.operating_pitch_diameters, m.contact_ratio]
-            for m in self.meshes
-        ]
+        from .contact import overlap_ratio
+
+        headers = ["mesh", "a [mm]", "a_w [mm]", "alpha_wt [deg]", "beta_w [deg]", "d_w1 [mm]", "d_w2 [mm]",
+                   "eps_alpha", "eps_beta", "eps_gamma", "j_bn [um]"]
+        rows = []
+        for m, b in zip(self.meshes, self.mesh_face_widths()):
+            eps_b = overlap_ratio(m, b) if b is not None else (0.0 if m.rack.helix_angle == 0 else None)
+            rows.append([m.name, m.reference_center_distance, m.center_distance, m.operating_pressure_angle,
+                         m.operating_helix_angle, *m.operating_pitch_diameters, m.contact_ratio,
+                         "-" if eps_b is None else eps_b, "-" if eps_b is None else m.contact_ratio + eps_b,
+                         micrometres(m.backlash)])
         return headers, rows
+
+    @property
+    def shift_convention_note(self) -> str:
+        """One line on the sign of the internal gears' profile shifts in the tables (ISO 21771) and as given."""
+        given = "" if self.internal_shift_convention == "iso" else " (given as KHK, x_ISO = -x_KHK)"
+        return f"x: ISO 21771 sign, an internal gear's x < 0 enlarges its tip circle{given}"
 
     def table(self) -> str:
         """Gears and meshes as a text table (mm, degrees)."""
         title = (
             f"{self.planetary_set.teeth.arrangement} set {self.planetary_set.name!r}: m_n = {self.rack.module} mm, "
-            f"alpha_n = {self.rack.pressure_angle} deg, beta = {self.rack.helix_angle} deg"
+            f"alpha_n = {self.rack.pressure_angle} deg, beta = {self.rack.helix_angle} deg; "
+            f"{self.shift_convention_note}"
         )
         return text_table(*self._rows(), title=title) + "\n\n" + text_table(*self._mesh_rows())
 
     def _repr_html_(self) -> str:
-        return html_table(*self._rows(), title=f"set {self.planetary_set.name}") + html_table(*self._mesh_rows())
+        return html_table(*self._rows(), title=f"set {self.planetary_set.name} ({self.shift_convention_note})") \
+            + html_table(*self._mesh_rows())
 
     def __repr__(self) -> str:
         centres = ", ".join(f"{m.name} a_w={m.center_distance:.3f}" for m in self.meshes)
@@ -395,10 +486,23 @@ def _face_widths(value, names: tuple[str, ...], owner: str) -> Mapping[str, floa
     return MappingProxyType({n: float(b) for n, b in widths.items()})
 
 
-def _mesh(gears: Mapping[str, GearGeometry], a: str, b: str, teeth: Teeth) -> MeshGeometry:
+def _mesh(gears: Mapping[str, GearGeometry], a: str, b: str, teeth: Teeth,
+          center_distance: float | None = None) -> MeshGeometry:
     """The mesh of gears ``a`` and ``b``, named ``"a-b"`` by their labels, with the internal gear (if any) second."""
     first, second = (gears[b], gears[a]) if gears[a].internal else (gears[a], gears[b])
-    return MeshGeometry(first, second, f"{gear_label(teeth, a)}-{gear_label(teeth, b)}")
+    return MeshGeometry(first, second, f"{gear_label(teeth, a)}-{gear_label(teeth, b)}", center_distance)
+
+
+def _per_gear(value, names: tuple[str, ...], key: str, owner: str, default: float) -> dict[str, float]:
+    """One number for every gear, or a mapping gear → number (missing gears ``default``); None → ``default``."""
+    if value is None:
+        return {n: default for n in names}
+    if isinstance(value, Mapping):
+        unknown = [k for k in value if k not in names]
+        if unknown:
+            raise GeometryError(f"{owner}: {key} names unknown gear {unknown[0]!r}; the gears are {', '.join(names)}.")
+        return {n: value.get(n, default) for n in names}
+    return {n: value for n in names}
 
 
 def _mesh_pairs(kind: str, names: tuple[str, ...]) -> list[tuple[str, str]]:

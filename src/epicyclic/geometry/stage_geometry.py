@@ -21,9 +21,18 @@ from typing import Any
 from ..model.elements import GearStage
 from ._render import html_table, text_table
 from .errors import GeometryError
-from .gear import BasicRack, GearGeometry, MeshGeometry
+from .gear import BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
+from .contact import mesh_data, micrometres
 
 __all__ = ["StageGeometry"]
+
+
+def _with_gear(mesh: MeshGeometry, gear: GearGeometry, tip: float) -> MeshGeometry:
+    """``mesh`` with ``gear`` (its gear1 or gear2) given the tip shortening ``tip``."""
+    from dataclasses import replace
+
+    which = "gear1" if mesh.gear1 is gear else "gear2"
+    return replace(mesh, **{which: replace(gear, tip_shortening=tip)})
 
 
 def _per_mesh(value, count: int, name: str, owner: str) -> tuple:
@@ -50,6 +59,16 @@ class StageGeometry:
         Face width of each mesh, mm (one for all, or one per mesh).
     tip_shortening : bool, default True
         Shorten the tips of external pairs (ISO 21771).
+    internal_shift_convention : {"iso", "khk"}, default "iso"
+        Sign of an internal gear's profile shift as given (ISO 21771 or KHK, x_KHK = −x_ISO);
+        the meshes hold ISO values.
+    idlers : sequence of int, optional
+        Mesh numbers k (1-based) whose driven gear is the next mesh's driving gear: one
+        idler gear meshing twice.  It keeps one geometry in both meshes (same teeth, same
+        profile shift, the larger tip shortening of the two).
+    center_distance : float or sequence of float, optional
+        Centre distance of each mesh as built, mm (one for all, or one per mesh; None
+        entries keep the backlash-free one).
 
     Examples
     --------
@@ -67,6 +86,9 @@ class StageGeometry:
     profile_shifts: Sequence[tuple[float, float]] = ()
     face_width: float | Sequence[float] | None = None
     tip_shortening: bool = True
+    internal_shift_convention: str = "iso"
+    idlers: Sequence[int] = ()
+    center_distance: float | Sequence[float | None] | None = None
     meshes: tuple[MeshGeometry, ...] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -80,6 +102,7 @@ class StageGeometry:
                 "GearStage.from_teeth (in a file: 'meshes' instead of 'ratio')."
             )
         count = len(stage.meshes)
+        iso_profile_shift(0.0, False, self.internal_shift_convention)  # raises on an unknown convention
         racks = _per_mesh(self.rack, count, "rack", owner)
         if not all(isinstance(r, BasicRack) for r in racks):
             raise GeometryError(f"{owner}: rack must be a BasicRack or one per mesh.")
@@ -95,22 +118,53 @@ class StageGeometry:
                 if isinstance(b, bool) or not isinstance(b, (int, float)) or not math.isfinite(b) or b <= 0:
                     raise GeometryError(f"{owner}: face_width must be a positive number of mm, got {b!r}.")
             widths = tuple(float(b) for b in widths)
+        idlers = self._idlers(stage, shifts, owner)
+        centers = _per_mesh(self.center_distance, count, "center_distance", owner)
         meshes = []
         for k, ((z1, z2, kind), rack, (x1, x2)) in enumerate(zip(stage.meshes, racks, shifts)):
             name = f"mesh {k + 1} ({z1}/{z2})"
             if kind == "internal":
                 small, large = ((z1, x1), (z2, x2)) if z1 < z2 else ((z2, x2), (z1, x1))
+                x_large = large[1]
+                if isinstance(x_large, (int, float)) and not isinstance(x_large, bool):
+                    x_large = iso_profile_shift(x_large, True, self.internal_shift_convention)
                 mesh = MeshGeometry(GearGeometry(small[0], rack, small[1]),
-                                    GearGeometry(large[0], rack, large[1], internal=True), name)
+                                    GearGeometry(large[0], rack, x_large, internal=True), name, centers[k])
             else:
-                mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2), name)
+                mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2), name, centers[k])
                 if self.tip_shortening:
                     mesh = mesh.with_tip_shortening()
             meshes.append(mesh)
+        for k in idlers:  # one idler gear: the larger tip shortening of its two meshes on both
+            first, second = meshes[k - 1], meshes[k]
+            driven = first.gear2 if self.driving_is_gear1(k - 1) else first.gear1
+            driving = second.gear1 if self.driving_is_gear1(k) else second.gear2
+            tip = max(driven.tip_shortening, driving.tip_shortening)
+            meshes[k - 1] = _with_gear(first, driven, tip)
+            meshes[k] = _with_gear(second, driving, tip)
         object.__setattr__(self, "rack", racks if isinstance(self.rack, (list, tuple)) else self.rack)
         object.__setattr__(self, "profile_shifts", tuple(tuple(float(v) for v in x) for x in shifts))
         object.__setattr__(self, "face_width", widths)
         object.__setattr__(self, "meshes", tuple(meshes))
+        object.__setattr__(self, "idlers", idlers)
+
+    def _idlers(self, stage: GearStage, shifts, owner: str) -> tuple[int, ...]:
+        """The checked idler mesh numbers (1-based): same teeth and the same profile shift in both meshes."""
+        out = []
+        for k in self.idlers:
+            if isinstance(k, bool) or not isinstance(k, int) or not 1 <= k < len(stage.meshes):
+                raise GeometryError(f"{owner}: idlers holds mesh numbers 1 … {len(stage.meshes) - 1} (the driven "
+                                    f"gear of mesh k drives mesh k + 1), got {k!r}.")
+            z_driven, z_next = stage.meshes[k - 1][1], stage.meshes[k][0]
+            if z_driven != z_next:
+                raise GeometryError(f"{owner}: an idler is one gear, but mesh {k}'s driven gear has {z_driven} teeth "
+                                    f"and mesh {k + 1}'s driving gear {z_next}.")
+            x_driven, x_next = shifts[k - 1][1], shifts[k][0]
+            if x_driven != x_next:
+                raise GeometryError(f"{owner}: the idler of meshes {k} and {k + 1} is one gear with one profile "
+                                    f"shift, got {x_driven!r} and {x_next!r}; give the same x in both meshes.")
+            out.append(k)
+        return tuple(sorted(set(out)))
 
     def mesh_face_width(self, index: int) -> float:
         """Face width of mesh ``index`` (0-based), mm."""
@@ -129,13 +183,27 @@ class StageGeometry:
     def to_dict(self) -> dict[str, Any]:
         """Plain data (mm, degrees)."""
         return {"stage": self.stage.name, "face_width": None if self.face_width is None else list(self.face_width),
-                "meshes": [m.to_dict() for m in self.meshes]}
+                "internal_shift_convention": self.internal_shift_convention, "idlers": list(self.idlers),
+                "meshes": [mesh_data(m, b) for m, b in zip(self.meshes, self.mesh_face_widths())]}
+
+    def mesh_face_widths(self) -> tuple[float | None, ...]:
+        """The face width of each mesh (mm), None for all without face widths."""
+        return tuple(self.face_width) if self.face_width is not None else (None,) * len(self.meshes)
 
     def _rows(self) -> list[list[object]]:
-        return [[m.name, m.gear1.teeth, m.gear2.teeth, m.rack.module, m.center_distance, m.operating_pressure_angle,
-                 m.contact_ratio] for m in self.meshes]
+        from .contact import overlap_ratio
 
-    _HEAD = ["mesh", "z1", "z2", "m_n [mm]", "a_w [mm]", "alpha_wt [deg]", "eps_alpha"]
+        rows = []
+        for m, b in zip(self.meshes, self.mesh_face_widths()):
+            eps_b = overlap_ratio(m, b) if b is not None else (0.0 if m.rack.helix_angle == 0 else None)
+            rows.append([m.name, m.gear1.teeth, m.gear2.teeth, m.rack.module, m.center_distance,
+                         m.operating_pressure_angle, m.operating_helix_angle, m.contact_ratio,
+                         "-" if eps_b is None else eps_b, "-" if eps_b is None else m.contact_ratio + eps_b,
+                         micrometres(m.backlash)])
+        return rows
+
+    _HEAD = ["mesh", "z1", "z2", "m_n [mm]", "a_w [mm]", "alpha_wt [deg]", "beta_w [deg]", "eps_alpha", "eps_beta",
+             "eps_gamma", "j_bn [um]"]
 
     def table(self) -> str:
         """The stage's meshes as a plain-text table: tooth counts, m_n, a_w, α_wt, ε_α.
@@ -146,7 +214,9 @@ class StageGeometry:
         -------
         str
         """
-        return text_table(self._HEAD, self._rows(), title=f"stage {self.stage.name!r}")
+        given = "" if self.internal_shift_convention == "iso" else " (given as KHK, x_ISO = -x_KHK)"
+        return text_table(self._HEAD, self._rows(), title=f"stage {self.stage.name!r} (profile shift: ISO 21771 "
+                                                          f"sign{given})")
 
     def _repr_html_(self) -> str:
         return html_table(self._HEAD, self._rows(), title=f"stage {self.stage.name}")

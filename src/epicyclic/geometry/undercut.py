@@ -145,8 +145,9 @@ def check_undercut(geometry: SetGeometry, limit: Literal["theoretical", "practic
             message = f"{name}: z = {gear.teeth}, x = {gear.profile_shift:+.4f} >= x_min = {x_min:+.4f} ({limit} z_g = {z_lim:.2f})"
         else:
             message = (
-                f"{name} is undercut: z = {gear.teeth} < z_g = {z_lim:.2f} at x = {gear.profile_shift:+.4f}; "
-                f"raise its profile shift by {x_min - gear.profile_shift:.4f} to x >= {x_min:.4f}, "
+                f"{name} is undercut: its profile shift x = {gear.profile_shift:+.4f} is below the least "
+                f"x_min = h_a* (z_g - z)/z_g = {x_min:+.4f} for z = {gear.teeth} ({limit} z_g = {z_lim:.2f}); "
+                f"raise x by {x_min - gear.profile_shift:.4f} to x >= {x_min:+.4f}, "
                 f"or use at least {math.ceil(z_lim * (1 - gear.profile_shift / r.addendum) - 1e-9)} teeth"
             )
         out.append(UndercutCheck("undercut", passed, message, "error", name, gear.teeth, gear.profile_shift,

@@ -9,11 +9,15 @@ Per ``[[planetary]]`` and ``[[gear]]`` element::
     addendum = 1.0                       # h_a* (default 1)
     dedendum = 1.25                      # h_f* (default 1.25)
     profile_shift = { sun = 0.438, planet = 0.0426, ring = 0.0 }   # by gear name (default 0)
+    internal_shift_convention = "iso"    # sign of an internal gear's x: "iso" (ISO 21771, default) or "khk"
+    center_distance_tolerance = "js7"    # coaxiality: ± mm or an ISO 286 js field (DIN 3964)
+    center_distance = 56.8               # the carrier's centre distance as built, mm (backlash from it)
+    thickness_allowance = -0.05          # A_sn ≤ 0, mm: one number or one per gear name
     face_width = 38.0                    # mm, or one per gear name
     ring_module = 2.0                    # stepped sets: module of the second mesh
     planets = 3                          # number of planets (or the element's 'planets')
-    load_sharing = 1.0                   # K_γ (default by number of planets)
-    tip_shortening = true
+    load_sharing = 1.0                   # K_γ, or "floating_sun" / "flexible_pins" / "abs" for the tables
+    tip_shortening = true                # or the coefficient k per gear: { sun = 0.05, planet = 0.02 }
 
     [planetary.losses]
     friction = "schlenk"                 # or a number: μ of every mesh
@@ -27,8 +31,9 @@ Per ``[[planetary]]`` and ``[[gear]]`` element::
 
 A ``[[gear]]`` stage built from ``meshes`` takes the same geometry keys with a
 value per mesh where it differs (``module = [2.0, 2.5]``), ``profile_shift`` as
-``[[x_driving, x_driven], ...]`` and ``face_width`` as one number or one per
-mesh.  Every problem names the file, the element, the key, what was expected
+``[[x_driving, x_driven], ...]``, ``face_width`` and ``center_distance`` as one
+number or one per mesh, and ``idlers = [1]`` for an idler gear (mesh 1's driven
+gear drives mesh 2: one gear, one geometry).  Every problem names the file, the element, the key, what was expected
 and what was given (``docs/file-format.md``).
 """
 
@@ -43,28 +48,20 @@ from ..errors import EpicyclicError
 from ..geometry import BasicRack, SetGeometry, StageGeometry
 from ..geometry.set_geometry import TWO_CENTRAL_NAMES, planet_names
 from ..limits import MODULE_RANGE
-from ..losses import (
-    ConstantFriction,
-    DragTorque,
-    ElementLosses,
-    Lubricant,
-    PlanetBearing,
-    SchlenkFriction,
-)
+from ..losses import Lubricant
 from ..model import GearStage, PlanetarySet
 from ..text import short
+from .losses_format import LOSSES_KEYS, read_losses
 from .reader import at_key
 
 __all__ = ["GEOMETRY_KEYS", "LOSSES_KEYS", "LUBRICANT_KEYS", "module_ratio", "read_lubricant", "read_extras"]
 
 GEOMETRY_KEYS = {"module", "pressure_angle", "helix_angle", "addendum", "dedendum", "profile_shift", "face_width",
-                 "ring_module", "planets", "load_sharing", "tip_shortening"}
-_STAGE_GEOMETRY_KEYS = GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing"}
-LOSSES_KEYS = {"friction", "roughness", "bearing", "drag"}
-_STAGE_LOSSES_KEYS = LOSSES_KEYS - {"bearing"}
+                 "ring_module", "planets", "load_sharing", "tip_shortening", "internal_shift_convention",
+                 "center_distance_tolerance", "center_distance", "thickness_allowance"}
+_STAGE_GEOMETRY_KEYS = (GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing", "center_distance_tolerance",
+                                         "thickness_allowance"}) | {"idlers"}
 LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100"}  # _40/_100: mm²/s (rating)
-_BEARING_KEYS = {"bore", "type", "friction"}
-_DRAG_KEYS = {"member", "coefficients", "relative_to"}
 
 
 def _positive(reader, value: object, key: str, where: str, unit: str) -> float:
@@ -122,7 +119,7 @@ def read_extras(reader, kind: str, table: Mapping[str, Any], element, where: str
         l_where = f"{where}, table 'losses'"
         l_table = reader.table(table["losses"], l_where)
         try:
-            losses = _losses(reader, kind, l_table, element, geometry, table, lubricant, l_where)
+            losses = read_losses(reader, kind, l_table, element, geometry, table, lubricant, l_where)
         except EpicyclicError as exc:
             if _located(exc):
                 raise
@@ -180,6 +177,32 @@ def _gear_values(reader, value, names: tuple[str, ...], key: str, where: str, de
     return {name: number for name in names}
 
 
+def _convention(reader, table, where: str) -> str:
+    """``internal_shift_convention``: "iso" (default) or "khk"."""
+    value = table.get("internal_shift_convention", "iso")
+    if not isinstance(value, str) or value.strip().lower() not in ("iso", "khk"):
+        raise reader.error(at_key(where, "geometry.internal_shift_convention"),
+                           f"expected \"iso\" (ISO 21771, DIN 3960, KISSsoft, REXS: an internal gear's x < 0 "
+                           f"enlarges its tip circle) or \"khk\" (KHK / SDP-SI handbooks, the opposite sign), "
+                           f"got {short(value)}.")
+    return value.strip().lower()
+
+
+def _cd_tolerance(reader, table, where: str):
+    """``center_distance_tolerance``: ± mm or an ISO 286 js field, or None."""
+    if "center_distance_tolerance" not in table:
+        return None
+    from ..geometry.tolerances import parse_center_distance_tolerance
+
+    value = table["center_distance_tolerance"]
+    try:
+        return parse_center_distance_tolerance(value)
+    except EpicyclicError:
+        raise reader.error(at_key(where, "geometry.center_distance_tolerance"),
+                           f"expected a positive number of mm or an ISO 286 js field \"js5\" … \"js11\" "
+                           f"(DIN 3964), got {short(value)}.") from None
+
+
 def _set_geometry(reader, table, pset: PlanetarySet, element_table, where: str):
     reader.check_keys(table, GEOMETRY_KEYS, where)
     if pset.teeth is None:
@@ -217,17 +240,46 @@ def _set_geometry(reader, table, pset: PlanetarySet, element_table, where: str):
                                f"says {pset.planets}; give the number once.")
         pset = replace(pset, planets=planets)
     load_sharing = None
-    if "load_sharing" in table:
+    if isinstance(table.get("load_sharing"), str):
+        from ..geometry.load_sharing import MOUNTINGS
+
+        load_sharing = table["load_sharing"]
+        if load_sharing not in MOUNTINGS:
+            raise reader.error(at_key(where, "geometry.load_sharing"),
+                               f"expected K_gamma >= 1 or a mounting for the tabulated value "
+                               f"({', '.join(repr(m) for m in MOUNTINGS)}), got {short(load_sharing)}.")
+    elif "load_sharing" in table:
         load_sharing = reader.number(table["load_sharing"], "geometry.load_sharing", where)
         if load_sharing < 1.0:
             raise reader.error(at_key(where, "geometry.load_sharing"),
                                f"expected K_gamma >= 1 (1 = equal sharing), "
                                f"got {short(table['load_sharing'])}.")
-    tip = reader.boolean(table, "tip_shortening", where, True)
+    if isinstance(table.get("tip_shortening"), dict):
+        tip = _gear_values(reader, table["tip_shortening"], user, "tip_shortening", where, 0.0)
+        tip = {back[k]: v for k, v in tip.items()}
+        for name, k in tip.items():
+            if k < 0:
+                raise reader.error(at_key(where, "geometry.tip_shortening"),
+                                   f"expected a tip-shortening coefficient k >= 0 for {name}, got {short(k)}.")
+    else:
+        tip = reader.boolean(table, "tip_shortening", where, True)
+    center = None
+    if "center_distance" in table:
+        center = _positive(reader, table["center_distance"], "geometry.center_distance", where, "mm")
+    allowance = None
+    if "thickness_allowance" in table:
+        allowance = _gear_values(reader, table["thickness_allowance"], user, "thickness_allowance", where, 0.0)
+        allowance = {back[k]: v for k, v in allowance.items()}
+        for name, a in allowance.items():
+            if not -rack.module <= a <= 0:
+                raise reader.error(at_key(where, "geometry.thickness_allowance"),
+                                   f"expected a tooth-thickness allowance A_sn in [-m_n, 0] mm for {name} "
+                                   f"(negative: thinner teeth, backlash), got {short(a)}.")
     planet_shifts = tuple(shifts[n] for n in names[1:-1])
     geometry = SetGeometry(pset, rack, shifts["sun"], shifts["ring"],
                            planet_shifts if len(planet_shifts) > 1 else planet_shifts[0], ring_module, tip,
-                           widths, load_sharing)
+                           widths, load_sharing, _convention(reader, table, where),
+                           _cd_tolerance(reader, table, where), center, allowance)
     return pset, geometry
 
 
@@ -238,6 +290,12 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
     count = len(stage.meshes)
     per_mesh = any(isinstance(table.get(k), list) for k in ("module", "pressure_angle", "helix_angle", "addendum",
                                                              "dedendum"))
+    for key in ("module", "pressure_angle", "helix_angle", "addendum", "dedendum"):
+        value = table.get(key)
+        if isinstance(value, list) and len(value) != count:
+            raise reader.error(at_key(where, f"geometry.{key}"),
+                               f"expected one value per mesh ({count}), got {len(value)}: "
+                               f"{'remove the extra ones' if len(value) > count else 'add the missing ones'}.")
     racks = [_rack(reader, table, where, k if per_mesh else None) for k in range(count)]
     shifts = table.get("profile_shift", [[0.0, 0.0]] * count)
     if not isinstance(shifts, list) or len(shifts) != count or not all(
@@ -253,98 +311,19 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
         widths = ([_positive(reader, v, f"geometry.face_width[{k}]", where, "mm") for k, v in enumerate(value)]
                   if isinstance(value, list) else _positive(reader, value, "geometry.face_width", where, "mm"))
     tip = reader.boolean(table, "tip_shortening", where, True)
-    return StageGeometry(stage, racks if per_mesh else racks[0], pairs, widths, tip)
-
-
-# ---------------------------------------------------------------------- losses
-def _friction(reader, table, lubricant: Lubricant | None, where: str):
-    if "friction" not in table:
-        if "roughness" in table:
-            raise reader.error(where, "key 'roughness' is for friction = \"schlenk\"; give 'friction' too.")
-        return None
-    value = table["friction"]
-    if isinstance(value, str):
-        if value.strip().lower() != "schlenk":
-            raise reader.error(at_key(where, "losses.friction"),
-                               f"expected a coefficient such as 0.05 or \"schlenk\" "
-                               f"(ISO/TR 14179-2), got {short(value)}.")
-        if lubricant is None:
-            raise reader.error(where, "friction = \"schlenk\" needs the oil: add a top-level [lubricant] table with "
-                                      "'viscosity' (mPa*s at the operating temperature).")
-        if "roughness" not in table:
-            raise reader.error(where, "friction = \"schlenk\" needs the flank roughness: add 'roughness' (R_a, um, "
-                                      "mean of both flanks), e.g. roughness = 0.4.")
-        return SchlenkFriction(lubricant, _positive(reader, table["roughness"], "losses.roughness", where, "um"))
-    if "roughness" in table:
-        raise reader.error(where, "key 'roughness' is for friction = \"schlenk\"; a given coefficient needs none.")
-    mu = reader.number(value, "losses.friction", where)
-    if not 0.0 <= mu < 1.0:
-        raise reader.error(at_key(where, "losses.friction"),
-                           f"expected a coefficient of friction in [0, 1) "
-                           f"(typically 0.03-0.08), got {short(value)}.")
-    return ConstantFriction(mu)
-
-
-def _bearing(reader, value, where: str) -> PlanetBearing:
-    b_where = f"{where}, key 'bearing'"
-    table = reader.table(value, b_where)
-    reader.check_keys(table, _BEARING_KEYS, b_where)
-    bore = _positive(reader, reader.require(table, "bore", b_where), "losses.bearing.bore", where, "mm")
-    if "type" in table and "friction" in table:
-        raise reader.error(b_where, "give the bearing 'type' or its 'friction' coefficient, not both.")
-    if "friction" in table:
-        return PlanetBearing(bore, reader.number(table["friction"], "losses.bearing.friction", where))
-    kind = table.get("type", "needle roller")
-    if not isinstance(kind, str):
-        raise reader.error(at_key(b_where, "type"),
-                           f"expected a bearing type such as \"needle roller\", got {short(kind)}.")
-    return PlanetBearing(bore, kind)
-
-
-def _drag(reader, value, where: str) -> tuple[DragTorque, ...]:
-    if isinstance(value, dict):
-        value = [value]
-    if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
-        raise reader.error(at_key(where, "losses.drag"),
-                           f"expected a table or array of tables such as "
-                           f"[{{ member = \"carrier\", coefficients = [0.0, 2e-5] }}], got {short(value)}.")
-    out = []
-    for k, term in enumerate(value):
-        d_where = f"{where}, drag[{k}]"
-        reader.check_keys(term, _DRAG_KEYS, d_where)
-        member = reader.string(term, "member", d_where)
-        coefficients = reader.require(term, "coefficients", d_where)
-        if not isinstance(coefficients, list) or not coefficients:
-            raise reader.error(at_key(d_where, "coefficients"),
-                               f"expected a list [c0, c1, c2, ...] (N*m, N*m per "
-                               f"1/min, ...), got {short(coefficients)}.")
-        numbers = [reader.number(c, f"drag[{k}].coefficients[{j}]", d_where) for j, c in enumerate(coefficients)]
-        out.append(DragTorque(member, numbers, term.get("relative_to", "housing")))
-    return tuple(out)
-
-
-def _losses(reader, kind, table, element, geometry, element_table, lubricant, where: str) -> ElementLosses:
-    reader.check_keys(table, LOSSES_KEYS if kind == "planetary" else _STAGE_LOSSES_KEYS, where)
-    friction = _friction(reader, table, lubricant, where)
-    own = ("stationary_efficiency", "mesh_efficiencies") if kind == "planetary" else ("efficiency",)
-    given = [k for k in own if k in element_table]
-    if friction is not None:
-        if given:
-            raise reader.error(where, f"key 'losses.friction' computes the mesh efficiency from the geometry; remove "
-                                      f"the element's {given[0]!r} (or the friction).")
-        if geometry is None:
-            raise reader.error(where, "key 'losses.friction' needs the gear geometry: add a 'geometry' table with "
-                                      "module and face_width.")
-        if geometry.face_width is None:
-            raise reader.error(where, "key 'losses.friction' needs the load per face width: add 'face_width' (mm) to "
-                                      "the 'geometry' table.")
-    bearing = _bearing(reader, table["bearing"], where) if "bearing" in table else None
-    if bearing is not None and geometry is None:
-        raise reader.error(where, "key 'losses.bearing' takes the bearing loads from the tooth forces: add a "
-                                  "'geometry' table.")
-    drag = _drag(reader, table["drag"], where) if "drag" in table else ()
-    if geometry is None:
-        return ElementLosses(element, (), None, 1.0, drag)
-    if kind == "planetary":
-        return ElementLosses.for_set(geometry, friction=friction, bearing=bearing, drag=drag)
-    return ElementLosses.for_stage(geometry, friction=friction, drag=drag)
+    idlers = table.get("idlers", [])
+    if not isinstance(idlers, list) or not all(isinstance(k, int) and not isinstance(k, bool) and 1 <= k < count
+                                               for k in idlers):
+        raise reader.error(at_key(where, "geometry.idlers"),
+                           f"expected a list of mesh numbers 1 … {count - 1} whose driven gear drives the next mesh "
+                           f"(one idler gear), got {short(idlers)}.")
+    center = None
+    if "center_distance" in table:
+        value = table["center_distance"]
+        center = ([_positive(reader, v, f"geometry.center_distance[{k}]", where, "mm") for k, v in enumerate(value)]
+                  if isinstance(value, list) else _positive(reader, value, "geometry.center_distance", where, "mm"))
+        if isinstance(center, list) and len(center) != count:
+            raise reader.error(at_key(where, "geometry.center_distance"),
+                               f"expected one centre distance per mesh ({count}), got {len(center)}.")
+    return StageGeometry(stage, racks if per_mesh else racks[0], pairs, widths, tip,
+                         _convention(reader, table, where), tuple(idlers), center)

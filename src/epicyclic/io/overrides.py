@@ -24,6 +24,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from ..errors import ModelError
+from ..limits import MAX_NESTING
 
 __all__ = ["OverrideError", "apply_overrides", "parse_override"]
 
@@ -52,20 +53,64 @@ def parse_override(text: str) -> tuple[tuple[str, ...], Any]:
     key, sep, raw = text.partition("=")
     if not sep or not key.strip():
         raise OverrideError(f"--set {text!r}: expected KEY=VALUE, e.g. --set {_EXAMPLE}.")
+    if any(c in text for c in "\r\n\x00"):
+        raise OverrideError(f"--set {text[:60]!r}: expected one KEY=VALUE on one line (no line breaks), "
+                            f"e.g. --set {_EXAMPLE}.")
+    not_dotted = OverrideError(f"--set {text!r}: {key.strip()!r} is not one dotted key such as "
+                               f"operating_point.speeds.sun (quote parts with dots or spaces).")
     try:
         nested = tomllib.loads(f"{key.strip()} = 0")
     except tomllib.TOMLDecodeError:
-        raise OverrideError(f"--set {text!r}: {key.strip()!r} is not a dotted key such as "
-                            f"operating_point.speeds.sun (quote parts with dots or spaces).") from None
+        raise not_dotted from None
     path: list[str] = []
     while isinstance(nested, dict):
+        if len(nested) != 1:  # e.g. 'a = 1, b' or a table header: more than one key
+            raise not_dotted
         (part, nested), = nested.items()
         path.append(part)
+    if nested != 0:
+        raise not_dotted
+    if len(path) > MAX_NESTING:
+        raise OverrideError(f"--set {text[:60]!r}…: the key has {len(path)} parts; keys nest at most {MAX_NESTING} "
+                            "levels deep, as in a train file (docs/limits.md).")
+    too_deep = OverrideError(f"--set {text[:60]!r}…: the value nests more than {MAX_NESTING} levels deep; values "
+                             "nest at most that deep, as in a train file (docs/limits.md).")
+    if _depth(raw) > MAX_NESTING:
+        raise too_deep
     try:
-        value = tomllib.loads(f"v = {raw.strip()}")["v"]
+        parsed = tomllib.loads(f"v = {raw.strip()}")
     except tomllib.TOMLDecodeError:
+        parsed = None
+    except RecursionError:  # pragma: no cover - _depth refuses such values first
+        raise too_deep from None
+    if parsed is not None and set(parsed) == {"v"}:
+        value = parsed["v"]
+    else:
         value = raw.strip()  # not a TOML value: a bare string such as 2000 rpm
     return tuple(path), value
+
+
+def _depth(raw: str) -> int:
+    """The deepest nesting of [ ] and { } in a value's text, outside quoted strings (linear scan)."""
+    depth = deepest = 0
+    quote = ""
+    escaped = False
+    for char in raw:
+        if quote:
+            if escaped:
+                escaped = False
+            elif char == "\\" and quote == '"':
+                escaped = True
+            elif char == quote:
+                quote = ""
+        elif char in "\"'":
+            quote = char
+        elif char in "[{":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif char in "]}":
+            depth = max(depth - 1, 0)
+    return deepest
 
 
 def _pick(elements: list, part: str, text: str, where: str) -> dict:

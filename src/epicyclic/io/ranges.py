@@ -75,7 +75,7 @@ def parse_tolerance(text: str, name: str = "search: --tolerance") -> float:
     raw = text.strip()
     percent = raw.endswith("%")
     try:
-        value = float(raw.rstrip("%").strip())
+        value = float((raw[:-1] if percent else raw).strip())
     except ValueError:
         raise ModelError(f"{name}: expected a relative deviation such as 3% or 0.03, got {short(text)}.") from None
     value = value / 100.0 if percent else value

@@ -20,7 +20,7 @@ Ohlendorf 1958 (H_V); ISO/TR 14179-2:2001 (μ_mZ); SKF, *Rolling bearings*, "Fri
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import Any
 
@@ -128,6 +128,14 @@ class ElementLosses:
             raise LossModelError(f"{owner}: friction must be ConstantFriction or SchlenkFriction, got {self.friction!r}.")
         if self.friction is not None and not self.meshes:
             raise LossModelError(f"{owner}: a friction model needs the meshes (give the gear geometry).")
+        without = [m.mesh.name for m in self.meshes if m.friction is None]
+        if self.friction is None and self.meshes and without:
+            raise LossModelError(f"{owner}: mesh {without[0]!r} has no friction model; give the element's "
+                                 "friction or one for every mesh.")
+        for m in self.meshes:
+            if m.friction is not None and not isinstance(m.friction, (ConstantFriction, SchlenkFriction)):
+                raise LossModelError(f"{owner}: the friction of mesh {m.mesh.name!r} must be ConstantFriction or "
+                                     f"SchlenkFriction, got {m.friction!r}.")
         eta = self.bearing_efficiency
         if isinstance(eta, bool) or not isinstance(eta, (int, float)) or not 0.0 < eta <= 1.0:
             raise LossModelError(f"{owner}: bearing_efficiency must lie in (0, 1], got {eta!r}.")
@@ -148,7 +156,8 @@ class ElementLosses:
     # ------------------------------------------------------------------ constructors
     @classmethod
     def for_set(cls, geometry: SetGeometry, *, friction: Friction | None = None,
-                bearing: PlanetBearing | None = None, drag: Sequence[DragTorque] = ()) -> ElementLosses:
+                bearing: PlanetBearing | None = None, drag: Sequence[DragTorque] = (),
+                mesh_friction: Mapping[str, Friction] | None = None) -> ElementLosses:
         """The loss model of a planetary set from its geometry (face width needed for a friction model).
 
         Parameters
@@ -161,6 +170,9 @@ class ElementLosses:
             Planet-bearing friction, as an efficiency factor of the set.
         drag : sequence of DragTorque, default ()
             Drag torques on the set's members (N·m against their relative speeds).
+        mesh_friction : mapping mesh name → friction model, optional
+            Per-mesh friction (``"sun-planet"``, ``"planet-ring"``, ...): its own μ or roughness;
+            the other meshes use ``friction``.
 
         Returns
         -------
@@ -172,13 +184,15 @@ class ElementLosses:
             An unknown friction model, a drag term on a member the set does not
             have, or a bearing efficiency outside (0, 1].
         """
-        meshes = set_meshes(geometry) if friction is not None else ()
+        meshes = _with_friction(set_meshes(geometry), mesh_friction) if (friction is not None or mesh_friction) \
+            else ()
         eta_b = bearing.efficiency(geometry) if bearing is not None else 1.0
         return cls(geometry.planetary_set, meshes, friction, eta_b, tuple(drag))
 
     @classmethod
     def for_stage(cls, geometry: StageGeometry, *, friction: Friction | None = None,
-                  drag: Sequence[DragTorque] = ()) -> ElementLosses:
+                  drag: Sequence[DragTorque] = (), mesh_friction: Mapping[str, Friction] | None = None
+                  ) -> ElementLosses:
         """The loss model of a gear stage from its geometry.
 
         Parameters
@@ -189,6 +203,8 @@ class ElementLosses:
             Mesh friction; ``None`` keeps the stage's own efficiency.
         drag : sequence of DragTorque, default ()
             Drag torques on ``first``/``second`` (N·m against their speeds).
+        mesh_friction : mapping mesh name → friction model, optional
+            Per-mesh friction by mesh name (``"mesh 1 (20/31)"``, ...).
 
         Returns
         -------
@@ -199,7 +215,8 @@ class ElementLosses:
         LossModelError
             An unknown friction model or a drag term on a member the stage does not have.
         """
-        meshes = stage_meshes(geometry) if friction is not None else ()
+        meshes = _with_friction(stage_meshes(geometry), mesh_friction) if (friction is not None or mesh_friction) \
+            else ()
         return cls(geometry.stage, meshes, friction, 1.0, tuple(drag))
 
     # ------------------------------------------------------------------ evaluation
@@ -209,7 +226,7 @@ class ElementLosses:
 
     @property
     def has_mesh_model(self) -> bool:
-        return self.friction is not None
+        return self.friction is not None or any(m.friction is not None for m in self.meshes)
 
     def _relative_port(self) -> tuple[str, str]:
         return ("sun", "carrier") if isinstance(self.element, PlanetarySet) else ("first", HOUSING)
@@ -250,7 +267,7 @@ class ElementLosses:
         shape = np.shape(relative)
         factors: dict[str, np.ndarray] = {}
         mus: tuple[np.ndarray, ...] = ()
-        if self.friction is not None:
+        if self.has_mesh_model:
             factors["mesh"], mus = meshes_efficiency(self.meshes, self.friction,
                                                      {p: np.asarray(torques[p], dtype=float) for p in self.ports
                                                       if p != HOUSING}, relative)
@@ -279,8 +296,21 @@ class ElementLosses:
             "element": self.name,
             "friction": None if self.friction is None else self.friction.label,
             "meshes": [{"mesh": m.mesh.name, "H_V": m.loss_factor, "face_width": m.face_width,
-                        "rho_C": m.curvature_radius} for m in self.meshes],
+                        "rho_C": m.curvature_radius,
+                        "friction": (m.friction or self.friction).label if (m.friction or self.friction) else None}
+                       for m in self.meshes],
             "bearing_efficiency": self.bearing_efficiency,
             "drag": [{"member": d.member, "relative_to": d.relative_to, "coefficients": list(d.coefficients)}
                      for d in self.drag],
         }
+
+
+def _with_friction(meshes: tuple[MeshLoss, ...], mesh_friction: Mapping[str, Friction] | None) -> tuple[MeshLoss, ...]:
+    """The meshes with their own friction models attached (by mesh name); an unknown name is an error."""
+    if not mesh_friction:
+        return meshes
+    names = [m.mesh.name for m in meshes]
+    unknown = [k for k in mesh_friction if k not in names]
+    if unknown:
+        raise LossModelError(f"mesh friction: no mesh {unknown[0]!r}; the meshes are {', '.join(map(repr, names))}.")
+    return tuple(replace(m, friction=mesh_friction.get(m.mesh.name)) for m in meshes)

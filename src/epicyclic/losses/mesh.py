@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -62,6 +62,9 @@ class MeshLoss:
         Ohlendorf's H_V.
     curvature_radius : float
         ρ_C, mm.
+    friction : ConstantFriction or SchlenkFriction, optional
+        This mesh's own friction model (its μ or its flanks' roughness); None takes
+        the element's.
     """
 
     mesh: MeshGeometry
@@ -71,6 +74,7 @@ class MeshLoss:
     speed_factor: float
     loss_factor: float
     curvature_radius: float
+    friction: object = None
 
     @classmethod
     def create(cls, mesh: MeshGeometry, face_width: float, force_port: str, base_radius: float, shares: int,
@@ -225,8 +229,7 @@ def stage_meshes(geometry: StageGeometry) -> tuple[MeshLoss, ...]:
         r_w = mesh.operating_pitch_diameters[0 if geometry.driving_is_gear1(index) else 1] / 2.0
         item = MeshLoss.create(mesh, geometry.mesh_face_width(index), "first", driving.base_diameter / 2, 1,
                                r_w, speed_ratio)
-        out.append(MeshLoss(item.mesh, item.face_width, item.force_port, item.force_factor * torque_ratio,
-                            item.speed_factor, item.loss_factor, item.curvature_radius))
+        out.append(replace(item, force_factor=item.force_factor * torque_ratio))
         torque_ratio *= z2 / z1
         speed_ratio *= z1 / z2
     return tuple(out)
@@ -234,11 +237,15 @@ def stage_meshes(geometry: StageGeometry) -> tuple[MeshLoss, ...]:
 
 def meshes_efficiency(meshes: tuple[MeshLoss, ...], friction, torques: Mapping[str, np.ndarray],
                       relative_speed) -> tuple[np.ndarray, tuple[np.ndarray, ...]]:
-    """η of the power path (product over the meshes) and μ per mesh, for arrays of the element's state."""
+    """η of the power path (product over the meshes) and μ per mesh, for arrays of the element's state.
+
+    A mesh with its own friction model (:attr:`MeshLoss.friction`) uses it; the others use ``friction``.
+    """
     eta = np.ones(np.shape(relative_speed))
     mus = []
     for item in meshes:
-        e, mu = item.efficiency(friction, torques[item.force_port], relative_speed)
+        e, mu = item.efficiency(item.friction if item.friction is not None else friction,
+                                torques[item.force_port], relative_speed)
         eta = eta * e
         mus.append(mu)
     return eta, tuple(mus)

@@ -37,7 +37,8 @@ import numpy as np
 from ..geometry.gear import MeshGeometry
 from .errors import LossModelError
 
-__all__ = ["addendum_contact_ratios", "tooth_loss_factor", "tooth_loss_factor_numerical", "mesh_efficiency",
+__all__ = ["addendum_contact_ratios", "tooth_loss_factor", "tooth_loss_factor_method", "tooth_loss_factor_numerical",
+           "mesh_efficiency",
            "base_helix_angle", "sliding_integral"]
 
 
@@ -97,7 +98,7 @@ def sliding_integral(eps1: float, eps2: float) -> float:
     (1 − ε_α + ε_1² + ε_2²)/2 when the pitch point lies in single contact
     (ε_1, ε_2 ≤ 1 ≤ ε_α).
     """
-    eps = eps1 + eps2
+    eps = eps1 + eps2  # ξ_C = ε_2 may lie outside [0, ε] (path beside the pitch point)
     breaks = {0.0, eps, eps2}
     k = 1.0
     while k < eps:
@@ -116,10 +117,14 @@ def tooth_loss_factor(mesh: MeshGeometry) -> float:
 
     Ohlendorf's closed form holds while the pitch point lies in single contact
     (ε_1, ε_2 ≤ 1), and is the published convention also for ε_α < 1 (helical
-    gears).  Internal meshes often have ε_2 > 1 (a long path on the ring's
-    addendum): then the pitch point lies in double contact and H_V is the exact
-    integral of the same load sharing (:func:`sliding_integral`), which joins
-    the closed form continuously at ε_2 = 1.
+    gears).  Otherwise H_V is the exact integral of the same load sharing over the
+    actual path of contact (:func:`sliding_integral`), which joins the closed form
+    continuously: where the pitch point lies in double contact (internal meshes with
+    ε_2 > 1, a long path on the ring's addendum), and where the path of contact lies
+    beside the pitch point (ε_1 < 0 or ε_2 < 0: e.g. an internal mesh whose ring tip
+    lies outside the operating pitch circle, so the ring's addendum never meets the
+    planet's flank before the pitch point) — the sliding speed then keeps one sign
+    along the path.  :func:`tooth_loss_factor_method` says which applies.
 
     Parameters
     ----------
@@ -134,7 +139,7 @@ def tooth_loss_factor(mesh: MeshGeometry) -> float:
     Raises
     ------
     LossModelError
-        The tips do not reach past the pitch point.
+        No path of contact at all (ε_α ≤ 0: the tips do not reach across the line of action).
 
     Examples
     --------
@@ -147,21 +152,47 @@ def tooth_loss_factor(mesh: MeshGeometry) -> float:
 
     References
     ----------
-    Ohlendorf 1958; Fernandes et al. 2015, Mech. Sci. 6, eqs. (1)–(2).
+    Ohlendorf 1958; Fernandes et al. 2015, Mech. Sci. 6, eqs. (1)–(2); Wimmer 2006 (H_V as the path integral).
     """
     eps1, eps2 = addendum_contact_ratios(mesh)
-    if eps1 < 0 or eps2 < 0:
+    if eps1 + eps2 <= 0.0:
         raise LossModelError(
-            f"mesh {mesh.name or '(unnamed)'}: the path of contact does not pass through the pitch point "
-            f"(addendum contact ratios {eps1:.4f}, {eps2:.4f}); Ohlendorf's H_V needs both ≥ 0. "
+            f"mesh {mesh.name or '(unnamed)'}: there is no path of contact (addendum contact ratios {eps1:.4f}, "
+            f"{eps2:.4f}, eps_alpha = {eps1 + eps2:.4f} <= 0): the tips do not reach across the line of action. "
             "Check the profile shifts and tip diameters."
         )
     u = _signed_ratio(mesh)
     z1 = mesh.gear1.teeth
     factor = math.pi * (u + 1.0) / (z1 * u * math.cos(base_helix_angle(mesh)))
-    if eps1 <= 1.0 and eps2 <= 1.0:
+    if 0.0 <= eps1 <= 1.0 and 0.0 <= eps2 <= 1.0:
         return factor * (1.0 - (eps1 + eps2) + eps1 ** 2 + eps2 ** 2)
     return factor * 2.0 * sliding_integral(eps1, eps2)
+
+
+def tooth_loss_factor_method(mesh: MeshGeometry) -> str:
+    """Which form of H_V :func:`tooth_loss_factor` uses for this mesh, in words.
+
+    Parameters
+    ----------
+    mesh : MeshGeometry
+        The mesh.
+
+    Returns
+    -------
+    str
+        ``"Ohlendorf closed form"``, ``"path integral (pitch point in double contact)"`` or
+        ``"path integral (path of contact beside the pitch point)"``.
+
+    References
+    ----------
+    Ohlendorf 1958; Wimmer 2006.
+    """
+    eps1, eps2 = addendum_contact_ratios(mesh)
+    if eps1 < 0.0 or eps2 < 0.0:
+        return "path integral (path of contact beside the pitch point)"
+    if eps1 > 1.0 or eps2 > 1.0:
+        return "path integral (pitch point in double contact)"
+    return "Ohlendorf closed form"
 
 
 def tooth_loss_factor_numerical(mesh: MeshGeometry, points: int = 400_000) -> float:

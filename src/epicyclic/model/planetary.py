@@ -23,11 +23,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..errors import ModelError, ToothCountError
-from .teeth import COAXIAL_TOLERANCE_TEETH, Teeth, check_double, check_stepped, check_teeth
+from .teeth import COAXIAL_TOLERANCE_TEETH, MAX_COAXIAL_MISMATCH_TEETH, Teeth, check_double, check_stepped, check_teeth
 from .validation import check_efficiency, check_name, check_planets, finite_float
 
 __all__ = ["PlanetarySet", "Teeth", "check_efficiency", "check_name", "check_planets", "finite_float",
-           "check_teeth", "COAXIAL_TOLERANCE_TEETH"]
+           "check_teeth", "COAXIAL_TOLERANCE_TEETH", "MAX_COAXIAL_MISMATCH_TEETH"]
 
 
 @dataclass(frozen=True)
@@ -125,8 +125,10 @@ class PlanetarySet:
         sun, ring, carrier : str
             The shafts the sun, the ring and the carrier sit on.
         z_sun, z_planet, z_ring : int
-            Tooth counts (3 … 1000).  The ring must be coaxial with the sun:
-            z_ring = z_sun + 2·z_planet, within ±2 teeth (profile shift).
+            Tooth counts (3 … 1000).  Standard gears are coaxial when
+            z_ring = z_sun + 2·z_planet; counts off by up to ±6 teeth are accepted
+            (profile shift must close the gap, :func:`~epicyclic.model.teeth.coaxial_note`;
+            with a geometry table the working centre distances decide).
         stationary_efficiency : float, optional
             η0 in (0, 1], the efficiency with the carrier held; default 1
             (lossless) unless ``mesh_efficiencies`` are given.
@@ -172,11 +174,12 @@ class PlanetarySet:
             )
         zp = check_teeth(z_planet, "z_planet", owner)
         mismatch = zr - zs - 2 * zp
-        if abs(mismatch) > COAXIAL_TOLERANCE_TEETH:
+        if abs(mismatch) > MAX_COAXIAL_MISMATCH_TEETH:
             raise ToothCountError(
                 f"{owner}: tooth counts cannot mesh coaxially: z_ring - z_sun - 2*z_planet = "
-                f"{zr} - {zs} - 2*{zp} = {mismatch}, expected 0 (at most ±{COAXIAL_TOLERANCE_TEETH} "
-                f"with profile shift). For z_sun={zs} and z_ring={zr} use "
+                f"{zr} - {zs} - 2*{zp} = {mismatch}, expected 0 (profile shift closes at most "
+                f"±{MAX_COAXIAL_MISMATCH_TEETH} teeth, centre distances {MAX_COAXIAL_MISMATCH_TEETH / 2:g} modules apart). "
+                f"For z_sun={zs} and z_ring={zr} use "
                 f"z_planet={(zr - zs) // 2}" + (" (and make z_ring - z_sun even)" if (zr - zs) % 2 else "") + "."
             )
         teeth = Teeth("simple", zs, zr, (zp,))
@@ -205,7 +208,7 @@ class PlanetarySet:
 
         The planets must be placeable: planet 1 at (z_sun + z_p1)/2, planet 2 at
         (z_ring − z_p2)/2 and their centre distance (z_p1 + z_p2)/2 (modules) must
-        close a triangle, within one module (see :func:`~epicyclic.model.teeth.check_double`).
+        close a triangle, within three modules (see :func:`~epicyclic.model.teeth.check_double`).
 
         Parameters
         ----------
@@ -315,7 +318,7 @@ class PlanetarySet:
         module_ratio : float, optional
             m_d/m_a, the module of the second mesh over that of the first.
             Given, the tooth counts are checked for coaxiality
-            (|(z_a ± z_b) − (m_d/m_a)(z_d ± z_c)| ≤ 2 max(1, m_d/m_a) teeth);
+            (|(z_a ± z_b) − (m_d/m_a)(z_d ± z_c)| ≤ 6 max(1, m_d/m_a) teeth);
             ``None`` (default) leaves coaxiality to the geometry
             (:func:`~epicyclic.geometry.check_coaxiality`).
         stationary_efficiency : float, optional
@@ -393,7 +396,7 @@ class PlanetarySet:
         ``sun`` and ``ring`` ports); ring 1 meshes planet gear ``z_planet_first``,
         ring 2 planet gear ``z_planet_second`` on the same planet shaft.  With
         equal modules (``module_ratio = 1``, default) the tooth counts must be
-        coaxial: z_1 − z_p1 = z_2 − z_p2 within ±2 teeth.
+        coaxial: z_1 − z_p1 = z_2 − z_p2 within ±6 teeth (profile shift closes it).
 
         Parameters
         ----------
@@ -406,7 +409,7 @@ class PlanetarySet:
             gear meshing ring 2 (same planet shaft), ring 2.
         module_ratio : float or None, default 1.0
             m2/m1, the module of the ring-2 mesh over that of the ring-1 mesh, for the
-            coaxiality check (z_1 − z_p1 = (m2/m1)(z_2 − z_p2) within ±2 max(1, m2/m1)
+            coaxiality check (z_1 − z_p1 = (m2/m1)(z_2 − z_p2) within ±6 max(1, m2/m1)
             teeth); ``None`` leaves coaxiality to the geometry.
         stationary_efficiency : float, optional
             η0 in (0, 1], the efficiency with the carrier held; default 1
@@ -470,7 +473,7 @@ class PlanetarySet:
         """A stepped set with two external suns, i0 = +(z_2 z_p1)/(z_1 z_p2) (Brandenberger's Bild 1).
 
         With equal modules (``module_ratio = 1``, default) the tooth counts must
-        be coaxial: z_1 + z_p1 = z_2 + z_p2 within ±2 teeth.
+        be coaxial: z_1 + z_p1 = z_2 + z_p2 within ±6 teeth (profile shift closes it).
 
         Parameters
         ----------
@@ -484,7 +487,7 @@ class PlanetarySet:
             planet gear meshing sun 2 (c, same planet shaft), sun 2 (d).
         module_ratio : float or None, default 1.0
             m2/m1, the module of the sun-2 mesh over that of the sun-1 mesh, for the
-            coaxiality check (z_1 + z_p1 = (m2/m1)(z_2 + z_p2) within ±2 max(1, m2/m1)
+            coaxiality check (z_1 + z_p1 = (m2/m1)(z_2 + z_p2) within ±6 max(1, m2/m1)
             teeth); ``None`` leaves coaxiality to the geometry.
         stationary_efficiency : float, optional
             η0 in (0, 1], the efficiency with the carrier held; default 1

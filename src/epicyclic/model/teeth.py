@@ -14,10 +14,15 @@ direction of rotation relative to the carrier, an internal mesh keeps it).
 
 Coaxiality: the planet axes of both meshes lie on one circle.  With the
 modules m1 (first mesh) and m2 (second mesh) and standard centre distances
-a = m (z_gear ± z_planet)/2 (+ external, − internal central gear), the
-tooth counts must satisfy ``|m1 (z1 ± z_b) − m2 (z2 ± z_c)| ≤ 2 max(m1, m2)``;
-a mismatch up to one module in centre distance is what profile shift can take
-(the same allowance as ±2 teeth for a simple set).
+a = m (z_gear ± z_planet)/2 (+ external, − internal central gear), standard
+(unshifted) gears need ``m1 (z1 ± z_b) = m2 (z2 ± z_c)``.  Industrial sets often
+miss this by a few teeth (``z_ring − z_sun − 2 z_planet = ±3`` and more) and are
+made coaxial by profile shift: the working centre distances of the shifted
+meshes decide (:func:`~epicyclic.geometry.check_coaxiality`).  Without geometry
+the counts are accepted up to :data:`MAX_COAXIAL_MISMATCH_TEETH` (a difference of
+the standard centre distances of three modules, more than the centre-distance
+modifications y ≈ ±1.5 of two meshes can close) and
+:func:`coaxial_mismatch` says how far they are off.
 
 References
 ----------
@@ -35,11 +40,16 @@ from typing import Literal
 from ..errors import ToothCountError
 from ..limits import MAX_TEETH, MIN_TEETH
 
-__all__ = ["Teeth", "COAXIAL_TOLERANCE_TEETH", "TWO_CENTRAL_NAMES", "check_teeth", "check_stepped", "check_double"]
+__all__ = ["Teeth", "COAXIAL_TOLERANCE_TEETH", "MAX_COAXIAL_MISMATCH_TEETH", "TWO_CENTRAL_NAMES", "check_teeth",
+           "check_stepped", "check_double", "coaxial_mismatch", "coaxial_note"]
 
-#: Largest mismatch |z_ring - z_sun - 2 z_planet| (in teeth) that profile shift
-#: can absorb in a simple set; larger ones cannot be made coaxial.
-COAXIAL_TOLERANCE_TEETH = 2
+#: Largest mismatch |z_ring - z_sun - 2 z_planet| (in teeth of the first mesh's module) accepted from tooth
+#: counts alone: the standard centre distances then differ by three modules, which two meshes' centre-distance
+#: modifications (|y| up to about 1.5 each) can still close; the geometry's working centre distances decide.
+MAX_COAXIAL_MISMATCH_TEETH = 6
+
+#: Former name of :data:`MAX_COAXIAL_MISMATCH_TEETH` (kept for callers of earlier versions).
+COAXIAL_TOLERANCE_TEETH = MAX_COAXIAL_MISMATCH_TEETH
 
 #: Names of the gears (and central ports) of a set with two suns or two rings, as its file's
 #: ``teeth`` table says them (``kind = "two_rings"`` / ``"two_suns"``), by the solver's names.
@@ -226,7 +236,7 @@ def check_stepped(teeth: Teeth, owner: str, module_ratio: float | None = 1.0, na
     first = _center(zs, zb, teeth.sun_internal)
     second = _center(zr, zc, teeth.ring_internal)
     mismatch = first - module_ratio * second
-    allowed = COAXIAL_TOLERANCE_TEETH * max(1.0, module_ratio)
+    allowed = MAX_COAXIAL_MISMATCH_TEETH * max(1.0, module_ratio)
     if abs(mismatch) > allowed + 1e-9:
         sign1 = "-" if teeth.sun_internal else "+"
         sign2 = "-" if teeth.ring_internal else "+"
@@ -245,7 +255,8 @@ def check_double(teeth: Teeth, owner: str) -> None:
 
     Planet 1's axis lies at a1 = (z_sun + z_p1)/2, planet 2's at a2 = (z_ring − z_p2)/2
     (modules), their centre distance is a12 = (z_p1 + z_p2)/2; the triangle needs
-    |a1 − a2| < a12 < a1 + a2, here allowed to miss by up to one module (profile shift).
+    |a1 − a2| < a12 < a1 + a2, here allowed to miss by up to three modules (profile shift must close it;
+    the geometry's working centre distances decide).
 
     References
     ----------
@@ -259,10 +270,89 @@ def check_double(teeth: Teeth, owner: str) -> None:
         )
     a1, a2, a12 = (zs + z1) / 2, (zr - z2) / 2, (z1 + z2) / 2
     low, high = abs(a1 - a2), a1 + a2
-    if a12 <= low - 1.0 or a12 >= high + 1.0:
+    if a12 <= low - MAX_COAXIAL_MISMATCH_TEETH / 2 or a12 >= high + MAX_COAXIAL_MISMATCH_TEETH / 2:
         raise ToothCountError(
             f"{owner}: the double planets cannot be placed: planet 1's axis lies at (z_sun + z_planet_sun)/2 = "
             f"{a1:g}, planet 2's at (z_ring - z_planet_ring)/2 = {a2:g} modules, so their centre distance "
             f"(z_planet_sun + z_planet_ring)/2 = {a12:g} must lie between {low:g} and {high:g}; "
             "change the planet tooth counts."
         )
+
+
+def coaxial_mismatch(teeth: Teeth, module_ratio: float = 1.0) -> float:
+    """How far the tooth counts are from coaxial standard gears, in teeth of the first mesh's module.
+
+    Simple set: ``z_ring − z_sun − 2 z_planet``; stepped: ``(z1 ± z_b) − (m2/m1)(z2 ± z_c)``;
+    double: the distance (in teeth, twice modules) by which the planet–planet centre distance
+    misses the open interval ``(|a1 − a2|, a1 + a2)``, 0 inside.  Twice the difference of the
+    standard centre distances in modules; profile shift must close it.
+
+    Parameters
+    ----------
+    teeth : Teeth
+        The set's tooth counts.
+    module_ratio : float, default 1.0
+        m2/m1 of a stepped set.
+
+    Returns
+    -------
+    float
+        0 for standard coaxial counts.
+
+    Examples
+    --------
+    >>> coaxial_mismatch(Teeth("simple", 21, 108, (43,)))
+    1.0
+
+    References
+    ----------
+    SDP/SI D785, eqs. (13-5), (13-6) (coaxial condition of standard gears).
+    """
+    if teeth.kind == "simple":
+        return float(teeth.ring - teeth.sun - 2 * teeth.planet[0])
+    if teeth.kind == "double":
+        a1 = (teeth.sun + teeth.planet[0]) / 2
+        a2 = (teeth.ring - teeth.planet[1]) / 2
+        a12 = (teeth.planet[0] + teeth.planet[1]) / 2
+        low, high = abs(a1 - a2), a1 + a2
+        return 2.0 * (a12 - high if a12 >= high else (a12 - low if a12 <= low else 0.0))
+    first = _center(teeth.sun, teeth.planet[0], teeth.sun_internal)
+    second = _center(teeth.ring, teeth.planet[1], teeth.ring_internal)
+    return float(first - module_ratio * second)
+
+
+def coaxial_note(teeth: Teeth, module_ratio: float = 1.0) -> str | None:
+    """A sentence on how far the counts are off coaxial standard gears and that profile shift must close it.
+
+    None when standard gears are coaxial.
+
+    Parameters
+    ----------
+    teeth : Teeth
+        The set's tooth counts.
+    module_ratio : float, default 1.0
+        m2/m1 of a stepped set.
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> print(coaxial_note(Teeth("simple", 20, 97, (37,))))
+    z_ring - z_sun - 2 z_planet = 97 - 20 - 2*37 = +3: standard gears are not coaxial (their centre distances differ by 1.5 modules); profile shift must close it: give a geometry table (module, profile_shift) and the working centre distances decide
+    """
+    mismatch = coaxial_mismatch(teeth, module_ratio)
+    if abs(mismatch) < 1e-9:
+        return None
+    if teeth.kind == "simple":
+        what = (f"z_ring - z_sun - 2 z_planet = {teeth.ring} - {teeth.sun} - 2*{teeth.planet[0]} = "
+                f"{mismatch:+g}")
+    elif teeth.kind == "double":
+        what = f"the double planets miss their triangle by {abs(mismatch) / 2:g} modules"
+    else:
+        what = f"the stepped planet's two meshes differ by {mismatch:+g} teeth (m2/m1 = {module_ratio:g})"
+    modules = abs(mismatch) / 2
+    return (f"{what}: standard gears are not coaxial (their centre distances differ by {modules:g} "
+            f"module{'' if modules == 1 else 's'}); profile shift must close it: give a geometry table (module, "
+            "profile_shift) and the working centre distances decide")

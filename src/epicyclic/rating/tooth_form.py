@@ -258,7 +258,8 @@ def internal_tooth_form(teeth: int, profile_shift: float, module: float, pressur
     teeth : int
         z (positive; the gear is internal).
     profile_shift : float
-        x (positive enlarges the tip circle, as in :class:`~epicyclic.geometry.GearGeometry`).
+        x in the ISO 21771 sign, as :class:`~epicyclic.geometry.GearGeometry` holds it (a negative x
+        enlarges an internal gear's tip and root circles).
     module : float
         m_n, mm.
     pressure_angle, helix_angle : float
@@ -293,6 +294,7 @@ def internal_tooth_form(teeth: int, profile_shift: float, module: float, pressur
     (2.3978, 'rack (basic rack)')
     """
     m, an, beta = module, pressure_angle, helix_angle
+    x = -profile_shift  # the internal-gear equations below are written in the KHK sign: x_KHK = -x_ISO
     mt = m / math.cos(beta)
     d = teeth * mt
     alpha_t = math.atan(math.tan(an) / math.cos(beta))
@@ -301,12 +303,12 @@ def internal_tooth_form(teeth: int, profile_shift: float, module: float, pressur
     else:
         if cutter.teeth >= teeth:
             raise RatingError(f"cutter: z0 = {cutter.teeth} must be smaller than the internal gear's z = {teeth}.")
-        inv_w0 = _inv(alpha_t) + 2 * math.tan(an) * (profile_shift - cutter.profile_shift) / (teeth - cutter.teeth)
+        inv_w0 = _inv(alpha_t) + 2 * math.tan(an) * (x - cutter.profile_shift) / (teeth - cutter.teeth)
         alpha_w0 = _solve_inv(inv_w0)
         a0 = mt * (teeth - cutter.teeth) / 2 * math.cos(alpha_t) / math.cos(alpha_w0)
         d_a0 = cutter.teeth * mt + 2 * m * (cutter.addendum + cutter.profile_shift)
         root = 2 * a0 + d_a0
-        h_fP = (root - d) / 2 - profile_shift * m
+        h_fP = (root - d) / 2 - x * m
         rho_fP, method = cutter.tip_radius * m, "rack (pinion-type cutter)"
     beta_b = math.asin(math.sin(beta) * math.cos(an))
     z_n = teeth / (math.cos(beta_b) ** 2 * math.cos(beta))
@@ -316,7 +318,7 @@ def internal_tooth_form(teeth: int, profile_shift: float, module: float, pressur
     eps_an = contact_ratio / math.cos(beta_b) ** 2
     roll = math.sqrt(max(0.0, (d_an / 2) ** 2 - (d_bn / 2) ** 2)) + math.pi * m * math.cos(an) * (eps_an - 1.0)
     r_en = math.sqrt(roll * roll + (d_bn / 2) ** 2)
-    depth = (r_en - d_n / 2) - profile_shift * m          # of the load point below the datum line
+    depth = (r_en - d_n / 2) - x * m          # of the load point below the datum line
     e = h_fP - depth                                       # load point above the root circle
     s_Fn = 2 * (math.pi * m / 4 + (h_fP - rho_fP) * math.tan(an) + rho_fP / math.cos(an)
                 - rho_fP * math.cos(math.pi / 6))

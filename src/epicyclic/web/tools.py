@@ -281,7 +281,9 @@ def _forces(context: Context, v: Mapping[str, Any]) -> str:
     if v["set"] != ALL and v["load_sharing"] is not None:
         chosen[v["set"]] = replace(chosen[v["set"]], load_sharing=v["load_sharing"])
     # solved with every set of the file, so that a planet the chosen set shares with another is one body
-    results = geometry_results({**_file_geometry(context), **chosen}, context.solution)
+    # the file's loss models belong to the file's geometry: the mesh-loss table only for it, as `epicyclic forces`
+    losses = context.train_file.losses if v["set"] == ALL else None
+    results = geometry_results({**_file_geometry(context), **chosen}, context.solution, losses=losses)
     results = tuple(r for r in results if r.name in chosen)
     check_finite(geometry_dict(results), context.train_file.source, "forces")
     results = tuple(replace(r, fitting=None) for r in results)  # the forces only, as `epicyclic forces -f html`
@@ -408,7 +410,7 @@ _GEOMETRY = (
     Field("helix_angle", "helix angle [°]", "0", low=0, high=45, per_set=True),
     Field("x_sun", "profile shift sun", "0", low=-1.5, high=1.5, per_set=True),
     Field("x_planet", "profile shift planet(s)", "0", kind="numbers", low=-1.5, high=1.5, per_set=True),
-    Field("x_ring", "profile shift ring", "0", low=-1.5, high=1.5, per_set=True),
+    Field("x_ring", "profile shift ring (ISO 21771 sign)", "0", low=-1.5, high=1.5, per_set=True),
 )
 
 TOOLS: dict[str, Tool] = {t.name: t for t in (
