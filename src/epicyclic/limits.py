@@ -63,6 +63,8 @@ __all__ = [
     "MAX_SYNTHESIS_SETS",
     "MAX_SYNTHESIS_ELEMENTS",
     "MAX_SYNTHESIS_GEARS",
+    "MAX_SYNTHESIS_WORKERS",
+    "MAX_SYNTHESIS_ARCHITECTURES",
     "MAX_MAP_POINTS",
     "MAX_MAP_VALUES",
     "check_range",
@@ -149,6 +151,11 @@ MAX_SYNTHESIS_SETS = 4
 MAX_SYNTHESIS_ELEMENTS = 8
 #: Most target ratios (forward and reverse) of a synthesis.
 MAX_SYNTHESIS_GEARS = 16
+#: Most local Dask workers of a synthesis (``--workers``; a cluster of more is reached with ``--scheduler``).
+MAX_SYNTHESIS_WORKERS = 256
+#: Default bound on the architectures one synthesis screens (``[search] max_architectures``): about three
+#: worker-hours at the measured 10^6 per second per worker (docs/performance.md).
+MAX_SYNTHESIS_ARCHITECTURES = 10**10
 
 
 class LimitError(EpicyclicError, ValueError):

@@ -681,6 +681,25 @@ CORPUS: list[Bad] = [
         usage=True),
     Bad("synthesize: --out-dir is a file", "synthesize", SYNTH, "not a folder", ("{file}", "--out-dir", "{file}")),
     Bad("synthesize: --workers 0", "synthesize", SYNTH, "--workers", ("{file}", "--workers", "0"), usage=True),
+    # issue 22, found as a hostile user: these ran (or overflowed, exit 1) before
+    Bad("synthesize: 80 gears with a progression", "synthesize",
+        sub("forward = [2.46, 1.46, 1.0]", "spread = 7.0\ngears = 80\nfirst = 4.7\nprogression = 1.1", SYNTH),
+        "[targets], key 'gears': expected at most 16"),
+    Bad("synthesize: a billion gears", "synthesize",
+        sub("forward = [2.46, 1.46, 1.0]", "spread = 7.0\ngears = 1000000000\nfirst = 4.7", SYNTH),
+        "[targets], key 'gears': expected at most 16"),
+    Bad("synthesize: progression 1e-10", "synthesize",
+        sub("forward = [2.46, 1.46, 1.0]", "spread = 7.0\ngears = 8\nfirst = 4.7\nprogression = 1e-10", SYNTH),
+        "[targets], key 'progression': with spread 7 and 8 gears the progression must lie in"),
+    Bad("synthesize: duplicated engaged", "synthesize", sub("clutches = 2", "clutches = 2\nengaged = [2, 2]", SYNTH),
+        "[elements], key 'engaged': 2 is listed twice"),
+    Bad("synthesize: 4 sets, 8 elements, 9 ratios", "synthesize",
+        sub("simple = 2", "simple = 4", sub("clutches = 2", "clutches = 6", sub(
+            "forward = [2.46, 1.46, 1.0]", "forward = [4.7, 3.1, 2.1, 1.7, 1.3, 1.0, 0.84, 0.67]", SYNTH))),
+        "[search], key 'max_architectures'"),
+    Bad("synthesize: --workers 1000", "synthesize", SYNTH, "--workers", ("{file}", "--workers", "1000"), usage=True),
+    Bad("synthesize: spec named candidate_01.toml in --out-dir", "synthesize", named("candidate_01.toml", SYNTH),
+        "--out-dir", ("{file}", "--out-dir", "{tmp}")),
 ]
 
 IDS = [case.id for case in CORPUS]

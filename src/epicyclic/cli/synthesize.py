@@ -11,11 +11,13 @@ table, ``--plot`` the speed chart across gears (or lever diagram) of the best ca
 from __future__ import annotations
 
 import sys
+import time
 from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
 
+from ..limits import MAX_SYNTHESIS_WORKERS
 from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
 
 __all__ = ["synthesize"]
@@ -24,14 +26,16 @@ __all__ = ["synthesize"]
 def _progress(quiet: bool):
     if quiet:
         return None
-    state = {"last": -1}
+    state = {"last": -1, "start": time.monotonic()}
 
     def report(done: int, total: int) -> None:
         percent = 100 * done // max(total, 1)
+        elapsed = time.monotonic() - state["start"]
+        eta = f", about {elapsed / done * (total - done):.0f} s left" if 0 < done < total else ""
         if sys.stderr.isatty():
-            typer.echo(f"\rsynthesize: {done}/{total} tasks ({percent} %)", err=True, nl=done == total)
+            typer.echo(f"\rsynthesize: {done}/{total} tasks ({percent} %){eta}   ", err=True, nl=done == total)
         elif percent // 10 != state["last"] // 10 or done == total:
-            typer.echo(f"synthesize: {done}/{total} tasks ({percent} %)", err=True)
+            typer.echo(f"synthesize: {done}/{total} tasks ({percent} %){eta}", err=True)
         state["last"] = percent
 
     return report
@@ -45,8 +49,9 @@ def synthesize(
     out: OutOption = None,
     scheduler: Annotated[Optional[str], typer.Option("--scheduler", help="Address of a running Dask scheduler "
                                                       "(tcp://host:8786); default: a local cluster.")] = None,
-    workers: Annotated[Optional[int], typer.Option("--workers", min=1, help="Workers of the local cluster "
-                                                    "(default: CPU count).")] = None,
+    workers: Annotated[Optional[int], typer.Option("--workers", min=1, max=MAX_SYNTHESIS_WORKERS,
+                                                    help="Workers of the local cluster (default: CPU count; a "
+                                                         "bigger cluster: --scheduler).")] = None,
     top: Annotated[Optional[int], typer.Option("--top", min=1, help="Candidates to show and write "
                                                 "(default: the spec's search.top).")] = None,
     out_dir: Annotated[Optional[Path], typer.Option("--out-dir", help="Write candidate_NN.toml per shown "
@@ -56,8 +61,9 @@ def synthesize(
                                                   "candidate (.png, .svg or .pdf).")] = None,
     plot_kind: Annotated[str, typer.Option("--plot-kind", help="chart (speed chart across gears) or lever "
                                             "(lever diagram in the first gear).")] = "chart",
-    threads: Annotated[bool, typer.Option("--threads", help="Local cluster of threads in this process "
-                                           "instead of worker processes.")] = False,
+    processes: Annotated[Optional[bool], typer.Option("--processes/--threads", help="Local workers as "
+                                                       "processes or as threads of this process (default: threads "
+                                                       "for a small search, processes for a big one).")] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress on stderr.")] = False,
 ) -> None:
     """Search planetary transmissions (ties, shift elements, schedule, teeth) that give the target ratios."""
@@ -87,8 +93,11 @@ def synthesize(
     parsed = SynthesisSpec.from_file(spec)
     if top:
         parsed = replace(parsed, top=top)
-    result = synthesize_spec(parsed, scheduler=scheduler, workers=workers, processes=not threads,
-                             progress=_progress(quiet))
+    if out_dir is not None:  # no candidate file may replace the specification (or any other input)
+        for k in range(1, parsed.top + 1):
+            refuse_input(out_dir / f"candidate_{k:02d}.toml", [spec], "--out-dir")
+    result = synthesize_spec(parsed, scheduler=scheduler, workers=workers, processes=processes,
+                             progress=_progress(quiet), announce=lambda text: typer.echo(text, err=True))
     if out_dir is not None:
         paths = result.write_toml(out_dir)
         typer.echo(f"wrote {len(paths)} candidate file(s) to {out_dir.resolve()}", err=True)

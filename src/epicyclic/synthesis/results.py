@@ -67,9 +67,13 @@ class SynthesisResult:
 
     def _footer(self) -> str:
         s = self.stats
-        return (f"{s['candidates']} candidates from {s['architectures']:,} architectures on {s['mechanisms']:,} "
-                f"mechanisms ({s['screened']:,} passed screening, {s['fitted']:,} fitted); {s['tasks']} Dask tasks "
+        text = (f"{s['candidates']} candidates from {s['architectures']:,} architectures on {s['mechanisms']:,} "
+                f"mechanisms ({s['screened']:,} passed screening, {s['fitted']:,} fitted); {s['tasks']} tasks "
                 f"on {s['workers']} worker(s), {s['seconds']:.1f} s")
+        if not s.get("complete", True):
+            text += (f". INCOMPLETE: stopped at the time limit ({self.spec.time_limit:g} s) after "
+                     f"{s['tasks_done']} of {s['tasks']} tasks; raise [search] time_limit for the whole space")
+        return text
 
     def table(self) -> str:
         """Text table of the top candidates and their schedules."""
