@@ -82,11 +82,13 @@ def main_is_guarded() -> bool:
     path = getattr(main, "__file__", None)
     if main is None or path is None:
         return True  # interactive, notebook, -c: nothing is imported again
-    frame = sys._getframe(1)
-    while frame is not None and not (frame.f_globals is vars(main) and frame.f_code.co_name == "<module>"):
-        frame = frame.f_back
+    frame = _module_frame(sys._getframe(1), main)
+    if frame is None:  # called from another thread: is the main thread still running the script's body?
+        import threading
+
+        frame = _module_frame(sys._current_frames().get(threading.main_thread().ident), main)
     if frame is None:
-        return True  # the main module has finished running (called later, e.g. from a server or a callback)
+        return True  # the main module has finished running (called later, e.g. from a callback)
     try:
         with open(path, encoding="utf-8") as handle:
             tree = ast.parse(handle.read())
@@ -98,6 +100,13 @@ def main_is_guarded() -> bool:
             if node.body[0].lineno <= line <= (node.body[-1].end_lineno or node.body[-1].lineno):
                 return True
     return False
+
+
+def _module_frame(frame: Any, main: Any) -> Any:
+    """The frame running the main module's body on this stack, or None."""
+    while frame is not None and not (frame.f_globals is vars(main) and frame.f_code.co_name == "<module>"):
+        frame = frame.f_back
+    return frame
 
 
 def _is_main_test(test: ast.expr) -> bool:
