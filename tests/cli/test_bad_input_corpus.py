@@ -697,6 +697,10 @@ CORPUS: list[Bad] = [
         sub("simple = 2", "simple = 4", sub("clutches = 2", "clutches = 6", sub(
             "forward = [2.46, 1.46, 1.0]", "forward = [4.7, 3.1, 2.1, 1.7, 1.3, 1.0, 0.84, 0.67]", SYNTH))),
         "[search], key 'max_architectures'"),
+    Bad("synthesize: unknown ranking criterion", "synthesize", SYNTH + "[ranking]\nplanet_sped = 2\n",
+        "[ranking], key 'planet_sped': unknown criterion"),
+    Bad("synthesize: negative ranking weight", "synthesize", SYNTH + "[ranking]\ncirculating_power = -1\n",
+        "[ranking], key 'circulating_power': a weight is a finite number >= 0"),
     Bad("synthesize: --workers 1000", "synthesize", SYNTH, "--workers", ("{file}", "--workers", "1000"), usage=True),
     Bad("synthesize: spec named candidate_01.toml in --out-dir", "synthesize", named("candidate_01.toml", SYNTH),
         "--out-dir", ("{file}", "--out-dir", "{tmp}")),

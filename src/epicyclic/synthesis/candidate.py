@@ -17,7 +17,6 @@ Naunheimer et al. 2011, section 6.2 (ratio steps).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -342,6 +341,10 @@ def evaluate(candidate: Candidate) -> Candidate:
     * ``efficiency`` per gear in drive, ``efficiency_mean`` over forward gears,
       ``efficiency_min`` (None where a gear self-locks);
     * ``element_torque_max``: largest torque on an engaged clutch or brake, × T_in;
+    * ``element_capacity``: sum over the elements of each one's largest torque, × T_in;
+    * ``slip_speed_max``: largest slip of an open element in a forward gear, × n_in;
+    * ``circulating_power_max``: largest power circulating in a loop, any gear, × P_in
+      (``circulation_indeterminate``: gears where the torque split is statically indeterminate);
     * ``planet_speed_max``: largest |n_planet − n_carrier|, × n_in;
     * ``double_shifts``: consecutive forward gears that change more than one element;
     * ``step_irregularity``: largest change of log step between neighbouring steps;
@@ -351,6 +354,14 @@ def evaluate(candidate: Candidate) -> Candidate:
     analysis = t.analyze_all()
     eff = {g.gear: g.efficiency_drive for g in analysis.gears}
     torque = max((abs(v) for g in analysis.gears for v in g.element_torques.values()), default=0.0)
+    capacity: dict[str, float] = {}  # each element's largest torque over the gears
+    for g in analysis.gears:
+        for name, v in g.element_torques.items():
+            capacity[name] = max(capacity.get(name, 0.0), abs(v))
+    forward_gears = analysis.gears[:candidate.forward]
+    slip = max((abs(v) for g in forward_gears for v in g.slip_speeds.values()), default=0.0)
+    circulating = [g.circulating_power_ratio for g in analysis.gears]
+    indeterminate = [g.gear for g, c in zip(analysis.gears, circulating) if c is None]
     planet = 0.0
     sets = [e for e in t.train.planetary_sets]
     for g in analysis.gears:
@@ -374,6 +385,10 @@ def evaluate(candidate: Candidate) -> Candidate:
         "efficiency_mean": float(np.mean(defined)) if defined else None,
         "efficiency_min": float(min(defined)) if len(defined) == len(forward_eff) else None,
         "element_torque_max": float(torque),
+        "element_capacity": float(sum(capacity.values())),
+        "slip_speed_max": float(slip),
+        "circulating_power_max": float(max((c for c in circulating if c is not None), default=0.0)),
+        "circulation_indeterminate": indeterminate,
         "planet_speed_max": float(planet),
         "double_shifts": int(doubles),
         "step_irregularity": irregular,
@@ -381,14 +396,3 @@ def evaluate(candidate: Candidate) -> Candidate:
         "ratio_error": float(max(abs(r / g - 1) for r, g in zip(candidate.ratios, candidate.targets))),
     }
     return replace(candidate, metrics=metrics)
-
-
-def rank_key(candidate: Candidate) -> tuple:
-    """Ranking: fewest double shifts, then highest mean drive efficiency (0.1 % steps), lowest
-    shift-element torque (0.5 × T_in steps), lowest planet speed (0.5 × n_in steps), fewest
-    shafts, smoothest steps."""
-    m = candidate.metrics
-    eff = m.get("efficiency_mean")
-    return (m.get("double_shifts", 99), -(math.floor(eff * 1000) if eff is not None else -1),
-            round(m.get("element_torque_max", math.inf) * 2), round(m.get("planet_speed_max", math.inf) * 2),
-            m.get("shafts", 99), round(m.get("step_irregularity", math.inf), 3))

@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from .candidate import Candidate, evaluate, rank_key
+from .candidate import Candidate, evaluate
 from .fitting import combinations_of_elements, fit_ratios
 from .mechanisms import Mechanism, enumerate_mechanisms
 from .screening import _grid, layout, screen
@@ -189,6 +189,7 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
 
     from .distributed import check_workers, run_tasks, use_processes
     from .estimate import check, count, estimate
+    from .ranking import rank
     from .results import SynthesisResult
 
     say = (lambda text: print(text, file=sys.stderr)) if announce is True else (announce or (lambda text: None))
@@ -216,7 +217,7 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
     for r in finished:
         for c in r.candidates:
             unique.setdefault(c.key, c)
-    ranked = sorted(unique.values(), key=rank_key)
+    ranked, standings = rank(list(unique.values()), dict(spec.weights), spec.module)
     stats = {
         "tasks": len(tasks), "tasks_done": len(finished), "complete": len(finished) == len(tasks),
         "workers": used, "processes": with_processes,
@@ -232,7 +233,7 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
         "estimate": first.to_dict(), "bound": size.to_dict(),
         "seconds": time.perf_counter() - start,
     }
-    return SynthesisResult(spec, tuple(ranked), stats)
+    return SynthesisResult(spec, ranked, stats, standings)
 
 
 def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping[str, int] = 2,

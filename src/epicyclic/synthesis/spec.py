@@ -31,6 +31,10 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     top = 20
     max_architectures = 1e10    # refuse a larger search before it starts (estimate printed first)
     time_limit = 3600           # s of wall time; the search stops there and says it is incomplete
+    [ranking]                   # weights of the criteria (epicyclic.synthesis.ranking), 0 leaves one out
+    circulating_power = 2.0
+    double_shifts = 10.0
+    module = 2.0                # mm, for the ring diameters
 
 Every problem raises :class:`SynthesisError` naming the file (or ``synthesize``
 for the Python call), the key and the fix, as every file error does:
@@ -193,6 +197,10 @@ class SynthesisSpec:
         Bound on the architectures screened; a larger search is refused before it starts.
     time_limit : float or None
         Wall-time bound, s: the search stops there and its result says it is incomplete.
+    weights : tuple of (str, float)
+        Ranking weights given (the others keep the defaults of :data:`~epicyclic.synthesis.ranking.CRITERIA`).
+    module : float
+        Module of every set, mm, for the ring diameters of the ranking.
     title : str
     source : str
         The file read, or ``synthesize`` (the Python call): first in the messages of the search.
@@ -219,6 +227,8 @@ class SynthesisSpec:
     top: int = 20
     max_architectures: int = MAX_SYNTHESIS_ARCHITECTURES
     time_limit: float | None = None
+    weights: tuple[tuple[str, float], ...] = ()
+    module: float = 2.0
     title: str = "synthesis"
     source: str = field(default="synthesize", compare=False)
 
@@ -378,7 +388,7 @@ class SynthesisSpec:
     def _with_constraints(cls, kw: dict[str, Any], cons: dict[str, Any], place: _Place) -> SynthesisSpec:
         allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "max_members_per_shaft",
                    "free_input", "input_members", "output_members", "levels", "stationary_efficiency", "top",
-                   "max_architectures", "time_limit", "title"}
+                   "max_architectures", "time_limit", "weights", "module", "title"}
         unknown = set(cons) - allowed
         if unknown:
             name = sorted(unknown)[0]
@@ -441,6 +451,20 @@ class SynthesisSpec:
             if not 0 < limit <= 30 * 86400:
                 raise bad("time_limit", f"expected seconds in (0, 2592000] (30 days), got {limit!r}.")
             kw["time_limit"] = limit
+        if "weights" in cons:
+            from .ranking import check_weights
+
+            given = cons["weights"]
+            if not isinstance(given, Mapping):
+                raise bad("weights", f"expected a table of criterion = weight, got {short(given)}.")
+            check_weights(given, lambda name, message: bad(name if place.tables is not None else f"weights.{name}",
+                                                           message))
+            kw["weights"] = tuple((str(k), float(v)) for k, v in given.items())
+        if "module" in cons:
+            module = _number(cons["module"], place, "constraints", "module")
+            if not 0.1 <= module <= 50:
+                raise bad("module", f"expected a module in mm within [0.1, 50], got {module!r}.")
+            kw["module"] = module
         if "title" in cons:
             kw["title"] = str(cons["title"])
         return cls(**kw, source=place.source)
@@ -462,18 +486,23 @@ class SynthesisSpec:
             data = parse_toml(read_source(path), str(path))
         except InputFileError as exc:
             raise SynthesisError(str(exc)) from None
-        unknown = set(data) - {"title", "targets", "sets", "elements", "bounds", "search"}
+        unknown = set(data) - {"title", "targets", "sets", "elements", "bounds", "search", "ranking"}
         if unknown:
             raise SynthesisError(f"{path}: unknown table(s)/key(s) {', '.join(sorted(map(short, unknown)))}; "
-                                 "use title, [targets], [sets], [elements], [bounds], [search].")
-        for table in ("targets", "sets", "elements", "bounds", "search"):
+                                 "use title, [targets], [sets], [elements], [bounds], [search], [ranking].")
+        for table in ("targets", "sets", "elements", "bounds", "search", "ranking"):
             if table in data and not isinstance(data[table], Mapping):
                 raise SynthesisError(f"{path}: key {table!r}: expected a table [{table}], got {short(data[table])}.")
         if "targets" not in data:
             raise SynthesisError(f"{path}: missing [targets] table (forward = [...], reverse = [...]).")
-        bounds, search = data.get("bounds", {}), data.get("search", {})
+        bounds, search, ranking = data.get("bounds", {}), data.get("search", {}), dict(data.get("ranking", {}))
         cons = {**bounds, **search}
         tables = {"tolerance": "targets", **{k: "bounds" for k in bounds}, **{k: "search" for k in search}}
+        if "module" in ranking:
+            cons["module"] = ranking.pop("module")
+        if ranking:
+            cons["weights"] = ranking
+        tables.update({k: "ranking" for k in ("module", "weights", *ranking)})
         if "title" in data:
             cons["title"] = data["title"]
         return cls.create(data["targets"], data.get("sets", {"simple": 2}), data.get("elements"), cons,
