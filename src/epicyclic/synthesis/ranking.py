@@ -38,8 +38,9 @@ ring_balance
     Largest over smallest ring diameter, − 1 (packaging: sets of one size share
     a housing diameter).
 ring_diameter
-    Largest ring pitch diameter m·z_ring (ISO 21771), mm, at the module given
-    (``[ranking] module``) or from a sizing function (see :func:`rank`).
+    Largest ring pitch diameter m·z_ring (ISO 21771), mm, with the module of each
+    set from its torque (:mod:`~epicyclic.synthesis.sizing`), else the module given
+    (``[ranking] module``), or from a sizing function (see :func:`rank`).
 step_irregularity
     Largest change of the logarithmic ratio step between neighbouring steps
     (Naunheimer et al. 2011, section 6.2: steps that fall smoothly, geometric or
@@ -138,7 +139,11 @@ def criterion_values(candidate: Any, module: float, diameters: Callable[[Any], S
     """
     m = candidate.metrics
     eff = m.get("efficiency_mean")
-    rings = list(diameters(candidate)) if diameters is not None else [module * t.z_ring for t in candidate.teeth]
+    if diameters is not None:
+        rings = list(diameters(candidate))
+    else:  # the sized module of each set, else the given one
+        sizes = getattr(candidate, "sizes", ()) or (None,) * len(candidate.teeth)
+        rings = [(z.module if z is not None else module) * t.z_ring for t, z in zip(candidate.teeth, sizes)]
     return {
         "loss_mean": 1.0 - eff if eff is not None else math.inf,
         "circulating_power": m.get("circulating_power_max", 0.0),

@@ -131,7 +131,7 @@ def search_task(task: Task) -> TaskResult:
                              tuple(tuple(int(e) for e in combos[j]) for j in fit.schedule), teeth,
                              tuple(float(r) for r in ratios), tuple(float(t) for t in targets), forward.size,
                              spec.stationary_efficiency)
-            out.append(evaluate(cand))
+            out.append(evaluate(cand, spec.input_torque, spec.allowable_stress, spec.face_width_factor))
     return TaskResult(tuple(out), len(task.mechanisms), examined, screened, fitted, time.perf_counter() - start,
                       rejected, time.process_time() - cpu)
 

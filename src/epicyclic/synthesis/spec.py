@@ -34,7 +34,10 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     [ranking]                   # weights of the criteria (epicyclic.synthesis.ranking), 0 leaves one out
     circulating_power = 2.0
     double_shifts = 10.0
-    module = 2.0                # mm, for the ring diameters
+    [sizing]                    # module and face width of every set (epicyclic.synthesis.sizing)
+    input_torque = 300.0        # N·m
+    allowable_stress = 200.0    # MPa, Lewis bending
+    face_width_factor = 10.0    # b / m
 
 Every problem raises :class:`SynthesisError` naming the file (or ``synthesize``
 for the Python call), the key and the fix, as every file error does:
@@ -200,7 +203,9 @@ class SynthesisSpec:
     weights : tuple of (str, float)
         Ranking weights given (the others keep the defaults of :data:`~epicyclic.synthesis.ranking.CRITERIA`).
     module : float
-        Module of every set, mm, for the ring diameters of the ranking.
+        Module of every set, mm, for the ring diameters of the ranking where no set is sized.
+    input_torque, allowable_stress, face_width_factor : float
+        N·m, MPa and b/m of the pre-dimensioning of every set (:mod:`~epicyclic.synthesis.sizing`).
     title : str
     source : str
         The file read, or ``synthesize`` (the Python call): first in the messages of the search.
@@ -229,6 +234,9 @@ class SynthesisSpec:
     time_limit: float | None = None
     weights: tuple[tuple[str, float], ...] = ()
     module: float = 2.0
+    input_torque: float = 300.0
+    allowable_stress: float = 200.0
+    face_width_factor: float = 10.0
     title: str = "synthesis"
     source: str = field(default="synthesize", compare=False)
 
@@ -388,7 +396,8 @@ class SynthesisSpec:
     def _with_constraints(cls, kw: dict[str, Any], cons: dict[str, Any], place: _Place) -> SynthesisSpec:
         allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "max_members_per_shaft",
                    "free_input", "input_members", "output_members", "levels", "stationary_efficiency", "top",
-                   "max_architectures", "time_limit", "weights", "module", "title"}
+                   "max_architectures", "time_limit", "weights", "module", "input_torque", "allowable_stress",
+                   "face_width_factor", "title"}
         unknown = set(cons) - allowed
         if unknown:
             name = sorted(unknown)[0]
@@ -465,6 +474,13 @@ class SynthesisSpec:
             if not 0.1 <= module <= 50:
                 raise bad("module", f"expected a module in mm within [0.1, 50], got {module!r}.")
             kw["module"] = module
+        for key, low, high, unit in (("input_torque", 1e-3, 1e6, "N·m"), ("allowable_stress", 10.0, 3000.0, "MPa"),
+                                     ("face_width_factor", 2.0, 40.0, "(b/m)")):
+            if key in cons:
+                value = _number(cons[key], place, "constraints", key)
+                if not low <= value <= high:
+                    raise bad(key, f"expected {low:g} … {high:g} {unit}, got {value!r}.")
+                kw[key] = value
         if "title" in cons:
             kw["title"] = str(cons["title"])
         return cls(**kw, source=place.source)
@@ -486,11 +502,12 @@ class SynthesisSpec:
             data = parse_toml(read_source(path), str(path))
         except InputFileError as exc:
             raise SynthesisError(str(exc)) from None
-        unknown = set(data) - {"title", "targets", "sets", "elements", "bounds", "search", "ranking"}
+        tables_known = ("targets", "sets", "elements", "bounds", "search", "ranking", "sizing")
+        unknown = set(data) - {"title", *tables_known}
         if unknown:
             raise SynthesisError(f"{path}: unknown table(s)/key(s) {', '.join(sorted(map(short, unknown)))}; "
-                                 "use title, [targets], [sets], [elements], [bounds], [search], [ranking].")
-        for table in ("targets", "sets", "elements", "bounds", "search", "ranking"):
+                                 "use title, [targets], [sets], [elements], [bounds], [search], [ranking], [sizing].")
+        for table in tables_known:
             if table in data and not isinstance(data[table], Mapping):
                 raise SynthesisError(f"{path}: key {table!r}: expected a table [{table}], got {short(data[table])}.")
         if "targets" not in data:
@@ -503,6 +520,13 @@ class SynthesisSpec:
         if ranking:
             cons["weights"] = ranking
         tables.update({k: "ranking" for k in ("module", "weights", *ranking)})
+        sizing = data.get("sizing", {})
+        for key, value in sizing.items():
+            if key not in ("input_torque", "allowable_stress", "face_width_factor"):
+                raise SynthesisError(f"{path}: [sizing], key {key!r}: unknown; use input_torque, allowable_stress, "
+                                     "face_width_factor.")
+            cons[key] = value
+            tables[key] = "sizing"
         if "title" in data:
             cons["title"] = data["title"]
         return cls.create(data["targets"], data.get("sets", {"simple": 2}), data.get("elements"), cons,
