@@ -13,7 +13,11 @@
    output, every split into brakes (at least one) and clutches, 2, 3 or 4 engaged per gear): its size, counted
    exactly, and the time to screen it at the measured throughput on N workers.
 
-Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms]
+4. The exact shortcuts of the screening (multilinear interpolation of the determinants inside the
+   box, block pruning) against the reference on the same sample: CPU seconds, same placements
+   asserted, peak memory.
+
+Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms] [shortcuts]
 """
 
 from __future__ import annotations
@@ -110,6 +114,36 @@ def throughput(sample: int) -> float:
     return rate
 
 
+def shortcuts(sample: int) -> None:
+    """The exact shortcuts (multilinear interpolation inside the box, block pruning) against the reference
+    screening, 3 bisection levels, CPU seconds (the machine is shared: wall time measures the load); both
+    must keep the same placements."""
+    import resource
+
+    mechs = enumerate_mechanisms(("simple",) * 4, 4, max_members_per_shaft=2)
+    rng = np.random.default_rng(0)
+    chosen = [mechs[i] for i in sorted(rng.choice(len(mechs), size=min(sample, len(mechs)), replace=False))]
+    lay = layout(8, 2, 3, 3)
+    screen(chosen[0], lay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=0)  # warm-up
+    results, cpu = {}, {}
+    for fast in (False, True):
+        start = time.process_time()
+        out, examined = [], 0
+        for m in chosen:
+            placements, n = screen(m, lay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=3, interpolate=fast,
+                                   prune=fast)
+            out.append(placements)
+            examined += n
+        cpu[fast], results[fast] = time.process_time() - start, out
+        print(f"{'shortcuts' if fast else 'reference'} screening, 3 levels    {examined / cpu[fast]:>12,.0f} "
+              f"architectures per CPU s ({cpu[fast]:.2f} s, {sum(map(len, out))} placements kept)")
+    print(f"speed-up of the exact shortcuts    {cpu[False] / cpu[True]:>12.2f} x; same placements: "
+          f"{results[False] == results[True]}")
+    print(f"peak memory of this process        {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:>12.0f} MiB")
+    if results[False] != results[True]:
+        raise SystemExit("the shortcuts changed the placements kept")
+
+
 def dask_speedup(tasks_used: int = 40, repeats: int = 3) -> None:
     """1 vs 2 worker processes on the same tasks; clusters started beforehand, best of interleaved runs."""
     import logging
@@ -183,6 +217,10 @@ def full_space(rate: float) -> None:
 
 
 def main(sample: int = 24) -> None:
+    if len(sys.argv) > 2 and sys.argv[2] == "shortcuts":
+        shortcuts(sample)
+        return
+    shortcuts(sample)
     rate = throughput(sample)
     dask_speedup()
     full_space(rate)
