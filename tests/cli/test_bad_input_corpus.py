@@ -701,6 +701,8 @@ CORPUS: list[Bad] = [
         "[ranking], key 'planet_sped': unknown criterion"),
     Bad("synthesize: negative ranking weight", "synthesize", SYNTH + "[ranking]\ncirculating_power = -1\n",
         "[ranking], key 'circulating_power': a weight is a finite number >= 0"),
+    Bad("synthesize: --checkpoint is the input", "synthesize", SYNTH, "is the input file",
+        ("{file}", "--checkpoint", "{file}")),
     Bad("synthesize: --workers 1000", "synthesize", SYNTH, "--workers", ("{file}", "--workers", "1000"), usage=True),
     Bad("synthesize: spec named candidate_01.toml in --out-dir", "synthesize", named("candidate_01.toml", SYNTH),
         "--out-dir", ("{file}", "--out-dir", "{tmp}")),

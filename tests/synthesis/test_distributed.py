@@ -38,6 +38,17 @@ def test_existing_scheduler_gives_the_serial_answer_with_progress(cluster):
     assert result.stats["workers"] == 2
 
 
+def test_resume_on_a_cluster_streams_and_skips_finished_tasks(cluster, tmp_path):
+    path = tmp_path / "search.ckpt"
+    streamed = []
+    first = synthesize_spec(SPEC, scheduler=cluster.scheduler_address, checkpoint=path, announce=False,
+                            on_candidates=streamed.append)
+    assert len(streamed) == first.stats["tasks"] and path.exists()
+    again = synthesize_spec(SPEC, scheduler=cluster.scheduler_address, checkpoint=path, announce=False)
+    assert again.stats["resumed_tasks"] == again.stats["tasks"]
+    assert sorted(c.key for c in again.candidates) == sorted(c.key for c in first.candidates)
+
+
 def test_client_is_used_and_left_open(cluster):
     from distributed import Client
 

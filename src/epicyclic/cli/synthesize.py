@@ -26,12 +26,15 @@ __all__ = ["synthesize"]
 def _progress(quiet: bool):
     if quiet:
         return None
-    state = {"last": -1, "start": time.monotonic()}
+    state = {"last": -1, "start": time.monotonic(), "first": None}
 
     def report(done: int, total: int) -> None:
+        if state["first"] is None:  # tasks done before (a checkpoint) do not count for the rate
+            state["first"] = done
         percent = 100 * done // max(total, 1)
         elapsed = time.monotonic() - state["start"]
-        eta = f", about {elapsed / done * (total - done):.0f} s left" if 0 < done < total else ""
+        ran = done - state["first"]
+        eta = f", about {_eta(elapsed / ran * (total - done))} left" if 0 < ran and done < total else ""
         if sys.stderr.isatty():
             typer.echo(f"\rsynthesize: {done}/{total} tasks ({percent} %){eta}   ", err=True, nl=done == total)
         elif percent // 10 != state["last"] // 10 or done == total:
@@ -39,6 +42,13 @@ def _progress(quiet: bool):
         state["last"] = percent
 
     return report
+
+
+def _eta(seconds: float) -> str:
+    if seconds < 1:
+        return "under 1 s"
+    return f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.0f} min" if seconds < 7200 else \
+        f"{seconds / 3600:.1f} h"
 
 
 @guarded
@@ -64,6 +74,9 @@ def synthesize(
     processes: Annotated[Optional[bool], typer.Option("--processes/--threads", help="Local workers as "
                                                        "processes or as threads of this process (default: threads "
                                                        "for a small search, processes for a big one).")] = None,
+    checkpoint: Annotated[Optional[Path], typer.Option("--checkpoint", help="Keep finished tasks in this file "
+                                                        "(written atomically); run again with it to resume an "
+                                                        "interrupted search.")] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress on stderr.")] = False,
 ) -> None:
     """Search planetary transmissions (ties, shift elements, schedule, teeth) that give the target ratios."""
@@ -73,7 +86,7 @@ def synthesize(
     from ..synthesis import SynthesisSpec, synthesize_spec
 
     # every output is checked before the search, which may take long
-    for option, path in (("--out", out), ("--csv", csv), ("--plot", plot)):
+    for option, path in (("--out", out), ("--csv", csv), ("--plot", plot), ("--checkpoint", checkpoint)):
         if path is not None:
             refuse_input(path, [spec], option)
     if plot is not None:
@@ -97,7 +110,8 @@ def synthesize(
         for k in range(1, parsed.top + 1):
             refuse_input(out_dir / f"candidate_{k:02d}.toml", [spec], "--out-dir")
     result = synthesize_spec(parsed, scheduler=scheduler, workers=workers, processes=processes,
-                             progress=_progress(quiet), announce=lambda text: typer.echo(text, err=True))
+                             progress=_progress(quiet), announce=lambda text: typer.echo(text, err=True),
+                             checkpoint=checkpoint)
     if out_dir is not None:
         paths = result.write_toml(out_dir)
         typer.echo(f"wrote {len(paths)} candidate file(s) to {out_dir.resolve()}", err=True)

@@ -160,7 +160,8 @@ def _in_spawned_child() -> bool:
 def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: Any = None,
               scheduler: str | None = None, workers: int | None = None, processes: bool = False,
               progress: Callable[[int, int], None] | None = None, timeout: str = "10s",
-              time_limit: float | None = None) -> tuple[list[Any], int]:
+              time_limit: float | None = None, done: dict[int, Any] | None = None,
+              on_result: Callable[[int, Any], None] | None = None) -> tuple[list[Any], int]:
     """Run ``function(task)`` for every task; return (results in task order, workers used).
 
     Parameters
@@ -183,6 +184,10 @@ def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: A
         How long to try to reach ``scheduler``.
     time_limit : float, optional
         Seconds: tasks not finished by then are cancelled and their results are None.
+    done : dict (task index → result), optional
+        Results already known (a checkpoint): those tasks are not run again.
+    on_result : callable (task index, result), optional
+        Called in this process as each task finishes, in the order they finish (results stream).
 
     Raises
     ------
@@ -192,8 +197,10 @@ def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: A
     from .spec import SynthesisError
 
     deadline = None if time_limit is None else time.monotonic() + time_limit
+    done = dict(done or {})
+    todo = [k for k in range(len(tasks)) if k not in done]
     if client is None and not scheduler and workers == 1 and not processes:
-        return _run_here(function, tasks, progress, deadline), 1
+        return _run_here(function, tasks, todo, done, progress, deadline, on_result), 1
     from distributed import Client, LocalCluster, as_completed
 
     own_cluster = own_client = None
@@ -227,19 +234,22 @@ def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: A
             client = own_client = Client(own_cluster)
     try:
         used = len(client.scheduler_info().get("workers", {})) or 1
-        futures = client.map(function, list(tasks), pure=False)
-        order = {f.key: k for k, f in enumerate(futures)}
-        results: list[Any] = [None] * len(futures)
-        done = 0
+        results: list[Any] = [done.get(k) for k in range(len(tasks))]
+        futures = client.map(function, [tasks[k] for k in todo], pure=False) if todo else []
+        order = {f.key: k for k, f in zip(todo, futures)}
+        finished = len(done)
         if progress:
-            progress(0, len(futures))
+            progress(finished, len(tasks))
         remaining = None if deadline is None else max(deadline - time.monotonic(), 0.0)
         try:
             for future in as_completed(futures, timeout=remaining):
-                results[order[future.key]] = future.result()
-                done += 1
+                index = order[future.key]
+                results[index] = future.result()
+                finished += 1
+                if on_result:
+                    on_result(index, results[index])
                 if progress:
-                    progress(done, len(futures))
+                    progress(finished, len(tasks))
         except TimeoutError:
             client.cancel([f for f in futures if not f.done()])
         return results, used
@@ -250,16 +260,21 @@ def run_tasks(function: Callable[[Any], Any], tasks: Sequence[Any], *, client: A
             own_cluster.close()
 
 
-def _run_here(function: Callable[[Any], Any], tasks: Sequence[Any], progress: Callable[[int, int], None] | None,
-              deadline: float | None) -> list[Any]:
-    """The tasks one after the other in this thread (results None after the deadline)."""
-    results: list[Any] = [None] * len(tasks)
+def _run_here(function: Callable[[Any], Any], tasks: Sequence[Any], todo: list[int], done: dict[int, Any],
+              progress: Callable[[int, int], None] | None, deadline: float | None,
+              on_result: Callable[[int, Any], None] | None) -> list[Any]:
+    """The tasks still to do one after the other in this thread (results None after the deadline)."""
+    results: list[Any] = [done.get(k) for k in range(len(tasks))]
+    finished = len(done)
     if progress:
-        progress(0, len(tasks))
-    for k, task in enumerate(tasks):
+        progress(finished, len(tasks))
+    for k in todo:
         if deadline is not None and time.monotonic() >= deadline:
             break
-        results[k] = function(task)
+        results[k] = function(tasks[k])
+        finished += 1
+        if on_result:
+            on_result(k, results[k])
         if progress:
-            progress(k + 1, len(tasks))
+            progress(finished, len(tasks))
     return results

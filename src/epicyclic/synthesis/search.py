@@ -139,7 +139,8 @@ def search_task(task: Task) -> TaskResult:
 def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str | None = None,
                     workers: int | None = None, processes: bool | None = None,
                     progress: Callable[[int, int], None] | None = None, chunk: int | None = None,
-                    announce: Callable[[str], None] | bool = True):
+                    announce: Callable[[str], None] | bool = True, checkpoint: str | None = None,
+                    on_candidates: Callable[[tuple[Candidate, ...]], None] | None = None):
     """Run a validated :class:`SynthesisSpec` and rank the candidates (see :func:`synthesize`).
 
     Before anything is enumerated the size of the search is estimated from counting
@@ -170,6 +171,11 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
         Mechanisms per task (default: about 8).
     announce : callable (str) or bool, default True
         Where the bound and estimate line goes before the search starts (True: stderr; False: nowhere).
+    checkpoint : str or Path, optional
+        File of finished tasks (:class:`~epicyclic.synthesis.checkpoint.Checkpoint`): written
+        atomically as tasks finish; a search started again with it runs only the missing tasks.
+    on_candidates : callable (tuple of Candidate), optional
+        Called with each finished task's candidates as the task finishes (results stream back).
 
     Returns
     -------
@@ -207,11 +213,30 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
     where = (f"{n} local worker {'process' if with_processes else 'thread'}{'es' * with_processes if n > 1 else ''}"
              f"{'s' * (not with_processes) if n > 1 else ''}" if local
              else f"the cluster at {scheduler}" if scheduler else "the given Dask client")
-    say(f"synthesize: {size.describe(n)}; {len(tasks)} task(s) on {where}{limit}")
+    saved = None
+    if checkpoint is not None:
+        from .checkpoint import Checkpoint, fingerprint
+
+        saved = Checkpoint(checkpoint, fingerprint(spec, tasks))
+    before = len(saved.done) if saved else 0
+    resumed = f"; {before} task(s) done before, from {checkpoint}" if before else ""
+    say(f"synthesize: {size.describe(n)}; {len(tasks)} task(s) on {where}{limit}{resumed}")
     if note:
         say(note)
-    results, used = run_tasks(search_task, tasks, client=client, scheduler=scheduler, workers=n,
-                              processes=with_processes, progress=progress, time_limit=spec.time_limit)
+
+    def finished(index: int, result: TaskResult) -> None:
+        if saved is not None:
+            saved.add(index, result)
+        if on_candidates is not None:
+            on_candidates(result.candidates)
+
+    try:
+        results, used = run_tasks(search_task, tasks, client=client, scheduler=scheduler, workers=n,
+                                  processes=with_processes, progress=progress, time_limit=spec.time_limit,
+                                  done=saved.done if saved else None, on_result=finished)
+    finally:
+        if saved is not None:  # also when interrupted: what finished is kept
+            saved.save(force=True)
     finished = [r for r in results if r is not None]
     unique: dict[tuple, Candidate] = {}
     for r in finished:
@@ -230,7 +255,7 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
         "candidates": len(ranked),
         "task_seconds": sum(r.seconds for r in finished),
         "task_cpu_seconds": sum(r.cpu_seconds for r in finished),
-        "estimate": first.to_dict(), "bound": size.to_dict(),
+        "estimate": first.to_dict(), "bound": size.to_dict(), "resumed_tasks": before,
         "seconds": time.perf_counter() - start,
     }
     return SynthesisResult(spec, ranked, stats, standings)
@@ -240,7 +265,8 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
                elements: Mapping[str, int] | None = None, constraints: Mapping[str, Any] | None = None, *,
                client: Any = None, scheduler: str | None = None, workers: int | None = None,
                processes: bool | None = None, progress: Callable[[int, int], None] | None = None,
-               chunk: int | None = None, announce: Callable[[str], None] | bool = True):
+               chunk: int | None = None, announce: Callable[[str], None] | bool = True,
+               checkpoint: str | None = None, on_candidates: Callable[[tuple[Candidate, ...]], None] | None = None):
     """Find transmissions (architecture, shift schedule, tooth counts) that give the target ratios.
 
     Parameters
@@ -275,6 +301,10 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
         Mechanisms per Dask task (default: about 8, fewer for small searches).
     announce : callable (str) or bool, default True
         The bound and estimate of the search, before it starts: True prints it to stderr.
+    checkpoint : str or Path, optional
+        Resumable: finished tasks are kept in this file (written atomically) and not run again.
+    on_candidates : callable (tuple of Candidate), optional
+        Each finished task's candidates, as it finishes.
 
     Returns
     -------
@@ -299,4 +329,5 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
     """
     spec = SynthesisSpec.create(targets, sets, elements, constraints)
     return synthesize_spec(spec, client=client, scheduler=scheduler, workers=workers, processes=processes,
-                           progress=progress, chunk=chunk, announce=announce)
+                           progress=progress, chunk=chunk, announce=announce, checkpoint=checkpoint,
+                           on_candidates=on_candidates)
