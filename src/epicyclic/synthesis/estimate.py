@@ -10,7 +10,9 @@ Two figures, both stated before any work is done:
   for all but the few patterns with symmetries (Burnside's lemma: orbits ≥
   elements / group order).  Each mechanism with N shafts has at most
   P·C(N − 2, b)·C(N(N − 1)/2, c) architectures (P input/output pairs, b brakes
-  off the input and output shafts, c clutches between pairs of shafts).
+  off the input and output shafts, c clutches between pairs of shafts); where
+  input or output must hold given members, P is scaled by the expected share
+  of shafts that do.
 * :func:`count` — after the mechanisms are enumerated (:func:`~epicyclic.synthesis.search.plan`):
   the same bound per mechanism, summed exactly.
 
@@ -76,9 +78,10 @@ class SearchEstimate:
         workers : int, optional
             Also give the wall time on this many workers.
         """
-        what = "mechanisms" if self.exact else "mechanisms (estimated)"
-        text = (f"at most {self.architectures:.3g} architectures on {self.mechanisms:,} {what}, "
-                f"at most about {_duration(self.worker_seconds)} of screening on one worker")
+        what = "at most" if self.exact else "about"
+        text = (f"{what} {self.architectures:.3g} architectures on {self.mechanisms:,} mechanisms"
+                f"{'' if self.exact else ' (estimated)'}, {what} {_duration(self.worker_seconds)} of screening on "
+                "one worker")
         if workers and workers > 1:
             text += f", {_duration(self.worker_seconds / workers)} on {workers}"
         return text
@@ -158,17 +161,36 @@ def _place_three(state: tuple[int, ...], cap: int) -> Iterable[tuple[tuple[int, 
     yield from rec(0, list(state), [0] * cap, 1)
 
 
-def architectures_per_mechanism(shafts: int, free_input: bool, brakes: int, clutches: int) -> int:
-    """Upper bound of the architectures on one mechanism with ``shafts`` shafts (the free input included).
+def architectures_per_mechanism(shafts: int, free_input: bool, brakes: int, clutches: int,
+                                input_share: float = 1.0, output_share: float = 1.0) -> int:
+    """Architectures on one mechanism with ``shafts`` shafts (the free input included).
 
-    Input/output pairs: N − 1 with a separate input (it is the input), N(N − 1) ordered ones otherwise;
-    brakes on the N − 2 other shafts; clutches between any two shafts.
+    Input/output pairs: N − 1 with a separate input (it is the input), N(N − 1) ordered ones otherwise,
+    times the shares of shafts that may be input and output; brakes on the N − 2 other shafts;
+    clutches between any two shafts.
+
+    Parameters
+    ----------
+    shafts : int
+    free_input : bool
+    brakes, clutches : int
+    input_share, output_share : float, default 1
+        Expected share of member shafts allowed as input / output (1: an upper bound).
 
     >>> architectures_per_mechanism(4, False, 2, 2)   # 12 pairs x C(2, 2) x C(6, 2)
     180
     """
-    pairs = shafts - 1 if free_input else shafts * (shafts - 1)
-    return pairs * math.comb(shafts - 2, brakes) * math.comb(shafts * (shafts - 1) // 2, clutches)
+    members = shafts - int(free_input)
+    pairs = members * output_share if free_input else shafts * (shafts - 1) * input_share * output_share
+    return round(pairs * math.comb(shafts - 2, brakes) * math.comb(shafts * (shafts - 1) // 2, clutches))
+
+
+def _share(kinds: tuple[str, ...], sets: int, member_shafts: int) -> float:
+    """Expected share of member shafts holding one of ``kinds`` (members spread evenly over the shafts)."""
+    if len(kinds) >= 3:
+        return 1.0
+    per_shaft = 3 * sets / member_shafts
+    return 1.0 - (1.0 - len(kinds) / 3) ** per_shaft
 
 
 def _group_order(spec: SynthesisSpec) -> int:
@@ -189,7 +211,7 @@ def estimate(spec: SynthesisSpec) -> SearchEstimate:
 
     Examples
     --------
-    >>> s = SynthesisSpec.create([2.46, 1.46, 1.0, -2.18], 2, {"brakes": 2, "clutches": 2, "engaged": 2})
+    >>> s = SynthesisSpec.create([2.46, 1.46, 1.0, -2.18], 2, {"brakes": 2, "clutches": 2})
     >>> e = estimate(s)   # 1, 2 or 3 engaged: 9 + 6 + 1 patterns on member shafts, 16 with a separate input
     >>> e.mechanisms, e.architectures
     (32, 54765)
@@ -204,7 +226,9 @@ def estimate(spec: SynthesisSpec) -> SearchEstimate:
                 continue
             n = -(-labelled_patterns(sets, member_shafts, spec.max_members_per_shaft) // _group_order(spec))
             mechanisms += n
-            architectures += n * architectures_per_mechanism(shafts, free, spec.brakes, spec.clutches)
+            architectures += n * architectures_per_mechanism(
+                shafts, free, spec.brakes, spec.clutches, _share(spec.input_members, sets, member_shafts),
+                _share(spec.output_members, sets, member_shafts))
     return SearchEstimate(mechanisms, architectures, False)
 
 

@@ -142,8 +142,10 @@ def layout(shafts: int, brakes: int, clutches: int, engaged: int) -> Layout:
     weights = n_elements ** np.arange(engaged - 1, -1, -1, dtype=np.int64)
     codes = combos.astype(np.int64) @ weights  # combos are sorted rows in lexicographic order
     local = np.array(list(itertools.combinations(range(brakes + clutches), engaged)), dtype=np.int32)
-    picked = np.sort(element_sets[:, local], axis=2)  # (A, C, k)
-    set_combos = np.searchsorted(codes, picked.astype(np.int64) @ weights).astype(np.int32)
+    set_combos = np.empty((len(element_sets), len(local)), dtype=np.int32)
+    for start in range(0, len(element_sets), 1 << 16):  # in chunks: the (A, C, k) codes of 2·10^6 sets were 1 GB
+        picked = np.sort(element_sets[start:start + (1 << 16)][:, local], axis=2)  # (chunk, C, k)
+        set_combos[start:start + (1 << 16)] = np.searchsorted(codes, picked.astype(np.int64) @ weights)
     bits = np.array([sum(1 << x for x in s) for s in shafts_of], dtype=np.int64)
     brake_bits = np.where(is_brake, bits, 0)
     return Layout(shafts, brakes, clutches, engaged, combos, element_sets, set_combos,
