@@ -89,3 +89,27 @@ def test_time_limit_stops_and_says_incomplete():
 def test_workers_out_of_range_are_refused(workers):
     with pytest.raises(SynthesisError, match="workers must be a whole number in 1 … 256"):
         synthesize_spec(SIMPSON, workers=workers, announce=False)
+
+
+def test_the_ten_speed_spec_is_bounded_and_split_finely():
+    """Ford 10R80 ratios ('Ford–GM 10-speed automatic transmission', Wikipedia): 4 simple sets,
+    2 brakes + 4 clutches, 4 engaged, carriers in and out.  Stated before it runs: within the default
+    bound, one mechanism per task (about 10^7 architectures each), so the time limit, progress and the
+    checkpoint act every few seconds."""
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "synthesis" / "ten_speed_10r80.toml"
+    spec = SynthesisSpec.from_file(path)
+    assert spec.forward[0] == 4.696 and spec.reverse == (-4.866,) and spec.gears == 11
+    tasks = plan(spec)
+    size = count(spec, (m for t in tasks for m in t.mechanisms))
+    assert size.mechanisms == 321 and 10**9 < size.architectures <= spec.max_architectures
+    assert all(len(t.mechanisms) == 1 for t in tasks)
+    guess = estimate(spec)
+    assert 0.3 <= guess.architectures / size.architectures <= 3  # the formula estimate is of the right size
+
+
+@pytest.mark.parametrize("chunk", [0, -3, 1.5])
+def test_chunk_out_of_range_is_refused(chunk):
+    with pytest.raises(SynthesisError, match="chunk must be a whole number"):
+        synthesize_spec(SIMPSON, workers=1, announce=False, chunk=chunk)

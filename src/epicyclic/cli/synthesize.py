@@ -132,6 +132,9 @@ def synthesize(
         text = ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>epicyclic synthesize</title></head><body>"
                 + result._repr_html_() + "</body></html>")
     else:
-        text = result.table() if len(result) else (result.table() + "\nno transmission meets the targets: widen "
-                                                    "targets.tolerance or bounds.stationary_ratio, or add elements.")
+        text = result.table() if len(result) else result.table() + (
+            "\nno transmission found before the time limit: raise [search] time_limit or resume with --checkpoint."
+            if not result.stats.get("complete", True) else
+            "\nno transmission meets the targets: widen targets.tolerance or bounds.stationary_ratio, or add "
+            "elements.")
     emit(text, out)

@@ -71,12 +71,23 @@ def _mechanisms(spec: SynthesisSpec, engaged: int) -> tuple[Mechanism, ...]:
     return found
 
 
+#: Architectures per task the default split aims at (about 10 s of screening): the time limit, progress and
+#: checkpoints act between tasks.
+TASK_ARCHITECTURES = 10**7
+
+
 def plan(spec: SynthesisSpec, chunk: int | None = None) -> list[Task]:
-    """Split the search into independent tasks (``chunk`` mechanisms each; default about 8)."""
+    """Split the search into independent tasks (``chunk`` mechanisms each; default at most 8, fewer where a
+    mechanism holds many architectures: about :data:`TASK_ARCHITECTURES` per task)."""
+    from .estimate import count
+
     tasks = []
     for k in spec.engaged:
         mechs = _mechanisms(spec, k)
-        size = chunk or max(1, min(8, len(mechs) // 16 or 1))
+        if not mechs:
+            continue
+        per = count(spec, mechs).architectures // len(mechs)
+        size = chunk or max(1, min(8, len(mechs) // 16 or 1, TASK_ARCHITECTURES // max(per, 1)))
         tasks += [Task(spec, k, mechs[i:i + size]) for i in range(0, len(mechs), size)]
     if not tasks:
         raise SynthesisError(
@@ -200,6 +211,8 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
 
     say = (lambda text: print(text, file=sys.stderr)) if announce is True else (announce or (lambda text: None))
     workers = check_workers(workers)
+    if chunk is not None and (isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1):
+        raise SynthesisError(f"synthesize: chunk must be a whole number of mechanisms >= 1, got {chunk!r:.40}.")
     start = time.perf_counter()
     first = estimate(spec)
     check(spec, first)  # refused before a single mechanism is enumerated
