@@ -17,7 +17,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ..limits import MAX_SYNTHESIS_WORKERS
+from ..limits import MAX_SYNTHESIS_TOP, MAX_SYNTHESIS_WORKERS
 from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
 
 __all__ = ["synthesize"]
@@ -62,7 +62,7 @@ def synthesize(
     workers: Annotated[Optional[int], typer.Option("--workers", min=1, max=MAX_SYNTHESIS_WORKERS,
                                                     help="Workers of the local cluster (default: CPU count; a "
                                                          "bigger cluster: --scheduler).")] = None,
-    top: Annotated[Optional[int], typer.Option("--top", min=1, help="Candidates to show and write "
+    top: Annotated[Optional[int], typer.Option("--top", min=1, max=MAX_SYNTHESIS_TOP, help="Candidates to show and write "
                                                 "(default: the spec's search.top).")] = None,
     out_dir: Annotated[Optional[Path], typer.Option("--out-dir", help="Write candidate_NN.toml per shown "
                                                      "candidate into this folder.")] = None,

@@ -62,7 +62,7 @@ from typing import Any
 from ..errors import ModelError
 from ..text import short
 from ..limits import (MAX_PLANETS, MAX_SYNTHESIS_ARCHITECTURES, MAX_SYNTHESIS_ELEMENTS, MAX_SYNTHESIS_GEARS,
-                      MAX_SYNTHESIS_SETS, MAX_TEETH, MIN_TEETH)
+                      MAX_SYNTHESIS_SETS, MAX_SYNTHESIS_TOP, MAX_TEETH, MIN_TEETH)
 
 __all__ = ["SynthesisError", "SynthesisSpec", "progression_range", "progressive_ratios"]
 
@@ -423,9 +423,9 @@ class SynthesisSpec:
         if "planets" in cons:
             p = cons["planets"]
             p = (p,) if isinstance(p, int) else p
-            if not isinstance(p, Sequence) or not p:
-                raise bad("planets", f"expected a list of planet numbers, got {short(p)}.")
-            kw["planets"] = tuple(_count(v, place, "constraints", "planets", 1, MAX_PLANETS) for v in p)
+            if isinstance(p, (str, bytes)) or not isinstance(p, Sequence) or not 0 < len(p) <= MAX_PLANETS:
+                raise bad("planets", f"expected a list of 1 to {MAX_PLANETS} planet numbers, got {short(p)}.")
+            kw["planets"] = tuple(sorted({_count(v, place, "constraints", "planets", 1, MAX_PLANETS) for v in p}))
         if cons.get("max_members_per_shaft") is not None:
             kw["max_members_per_shaft"] = _count(cons["max_members_per_shaft"], place, "constraints",
                                                  "max_members_per_shaft", 2)
@@ -449,7 +449,7 @@ class SynthesisSpec:
                 raise bad("stationary_efficiency", f"expected an efficiency in (0, 1], got {eta!r}.")
             kw["stationary_efficiency"] = eta
         if "top" in cons:
-            kw["top"] = _count(cons["top"], place, "constraints", "top", 1)
+            kw["top"] = _count(cons["top"], place, "constraints", "top", 1, MAX_SYNTHESIS_TOP)
         if "max_architectures" in cons:
             value = cons["max_architectures"]
             if isinstance(value, float) and value.is_integer():
