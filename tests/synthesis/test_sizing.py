@@ -47,3 +47,19 @@ def test_the_module_is_the_smallest_of_the_series_that_holds(torque, z_sun, z_pl
 def test_a_torque_past_the_series_is_an_error():
     with pytest.raises(ValueError, match="needs a module above 50 mm"):
         size_set(1e9, 17, 17, 3)
+
+
+def test_hunting_teeth_asked_for_are_what_every_candidate_gets():
+    """gcd(z_sun, z_planet) = gcd(z_planet, z_ring) = 1 on every simple set of every candidate."""
+    from math import gcd
+
+    from epicyclic.synthesis import SynthesisSpec, synthesize_spec
+
+    spec = SynthesisSpec.create([2.46, 1.46, 1.0, -2.18], 2, {"brakes": 2, "clutches": 2, "engaged": 2},
+                                {"tolerance": 0.01, "hunting": True})
+    result = synthesize_spec(spec, workers=1, announce=False)
+    assert len(result) > 0
+    for cand in result.candidates:
+        for t in cand.teeth:
+            assert gcd(t.z_sun, t.z_planet) == 1 and gcd(t.z_planet, t.z_ring) == 1
+        assert all(s is not None and s.module > 0 for s in cand.sizes)

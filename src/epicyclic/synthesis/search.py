@@ -131,7 +131,7 @@ def search_task(task: Task) -> TaskResult:
                 key = (kind, round(i0, 4))
                 if key not in teeth_cache:
                     teeth_cache[key] = tooth_options(i0, kind, tolerance=spec.tolerance, sun=spec.sun,
-                                                     planet=spec.planet, planets=spec.planets)
+                                                     planet=spec.planet, planets=spec.planets, hunting=spec.hunting)
                 options.append(teeth_cache[key])
             chosen = choose_teeth(mech, p.input, p.output, combos, fit.schedule, targets, options, spec.tolerance)
             if chosen is None:

@@ -21,6 +21,7 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     sun = [17, 80]
     planet = [17, 80]
     planets = [3, 4, 5]
+    hunting = false             # true: only hunting-tooth sets (no common factor sun/planet, planet/ring)
     [search]
     max_members_per_shaft = 2   # ties join pairs of members (default: no limit)
     free_input = true           # also a separate input shaft reached by clutches only
@@ -189,6 +190,8 @@ class SynthesisSpec:
     sun, planet : (int, int)
         Tooth-count bounds.
     planets : tuple of int
+    hunting : bool
+        Only hunting-tooth simple sets.
     max_members_per_shaft : int or None
     free_input : bool
     input_members, output_members : tuple of str
@@ -223,6 +226,7 @@ class SynthesisSpec:
     sun: tuple[int, int] = (17, 80)
     planet: tuple[int, int] = (17, 80)
     planets: tuple[int, ...] = (3, 4, 5)
+    hunting: bool = False
     max_members_per_shaft: int | None = None
     free_input: bool = True
     input_members: tuple[str, ...] = ("sun", "ring", "carrier")
@@ -394,7 +398,7 @@ class SynthesisSpec:
 
     @classmethod
     def _with_constraints(cls, kw: dict[str, Any], cons: dict[str, Any], place: _Place) -> SynthesisSpec:
-        allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "max_members_per_shaft",
+        allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "hunting", "max_members_per_shaft",
                    "free_input", "input_members", "output_members", "levels", "stationary_efficiency", "top",
                    "max_architectures", "time_limit", "weights", "module", "input_torque", "allowable_stress",
                    "face_width_factor", "title"}
@@ -429,6 +433,10 @@ class SynthesisSpec:
         if cons.get("max_members_per_shaft") is not None:
             kw["max_members_per_shaft"] = _count(cons["max_members_per_shaft"], place, "constraints",
                                                  "max_members_per_shaft", 2)
+        if "hunting" in cons:
+            if not isinstance(cons["hunting"], bool):
+                raise bad("hunting", f"expected true or false, got {short(cons['hunting'])}.")
+            kw["hunting"] = cons["hunting"]
         if "free_input" in cons:
             if not isinstance(cons["free_input"], bool):
                 raise bad("free_input", f"expected true or false, got {short(cons['free_input'])}.")
