@@ -330,14 +330,17 @@ class Candidate:
         -------
         dict
             ``architecture``, ``ties``, ``input``, ``output``, ``schedule`` (gear → element
-            names), ``ratios`` and ``targets`` (gear → n_in/n_out), ``teeth`` (per set) and the
+            names), ``ratios`` and ``targets`` (gear → n_in/n_out), ``teeth`` and ``sizes`` (module,
+            face width in mm, sun torque in N·m, Lewis stress in MPa, per set), ``input_torque`` (N·m) and the
             ranking metrics (errors, efficiencies, element torque, planet speed, double shifts).
         """
         return {"architecture": self.describe(), "ties": self.mechanism.describe(),
                 "input": self.shaft_name(self.input), "output": self.shaft_name(self.output),
                 "schedule": {g: list(v) for g, v in self.named_schedule.items()},
                 "ratios": dict(zip(self.gears, self.ratios)), "targets": dict(zip(self.gears, self.targets)),
-                "teeth": [t.to_dict() for t in self.teeth], **self.metrics}
+                "teeth": [t.to_dict() for t in self.teeth],
+                "sizes": [None if z is None else z.to_dict() for z in self.sizes], "input_torque": self.input_torque,
+                **self.metrics}
 
 
 def _members(mech: Mechanism, shaft: int) -> str:
