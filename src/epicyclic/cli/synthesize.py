@@ -62,8 +62,9 @@ def synthesize(
     workers: Annotated[Optional[int], typer.Option("--workers", min=1, max=MAX_SYNTHESIS_WORKERS,
                                                     help="Workers of the local cluster (default: CPU count; a "
                                                          "bigger cluster: --scheduler).")] = None,
-    top: Annotated[Optional[int], typer.Option("--top", min=1, max=MAX_SYNTHESIS_TOP, help="Candidates to show and write "
-                                                "(default: the spec's search.top).")] = None,
+    top: Annotated[Optional[int], typer.Option("--top", min=1, max=MAX_SYNTHESIS_TOP,
+                                                help="Candidates to show and write (default: the spec's "
+                                                     "search.top).")] = None,
     out_dir: Annotated[Optional[Path], typer.Option("--out-dir", help="Write candidate_NN.toml per shown "
                                                      "candidate into this folder.")] = None,
     csv: Annotated[Optional[Path], typer.Option("--csv", help="Also write the table as CSV.")] = None,
