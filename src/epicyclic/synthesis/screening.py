@@ -339,8 +339,9 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     reach_fwd = np.bitwise_or.reduce(fwd_mask, axis=0)  # targets any combination can reach, per pair
     reach_rev = np.bitwise_or.reduce(rev_mask, axis=0)
 
-    fwd_rows = np.ascontiguousarray(fwd_mask.T)  # (pairs, T)
-    rev_rows = np.ascontiguousarray(rev_mask.T)
+    narrow = np.int32 if gears <= 31 else np.int64  # half the bytes to gather per architecture
+    fwd_rows = np.ascontiguousarray(fwd_mask.T, dtype=narrow)  # (pairs, T)
+    rev_rows = np.ascontiguousarray(rev_mask.T, dtype=narrow)
     for p, (x, y) in enumerate(pairs):
         if reach_fwd[p] != full and (mech.free_input or reach_rev[p] != full):
             continue  # some target is out of reach of every combination, in both directions
