@@ -13,7 +13,14 @@
    output, every split into brakes (at least one) and clutches, 2, 3 or 4 engaged per gear): its size, counted
    exactly, and the time to screen it at the measured throughput on N workers.
 
-Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms]
+4. The exact shortcuts of the screening (multilinear interpolation of the determinants inside the
+   box, block pruning) against the reference on the same sample: CPU seconds, same placements
+   asserted, peak memory.
+
+5. ``loopback``: 1 -> 2 -> 4 worker processes of a loopback cluster (`dask scheduler`, `dask worker`
+   as programs on 127.0.0.1, reached by address), wall time and cores kept busy.
+
+Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms] [shortcuts | loopback]
 """
 
 from __future__ import annotations
@@ -110,6 +117,36 @@ def throughput(sample: int) -> float:
     return rate
 
 
+def shortcuts(sample: int) -> None:
+    """The exact shortcuts (multilinear interpolation inside the box, block pruning) against the reference
+    screening, 3 bisection levels, CPU seconds (the machine is shared: wall time measures the load); both
+    must keep the same placements."""
+    import resource
+
+    mechs = enumerate_mechanisms(("simple",) * 4, 4, max_members_per_shaft=2)
+    rng = np.random.default_rng(0)
+    chosen = [mechs[i] for i in sorted(rng.choice(len(mechs), size=min(sample, len(mechs)), replace=False))]
+    lay = layout(8, 2, 3, 3)
+    screen(chosen[0], lay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=0)  # warm-up
+    results, cpu = {}, {}
+    for fast in (False, True):
+        start = time.process_time()
+        out, examined = [], 0
+        for m in chosen:
+            placements, n = screen(m, lay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=3, interpolate=fast,
+                                   prune=fast)
+            out.append(placements)
+            examined += n
+        cpu[fast], results[fast] = time.process_time() - start, out
+        print(f"{'shortcuts' if fast else 'reference'} screening, 3 levels    {examined / cpu[fast]:>12,.0f} "
+              f"architectures per CPU s ({cpu[fast]:.2f} s, {sum(map(len, out))} placements kept)")
+    print(f"speed-up of the exact shortcuts    {cpu[False] / cpu[True]:>12.2f} x; same placements: "
+          f"{results[False] == results[True]}")
+    print(f"peak memory of this process        {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:>12.0f} MiB")
+    if results[False] != results[True]:
+        raise SystemExit("the shortcuts changed the placements kept")
+
+
 def dask_speedup(tasks_used: int = 40, repeats: int = 3) -> None:
     """1 vs 2 worker processes on the same tasks; clusters started beforehand, best of interleaved runs."""
     import logging
@@ -159,6 +196,50 @@ def dask_speedup(tasks_used: int = 40, repeats: int = 3) -> None:
     print(f"  speed-up 1 -> 2 workers          {best[1] / best[2]:>10.2f} x")
 
 
+def loopback(tasks_used: int = 16, sizes: tuple[int, ...] = (1, 2, 4)) -> None:
+    """1 -> 2 -> 4 worker processes of a real loopback cluster: `dask scheduler` and `dask worker` started as
+    separate programs on 127.0.0.1, reached by address as `--scheduler` does; wall time, task CPU time and
+    the cores kept busy (task CPU / wall)."""
+    import os
+    import shutil
+    import subprocess
+
+    from distributed import Client
+
+    from epicyclic.synthesis.distributed import run_tasks
+    from epicyclic.synthesis.search import plan, search_task
+
+    spec = SynthesisSpec.create([*FORWARD, *REVERSE], 4, {"brakes": 2, "clutches": 3, "engaged": 3},
+                                {"tolerance": 0.01, "max_members_per_shaft": 2, "free_input": False,
+                                 "input_members": ["carrier"], "output_members": ["carrier"]})
+    tasks = plan(spec)
+    tasks = tasks[::max(1, len(tasks) // tasks_used)][:tasks_used]
+    dask = shutil.which("dask") or os.path.join(os.path.dirname(sys.executable), "dask")
+    port = 8786 + os.getpid() % 1000
+    address = f"tcp://127.0.0.1:{port}"
+    print(f"loopback cluster at {address}: {len(tasks)} tasks of the 8HP search, load average "
+          f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
+    for n in sizes:
+        scheduler = subprocess.Popen([dask, "scheduler", "--host", "127.0.0.1", "--port", str(port),
+                                      "--no-dashboard"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        workers = [subprocess.Popen([dask, "worker", address, "--nthreads", "1", "--no-dashboard"],
+                                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL) for _ in range(n)]
+        try:
+            with Client(address, timeout="60s") as client:
+                client.wait_for_workers(n, timeout=120)
+                start = time.perf_counter()
+                results, used = run_tasks(search_task, tasks, client=client)
+                wall = time.perf_counter() - start
+            cpu = sum(r.cpu_seconds for r in results)
+            print(f"  {n} worker process(es): {wall:7.1f} s wall, task CPU {cpu:6.1f} s, {cpu / wall:4.2f} cores busy")
+        finally:
+            for w in workers:
+                w.terminate()
+            scheduler.terminate()
+            for proc in (*workers, scheduler):
+                proc.wait(timeout=30)
+
+
 def full_space(rate: float) -> None:
     kinds = ("simple",) * 4
     total = 0
@@ -183,6 +264,13 @@ def full_space(rate: float) -> None:
 
 
 def main(sample: int = 24) -> None:
+    if len(sys.argv) > 2 and sys.argv[2] == "shortcuts":
+        shortcuts(sample)
+        return
+    if len(sys.argv) > 2 and sys.argv[2] == "loopback":
+        loopback()
+        return
+    shortcuts(sample)
     rate = throughput(sample)
     dask_speedup()
     full_space(rate)

@@ -64,6 +64,9 @@ __all__ = [
     "MAX_SYNTHESIS_SETS",
     "MAX_SYNTHESIS_ELEMENTS",
     "MAX_SYNTHESIS_GEARS",
+    "MAX_SYNTHESIS_WORKERS",
+    "MAX_SYNTHESIS_TOP",
+    "MAX_SYNTHESIS_ARCHITECTURES",
     "MAX_MAP_POINTS",
     "MAX_MAP_VALUES",
     "check_range",
@@ -152,6 +155,13 @@ MAX_SYNTHESIS_SETS = 4
 MAX_SYNTHESIS_ELEMENTS = 8
 #: Most target ratios (forward and reverse) of a synthesis.
 MAX_SYNTHESIS_GEARS = 16
+#: Most local Dask workers of a synthesis (``--workers``; a cluster of more is reached with ``--scheduler``).
+MAX_SYNTHESIS_WORKERS = 256
+#: Most candidates a synthesis shows and writes (``[search] top``, ``--top``).
+MAX_SYNTHESIS_TOP = 1000
+#: Default bound on the architectures one synthesis screens (``[search] max_architectures``): about three
+#: worker-hours at the measured 10^6 per second per worker (docs/performance.md).
+MAX_SYNTHESIS_ARCHITECTURES = 10**10
 
 
 class LimitError(EpicyclicError, ValueError):

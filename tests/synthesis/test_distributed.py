@@ -38,6 +38,17 @@ def test_existing_scheduler_gives_the_serial_answer_with_progress(cluster):
     assert result.stats["workers"] == 2
 
 
+def test_resume_on_a_cluster_streams_and_skips_finished_tasks(cluster, tmp_path):
+    path = tmp_path / "search.ckpt"
+    streamed = []
+    first = synthesize_spec(SPEC, scheduler=cluster.scheduler_address, checkpoint=path, announce=False,
+                            on_candidates=streamed.append)
+    assert len(streamed) == first.stats["tasks"] and path.exists()
+    again = synthesize_spec(SPEC, scheduler=cluster.scheduler_address, checkpoint=path, announce=False)
+    assert again.stats["resumed_tasks"] == again.stats["tasks"]
+    assert sorted(c.key for c in again.candidates) == sorted(c.key for c in first.candidates)
+
+
 def test_client_is_used_and_left_open(cluster):
     from distributed import Client
 
@@ -64,3 +75,63 @@ def test_unreachable_scheduler_is_a_clear_error():
 
     with pytest.raises(SynthesisError, match="cannot reach the Dask scheduler at 'tcp://127.0.0.1:9'"):
         run_tasks(len, [[1]], scheduler="tcp://127.0.0.1:9", timeout="1s")
+
+
+# ---- works wherever Python runs (issue 22): a plain script, one with worker processes, a notebook-like main
+CALL = ('from epicyclic.synthesis import synthesize\n'
+        'res = synthesize([2.46, 1.46, 1.0, -2.18], sets=2, elements={"brakes": 2, "clutches": 2, "engaged": 2}, '
+        'workers=2{extra})\n'
+        'print("found", len(res), res.stats["processes"])\n')
+
+
+def _script(tmp_path, text, name="plain.py"):
+    import subprocess
+    import sys
+
+    path = tmp_path / name
+    path.write_text(text)
+    return subprocess.run([sys.executable, str(path)], capture_output=True, text=True, timeout=300, cwd=tmp_path)
+
+
+def test_a_plain_script_without_main_guard_runs_on_threads(tmp_path):
+    """The documented call, as a user pastes it into a file: no `if __name__ == "__main__"`, no traceback."""
+    done = _script(tmp_path, CALL.replace("{extra}", ""))
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "found 12 False"
+    assert "synthesize: at most" in done.stderr and "2 local worker threads" in done.stderr  # the bound, first
+
+
+def test_processes_asked_for_without_main_guard_is_a_clear_error(tmp_path):
+    done = _script(tmp_path, CALL.replace("{extra}", ", processes=True"))
+    assert done.returncode == 1
+    last = done.stderr.strip().splitlines()[-1]
+    assert last.startswith("epicyclic.synthesis.spec.SynthesisError: synthesize: processes=True, but worker "
+                           "processes import the main script again") and 'if __name__ == "__main__":' in last
+    assert "Nanny failed" not in done.stderr and "bootstrapping" not in done.stderr
+
+
+def test_processes_under_the_main_guard_and_in_a_threaded_server(tmp_path):
+    call = CALL.replace("{extra}", ", processes=True").splitlines()
+    guarded = "if __name__ == '__main__':\n" + "".join("    " + line + "\n" for line in call)
+    done = _script(tmp_path, guarded)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "found 12 True"
+    # a server thread of an unguarded script: the main thread still runs the script body, so processes are refused
+    threaded = ("import threading\nerrors = []\ndef handler():\n    try:\n"
+                + "".join("        " + line + "\n" for line in CALL.replace("{extra}", ", processes=True").splitlines())
+                + "    except Exception as exc:\n        errors.append(exc)\n"
+                "t = threading.Thread(target=handler)\nt.start()\nt.join()\nprint(type(errors[0]).__name__)\n")
+    done = _script(tmp_path, threaded, "server.py")
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "SynthesisError"
+
+
+def test_notebook_like_main_without_a_file_may_use_processes():
+    """A notebook's (or `python -c`'s) main module has no file, so spawned workers import nothing again."""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-c", CALL.replace("{extra}", ", processes=True")], capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "found 12 True"

@@ -6,7 +6,10 @@ import math
 
 import pytest
 
-from epicyclic.synthesis.spec import SynthesisError, SynthesisSpec, progressive_ratios
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from epicyclic.synthesis.spec import SynthesisError, SynthesisSpec, progression_range, progressive_ratios
 
 
 def test_plain_list_splits_forward_and_reverse():
@@ -38,6 +41,45 @@ def test_progressive_steps_grow_towards_first_gear():
     steps = [a / b for a, b in zip(r, r[1:])]
     assert r[0] / r[-1] == pytest.approx(6.0, rel=1e-12)
     assert all(s1 / s2 == pytest.approx(1.05, rel=1e-12) for s1, s2 in zip(steps, steps[1:]))
+
+
+def test_progressive_ratios_do_not_overflow():
+    """In logarithms: 16 gears at the largest progression allowed stay finite (φ2^105 was computed directly)."""
+    low, high = progression_range(1e6, 16)
+    r = progressive_ratios(1e6, 16, 1e3, progression=high * 0.999)
+    assert all(math.isfinite(v) and v > 0 for v in r) and r[0] / r[-1] == pytest.approx(1e6, rel=1e-9)
+
+
+@settings(max_examples=30, deadline=None)
+@given(spread=st.floats(1.05, 50.0), gears=st.integers(3, 16), inside=st.floats(0.0, 0.999), up=st.booleans())
+def test_progression_range_is_where_every_step_exceeds_one(spread, gears, inside, up):
+    """Inside the range every step φ_k > 1; at its ends the smallest step is exactly 1 (Naunheimer eq. 6.9)."""
+    low, high = progression_range(spread, gears)
+    prog = math.exp(inside * math.log(high if up else low))
+    r = progressive_ratios(spread, gears, 4.0, prog)
+    assert all(a > b for a, b in zip(r, r[1:]))
+    edge = progressive_ratios(spread, gears, 4.0, high if up else low)
+    assert min(a / b for a, b in zip(edge, edge[1:])) == pytest.approx(1.0, rel=1e-9)
+
+
+@pytest.mark.parametrize("targets, match", [
+    ({"spread": 7.0, "gears": 80, "first": 4.7, "progression": 1.1}, "key 'targets.gears': expected at most 16"),
+    ({"spread": 7.0, "gears": 10**9, "first": 4.7}, "key 'targets.gears': expected at most 16"),
+    ({"spread": 7.0, "gears": 8, "first": 4.7, "progression": 1e-10}, "key 'targets.progression': .*must lie in"),
+    ({"spread": 7.0, "gears": 8, "first": 4.7, "progression": 1e10}, "key 'targets.progression': .*must lie in"),
+    ({"spread": 1e300, "gears": 3, "first": 4.7}, "key 'targets.first': .*outside 1e-6"),
+    ({"forward": [2.0] * 10**6}, "key 'targets.forward': at most 16 target ratios, got 1000000"),
+])
+def test_hostile_targets_are_refused_before_any_ratio_is_built(targets, match):
+    with pytest.raises(SynthesisError, match=match):
+        SynthesisSpec.create(targets, 2, {"brakes": 2, "clutches": 2})
+
+
+@pytest.mark.parametrize("engaged, match", [([2, 2], "2 is listed twice"), ([], "a list of 1 to 4 numbers"),
+                                            ("2", "a list of 1 to 4 numbers")])
+def test_engaged_is_a_set_of_numbers(engaged, match):
+    with pytest.raises(SynthesisError, match=f"key 'elements.engaged': .*{match}"):
+        SynthesisSpec.create([2.46, 1.46, 1.0, -2.18], 2, {"brakes": 2, "clutches": 2, "engaged": engaged})
 
 
 def test_spread_spec():

@@ -11,11 +11,13 @@ table, ``--plot`` the speed chart across gears (or lever diagram) of the best ca
 from __future__ import annotations
 
 import sys
+import time
 from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
 
+from ..limits import MAX_SYNTHESIS_TOP, MAX_SYNTHESIS_WORKERS
 from ._common import FormatOption, OutOption, OutputFormat, emit, guarded
 
 __all__ = ["synthesize"]
@@ -24,17 +26,29 @@ __all__ = ["synthesize"]
 def _progress(quiet: bool):
     if quiet:
         return None
-    state = {"last": -1}
+    state = {"last": -1, "start": time.monotonic(), "first": None}
 
     def report(done: int, total: int) -> None:
+        if state["first"] is None:  # tasks done before (a checkpoint) do not count for the rate
+            state["first"] = done
         percent = 100 * done // max(total, 1)
+        elapsed = time.monotonic() - state["start"]
+        ran = done - state["first"]
+        eta = f", about {_eta(elapsed / ran * (total - done))} left" if 0 < ran and done < total else ""
         if sys.stderr.isatty():
-            typer.echo(f"\rsynthesize: {done}/{total} tasks ({percent} %)", err=True, nl=done == total)
+            typer.echo(f"\rsynthesize: {done}/{total} tasks ({percent} %){eta}   ", err=True, nl=done == total)
         elif percent // 10 != state["last"] // 10 or done == total:
-            typer.echo(f"synthesize: {done}/{total} tasks ({percent} %)", err=True)
+            typer.echo(f"synthesize: {done}/{total} tasks ({percent} %){eta}", err=True)
         state["last"] = percent
 
     return report
+
+
+def _eta(seconds: float) -> str:
+    if seconds < 1:
+        return "under 1 s"
+    return f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.0f} min" if seconds < 7200 else \
+        f"{seconds / 3600:.1f} h"
 
 
 @guarded
@@ -45,10 +59,12 @@ def synthesize(
     out: OutOption = None,
     scheduler: Annotated[Optional[str], typer.Option("--scheduler", help="Address of a running Dask scheduler "
                                                       "(tcp://host:8786); default: a local cluster.")] = None,
-    workers: Annotated[Optional[int], typer.Option("--workers", min=1, help="Workers of the local cluster "
-                                                    "(default: CPU count).")] = None,
-    top: Annotated[Optional[int], typer.Option("--top", min=1, help="Candidates to show and write "
-                                                "(default: the spec's search.top).")] = None,
+    workers: Annotated[Optional[int], typer.Option("--workers", min=1, max=MAX_SYNTHESIS_WORKERS,
+                                                    help="Workers of the local cluster (default: CPU count; a "
+                                                         "bigger cluster: --scheduler).")] = None,
+    top: Annotated[Optional[int], typer.Option("--top", min=1, max=MAX_SYNTHESIS_TOP,
+                                                help="Candidates to show and write (default: the spec's "
+                                                     "search.top).")] = None,
     out_dir: Annotated[Optional[Path], typer.Option("--out-dir", help="Write candidate_NN.toml per shown "
                                                      "candidate into this folder.")] = None,
     csv: Annotated[Optional[Path], typer.Option("--csv", help="Also write the table as CSV.")] = None,
@@ -56,8 +72,12 @@ def synthesize(
                                                   "candidate (.png, .svg or .pdf).")] = None,
     plot_kind: Annotated[str, typer.Option("--plot-kind", help="chart (speed chart across gears) or lever "
                                             "(lever diagram in the first gear).")] = "chart",
-    threads: Annotated[bool, typer.Option("--threads", help="Local cluster of threads in this process "
-                                           "instead of worker processes.")] = False,
+    processes: Annotated[Optional[bool], typer.Option("--processes/--threads", help="Local workers as "
+                                                       "processes or as threads of this process (default: threads "
+                                                       "for a small search, processes for a big one).")] = None,
+    checkpoint: Annotated[Optional[Path], typer.Option("--checkpoint", help="Keep finished tasks in this file "
+                                                        "(written atomically); run again with it to resume an "
+                                                        "interrupted search.")] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress on stderr.")] = False,
 ) -> None:
     """Search planetary transmissions (ties, shift elements, schedule, teeth) that give the target ratios."""
@@ -67,7 +87,7 @@ def synthesize(
     from ..synthesis import SynthesisSpec, synthesize_spec
 
     # every output is checked before the search, which may take long
-    for option, path in (("--out", out), ("--csv", csv), ("--plot", plot)):
+    for option, path in (("--out", out), ("--csv", csv), ("--plot", plot), ("--checkpoint", checkpoint)):
         if path is not None:
             refuse_input(path, [spec], option)
     if plot is not None:
@@ -87,8 +107,12 @@ def synthesize(
     parsed = SynthesisSpec.from_file(spec)
     if top:
         parsed = replace(parsed, top=top)
-    result = synthesize_spec(parsed, scheduler=scheduler, workers=workers, processes=not threads,
-                             progress=_progress(quiet))
+    if out_dir is not None:  # no candidate file may replace the specification (or any other input)
+        for k in range(1, parsed.top + 1):
+            refuse_input(out_dir / f"candidate_{k:02d}.toml", [spec], "--out-dir")
+    result = synthesize_spec(parsed, scheduler=scheduler, workers=workers, processes=processes,
+                             progress=_progress(quiet), announce=lambda text: typer.echo(text, err=True),
+                             checkpoint=checkpoint)
     if out_dir is not None:
         paths = result.write_toml(out_dir)
         typer.echo(f"wrote {len(paths)} candidate file(s) to {out_dir.resolve()}", err=True)
@@ -109,6 +133,9 @@ def synthesize(
         text = ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>epicyclic synthesize</title></head><body>"
                 + result._repr_html_() + "</body></html>")
     else:
-        text = result.table() if len(result) else (result.table() + "\nno transmission meets the targets: widen "
-                                                    "targets.tolerance or bounds.stationary_ratio, or add elements.")
+        text = result.table() if len(result) else result.table() + (
+            "\nno transmission found before the time limit: raise [search] time_limit or resume with --checkpoint."
+            if not result.stats.get("complete", True) else
+            "\nno transmission meets the targets: widen targets.tolerance or bounds.stationary_ratio, or add "
+            "elements.")
     emit(text, out)

@@ -6,9 +6,12 @@ screens every placement by ratio bounds over boxes of stationary ratios
 (:mod:`.screening`, vectorised over candidates with :mod:`.kinematics`), fits
 the stationary ratios and the shift schedule of the survivors (:mod:`.fitting`),
 chooses tooth counts that fit (:mod:`.teeth`, using :mod:`epicyclic.geometry`)
-and ranks the transmissions by drive efficiency, shift-element torque, planet
-speed, shafts and step smoothness with the project's solver (:mod:`.candidate`).
-Independent tasks run on Dask (:mod:`.distributed`).  See ``docs/synthesis.md``.
+and ranks the transmissions by weighted criteria from the project's solver —
+losses, circulating power, element torques and slip, planet speeds, ring sizes,
+steps, single-swap shifts — with a Pareto front and explanations
+(:mod:`.candidate`, :mod:`.ranking`).  Every search is sized and bounded before it
+starts (:mod:`.estimate`); independent tasks run in this process or on Dask
+(:mod:`.distributed`).  See ``docs/synthesis.md``.
 """
 
 from .candidate import Candidate

@@ -17,7 +17,6 @@ Naunheimer et al. 2011, section 6.2 (ratio steps).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -25,6 +24,7 @@ import numpy as np
 
 from .kinematics import element_shafts
 from .mechanisms import Mechanism
+from .sizing import SetSize, size_set
 from .teeth import SetTeeth
 
 __all__ = ["Candidate", "evaluate", "gear_names"]
@@ -54,6 +54,10 @@ class Candidate:
         Gear ratios with these tooth counts, and the targets, per gear.
     metrics : dict
         Filled by :func:`evaluate` (see :attr:`HEADER`).
+    sizes : tuple of SetSize or None
+        Module and face width per set from :func:`evaluate` (None: a plus set, no tooth geometry).
+    input_torque : float
+        N·m at the operating point of the train file (the torque the sets are sized for).
     """
 
     mechanism: Mechanism
@@ -67,6 +71,8 @@ class Candidate:
     forward: int
     stationary_efficiency: float = 0.98
     metrics: dict[str, Any] = field(default_factory=dict, compare=False)
+    sizes: tuple[SetSize | None, ...] = field(default=(), compare=False)
+    input_torque: float = field(default=100.0, compare=False)
 
     # ------------------------------------------------------------------ names
     def shaft_name(self, shaft: int) -> str:
@@ -295,6 +301,11 @@ class Candidate:
                 sign = "-" if t.kind == "simple" else ""
                 lines.append(f'stationary_ratio = "{sign}{t.z_ring}/{t.z_sun}"')
             lines.append(f"stationary_efficiency = {self.stationary_efficiency}")
+            size = self.sizes[k] if k < len(self.sizes) else None
+            if size is not None:
+                lines += [f"# Lewis pre-dimensioning: largest sun torque {size.sun_torque:.1f} N·m, bending stress "
+                          f"{size.stress:.0f} MPa (epicyclic.synthesis.sizing)",
+                          "[planetary.geometry]", f"module = {size.module}", f"face_width = {size.face_width}"]
         shafts = element_shafts(self.mechanism.shafts)
         for e in sorted(self.elements, key=self.element_name):
             s = shafts[e]
@@ -304,9 +315,9 @@ class Candidate:
             else:
                 lines += ["", "[[brake]]", f'name = "{self.element_name(e)}"', f'shaft = "{self.shaft_name(s[0])}"',
                           "engaged = false"]
-        lines += ["", "# first gear at 1000 1/min and 100 N·m on the input (epicyclic analyze solves it)",
-                  "[operating_point]", f'gear = "{self.gears[0]}"', "speeds = { in = 1000.0 }",
-                  "torques = { in = 100.0 }", 'drives = ["in"]', 'loads = ["out"]']
+        lines += ["", f"# first gear at 1000 1/min and {self.input_torque:g} N·m on the input (epicyclic analyze "
+                  "solves it)", "[operating_point]", f'gear = "{self.gears[0]}"', "speeds = { in = 1000.0 }",
+                  f"torques = {{ in = {float(self.input_torque)} }}", 'drives = ["in"]', 'loads = ["out"]']
         lines += ["", "[transmission]", 'input = "in"', 'output = "out"', "", "[transmission.schedule]"]
         for gear, engaged in self.named_schedule.items():
             lines.append(f'"{gear}" = [' + ", ".join(f'"{n}"' for n in engaged) + "]")
@@ -319,14 +330,17 @@ class Candidate:
         -------
         dict
             ``architecture``, ``ties``, ``input``, ``output``, ``schedule`` (gear → element
-            names), ``ratios`` and ``targets`` (gear → n_in/n_out), ``teeth`` (per set) and the
+            names), ``ratios`` and ``targets`` (gear → n_in/n_out), ``teeth`` and ``sizes`` (module,
+            face width in mm, sun torque in N·m, Lewis stress in MPa, per set), ``input_torque`` (N·m) and the
             ranking metrics (errors, efficiencies, element torque, planet speed, double shifts).
         """
         return {"architecture": self.describe(), "ties": self.mechanism.describe(),
                 "input": self.shaft_name(self.input), "output": self.shaft_name(self.output),
                 "schedule": {g: list(v) for g, v in self.named_schedule.items()},
                 "ratios": dict(zip(self.gears, self.ratios)), "targets": dict(zip(self.gears, self.targets)),
-                "teeth": [t.to_dict() for t in self.teeth], **self.metrics}
+                "teeth": [t.to_dict() for t in self.teeth],
+                "sizes": [None if z is None else z.to_dict() for z in self.sizes], "input_torque": self.input_torque,
+                **self.metrics}
 
 
 def _members(mech: Mechanism, shaft: int) -> str:
@@ -334,7 +348,8 @@ def _members(mech: Mechanism, shaft: int) -> str:
     return "+".join(f"{p}{k + 1}" for k, p in members) or "separate shaft"
 
 
-def evaluate(candidate: Candidate) -> Candidate:
+def evaluate(candidate: Candidate, input_torque: float | None = None, allowable_stress: float = 200.0,
+             face_width_factor: float = 10.0) -> Candidate:
     """Fill the figures of merit with the project's solver (drive and coast, losses by power flow).
 
     Metrics (all per input speed, torque or power):
@@ -342,15 +357,45 @@ def evaluate(candidate: Candidate) -> Candidate:
     * ``efficiency`` per gear in drive, ``efficiency_mean`` over forward gears,
       ``efficiency_min`` (None where a gear self-locks);
     * ``element_torque_max``: largest torque on an engaged clutch or brake, × T_in;
+    * ``element_capacity``: sum over the elements of each one's largest torque, × T_in;
+    * ``slip_speed_max``: largest slip of an open element in a forward gear, × n_in;
+    * ``circulating_power_max``: largest power circulating in a loop, any gear, × P_in
+      (``circulation_indeterminate``: gears where the torque split is statically indeterminate);
     * ``planet_speed_max``: largest |n_planet − n_carrier|, × n_in;
     * ``double_shifts``: consecutive forward gears that change more than one element;
     * ``step_irregularity``: largest change of log step between neighbouring steps;
     * ``shafts``: number of shafts (fewer is simpler); ``ratio_error``: largest |r/target − 1|.
+
+    With ``input_torque`` (N·m) every simple set is also sized (:func:`~epicyclic.synthesis.sizing.size_set`,
+    Lewis) for its largest sun torque over the gears: the candidate's ``sizes``.
+
+    Parameters
+    ----------
+    candidate : Candidate
+    input_torque : float, optional
+        N·m; None leaves the sets unsized.
+    allowable_stress : float, default 200
+        MPa, Lewis bending stress allowed.
+    face_width_factor : float, default 10
+        b / m.
+
+    Returns
+    -------
+    Candidate
+        With ``metrics`` (and ``sizes``) filled.
     """
     t = candidate.transmission()
     analysis = t.analyze_all()
     eff = {g.gear: g.efficiency_drive for g in analysis.gears}
     torque = max((abs(v) for g in analysis.gears for v in g.element_torques.values()), default=0.0)
+    capacity: dict[str, float] = {}  # each element's largest torque over the gears
+    for g in analysis.gears:
+        for name, v in g.element_torques.items():
+            capacity[name] = max(capacity.get(name, 0.0), abs(v))
+    forward_gears = analysis.gears[:candidate.forward]
+    slip = max((abs(v) for g in forward_gears for v in g.slip_speeds.values()), default=0.0)
+    circulating = [g.circulating_power_ratio for g in analysis.gears]
+    indeterminate = [g.gear for g, c in zip(analysis.gears, circulating) if c is None]
     planet = 0.0
     sets = [e for e in t.train.planetary_sets]
     for g in analysis.gears:
@@ -374,21 +419,27 @@ def evaluate(candidate: Candidate) -> Candidate:
         "efficiency_mean": float(np.mean(defined)) if defined else None,
         "efficiency_min": float(min(defined)) if len(defined) == len(forward_eff) else None,
         "element_torque_max": float(torque),
+        "element_capacity": float(sum(capacity.values())),
+        "slip_speed_max": float(slip),
+        "circulating_power_max": float(max((c for c in circulating if c is not None), default=0.0)),
+        "circulation_indeterminate": indeterminate,
         "planet_speed_max": float(planet),
         "double_shifts": int(doubles),
         "step_irregularity": irregular,
         "shafts": candidate.mechanism.shafts,
         "ratio_error": float(max(abs(r / g - 1) for r, g in zip(candidate.ratios, candidate.targets))),
     }
-    return replace(candidate, metrics=metrics)
-
-
-def rank_key(candidate: Candidate) -> tuple:
-    """Ranking: fewest double shifts, then highest mean drive efficiency (0.1 % steps), lowest
-    shift-element torque (0.5 × T_in steps), lowest planet speed (0.5 × n_in steps), fewest
-    shafts, smoothest steps."""
-    m = candidate.metrics
-    eff = m.get("efficiency_mean")
-    return (m.get("double_shifts", 99), -(math.floor(eff * 1000) if eff is not None else -1),
-            round(m.get("element_torque_max", math.inf) * 2), round(m.get("planet_speed_max", math.inf) * 2),
-            m.get("shafts", 99), round(m.get("step_irregularity", math.inf), 3))
+    sizes: tuple[SetSize | None, ...] = ()
+    if input_torque is not None:
+        sun_torque = [0.0] * len(candidate.teeth)  # largest |T_sun| / T_in over the gears
+        for g in analysis.gears:
+            t_in = abs(g.drive.torque("in")) or 1.0
+            for k in range(len(candidate.teeth)):
+                sun_torque[k] = max(sun_torque[k], abs(g.drive.elements[f"P{k + 1}"].torques["sun"]) / t_in)
+        sizes = tuple(None if tooth.z_planet is None else
+                      size_set(sun_torque[k] * input_torque, tooth.z_sun, tooth.z_planet, tooth.planets,
+                               allowable_stress, face_width_factor)
+                      for k, tooth in enumerate(candidate.teeth))
+        metrics["modules"] = [None if z is None else z.module for z in sizes]
+    return replace(candidate, metrics=metrics, sizes=sizes,
+                   input_torque=candidate.input_torque if input_torque is None else float(input_torque))

@@ -44,7 +44,7 @@ from ..results.zero import clean_array
 from .mechanisms import Mechanism
 
 __all__ = ["element_count", "element_shafts", "element_rows", "willis_matrices", "combination_determinants",
-           "corner_points", "ratio_ranges", "gear_ratios"]
+           "hadamard_bound", "corner_points", "ratio_ranges", "gear_ratios"]
 
 
 def element_count(shafts: int) -> int:
@@ -133,8 +133,36 @@ def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: n
     funcs = rows @ basis_null  # (P, elements, d)
     cof = _cofactors(funcs, combos)  # (P, T, d)
     det = kappa[:, None, None] * (cof @ np.swapaxes(basis_null, 1, 2))
-    # round-off of an exact zero (an output that stands still) is zero, relative to the largest minor
-    return clean_array(det, np.abs(det).max(axis=2, keepdims=True))
+    # round-off of an exact zero (an output that stands still, or a combination that is no gear, whose
+    # minors all vanish) is zero, relative to Hadamard's bound of the minors
+    return clean_array(det, hadamard_bound(mechanism, ratios, combos, rows)[:, :, None])
+
+
+def hadamard_bound(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray,
+                   rows: np.ndarray | None = None) -> np.ndarray:
+    """Hadamard's bound of every minor D_x = det[L; E; e_x]: the product of the row norms, shape (P, T).
+
+    |det M| ≤ Π ||row_i|| (Hadamard 1893), and e_x has norm 1, so one bound holds for every
+    shaft x.  It is the scale against which round-off of an exact zero is recognised: a
+    combination that is no gear has *all* its minors zero, which its largest minor cannot tell.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+    ratios : ndarray (P, S)
+    combos : ndarray of int (T, k)
+    rows : ndarray, optional
+        Element rows (default :func:`element_rows`).
+
+    References
+    ----------
+    Hadamard, J. (1893), "Résolution d'une question relative aux déterminants", Bull. Sci. Math. 17.
+    """
+    ratios = np.atleast_2d(np.asarray(ratios, dtype=float))
+    rows = element_rows(mechanism.shafts) if rows is None else rows
+    willis = np.prod(np.sqrt(1.0 + ratios ** 2 + (1.0 - ratios) ** 2), axis=1)  # (P,)
+    elements = np.prod(np.linalg.norm(rows, axis=1)[np.asarray(combos)], axis=1)  # (T,)
+    return willis[:, None] * elements[None, :]
 
 
 def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:

@@ -6,11 +6,12 @@ import csv
 import html
 import io
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from .candidate import Candidate
+from .ranking import CRITERIA, Standing
 from .spec import SynthesisSpec
 
 __all__ = ["SynthesisResult"]
@@ -22,7 +23,7 @@ def _f(value: Any, digits: int = 4) -> str:
 
 @dataclass(frozen=True)
 class SynthesisResult:
-    """Candidates ranked best first (see :func:`~epicyclic.synthesis.candidate.rank_key`).
+    """Candidates ranked best first by weighted criteria (:mod:`~epicyclic.synthesis.ranking`).
 
     Attributes
     ----------
@@ -31,11 +32,79 @@ class SynthesisResult:
         All distinct (non-isomorphic) candidates found, ranked.
     stats : dict
         Mechanisms, architectures examined, screened, fitted, seconds, workers.
+    standings : tuple of Standing
+        Score, criteria, weighted terms and Pareto status of each candidate, same order.
     """
 
     spec: SynthesisSpec
     candidates: tuple[Candidate, ...]
     stats: dict[str, Any]
+    standings: tuple[Standing, ...] = ()
+
+    def __post_init__(self) -> None:
+        if not self.standings and self.candidates:
+            from .ranking import rank
+
+            candidates, standings = rank(self.candidates, dict(self.spec.weights), self.spec.module)
+            object.__setattr__(self, "candidates", candidates)
+            object.__setattr__(self, "standings", standings)
+
+    def rerank(self, weights: dict[str, float] | None = None, module: float | None = None,
+               diameters: Any = None) -> SynthesisResult:
+        """The same candidates ranked with other weights (no search is repeated).
+
+        Parameters
+        ----------
+        weights : mapping criterion → weight, optional
+            Changes to the spec's weights (:data:`~epicyclic.synthesis.ranking.CRITERIA`).
+        module : float, optional
+            mm, for the ring diameters (default: the spec's).
+        diameters : callable (candidate) → ring pitch diameters in mm, optional
+            A sizing function instead of the fixed module (the hook for a load-capacity sizing).
+
+        Returns
+        -------
+        SynthesisResult
+
+        Raises
+        ------
+        SynthesisError
+            An unknown criterion or a weight that is not a finite number >= 0.
+        """
+        from .ranking import check_weights, rank
+        from .spec import SynthesisError
+
+        merged = {**dict(self.spec.weights), **(weights or {})}
+        check_weights(merged, lambda name, message: SynthesisError(f"rerank: weight {name!r}: {message}"))
+        spec = replace(self.spec, weights=tuple(merged.items()), module=module or self.spec.module)
+        candidates, standings = rank(self.candidates, merged, spec.module, diameters)
+        return SynthesisResult(spec, candidates, self.stats, standings)
+
+    @property
+    def pareto(self) -> tuple[Candidate, ...]:
+        """The candidates on the Pareto front, in rank order."""
+        return tuple(c for c, s in zip(self.candidates, self.standings) if s.pareto)
+
+    def explain(self, rank: int | None = None) -> str:
+        """Why each top candidate (or the one of ``rank``) ranks where it does, against rank 1.
+
+        Parameters
+        ----------
+        rank : int, optional
+            One candidate's rank (1: the best); default: every shown candidate.
+
+        Returns
+        -------
+        str
+        """
+        from .spec import SynthesisError
+
+        if not self.standings:
+            return "no candidates"
+        if rank is not None and not 1 <= rank <= len(self.standings):
+            raise SynthesisError(f"explain: rank must lie in 1…{len(self.standings)}, got {rank!r}.")
+        chosen = [self.standings[rank - 1]] if rank else self.standings[:self.spec.top]
+        return "\n".join(s.explain(self.standings[0]) for s in chosen)
 
     def __len__(self) -> int:
         return len(self.candidates)
@@ -52,24 +121,33 @@ class SynthesisResult:
         """The first ``spec.top`` candidates (what the table shows)."""
         return self.candidates[:self.spec.top]
 
-    HEADER = ("rank", "ratios", "max err %", "η mean", "η min", "T elem max", "n planet max", "double shifts",
-              "shafts", "teeth (z_s/z_p/z_r ×N)", "architecture")
+    HEADER = ("rank", "score", "Pareto", "ratios", "max err %", "η mean", "η min", "P circ max", "T elem max",
+              "T elem sum", "slip max", "n planet max", "ring ratio", "double shifts", "shafts",
+              "teeth (z_s/z_p/z_r ×N)", "architecture")
 
     def _rows(self) -> list[list[str]]:
         rows = []
-        for k, c in enumerate(self.top, 1):
+        for k, (c, st) in enumerate(zip(self.top, self.standings), 1):
             m = c.metrics
             teeth = " ".join(f"{t.z_sun}/{t.z_planet or '-'}/{t.z_ring}×{t.planets}" for t in c.teeth)
-            rows.append([str(k), " ".join(f"{r:.3f}" for r in c.ratios), _f(100 * m["ratio_error"], 2),
-                         _f(m["efficiency_mean"]), _f(m["efficiency_min"]), _f(m["element_torque_max"], 2),
-                         _f(m["planet_speed_max"], 2), str(m["double_shifts"]), str(m["shafts"]), teeth, c.describe()])
+            rows.append([str(k), _f(st.score, 2), "yes" if st.pareto else f"no (#{st.dominated_by})",
+                         " ".join(f"{r:.3f}" for r in c.ratios), _f(100 * m["ratio_error"], 2),
+                         _f(m["efficiency_mean"]), _f(m["efficiency_min"]), _f(m.get("circulating_power_max"), 2),
+                         _f(m["element_torque_max"], 2), _f(m.get("element_capacity"), 2),
+                         _f(m.get("slip_speed_max"), 2), _f(m["planet_speed_max"], 2),
+                         _f(st.values["ring_balance"] + 1, 2), str(m["double_shifts"]), str(m["shafts"]), teeth,
+                         c.describe()])
         return rows
 
     def _footer(self) -> str:
         s = self.stats
-        return (f"{s['candidates']} candidates from {s['architectures']:,} architectures on {s['mechanisms']:,} "
-                f"mechanisms ({s['screened']:,} passed screening, {s['fitted']:,} fitted); {s['tasks']} Dask tasks "
+        text = (f"{s['candidates']} candidates from {s['architectures']:,} architectures on {s['mechanisms']:,} "
+                f"mechanisms ({s['screened']:,} passed screening, {s['fitted']:,} fitted); {s['tasks']} tasks "
                 f"on {s['workers']} worker(s), {s['seconds']:.1f} s")
+        if not s.get("complete", True):
+            text += (f". INCOMPLETE: stopped at the time limit ({self.spec.time_limit:g} s) after "
+                     f"{s['tasks_done']} of {s['tasks']} tasks; raise [search] time_limit for the whole space")
+        return text
 
     def table(self) -> str:
         """Text table of the top candidates and their schedules."""
@@ -83,9 +161,14 @@ class SynthesisResult:
             lines.append("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
             if k == 0:
                 lines.append("  ".join("-" * w for w in widths))
-        for k, c in enumerate(self.top[:5], 1):
+        weights = dict(zip((c.name for c in CRITERIA), (c.weight for c in CRITERIA)))
+        weights.update(dict(self.spec.weights))
+        lines.append("score = Σ weight · criterion / scale (smaller is better): "
+                     + ", ".join(f"{c.name} {weights[c.name]:g}/{c.scale:g}" for c in CRITERIA))
+        for k, (c, st) in enumerate(zip(self.top[:5], self.standings), 1):
             sched = ", ".join(f"{g}: {'+'.join(v)}" for g, v in c.named_schedule.items())
-            lines.append(f"#{k}: {c.describe()}\n    schedule {sched}")
+            lines.append(f"#{k}: {c.describe()}\n    schedule {sched}\n    why: "
+                         + st.explain(self.standings[0]).split(": ", 1)[1])
         lines.append(self._footer())
         return "\n".join(lines)
 
@@ -115,7 +198,8 @@ class SynthesisResult:
         """JSON-ready: spec, statistics and the top candidates (ratios n_in/n_out, torques × T_in)."""
         spec = {k: v for k, v in self.spec.__dict__.items()}
         return {"spec": spec, "stats": dict(self.stats),
-                "candidates": [{"rank": k, **c.to_dict()} for k, c in enumerate(self.top, 1)]}
+                "pareto_front": [k for k, s in enumerate(self.standings[:len(self.top)], 1) if s.pareto],
+                "candidates": [{**c.to_dict(), **s.to_dict()} for c, s in zip(self.top, self.standings)]}
 
     def to_json(self) -> str:
         """:meth:`to_dict` as indented JSON text.
@@ -132,12 +216,15 @@ class SynthesisResult:
         writer = csv.writer(buffer, lineterminator="\n")
         gears = self.top[0].gears if self.top else []
         writer.writerow(["rank", "efficiency_mean", "efficiency_min", "element_torque_max", "planet_speed_max",
-                         "double_shifts", "shafts", "ratio_error", *[f"ratio_{g}" for g in gears],
-                         "teeth", "architecture"])
-        for k, c in enumerate(self.top, 1):
+                         "double_shifts", "shafts", "ratio_error", "score", "pareto", "circulating_power_max",
+                         "element_capacity", "slip_speed_max", *[f"ratio_{g}" for g in gears], "teeth",
+                         "architecture"])
+        for k, (c, st) in enumerate(zip(self.top, self.standings), 1):
             m = c.metrics
             writer.writerow([k, m["efficiency_mean"], m["efficiency_min"], m["element_torque_max"],
-                             m["planet_speed_max"], m["double_shifts"], m["shafts"], m["ratio_error"], *c.ratios,
+                             m["planet_speed_max"], m["double_shifts"], m["shafts"], m["ratio_error"],
+                             st.to_dict()["score"], st.pareto, m.get("circulating_power_max"),
+                             m.get("element_capacity"), m.get("slip_speed_max"), *c.ratios,
                              " ".join(f"{t.z_sun}/{t.z_planet or '-'}/{t.z_ring}x{t.planets}" for t in c.teeth),
                              c.describe()])
         return buffer.getvalue()

@@ -38,10 +38,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .kinematics import combination_determinants, element_rows, element_shafts, ratio_ranges
+from ..results.zero import clean_array
+from .kinematics import combination_determinants, element_rows, element_shafts, hadamard_bound, ratio_ranges
 from .mechanisms import PORTS, Mechanism
 
-__all__ = ["Placement", "Layout", "layout", "screen"]
+__all__ = ["Placement", "Layout", "layout", "multilinear", "screen"]
 
 
 @dataclass(frozen=True)
@@ -101,6 +102,19 @@ class Layout:
         return [(int(self.brake_shafts[a]), int(a), int(b)) for a, b in zip(starts, stops)]
 
     @functools.cached_property
+    def block_combos(self) -> list[np.ndarray]:
+        """Per block of :attr:`blocks`: the combinations its element sets can engage (brakes among its own).
+
+        Every combination of an element set engages only that set's brakes, so a block
+        whose combinations together miss a target cannot hold an architecture that
+        reaches it: the exact block-level bound of the screening.
+        """
+        shafts_of = element_shafts(self.shafts)
+        brake_bits = np.array([sum(1 << shafts_of[e][0] for e in row if len(shafts_of[e]) == 1)
+                               for row in self.combos], dtype=np.int64)
+        return [np.flatnonzero((brake_bits & ~bits) == 0) for bits, _, _ in self.blocks]
+
+    @functools.cached_property
     def columns(self) -> np.ndarray:
         """``set_combos`` transposed and contiguous (C, A): fast per-combination gathers."""
         return np.ascontiguousarray(self.set_combos.T)
@@ -128,8 +142,10 @@ def layout(shafts: int, brakes: int, clutches: int, engaged: int) -> Layout:
     weights = n_elements ** np.arange(engaged - 1, -1, -1, dtype=np.int64)
     codes = combos.astype(np.int64) @ weights  # combos are sorted rows in lexicographic order
     local = np.array(list(itertools.combinations(range(brakes + clutches), engaged)), dtype=np.int32)
-    picked = np.sort(element_sets[:, local], axis=2)  # (A, C, k)
-    set_combos = np.searchsorted(codes, picked.astype(np.int64) @ weights).astype(np.int32)
+    set_combos = np.empty((len(element_sets), len(local)), dtype=np.int32)
+    for start in range(0, len(element_sets), 1 << 16):  # in chunks: the (A, C, k) codes of 2·10^6 sets were 1 GB
+        picked = np.sort(element_sets[start:start + (1 << 16)][:, local], axis=2)  # (chunk, C, k)
+        set_combos[start:start + (1 << 16)] = np.searchsorted(codes, picked.astype(np.int64) @ weights)
     bits = np.array([sum(1 << x for x in s) for s in shafts_of], dtype=np.int64)
     brake_bits = np.where(is_brake, bits, 0)
     return Layout(shafts, brakes, clutches, engaged, combos, element_sets, set_combos,
@@ -158,6 +174,41 @@ def _cached_grid(low_t: tuple[float, ...], high_t: tuple[float, ...], level: int
     offsets = np.array(list(itertools.product((0, 1), repeat=sets)))
     corners = ((box_cells[:, None, :] + offsets[None, :, :]) * stride).sum(axis=2)
     return points, corners
+
+
+def multilinear(corner_values: np.ndarray, points: np.ndarray, level: int, sets: int) -> np.ndarray:
+    """Values at grid points (numbers of :func:`_grid` at ``level``) of functions multilinear in i0.
+
+    A function multilinear in the S stationary ratios is fixed by its values at
+    the 2^S corners of the box: at fractional position t it is
+    Σ_corners Π_k (t_k or 1 − t_k) · value (tensor-product linear interpolation,
+    exact for multilinear functions).  The combination determinants D_x are
+    multilinear (each Willis row holds one i0, linearly), so their values
+    anywhere in the box cost one small matrix product instead of a solve.
+
+    Parameters
+    ----------
+    corner_values : ndarray (2^S, ...)
+        Values at the box's corners in the order of ``_grid(low, high, 0)``.
+    points : ndarray of int
+        Grid point numbers at ``level`` (set 0 most significant, base 2^level + 1).
+    level, sets : int
+
+    Returns
+    -------
+    ndarray (len(points), ...)
+
+    >>> corner = np.array([0.0, 1.0, 2.0, 3.0])   # f = 2 t0 + t1 on the unit square
+    >>> multilinear(corner, np.array([0, 4, 8]), 1, 2).tolist()   # (0, 0), (1/2, 1/2), (1, 1)
+    [0.0, 1.5, 3.0]
+    """
+    cells = 2 ** level
+    digits = (np.asarray(points)[:, None] // (cells + 1) ** np.arange(sets - 1, -1, -1)) % (cells + 1)
+    t = digits / cells  # (P, S)
+    bits = np.array(list(itertools.product((0, 1), repeat=sets)), dtype=bool)  # (2^S, S), set 0 first
+    weights = np.prod(np.where(bits[None, :, :], t[:, None, :], 1.0 - t[:, None, :]), axis=2)  # (P, 2^S)
+    flat = corner_values.reshape(corner_values.shape[0], -1)
+    return (weights @ flat).reshape((len(points),) + corner_values.shape[1:])
 
 
 def _children(boxes: np.ndarray, level: int, sets: int) -> np.ndarray:
@@ -216,8 +267,8 @@ def _passes_rows(masks: np.ndarray, full: int, gears: int) -> np.ndarray:
 
 def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray, forward: np.ndarray,
            reverse: np.ndarray, tolerance: float, levels: int = 2,
-           input_members: tuple[str, ...] = PORTS, output_members: tuple[str, ...] = PORTS
-           ) -> tuple[list[Placement], int]:
+           input_members: tuple[str, ...] = PORTS, output_members: tuple[str, ...] = PORTS,
+           interpolate: bool = True, prune: bool = True) -> tuple[list[Placement], int]:
     """Every (input, output, element set) of the mechanism that survives screening.
 
     Parameters
@@ -237,6 +288,14 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     input_members, output_members : tuple of str
         Members ("sun", "ring", "carrier") the input / output shaft must hold
         one of (a separate input shaft is always allowed).
+    interpolate : bool, default True
+        Determinants inside the box by multilinear interpolation of their values
+        at its corners (:func:`multilinear`; exact, as they are multilinear in
+        i0), instead of solving every grid point again (False: the reference).
+    prune : bool, default True
+        Skip a block of element sets with the same brakes when the combinations
+        its sets can engage together miss a target or are fewer than the gears
+        (exact: no architecture in it could pass; False: the reference).
 
     Returns
     -------
@@ -254,6 +313,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     full = (1 << gears) - 1
     points, corners = _grid(low, high, 0)
     det = combination_determinants(mech, points, lay.combos, element_rows(mech.shafts))  # (2^S, T, N)
+    whole_box = det
     single = [x for x in range(mech.member_shafts) if len(mech.shaft_members(x)) == 1]
     if mech.free_input:
         pairs = [(mech.member_shafts, y) for y in range(mech.member_shafts)]
@@ -279,25 +339,30 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     reach_fwd = np.bitwise_or.reduce(fwd_mask, axis=0)  # targets any combination can reach, per pair
     reach_rev = np.bitwise_or.reduce(rev_mask, axis=0)
 
-    fwd_rows = np.ascontiguousarray(fwd_mask.T)  # (pairs, T)
-    rev_rows = np.ascontiguousarray(rev_mask.T)
+    narrow = np.int32 if gears <= 31 else np.int64  # half the bytes to gather per architecture
+    fwd_rows = np.ascontiguousarray(fwd_mask.T, dtype=narrow)  # (pairs, T)
+    rev_rows = np.ascontiguousarray(rev_mask.T, dtype=narrow)
     for p, (x, y) in enumerate(pairs):
         if reach_fwd[p] != full and (mech.free_input or reach_rev[p] != full):
             continue  # some target is out of reach of every combination, in both directions
         io = (1 << x) | (1 << y)
         need = sum(1 << s for s in single if s not in (x, y)) | ((1 << x) if mech.free_input else 0)
-        blocks = [(start, stop) for bits, start, stop in lay.blocks if not bits & io]
+        blocks = [(start, stop, b) for b, (bits, start, stop) in enumerate(lay.blocks) if not bits & io]
         if not blocks:
             continue
         directions = [d for d in ([(x, y, fwd_rows, reach_fwd)] if mech.free_input else
                                   [(x, y, fwd_rows, reach_fwd), (y, x, rev_rows, reach_rev)])
                       if (mech.free_input or role_ok(d[0], input_members)) and role_ok(d[1], output_members)]
-        for start, stop in blocks:
+        for start, stop, block in blocks:
             covered = (lay.touched[start:stop] & need) == need
             examined += int(covered.sum()) * len(directions)
             for a, b, rows, reach in directions:
                 if reach[p] != full:
                     continue
+                if prune:  # the block's combinations together must reach every target, with enough of them
+                    reachable = rows[p][lay.block_combos[block]] & full
+                    if np.bitwise_or.reduce(reachable) != full or np.count_nonzero(reachable) < gears:
+                        continue
                 ok = _passes_rows(rows[p][lay.columns[:, start:stop]], full, gears) & covered
                 survivors += [(a, b, start + int(j)) for j in np.flatnonzero(ok)]
     # bisection: every survivor keeps the boxes (at the current level) in which it may reach the targets
@@ -311,7 +376,11 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         for (a, b, j), parents in boxes.items():
             groups.setdefault((a, b), []).append((j, _children(parents, level - 1, sets).ravel()))
         at = np.unique(corners[np.unique(np.concatenate([c for m in groups.values() for _, c in m]))])
-        det = combination_determinants(mech, points[at], lay.combos[used], element_rows(mech.shafts))
+        if interpolate:  # exact: every determinant is multilinear in i0, so its corner values give it anywhere
+            det = clean_array(multilinear(whole_box[:, used, :], at, level, sets),
+                              hadamard_bound(mech, points[at], lay.combos[used])[:, :, None])
+        else:
+            det = combination_determinants(mech, points[at], lay.combos[used], element_rows(mech.shafts))
         nxt = {}
         for (a, b), members in groups.items():
             sets_j = np.array([j for j, _ in members])

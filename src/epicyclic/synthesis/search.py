@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from .candidate import Candidate, evaluate, rank_key
+from .candidate import Candidate, evaluate
 from .fitting import combinations_of_elements, fit_ratios
 from .mechanisms import Mechanism, enumerate_mechanisms
 from .screening import _grid, layout, screen
@@ -71,12 +71,23 @@ def _mechanisms(spec: SynthesisSpec, engaged: int) -> tuple[Mechanism, ...]:
     return found
 
 
+#: Architectures per task the default split aims at (about 10 s of screening): the time limit, progress and
+#: checkpoints act between tasks.
+TASK_ARCHITECTURES = 10**7
+
+
 def plan(spec: SynthesisSpec, chunk: int | None = None) -> list[Task]:
-    """Split the search into independent tasks (``chunk`` mechanisms each; default about 8)."""
+    """Split the search into independent tasks (``chunk`` mechanisms each; default at most 8, fewer where a
+    mechanism holds many architectures: about :data:`TASK_ARCHITECTURES` per task)."""
+    from .estimate import count
+
     tasks = []
     for k in spec.engaged:
         mechs = _mechanisms(spec, k)
-        size = chunk or max(1, min(8, len(mechs) // 16 or 1))
+        if not mechs:
+            continue
+        per = count(spec, mechs).architectures // len(mechs)
+        size = chunk or max(1, min(8, len(mechs) // 16 or 1, TASK_ARCHITECTURES // max(per, 1)))
         tasks += [Task(spec, k, mechs[i:i + size]) for i in range(0, len(mechs), size)]
     if not tasks:
         raise SynthesisError(
@@ -120,7 +131,7 @@ def search_task(task: Task) -> TaskResult:
                 key = (kind, round(i0, 4))
                 if key not in teeth_cache:
                     teeth_cache[key] = tooth_options(i0, kind, tolerance=spec.tolerance, sun=spec.sun,
-                                                     planet=spec.planet, planets=spec.planets)
+                                                     planet=spec.planet, planets=spec.planets, hunting=spec.hunting)
                 options.append(teeth_cache[key])
             chosen = choose_teeth(mech, p.input, p.output, combos, fit.schedule, targets, options, spec.tolerance)
             if chosen is None:
@@ -131,18 +142,24 @@ def search_task(task: Task) -> TaskResult:
                              tuple(tuple(int(e) for e in combos[j]) for j in fit.schedule), teeth,
                              tuple(float(r) for r in ratios), tuple(float(t) for t in targets), forward.size,
                              spec.stationary_efficiency)
-            out.append(evaluate(cand))
+            out.append(evaluate(cand, spec.input_torque, spec.allowable_stress, spec.face_width_factor))
     return TaskResult(tuple(out), len(task.mechanisms), examined, screened, fitted, time.perf_counter() - start,
                       rejected, time.process_time() - cpu)
 
 
 def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str | None = None,
-                    workers: int | None = None, processes: bool = True,
-                    progress: Callable[[int, int], None] | None = None, chunk: int | None = None):
-    """Run a validated :class:`SynthesisSpec` on Dask and rank the candidates (see :func:`synthesize`).
+                    workers: int | None = None, processes: bool | None = None,
+                    progress: Callable[[int, int], None] | None = None, chunk: int | None = None,
+                    announce: Callable[[str], None] | bool = True, checkpoint: str | None = None,
+                    on_candidates: Callable[[tuple[Candidate, ...]], None] | None = None):
+    """Run a validated :class:`SynthesisSpec` and rank the candidates (see :func:`synthesize`).
 
-    Candidates found by several tasks are kept once; the statistics (tasks, workers,
-    mechanisms, screened, fitted, rejected, seconds) go into the result.
+    Before anything is enumerated the size of the search is estimated from counting
+    formulas (:func:`~epicyclic.synthesis.estimate.estimate`), then bounded exactly over
+    the enumerated mechanisms; both are announced, and a search over
+    ``spec.max_architectures`` is refused.  Candidates found by several tasks are kept
+    once; the statistics (tasks, workers, mechanisms, screened, fitted, rejected, seconds,
+    the estimate, whether the search completed) go into the result.
 
     Parameters
     ----------
@@ -153,55 +170,116 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
     scheduler : str, optional
         Address of an existing Dask scheduler (``tcp://host:8786``).
     workers : int, optional
-        Workers of the local cluster started otherwise (default: CPU count).
-    processes : bool, default True
-        Local cluster with worker processes (False: threads in this process).
+        Workers of the local cluster started otherwise (default: CPU count, at most
+        :data:`~epicyclic.limits.MAX_SYNTHESIS_WORKERS`).
+    processes : bool, optional
+        Local workers as processes (True) or threads of this process (False); default: threads
+        for a small search, processes for a big one where the main script allows it
+        (:func:`~epicyclic.synthesis.distributed.use_processes`).
     progress : callable (done, total), optional
         Called after each finished task.
     chunk : int, optional
         Mechanisms per task (default: about 8).
+    announce : callable (str) or bool, default True
+        Where the bound and estimate line goes before the search starts (True: stderr; False: nowhere).
+    checkpoint : str or Path, optional
+        File of finished tasks (:class:`~epicyclic.synthesis.checkpoint.Checkpoint`): written
+        atomically as tasks finish; a search started again with it runs only the missing tasks.
+    on_candidates : callable (tuple of Candidate), optional
+        Called with each finished task's candidates as the task finishes (results stream back).
 
     Returns
     -------
     SynthesisResult
 
+    Raises
+    ------
+    SynthesisError
+        A search over its bound, workers out of range, processes a script cannot start.
+
     References
     ----------
     Kahraman et al. 2004, J. Mech. Des. 126(6), 1071–1081.
     """
-    from .distributed import run_tasks
+    import os
+    import sys
+
+    from .distributed import check_workers, run_tasks, use_processes
+    from .estimate import check, count, estimate
+    from .ranking import rank
     from .results import SynthesisResult
 
+    say = (lambda text: print(text, file=sys.stderr)) if announce is True else (announce or (lambda text: None))
+    workers = check_workers(workers)
+    if chunk is not None and (isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1):
+        raise SynthesisError(f"synthesize: chunk must be a whole number of mechanisms >= 1, got {chunk!r:.40}.")
     start = time.perf_counter()
+    first = estimate(spec)
+    check(spec, first)  # refused before a single mechanism is enumerated
     tasks = plan(spec, chunk)
-    results, used = run_tasks(search_task, tasks, client=client, scheduler=scheduler, workers=workers,
-                              processes=processes, progress=progress)
+    size = count(spec, (m for t in tasks for m in t.mechanisms))
+    check(spec, size)
+    local = client is None and not scheduler
+    n = (workers or os.cpu_count() or 1) if local else None
+    with_processes, note = use_processes(processes, size.worker_seconds, n) if local else (False, None)
+    limit = f", stopped after {spec.time_limit:g} s" if spec.time_limit else ""
+    where = (f"{n} local worker {'process' if with_processes else 'thread'}{'es' * with_processes if n > 1 else ''}"
+             f"{'s' * (not with_processes) if n > 1 else ''}" if local
+             else f"the cluster at {scheduler}" if scheduler else "the given Dask client")
+    saved = None
+    if checkpoint is not None:
+        from .checkpoint import Checkpoint, fingerprint
+
+        saved = Checkpoint(checkpoint, fingerprint(spec, tasks))
+    before = len(saved.done) if saved else 0
+    resumed = f"; {before} task(s) done before, from {checkpoint}" if before else ""
+    say(f"synthesize: {size.describe(n)}; {len(tasks)} task(s) on {where}{limit}{resumed}")
+    if note:
+        say(note)
+
+    def finished(index: int, result: TaskResult) -> None:
+        if saved is not None:
+            saved.add(index, result)
+        if on_candidates is not None:
+            on_candidates(result.candidates)
+
+    try:
+        results, used = run_tasks(search_task, tasks, client=client, scheduler=scheduler, workers=n,
+                                  processes=with_processes, progress=progress, time_limit=spec.time_limit,
+                                  done=saved.done if saved else None, on_result=finished)
+    finally:
+        if saved is not None:  # also when interrupted: what finished is kept
+            saved.save(force=True)
+    finished = [r for r in results if r is not None]
     unique: dict[tuple, Candidate] = {}
-    for r in results:
+    for r in finished:
         for c in r.candidates:
             unique.setdefault(c.key, c)
-    ranked = sorted(unique.values(), key=rank_key)
+    ranked, standings = rank(list(unique.values()), dict(spec.weights), spec.module)
     stats = {
-        "tasks": len(tasks), "workers": used,
-        "mechanisms": sum(r.mechanisms for r in results),
-        "architectures": sum(r.architectures for r in results),
-        "screened": sum(r.screened for r in results),
-        "fitted": sum(r.fitted for r in results),
-        "rejected_ratios": sum(r.rejected.get("ratios", 0) for r in results),
-        "rejected_teeth": sum(r.rejected.get("teeth", 0) for r in results),
+        "tasks": len(tasks), "tasks_done": len(finished), "complete": len(finished) == len(tasks),
+        "workers": used, "processes": with_processes,
+        "mechanisms": sum(r.mechanisms for r in finished),
+        "architectures": sum(r.architectures for r in finished),
+        "screened": sum(r.screened for r in finished),
+        "fitted": sum(r.fitted for r in finished),
+        "rejected_ratios": sum(r.rejected.get("ratios", 0) for r in finished),
+        "rejected_teeth": sum(r.rejected.get("teeth", 0) for r in finished),
         "candidates": len(ranked),
-        "task_seconds": sum(r.seconds for r in results),
-        "task_cpu_seconds": sum(r.cpu_seconds for r in results),
+        "task_seconds": sum(r.seconds for r in finished),
+        "task_cpu_seconds": sum(r.cpu_seconds for r in finished),
+        "estimate": first.to_dict(), "bound": size.to_dict(), "resumed_tasks": before,
         "seconds": time.perf_counter() - start,
     }
-    return SynthesisResult(spec, tuple(ranked), stats)
+    return SynthesisResult(spec, ranked, stats, standings)
 
 
 def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping[str, int] = 2,
                elements: Mapping[str, int] | None = None, constraints: Mapping[str, Any] | None = None, *,
                client: Any = None, scheduler: str | None = None, workers: int | None = None,
-               processes: bool = True, progress: Callable[[int, int], None] | None = None,
-               chunk: int | None = None):
+               processes: bool | None = None, progress: Callable[[int, int], None] | None = None,
+               chunk: int | None = None, announce: Callable[[str], None] | bool = True,
+               checkpoint: str | None = None, on_candidates: Callable[[tuple[Candidate, ...]], None] | None = None):
     """Find transmissions (architecture, shift schedule, tooth counts) that give the target ratios.
 
     Parameters
@@ -225,12 +303,21 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
         Address of an existing Dask scheduler (``tcp://host:8786``).
     workers : int, optional
         Workers of the local cluster started otherwise (default: CPU count).
-    processes : bool, default True
-        Local cluster with worker processes (False: threads in this process).
+    processes : bool, optional
+        Local workers as processes (True) or threads in this process (False); default:
+        threads for small searches, processes for big ones where the script allows (a plain
+        script needs its call under ``if __name__ == "__main__":`` for processes; without it
+        the search runs on threads, or, with processes=True, is refused with that advice).
     progress : callable (done, total), optional
         Called after each finished task.
     chunk : int, optional
         Mechanisms per Dask task (default: about 8, fewer for small searches).
+    announce : callable (str) or bool, default True
+        The bound and estimate of the search, before it starts: True prints it to stderr.
+    checkpoint : str or Path, optional
+        Resumable: finished tasks are kept in this file (written atomically) and not run again.
+    on_candidates : callable (tuple of Candidate), optional
+        Each finished task's candidates, as it finishes.
 
     Returns
     -------
@@ -249,10 +336,11 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
     Examples
     --------
     >>> res = synthesize([2.46, 1.46, 1.0, -2.18], sets=2, elements={"brakes": 2, "clutches": 2, "engaged": 2},
-    ...                  constraints={"tolerance": 0.01}, processes=False, workers=1)
+    ...                  constraints={"tolerance": 0.01}, workers=1, announce=False)
     >>> len(res) > 0, res.best.metrics["double_shifts"], round(res.best.ratios[2], 6)
     (True, 0, 1.0)
     """
     spec = SynthesisSpec.create(targets, sets, elements, constraints)
     return synthesize_spec(spec, client=client, scheduler=scheduler, workers=workers, processes=processes,
-                           progress=progress, chunk=chunk)
+                           progress=progress, chunk=chunk, announce=announce, checkpoint=checkpoint,
+                           on_candidates=on_candidates)

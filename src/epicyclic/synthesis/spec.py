@@ -21,6 +21,7 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     sun = [17, 80]
     planet = [17, 80]
     planets = [3, 4, 5]
+    hunting = false             # true: only hunting-tooth sets (no common factor sun/planet, planet/ring)
     [search]
     max_members_per_shaft = 2   # ties join pairs of members (default: no limit)
     free_input = true           # also a separate input shaft reached by clutches only
@@ -29,6 +30,15 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     levels = 4                  # bisection levels of the screening (at most 16 // sets are used)
     stationary_efficiency = 0.98
     top = 20
+    max_architectures = 1e10    # refuse a larger search before it starts (estimate printed first)
+    time_limit = 3600           # s of wall time; the search stops there and says it is incomplete
+    [ranking]                   # weights of the criteria (epicyclic.synthesis.ranking), 0 leaves one out
+    circulating_power = 2.0
+    double_shifts = 10.0
+    [sizing]                    # module and face width of every set (epicyclic.synthesis.sizing)
+    input_torque = 300.0        # N·m
+    allowable_stress = 200.0    # MPa, Lewis bending
+    face_width_factor = 10.0    # b / m
 
 Every problem raises :class:`SynthesisError` naming the file (or ``synthesize``
 for the Python call), the key and the fix, as every file error does:
@@ -45,17 +55,17 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from math import comb
 from pathlib import Path
 from typing import Any
 
 from ..errors import ModelError
 from ..text import short
-from ..limits import (MAX_PLANETS, MAX_SYNTHESIS_ELEMENTS, MAX_SYNTHESIS_GEARS, MAX_SYNTHESIS_SETS, MAX_TEETH,
-                      MIN_TEETH)
+from ..limits import (MAX_PLANETS, MAX_SYNTHESIS_ARCHITECTURES, MAX_SYNTHESIS_ELEMENTS, MAX_SYNTHESIS_GEARS,
+                      MAX_SYNTHESIS_SETS, MAX_SYNTHESIS_TOP, MAX_TEETH, MIN_TEETH)
 
-__all__ = ["SynthesisError", "SynthesisSpec", "progressive_ratios"]
+__all__ = ["SynthesisError", "SynthesisSpec", "progression_range", "progressive_ratios"]
 
 
 class SynthesisError(ModelError):
@@ -131,12 +141,31 @@ def progressive_ratios(spread: float, gears: int, first: float, progression: flo
     [4.0, 2.0, 1.0]
     """
     z = gears
-    # product of steps = spread: φ1^(z-1) · φ2^((z-1)(z-2)/2) = spread
-    phi1 = (spread / progression ** ((z - 1) * (z - 2) / 2)) ** (1.0 / (z - 1))
-    out = [first]
+    # product of steps = spread: φ1^(z-1) · φ2^((z-1)(z-2)/2) = spread; in logarithms, so that no power
+    # overflows or vanishes (φ2^3081 for 80 gears)
+    log_phi2 = math.log(progression)
+    log_phi1 = (math.log(spread) - log_phi2 * (z - 1) * (z - 2) / 2) / (z - 1)
+    out, log_ratio = [first], math.log(first)
     for k in range(1, z):
-        out.append(out[-1] / (phi1 * progression ** (z - 1 - k)))
+        log_ratio -= log_phi1 + log_phi2 * (z - 1 - k)
+        out.append(math.exp(log_ratio))
     return tuple(out)
+
+
+def progression_range(spread: float, gears: int) -> tuple[float, float]:
+    """Open range of the progression φ2 whose every step φ_k exceeds 1 (falling ratios).
+
+    The smallest step is φ1 (φ2 ≥ 1) or φ1·φ2^(z−2) (φ2 < 1); both exceed 1 exactly when
+    |ln φ2| < 2 ln(spread) / ((z − 1)(z − 2)) (from eq. 6.9 of Naunheimer et al. 2011).
+    Two gears have a single step (the spread): any progression.
+
+    >>> [round(v, 4) for v in progression_range(4.0, 3)]
+    [0.25, 4.0]
+    """
+    if gears <= 2:
+        return 0.0, math.inf
+    limit = 2 * math.log(spread) / ((gears - 1) * (gears - 2))
+    return math.exp(-limit), math.exp(limit)
 
 
 @dataclass(frozen=True)
@@ -161,6 +190,8 @@ class SynthesisSpec:
     sun, planet : (int, int)
         Tooth-count bounds.
     planets : tuple of int
+    hunting : bool
+        Only hunting-tooth simple sets.
     max_members_per_shaft : int or None
     free_input : bool
     input_members, output_members : tuple of str
@@ -168,7 +199,19 @@ class SynthesisSpec:
     levels : int
     stationary_efficiency : float
     top : int
+    max_architectures : int
+        Bound on the architectures screened; a larger search is refused before it starts.
+    time_limit : float or None
+        Wall-time bound, s: the search stops there and its result says it is incomplete.
+    weights : tuple of (str, float)
+        Ranking weights given (the others keep the defaults of :data:`~epicyclic.synthesis.ranking.CRITERIA`).
+    module : float
+        Module of every set, mm, for the ring diameters of the ranking where no set is sized.
+    input_torque, allowable_stress, face_width_factor : float
+        N·m, MPa and b/m of the pre-dimensioning of every set (:mod:`~epicyclic.synthesis.sizing`).
     title : str
+    source : str
+        The file read, or ``synthesize`` (the Python call): first in the messages of the search.
     """
 
     forward: tuple[float, ...]
@@ -183,6 +226,7 @@ class SynthesisSpec:
     sun: tuple[int, int] = (17, 80)
     planet: tuple[int, int] = (17, 80)
     planets: tuple[int, ...] = (3, 4, 5)
+    hunting: bool = False
     max_members_per_shaft: int | None = None
     free_input: bool = True
     input_members: tuple[str, ...] = ("sun", "ring", "carrier")
@@ -190,7 +234,15 @@ class SynthesisSpec:
     levels: int = 4
     stationary_efficiency: float = 0.98
     top: int = 20
+    max_architectures: int = MAX_SYNTHESIS_ARCHITECTURES
+    time_limit: float | None = None
+    weights: tuple[tuple[str, float], ...] = ()
+    module: float = 2.0
+    input_torque: float = 300.0
+    allowable_stress: float = 200.0
+    face_width_factor: float = 10.0
     title: str = "synthesis"
+    source: str = field(default="synthesize", compare=False)
 
     @property
     def kinds(self) -> tuple[str, ...]:
@@ -245,20 +297,31 @@ class SynthesisSpec:
                 if key not in tmap:
                     raise place.error("targets", key, "missing: a spread of ratios needs the number of gears and "
                                                       "the first ratio (gears = 8, first = 4.7).")
+            # the number of gears is checked against the limit before any ratio is built
+            gears = _count(tmap["gears"], place, "targets", "gears", 2, MAX_SYNTHESIS_GEARS)
             spread = _number(tmap["spread"], place, "targets", "spread")
             first = _number(tmap["first"], place, "targets", "first")
-            gears = _count(tmap["gears"], place, "targets", "gears", 2)
             prog = _number(tmap.get("progression", 1.0), place, "targets", "progression")
             for key, value, low in (("spread", spread, "> 1"), ("first", first, "> 0"), ("progression", prog, "> 0")):
                 if not (value > 1 if key == "spread" else value > 0):
                     raise place.error("targets", key, f"expected a number {low}, got {value!r}.")
+            low_p, high_p = progression_range(spread, gears)
+            if not low_p < prog < high_p:
+                raise place.error("targets", "progression",
+                                  f"with spread {spread:g} and {gears} gears the progression must lie in "
+                                  f"({low_p:.6g}, {high_p:.6g}), or a ratio step would be <= 1 (the ratios would "
+                                  f"not fall); got {prog!r} (1 is a geometric series).")
             forward = list(progressive_ratios(spread, gears, first, prog))
+            if not all(math.isfinite(v) and v >= 1e-6 for v in forward) or forward[0] > 1e6:
+                raise place.error("targets", "first", f"first ratio {first:g} with spread {spread:g} gives ratios "
+                                                      "outside 1e-6 ... 1e6; give a first ratio such as 4.7.")
             reverse = [_number(v, place, "targets", "reverse") for v in _list(tmap.get("reverse", []), place,
                                                                                "reverse")]
         elif "ratios" in tmap:
             values = tmap["ratios"]
             if isinstance(values, (str, bytes)) or not isinstance(values, Sequence) or not values:
                 raise place.error("targets", None, f"expected a non-empty list of ratios, got {short(values)}.")
+            _list(values, place, None)
             nums = [_number(v, place, "targets", None) for v in values]
             if any(v == 0 for v in nums):
                 raise place.error("targets", None, "a target ratio of 0 is no gear; forward ratios must be > 0 and "
@@ -310,8 +373,15 @@ class SynthesisSpec:
                                                "(see docs/limits.md).")
         if "engaged" in elements:
             engaged = elements["engaged"]
+            if isinstance(engaged, (str, bytes)) or (isinstance(engaged, Sequence) and not 0 < len(engaged) <= total):
+                raise place.error("elements", "engaged", f"expected a number or a list of 1 to {max(total, 1)} "
+                                                         f"numbers, got {short(engaged)}.")
             engaged = (engaged,) if not isinstance(engaged, Sequence) else tuple(engaged)
             kw["engaged"] = tuple(_count(e, place, "elements", "engaged", 1) for e in engaged)
+            repeated = sorted({e for e in kw["engaged"] if kw["engaged"].count(e) > 1})
+            if repeated:
+                raise place.error("elements", "engaged", f"{repeated[0]} is listed twice; each number engaged per "
+                                                         "gear is searched once, so give it once.")
         else:
             kw["engaged"] = tuple(k for k in range(1, total) if comb(total, k) >= gears)
         for k in kw["engaged"]:
@@ -328,9 +398,10 @@ class SynthesisSpec:
 
     @classmethod
     def _with_constraints(cls, kw: dict[str, Any], cons: dict[str, Any], place: _Place) -> SynthesisSpec:
-        allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "max_members_per_shaft",
+        allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "hunting", "max_members_per_shaft",
                    "free_input", "input_members", "output_members", "levels", "stationary_efficiency", "top",
-                   "title"}
+                   "max_architectures", "time_limit", "weights", "module", "input_torque", "allowable_stress",
+                   "face_width_factor", "title"}
         unknown = set(cons) - allowed
         if unknown:
             name = sorted(unknown)[0]
@@ -356,12 +427,16 @@ class SynthesisSpec:
         if "planets" in cons:
             p = cons["planets"]
             p = (p,) if isinstance(p, int) else p
-            if not isinstance(p, Sequence) or not p:
-                raise bad("planets", f"expected a list of planet numbers, got {short(p)}.")
-            kw["planets"] = tuple(_count(v, place, "constraints", "planets", 1, MAX_PLANETS) for v in p)
+            if isinstance(p, (str, bytes)) or not isinstance(p, Sequence) or not 0 < len(p) <= MAX_PLANETS:
+                raise bad("planets", f"expected a list of 1 to {MAX_PLANETS} planet numbers, got {short(p)}.")
+            kw["planets"] = tuple(sorted({_count(v, place, "constraints", "planets", 1, MAX_PLANETS) for v in p}))
         if cons.get("max_members_per_shaft") is not None:
             kw["max_members_per_shaft"] = _count(cons["max_members_per_shaft"], place, "constraints",
                                                  "max_members_per_shaft", 2)
+        if "hunting" in cons:
+            if not isinstance(cons["hunting"], bool):
+                raise bad("hunting", f"expected true or false, got {short(cons['hunting'])}.")
+            kw["hunting"] = cons["hunting"]
         if "free_input" in cons:
             if not isinstance(cons["free_input"], bool):
                 raise bad("free_input", f"expected true or false, got {short(cons['free_input'])}.")
@@ -382,10 +457,41 @@ class SynthesisSpec:
                 raise bad("stationary_efficiency", f"expected an efficiency in (0, 1], got {eta!r}.")
             kw["stationary_efficiency"] = eta
         if "top" in cons:
-            kw["top"] = _count(cons["top"], place, "constraints", "top", 1)
+            kw["top"] = _count(cons["top"], place, "constraints", "top", 1, MAX_SYNTHESIS_TOP)
+        if "max_architectures" in cons:
+            value = cons["max_architectures"]
+            if isinstance(value, float) and value.is_integer():
+                value = int(value)
+            kw["max_architectures"] = _count(value, place, "constraints", "max_architectures", 1, 10**15)
+        if cons.get("time_limit") is not None:
+            limit = _number(cons["time_limit"], place, "constraints", "time_limit")
+            if not 0 < limit <= 30 * 86400:
+                raise bad("time_limit", f"expected seconds in (0, 2592000] (30 days), got {limit!r}.")
+            kw["time_limit"] = limit
+        if "weights" in cons:
+            from .ranking import check_weights
+
+            given = cons["weights"]
+            if not isinstance(given, Mapping):
+                raise bad("weights", f"expected a table of criterion = weight, got {short(given)}.")
+            check_weights(given, lambda name, message: bad(name if place.tables is not None else f"weights.{name}",
+                                                           message))
+            kw["weights"] = tuple((str(k), float(v)) for k, v in given.items())
+        if "module" in cons:
+            module = _number(cons["module"], place, "constraints", "module")
+            if not 0.1 <= module <= 50:
+                raise bad("module", f"expected a module in mm within [0.1, 50], got {module!r}.")
+            kw["module"] = module
+        for key, low, high, unit in (("input_torque", 1e-3, 1e6, "N·m"), ("allowable_stress", 10.0, 3000.0, "MPa"),
+                                     ("face_width_factor", 2.0, 40.0, "(b/m)")):
+            if key in cons:
+                value = _number(cons[key], place, "constraints", key)
+                if not low <= value <= high:
+                    raise bad(key, f"expected {low:g} … {high:g} {unit}, got {value!r}.")
+                kw[key] = value
         if "title" in cons:
             kw["title"] = str(cons["title"])
-        return cls(**kw)
+        return cls(**kw, source=place.source)
 
     @classmethod
     def from_file(cls, path: str | Path) -> SynthesisSpec:
@@ -404,18 +510,31 @@ class SynthesisSpec:
             data = parse_toml(read_source(path), str(path))
         except InputFileError as exc:
             raise SynthesisError(str(exc)) from None
-        unknown = set(data) - {"title", "targets", "sets", "elements", "bounds", "search"}
+        tables_known = ("targets", "sets", "elements", "bounds", "search", "ranking", "sizing")
+        unknown = set(data) - {"title", *tables_known}
         if unknown:
             raise SynthesisError(f"{path}: unknown table(s)/key(s) {', '.join(sorted(map(short, unknown)))}; "
-                                 "use title, [targets], [sets], [elements], [bounds], [search].")
-        for table in ("targets", "sets", "elements", "bounds", "search"):
+                                 "use title, [targets], [sets], [elements], [bounds], [search], [ranking], [sizing].")
+        for table in tables_known:
             if table in data and not isinstance(data[table], Mapping):
                 raise SynthesisError(f"{path}: key {table!r}: expected a table [{table}], got {short(data[table])}.")
         if "targets" not in data:
             raise SynthesisError(f"{path}: missing [targets] table (forward = [...], reverse = [...]).")
-        bounds, search = data.get("bounds", {}), data.get("search", {})
+        bounds, search, ranking = data.get("bounds", {}), data.get("search", {}), dict(data.get("ranking", {}))
         cons = {**bounds, **search}
         tables = {"tolerance": "targets", **{k: "bounds" for k in bounds}, **{k: "search" for k in search}}
+        if "module" in ranking:
+            cons["module"] = ranking.pop("module")
+        if ranking:
+            cons["weights"] = ranking
+        tables.update({k: "ranking" for k in ("module", "weights", *ranking)})
+        sizing = data.get("sizing", {})
+        for key, value in sizing.items():
+            if key not in ("input_torque", "allowable_stress", "face_width_factor"):
+                raise SynthesisError(f"{path}: [sizing], key {key!r}: unknown; use input_torque, allowable_stress, "
+                                     "face_width_factor.")
+            cons[key] = value
+            tables[key] = "sizing"
         if "title" in data:
             cons["title"] = data["title"]
         return cls.create(data["targets"], data.get("sets", {"simple": 2}), data.get("elements"), cons,
@@ -426,4 +545,7 @@ def _list(value: Any, place: _Place, name: str) -> Sequence[Any]:
     """A list of target ratios (``[targets]`` forward or reverse)."""
     if isinstance(value, (str, bytes)) or not isinstance(value, Sequence):
         raise place.error("targets", name, f"expected a list of ratios, got {short(value)}.")
+    if len(value) > MAX_SYNTHESIS_GEARS:  # before any value is read
+        raise place.error("targets", name, f"at most {MAX_SYNTHESIS_GEARS} target ratios, got {len(value)} "
+                                           "(see docs/limits.md).")
     return value

@@ -51,8 +51,12 @@ class SetTeeth:
 
 
 def tooth_options(stationary_ratio: float, kind: str, *, tolerance: float, sun: tuple[int, int],
-                  planet: tuple[int, int], planets: tuple[int, ...], limit: int = 6) -> list[SetTeeth]:
+                  planet: tuple[int, int], planets: tuple[int, ...], limit: int = 6,
+                  hunting: bool = False) -> list[SetTeeth]:
     """Up to ``limit`` tooth-count sets with distinct ratios near ``stationary_ratio``, best first.
+
+    With ``hunting`` only hunting-tooth simple sets (gcd(z_sun, z_planet) = gcd(z_planet, z_ring) = 1,
+    every tooth meets every other: even wear) are offered.
 
     Examples
     --------
@@ -68,7 +72,7 @@ def tooth_options(stationary_ratio: float, kind: str, *, tolerance: float, sun: 
         found = search_teeth(stationary_ratio, held="carrier", driver="sun", driven="ring", tolerance=tolerance,
                              z_sun=sun, z_planet=(3, planet[1]), planets=planets)
         for c in found.candidates:
-            if c.z_planet < planet[0]:
+            if c.z_planet < planet[0] or hunting and not c.hunting:
                 continue
             key = (c.z_sun * 1000 + c.z_ring, 0)
             ratio_key = (round(c.z_ring / c.z_sun, 9), 0)
