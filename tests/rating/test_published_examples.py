@@ -97,7 +97,7 @@ PRINTED = [
     ("Z_D", 1, "1.0"),
     ("N_L", 0, "1.080e9"),
     ("N_L", 1, "1.783e8"),
-    ("Z_NT", 0, "0.910"),
+    ("Z_NT", 0, "0.91"),
     ("Z_NT", 1, "0.962"),
     ("sigma_HP", 0, "1338.48050"),
     ("sigma_HP", 1, "1414.52551"),
@@ -148,6 +148,7 @@ def test_iso_tr_6336_30_example_1_face_load_factor_and_safeties():
     k_hbeta = (1301.35343 / RATING["sigma_H0"]) ** 2 / RATING["K_v"]
     assert k_hbeta == pytest.approx(1.16, abs=0.005)
     exact = _rate(K_Hbeta=k_hbeta)
+    assert exact["K_Fbeta"] == pytest.approx(1.12803, abs=5e-6)  # K_Hβ^N_F, ISO 6336-1:2006, eq. (45)
     for gear, printed_s_h in ((0, "1.02853"), (1, "1.08696")):
         assert exact.gears[gear]["sigma_H"] == pytest.approx(1301.35343, abs=5e-5)
         assert exact.gears[gear].S_H == pytest.approx(float(printed_s_h), abs=_printed_tolerance(printed_s_h))
