@@ -28,7 +28,7 @@ SDP/SI, *Elements of Metric Gear Technology* (D785), section 5.1, Table 5-1
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from ..limits import MAX_TOOTH_HEIGHT_FACTOR, MODULE_RANGE
@@ -280,6 +280,9 @@ class MeshGeometry:
     gear1: GearGeometry
     gear2: GearGeometry
     name: str = ""
+    # α_wt, a pure function of the frozen gears: computed once in __post_init__ (it is asked for by
+    # a_w, d_w, ε_α, k and the rating of every load case; the inverse involute is an iteration).
+    _alpha_wt: float = field(init=False, repr=False, compare=False, default=float("nan"))
 
     def __post_init__(self) -> None:
         owner = f"MeshGeometry {self.name!r}" if self.name else "MeshGeometry"
@@ -304,7 +307,7 @@ class MeshGeometry:
             )
         # Fail early if the profile shifts give no real operating pressure angle.
         try:
-            alpha_wt = self.alpha_wt
+            alpha_wt = float(operating_pressure_angle(self._x_sum, self._z_sum, self.rack.alpha_n, self.rack.alpha_t))
         except ValueError:
             alpha_wt = -1.0
         if not 0.0 < alpha_wt < math.pi / 2:
@@ -312,6 +315,7 @@ class MeshGeometry:
                 f"{owner}: the profile-shift sum {self._x_sum:+.4f} gives no operating pressure angle for "
                 f"z = {self.gear1.teeth}/{self.gear2.teeth} (inv α_wt would be negative); raise the shifts."
             )
+        object.__setattr__(self, "_alpha_wt", alpha_wt)
 
     # ------------------------------------------------------------------ basics
     @classmethod
@@ -398,8 +402,8 @@ class MeshGeometry:
 
     @property
     def alpha_wt(self) -> float:
-        """Operating transverse pressure angle, rad."""
-        return float(operating_pressure_angle(self._x_sum, self._z_sum, self.rack.alpha_n, self.rack.alpha_t))
+        """Operating transverse pressure angle, rad (computed once, at construction)."""
+        return self._alpha_wt
 
     @property
     def operating_pressure_angle(self) -> float:
