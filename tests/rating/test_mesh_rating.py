@@ -99,6 +99,11 @@ def test_material_per_gear_and_bad_values():
     s = spec(material={"pinion": "18CrNiMo7-6", "wheel": "42CrMo4"})
     r = rate_mesh(MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), s), 2000.0, 500.0)
     assert r.gears[1]["sigma_Hlim"] < r.gears[0]["sigma_Hlim"] and r["Z_W"] > 1.0
+    # Z_W raises the softer (through-hardened) wheel only, never the case-carburised pinion (ISO 6336-2, 12)
+    assert r.gears[1]["Z_W"] == r["Z_W"] and r.gears[0]["Z_W"] == 1.0
+    hard = r.gears[0]
+    assert hard["sigma_HG"] == pytest.approx(hard["sigma_Hlim"] * hard["Z_NT"] * r["Z_L"] * r["Z_v"] * r["Z_R"],
+                                             rel=1e-12)
     with pytest.raises(RatingError, match="no entry for gear 'wheel'"):
         MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), spec(material={"pinion": material("16MnCr5")}))
     with pytest.raises(RatingError, match="standard"):
@@ -154,7 +159,7 @@ def test_stresses_and_safeties_are_the_products_of_their_factors(mesh):
     for g, zbd in zip(r.gears, ("Z_B", "Z_D")):
         q = {k: v.value for k, v in g.factors.items()}
         assert q["sigma_H"] == pytest.approx(q[zbd] * sigma_h0 * math.sqrt(load_h), rel=1e-12)
-        limit_h = q["sigma_Hlim"] * q["Z_NT"] * f["Z_L"] * f["Z_v"] * f["Z_R"] * f["Z_W"] * f["Z_X"]
+        limit_h = q["sigma_Hlim"] * q["Z_NT"] * f["Z_L"] * f["Z_v"] * f["Z_R"] * q["Z_W"] * f["Z_X"]
         assert q["S_H"] == pytest.approx(limit_h / q["sigma_H"], rel=1e-12)
         assert q["sigma_HP"] == pytest.approx(limit_h / g.S_Hmin, rel=1e-12)
         sigma_f0 = f["F_t"] / (f["b"] * f["m_n"]) * q["Y_F"] * q["Y_S"] * f["Y_beta"] * q["Y_B"] * f["Y_DT"]

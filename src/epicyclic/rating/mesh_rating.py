@@ -10,7 +10,8 @@ case) in one pass::
     F_t = 2000 T1 / d1                                   (ISO 6336-1, 6.1: at the reference circle)
     σ_H0 = Z_H Z_E Z_ε Z_β √(F_t/(d1 b) (u ± 1)/u)       (ISO 6336-2, eq. (2); − internal)
     σ_H1,2 = Z_B,D σ_H0 √(K_A K_γ K_v K_Hβ K_Hα)         (eq. (1))
-    σ_HG = σ_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X,  σ_HP = σ_HG / S_Hmin,  S_H = σ_HG / σ_H   (eqs. (3), (4))
+    σ_HG = σ_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X,  σ_HP = σ_HG / S_Hmin,  S_H = σ_HG / σ_H   (eqs. (3), (4);
+        Z_W of the softer gear only, 1 for the harder: ISO 6336-2, clause 12)
     σ_F0 = F_t/(b m_n) Y_F Y_S Y_β Y_B Y_DT               (ISO 6336-3, eq. (3))
     σ_F = σ_F0 K_A K_γ K_v K_Fβ K_Fα                     (eq. (2))
     σ_FG = σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X Y_M,  σ_FP = σ_FG / S_Fmin,  S_F = σ_FG / σ_F
@@ -173,6 +174,9 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     rho1, rho2 = flank.pitch_curvature(g1.base_diameter / 2, g2.base_diameter / 2, awt, mesh.internal)
     s["Z_R"] = flank.roughness_factor(rz_flank, rz_flank, rho1, rho2, mesh.internal, hlim)
     s["Z_W"] = flank.work_hardening_factor(*mats)
+    # Z_W raises the strength of the softer, through-hardened gear only (ISO 6336-2, 12); the hard gear: 1
+    s["Z_W_gears"] = [s["Z_W"] if (other.surface_hardened and not m.surface_hardened) else 1.0
+                      for m, other in ((mats[0], mats[1]), (mats[1], mats[0]))]
     s["sigma_Hlim_pair"] = hlim
     # stiffness (the pinion is the gear with fewer teeth), deviations, running-in
     zn = [g.teeth / (math.cos(beta_b) ** 2 * math.cos(beta)) for g in (g1, g2)]
@@ -287,7 +291,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         y_nt = s["Y_curves"][i].factor(cycles)
         z_bd = s["Z_B"] if i == 0 else s["Z_D"]
         sigma_h = z_bd * sigma_h0 * np.sqrt(load_h)
-        sigma_hg = mat.sigma_Hlim * z_nt * s["Z_L"] * z_v * s["Z_R"] * s["Z_W"] * 1.0
+        sigma_hg = mat.sigma_Hlim * z_nt * s["Z_L"] * z_v * s["Z_R"] * s["Z_W_gears"][i] * 1.0
         form = s["forms"][i]
         sigma_f0 = f_t / (b * m_n) * form.Y_F * form.Y_S * s["Y_beta"] * s["Y_B"][i] * s["Y_DT"]
         sigma_f = sigma_f0 * ka * kg * k_v * k_fb * k_fa
@@ -300,6 +304,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
             Factor("sigma_H", _out(sigma_h), "N/mm^2", p2("eq. (1)"), "contact stress"),
             Factor("Z_NT", _out(z_nt), "1", p2("10, Table 2"), "life factor (pitting)"),
             Factor("sigma_Hlim", mat.sigma_Hlim, "N/mm^2", "ISO 6336-5:2016, Table 1", "allowable stress number"),
+            Factor("Z_W", s["Z_W_gears"][i], "1", p2("12"), "work hardening factor (1 for the harder gear)"),
             Factor("sigma_HG", _out(sigma_hg), "N/mm^2", p2("eq. (4)"), "pitting stress limit"),
             Factor("sigma_HP", _out(sigma_hg / spec.S_Hmin), "N/mm^2", p2("eq. (3)"), "permissible contact stress"),
             Factor("S_H", _out(_safety(sigma_hg, sigma_h)), "1", p2("eq. (4)"), "safety factor for pitting"),
@@ -359,7 +364,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("Z_L", s["Z_L"], "1", p2("11.2"), "lubricant factor"),
         Factor("Z_v", _out(z_v), "1", p2("11.3"), "velocity factor"),
         Factor("Z_R", s["Z_R"], "1", p2("11.4"), "roughness factor"),
-        Factor("Z_W", s["Z_W"], "1", p2("12"), "work hardening factor"),
+        Factor("Z_W", s["Z_W"], "1", p2("12"), "work hardening factor of the softer gear of the pair"),
         Factor("Z_X", 1.0, "1", p2("13"), "size factor (pitting)"),
         Factor("Y_beta", s["Y_beta"], "1", p3("7.3"), "helix angle factor (root)"),
         Factor("Y_DT", s["Y_DT"], "1", p3("7.5"), "deep tooth factor"),
