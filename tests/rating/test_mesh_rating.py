@@ -185,3 +185,17 @@ def test_nominal_contact_stress_is_hertz_at_the_pitch_point(internal):
     f_n = 2000 * 400.0 / mesh.gear1.reference_diameter / math.cos(alpha)
     hertz = math.sqrt(f_n * e_star * inv_r / (math.pi * 30.0))
     assert r["sigma_H0"] / r["Z_epsilon"] == pytest.approx(hertz, rel=1e-12)
+
+
+def test_a_given_dynamic_factor_replaces_method_b():
+    # ISO 6336-1, 6: K_v may be given (measured, method A); σ_H ∝ √K_v, σ_F ∝ K_v otherwise unchanged
+    computed = rated(3000.0, speed=3000.0)
+    given = rated(3000.0, speed=3000.0, K_v=1.3)
+    assert given["K_v"] == 1.3 and computed["K_v"] != 1.3
+    assert given.factors["K_v"].clause.endswith("6 (given)")
+    ratio = 1.3 / computed["K_v"]
+    for a, b in zip(computed.gears, given.gears):
+        assert b["sigma_H"] == pytest.approx(a["sigma_H"] * math.sqrt(ratio), rel=1e-9)
+        assert b["sigma_F"] == pytest.approx(a["sigma_F"] * ratio, rel=1e-9)
+    with pytest.raises(RatingError, match="K_v"):
+        spec(K_v=0.5)

@@ -14,6 +14,7 @@
     material = "18CrNiMo7-6"              # or { sun = "...", planet = "...", ring = "42CrMo4", "P1:ring" = "..." }
     quality = "MQ"                        # ML, MQ or ME (ISO 6336-5)
     K_Hbeta = 1.3                         # given; otherwise method C with shaft_deflection (µm)
+    K_v = 1.05                            # given; otherwise method B
     load_sharing = 1.15                   # K_γ of every set (default: the set geometry's, else by planets)
     cutter = { teeth = 24, profile_shift = 0.0, addendum = 1.25, tip_radius = 0.25 }   # internal gears
     rim_thickness = { ring = 12.0 }       # s_R below the root, mm (Y_B); others solid
@@ -45,10 +46,10 @@ from .reader import at_key
 __all__ = ["RATING_KEYS", "read_rating"]
 
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
-               "root_roughness", "material", "quality", "K_Hbeta", "shaft_deflection", "load_sharing",
+               "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
                "rim_thickness"}
-_NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "flank_roughness", "root_roughness", "K_Hbeta",
+_NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "flank_roughness", "root_roughness", "K_Hbeta", "K_v",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
 _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
 

@@ -270,6 +270,8 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     c_p, c_ga, c_gb = load_factors.mesh_stiffness(s["c_prime_th"], s["eps_alpha"], line)
     k_v, resonance, _ = load_factors.dynamic_factor(
         n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, f_pb_eff, f_f_eff, s["eps_gamma"], spec.tip_relief)
+    if spec.K_v is not None:
+        k_v = np.full(np.shape(k_v), spec.K_v)
     f_m = line * k_v
     f_bx = np.maximum.reduce([np.full(f_m.shape, 1.33 * spec.shaft_deflection + s["f_Hbeta"]), 0.005 * f_m,
                               np.full(f_m.shape, 0.5 * s["f_Hbeta"])])
@@ -347,7 +349,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("c_gamma_alpha", _out(c_ga), "N/(mm*um)", p1("9.3.2"), "mesh stiffness"),
         Factor("m_red", s["m_red"], "kg/mm", p1("6.5.9"), "reduced mass per face width"),
         Factor("N", _out(resonance), "1", p1("6.3, eq. (13)"), "resonance ratio"),
-        Factor("K_v", _out(k_v), "1", p1("6.3 (method B)"), "dynamic factor"),
+        Factor("K_v", _out(k_v), "1", p1("6.3 (method B)" if spec.K_v is None else "6 (given)"), "dynamic factor"),
         Factor("f_pb", s["f_pb"], "um", "ISO 1328-1:2013, 5.2", "transverse base pitch deviation"),
         Factor("y_alpha", _out(y_a), "um", p1("8.3.4"), "running-in allowance (pitch)"),
         Factor("F_betax", _out(f_bx), "um", p1("7.6 (method C)"), "initial equivalent misalignment"),

@@ -11,6 +11,7 @@ life                    20000                       required life, h
 S_Hmin / S_Fmin         1.0 / 1.4                   minimum safeties
 accuracy_grade          6                           ISO 1328-1 flank tolerance class
 K_Hbeta                 method C                    a given K_Hβ, or F_βx from f_Hβ (+ 1.33 f_sh)
+K_v                     method B                    a given dynamic factor
 shaft_deflection        0                           f_sh for method C, µm
 load_sharing            of the geometry, else by    K_γ (AGMA 6123/ISO values may be given)
                         number of planets
@@ -95,6 +96,9 @@ class RatingSpec:
     accuracy_grade : int, default 6
     K_Hbeta : float, optional
         Given face load factor; otherwise method C.
+    K_v : float, optional
+        Given dynamic factor (from measurement or a method A analysis, ISO 6336-1, 6.3); otherwise
+        method B.
     shaft_deflection : float, default 0
         f_sh, µm (method C).
     load_sharing : float, optional
@@ -135,6 +139,7 @@ class RatingSpec:
     S_Fmin: float = 1.4
     accuracy_grade: int = 6
     K_Hbeta: float | None = None
+    K_v: float | None = None
     shaft_deflection: float = 0.0
     load_sharing: float | None = None
     tool_tip_radius: float = 0.25
@@ -157,7 +162,7 @@ class RatingSpec:
                 object.__setattr__(self, key, _number(getattr(self, key), key))
         for key in ("shaft_deflection", "tip_relief"):
             object.__setattr__(self, key, _number(getattr(self, key), key, strict=False))
-        for key in ("K_Hbeta", "load_sharing"):
+        for key in ("K_Hbeta", "K_v", "load_sharing"):
             if getattr(self, key) is not None:
                 object.__setattr__(self, key, _number(getattr(self, key), key, 1.0, strict=False))
         g = self.accuracy_grade
@@ -253,7 +258,7 @@ class RatingSpec:
         mats = (m.to_dict() if isinstance(m, Material) else {k: v.to_dict() for k, v in m.items()}) if m else None
         return {"standard": f"ISO 6336:{self.standard}", "application_factor": self.application_factor,
                 "life": self.life, "S_Hmin": self.S_Hmin, "S_Fmin": self.S_Fmin,
-                "accuracy_grade": self.accuracy_grade, "K_Hbeta": self.K_Hbeta,
+                "accuracy_grade": self.accuracy_grade, "K_Hbeta": self.K_Hbeta, "K_v": self.K_v,
                 "shaft_deflection": self.shaft_deflection, "load_sharing": self.load_sharing,
                 "flank_roughness": self.flank_roughness, "root_roughness": self.root_roughness,
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
