@@ -199,3 +199,17 @@ def test_a_given_dynamic_factor_replaces_method_b():
         assert b["sigma_F"] == pytest.approx(a["sigma_F"] * ratio, rel=1e-9)
     with pytest.raises(RatingError, match="K_v"):
         spec(K_v=0.5)
+
+
+def test_without_a_tip_relief_k_v_takes_the_running_in_value():
+    # ISO 6336-1:2006, 6.3: C_ay = (σ_Hlim/97 − 18.45)²/18 + 1.5 µm per gear, the pair's mean
+    from epicyclic.rating.load_factors import running_in_tip_relief
+
+    assert running_in_tip_relief(1500, 1500) == pytest.approx((1500 / 97 - 18.45) ** 2 / 18 + 1.5, rel=1e-12)
+    assert running_in_tip_relief(1500, 700) == pytest.approx(0.5 * (1.9966 + 8.5106), abs=1e-3)
+    default, none, given = (rated(3000.0, speed=3000.0, **kw) for kw in ({}, {"tip_relief": 0.0},
+                                                                         {"tip_relief": 10.0}))
+    assert default["C_a"] == pytest.approx(running_in_tip_relief(1500, 1500), rel=1e-12)
+    assert none["C_a"] == 0.0 and given["C_a"] == 10.0
+    # B_k = |1 − c' C_a/(K_A F_t/b)| falls with C_a here, and K_v with it
+    assert given["K_v"] < default["K_v"] < none["K_v"]

@@ -203,9 +203,8 @@ def _nrel():
               "S_Hmin": 1.25, "S_Fmin": 1.56, "application_factor": 1.25, "K_Hbeta": 1.15, "standard": "2006",
               "tool_tip_radius": 0.38}
     # K_v of the sun mesh by method B; the ring mesh's K_v is the report's (see the case)
-    # C_a = 2.0 µm: the report's running-in tip relief C_ay = (σ_Hlim/97 − 18.45)²/18 + 1.5 of the case-
-    # carburised pair (ISO 6336-1:2006, 6.3), which it takes in B_k for want of a tip relief
-    sun_spec = RatingSpec(material={"sun": CASE, "planet": CASE}, flank_roughness=4.8, tip_relief=2.0, **common)
+    # no tip relief given: C_a of B_k is the running-in C_ay of the pair, as in the report (2.00 µm)
+    sun_spec = RatingSpec(material={"sun": CASE, "planet": CASE}, flank_roughness=4.8, **common)
     # Z_R takes the mean R_z of the pair (ISO 6336-2, eq. (28)): (4.8 + 8.0)/2
     ring_spec = RatingSpec(material={"planet": CASE, "ring": THROUGH}, flank_roughness=6.4, K_v=1.05,
                            cutter=Cutter(36, 0.0, 1.25, 0.30), **common)
@@ -225,7 +224,7 @@ NREL = _nrel()
 # (mesh 0 sun-planet / 1 planet-ring, gear index or None, symbol, printed)
 NREL_PRINTED = [
     (0, None, "F_t", "779454.877"), (0, None, "v", "1.60"), (0, None, "epsilon_alpha", "1.115"),
-    (0, None, "K_v", "1.01"), (0, None, "K_Halpha", "1.00"), (0, None, "K_Falpha", "1.00"),
+    (0, None, "C_a", "2.00"), (0, None, "K_v", "1.01"), (0, None, "K_Halpha", "1.00"), (0, None, "K_Falpha", "1.00"),
     (0, None, "K_Fbeta", "1.12"), (0, None, "Z_H", "2.06"), (0, None, "Z_E", "189.81"),
     (0, None, "Z_epsilon", "0.981"), (0, None, "Z_beta", "1.000"), (0, None, "sigma_H0", "759.92"),
     (0, None, "Z_L", "1.020"), (0, None, "Z_v", "0.961"), (0, None, "Z_R", "1.024"),

@@ -178,6 +178,9 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["Z_W_gears"] = [s["Z_W"] if (other.surface_hardened and not m.surface_hardened) else 1.0
                       for m, other in ((mats[0], mats[1]), (mats[1], mats[0]))]
     s["sigma_Hlim_pair"] = hlim
+    # C_a of B_k in K_v: the designed tip relief, else what running-in wears off (C_ay)
+    s["C_a"] = (load_factors.running_in_tip_relief(mats[0].sigma_Hlim, mats[1].sigma_Hlim)
+                if spec.tip_relief is None else spec.tip_relief)
     # stiffness (the pinion is the gear with fewer teeth), deviations, running-in
     zn = [g.teeth / (math.cos(beta_b) ** 2 * math.cos(beta)) for g in (g1, g2)]
     xs = [g1.profile_shift, g2.profile_shift]
@@ -269,7 +272,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     f_pb_eff, f_f_eff = np.maximum(0.0, s["f_pb"] - y_a), np.maximum(0.0, s["f_falpha"] - y_f)
     c_p, c_ga, c_gb = load_factors.mesh_stiffness(s["c_prime_th"], s["eps_alpha"], line)
     k_v, resonance, _ = load_factors.dynamic_factor(
-        n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, f_pb_eff, f_f_eff, s["eps_gamma"], spec.tip_relief)
+        n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, f_pb_eff, f_f_eff, s["eps_gamma"], s["C_a"])
     if spec.K_v is not None:
         k_v = np.full(np.shape(k_v), spec.K_v)
     f_m = line * k_v
@@ -349,6 +352,8 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("c_gamma_alpha", _out(c_ga), "N/(mm*um)", p1("9.3.2"), "mesh stiffness"),
         Factor("m_red", s["m_red"], "kg/mm", p1("6.5.9"), "reduced mass per face width"),
         Factor("N", _out(resonance), "1", p1("6.3, eq. (13)"), "resonance ratio"),
+        Factor("C_a", s["C_a"], "um", p1("6.3" if spec.tip_relief is not None else "6.3 (C_ay, running-in)"),
+               "tip relief in K_v"),
         Factor("K_v", _out(k_v), "1", p1("6.3 (method B)" if spec.K_v is None else "6 (given)"), "dynamic factor"),
         Factor("f_pb", s["f_pb"], "um", "ISO 1328-1:2013, 5.2", "transverse base pitch deviation"),
         Factor("y_alpha", _out(y_a), "um", p1("8.3.4"), "running-in allowance (pitch)"),

@@ -18,7 +18,7 @@ load_sharing            of the geometry, else by    K_γ (AGMA 6123/ISO values m
 tool_tip_radius         0.25                        ρ_fP* of the basic rack (ISO 53 A)
 long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``"optimum"``: 1.0)
 pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
-tip_relief              0                           C_a for K_v, µm
+tip_relief              running-in C_ay             C_a for K_v, µm (without one: C_ay of the pair)
 rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
 ======================  ==========================  =============================================
 
@@ -51,7 +51,7 @@ __all__ = ["DEFAULTS", "SUGGESTED", "RatingSpec"]
 DEFAULTS: Mapping[str, Any] = MappingProxyType({
     "standard": DEFAULT_EDITION, "application_factor": 1.0, "life": 20000.0, "S_Hmin": 1.0, "S_Fmin": 1.4,
     "accuracy_grade": 6, "shaft_deflection": 0.0, "tool_tip_radius": 0.25, "long_life": "standard",
-    "pitting_permitted": False, "tip_relief": 0.0,
+    "pitting_permitted": False, "tip_relief": None,
 })
 #: The values an error for a missing required key proposes (never taken silently).
 SUGGESTED: Mapping[str, Any] = MappingProxyType({
@@ -109,8 +109,10 @@ class RatingSpec:
         Pinion-type cutter of the internal gears (rack approximation without).
     long_life : str, default "standard"
     pitting_permitted : bool, default False
-    tip_relief : float, default 0
-        C_a, µm.
+    tip_relief : float, optional
+        C_a, µm.  Without one, the running-in tip relief C_ay of the pair (ISO 6336-1:2006, 6.3,
+        the mean of C_ay = (σ_Hlim/97 − 18.45)²/18 + 1.5 of both gears), as ISO 6336-1 prescribes
+        for gears without a designed tip relief; give 0 for none at all.
     notes : tuple of str, default ()
         Remarks carried into every mesh rating.
     rim_thickness : mapping gear → float, optional
@@ -146,7 +148,7 @@ class RatingSpec:
     cutter: Cutter | None = None
     long_life: str = "standard"
     pitting_permitted: bool = False
-    tip_relief: float = 0.0
+    tip_relief: float | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
     rim_thickness: Mapping[str, float] | None = None
 
@@ -160,8 +162,9 @@ class RatingSpec:
         for key in ("flank_roughness", "root_roughness", "viscosity_40", "viscosity_100"):
             if getattr(self, key) is not None:
                 object.__setattr__(self, key, _number(getattr(self, key), key))
-        for key in ("shaft_deflection", "tip_relief"):
-            object.__setattr__(self, key, _number(getattr(self, key), key, strict=False))
+        object.__setattr__(self, "shaft_deflection", _number(self.shaft_deflection, "shaft_deflection", strict=False))
+        if self.tip_relief is not None:
+            object.__setattr__(self, "tip_relief", _number(self.tip_relief, "tip_relief", strict=False))
         for key in ("K_Hbeta", "K_v", "load_sharing"):
             if getattr(self, key) is not None:
                 object.__setattr__(self, key, _number(getattr(self, key), key, 1.0, strict=False))
