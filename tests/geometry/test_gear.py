@@ -11,7 +11,12 @@ from hypothesis import strategies as st
 
 from epicyclic.geometry.errors import GeometryError
 from epicyclic.geometry.gear import BasicRack, GearGeometry, MeshGeometry
-from epicyclic.geometry.involute import inv, inv_inverse, operating_pressure_angle, profile_shift_sum
+from epicyclic.geometry.involute import (
+    inv,
+    inv_inverse,
+    operating_pressure_angle,
+    profile_shift_sum,
+)
 
 
 def test_profile_shifted_external_pair_khk():

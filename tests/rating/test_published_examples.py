@@ -35,7 +35,11 @@ import pytest
 
 from epicyclic.geometry import BasicRack, GearGeometry, MeshGeometry
 from epicyclic.rating import MeshInput, RatingSpec, rate_mesh
-from epicyclic.rating.load_factors import basic_rack_factor, mesh_stiffness, single_stiffness
+from epicyclic.rating.load_factors import (
+    basic_rack_factor,
+    mesh_stiffness,
+    single_stiffness,
+)
 from epicyclic.rating.materials import Material
 
 SOURCE = "ISO/TR 6336-30:2017, Annex A, Example 1 (as transcribed in gfsReboucas/Drivetrain, MATISO_6336.m)"
