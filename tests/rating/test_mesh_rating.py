@@ -213,3 +213,18 @@ def test_without_a_tip_relief_k_v_takes_the_running_in_value():
     assert none["C_a"] == 0.0 and given["C_a"] == 10.0
     # B_k = |1 − c' C_a/(K_A F_t/b)| falls with C_a here, and K_v with it
     assert given["K_v"] < default["K_v"] < none["K_v"]
+
+
+def test_roughness_per_gear():
+    # Z_R from the mean R_z of the pair (ISO 6336-2, eq. (28)); Y_RrelT from each gear's root R_z
+    per_gear = rated(3000.0, flank_roughness={"pinion": 2.0, "wheel": 4.0}, root_roughness={"pinion": 5.0,
+                                                                                              "all": 20.0})
+    mean = rated(3000.0, flank_roughness=3.0, root_roughness=5.0)
+    coarse = rated(3000.0, root_roughness=20.0)
+    assert per_gear["Z_R"] == pytest.approx(mean["Z_R"], rel=1e-12)
+    assert per_gear.gears[0]["Y_RrelT"] == mean.gears[0]["Y_RrelT"]
+    assert per_gear.gears[1]["Y_RrelT"] == coarse.gears[1]["Y_RrelT"] < mean.gears[1]["Y_RrelT"]
+    with pytest.raises(RatingError, match=r"flank_roughness has no entry for gear 'wheel'.*add wheel = 3.0"):
+        rated(3000.0, flank_roughness={"pinion": 2.0})
+    with pytest.raises(RatingError, match="root_roughness.pinion"):
+        spec(root_roughness={"pinion": -1.0})

@@ -209,8 +209,9 @@ def _nrel():
     # K_v of the sun mesh by method B; the ring mesh's K_v is the report's (see the case)
     # no tip relief given: C_a of B_k is the running-in C_ay of the pair, as in the report (2.00 µm)
     sun_spec = RatingSpec(material={"sun": CASE, "planet": CASE}, flank_roughness=4.8, **common)
-    # Z_R takes the mean R_z of the pair (ISO 6336-2, eq. (28)): (4.8 + 8.0)/2
-    ring_spec = RatingSpec(material={"planet": CASE, "ring": THROUGH}, flank_roughness=6.4, K_v=1.05,
+    # R_z per gear as printed: Z_R takes the mean of the pair (ISO 6336-2, eq. (28))
+    ring_spec = RatingSpec(material={"planet": CASE, "ring": THROUGH}, flank_roughness={"planet": 4.8, "ring": 8.0},
+                           K_v=1.05,
                            cutter=Cutter(36, 0.0, 1.25, 0.30), **common)
     sun_mesh = MeshInput("stage 1", MeshGeometry(SUN, PLANET, "sun-planet"), 491.0, ("sun", "planet"), sun_spec,
                          contacts=(3, 1), reversed_bending=(False, True), load_sharing=1.1, planets=3, planet_index=1)

@@ -142,7 +142,8 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     g1, g2 = mesh.gear1, mesh.gear2
     rack = mesh.rack
     mats = (spec.material_of(inp.element, inp.gears[0]), spec.material_of(inp.element, inp.gears[1]))
-    rz_flank, rz_root = spec.required("flank_roughness"), spec.required("root_roughness")
+    rz_flank = [spec.roughness_of("flank_roughness", inp.element, name) for name in inp.gears]
+    rz_root = [spec.roughness_of("root_roughness", inp.element, name) for name in inp.gears]
     nu40 = spec.required("viscosity_40")
     an, beta, at, awt = rack.alpha_n, rack.beta, rack.alpha_t, mesh.alpha_wt
     beta_b = math.asin(math.sin(beta) * math.cos(an))
@@ -172,7 +173,7 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     hlim = min(m.sigma_Hlim for m in mats)
     s["Z_L"] = flank.lubricant_factor(nu40, hlim)
     rho1, rho2 = flank.pitch_curvature(g1.base_diameter / 2, g2.base_diameter / 2, awt, mesh.internal)
-    s["Z_R"] = flank.roughness_factor(rz_flank, rz_flank, rho1, rho2, mesh.internal, hlim)
+    s["Z_R"] = flank.roughness_factor(rz_flank[0], rz_flank[1], rho1, rho2, mesh.internal, hlim)
     s["Z_W"] = flank.work_hardening_factor(*mats)
     # Z_W raises the strength of the softer, through-hardened gear only (ISO 6336-2, 12); the hard gear: 1
     s["Z_W_gears"] = [s["Z_W"] if (other.surface_hardened and not m.surface_hardened) else 1.0
@@ -205,7 +206,7 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["Y_B"] = [root.rim_factor(spec.rim_of(inp.element, name), abs(g.root_diameter - g.tip_diameter) / 2,
                                 rack.module, g.internal) for name, g in zip(inp.gears, (g1, g2))]
     s["Y_delta"] = [root.relative_notch_sensitivity(f.q_s, m.treatment, m.yield_strength) for f, m in zip(forms, mats)]
-    s["Y_R"] = [root.relative_surface_factor(rz_root, m.treatment) for m in mats]
+    s["Y_R"] = [root.relative_surface_factor(rz, m.treatment) for rz, m in zip(rz_root, mats)]
     s["Y_X"] = [root.size_factor(rack.module, m.treatment) for m in mats]
     s["Y_M"] = [root.REVERSED_BENDING if r else 1.0 for r in inp.reversed_bending]
     s["Z_curves"] = [pitting_curve(m.treatment, pitting_permitted=spec.pitting_permitted,

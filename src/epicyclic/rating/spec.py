@@ -66,6 +66,10 @@ def _number(value: object, key: str, low: float = 0.0, *, strict: bool = True) -
     return float(value)
 
 
+def _plain(value):
+    return dict(value) if isinstance(value, Mapping) else value
+
+
 def _missing(key: str, meaning: str) -> RatingError:
     return RatingError(f"rating.{key} is missing ({meaning}); give it in [rating] - e.g. {key} = "
                        f"{SUGGESTED[key]!r}, the value commonly taken.")
@@ -81,8 +85,9 @@ class RatingSpec:
         One material for every gear, or one per gear name (``sun``, ``planet``, ``ring``,
         ``planet1`` ..., ``driving``/``driven`` for stages; an ``element:gear`` key such
         as ``"P1:ring"`` for one element).  Required.
-    flank_roughness, root_roughness : float, optional
-        R_z of flanks and root fillets, µm.  Required.
+    flank_roughness, root_roughness : float or mapping gear → float, optional
+        R_z of flanks and root fillets, µm: one value for every gear, or one per gear name
+        (keys as for ``material``: ``"P1:ring"``, ``"ring"``, ``"all"``).  Required.
     viscosity_40 : float, optional
         Kinematic viscosity of the oil at 40 °C, mm²/s.  Required.
     viscosity_100 : float, optional
@@ -130,8 +135,8 @@ class RatingSpec:
     """
 
     material: Material | Mapping[str, Material] | None = None
-    flank_roughness: float | None = None
-    root_roughness: float | None = None
+    flank_roughness: float | Mapping[str, float] | None = None
+    root_roughness: float | Mapping[str, float] | None = None
     viscosity_40: float | None = None
     viscosity_100: float | None = None
     standard: str = DEFAULT_EDITION
@@ -159,7 +164,13 @@ class RatingSpec:
         object.__setattr__(self, "life", _number(self.life, "life"))
         for key in ("S_Hmin", "S_Fmin", "tool_tip_radius"):
             object.__setattr__(self, key, _number(getattr(self, key), key))
-        for key in ("flank_roughness", "root_roughness", "viscosity_40", "viscosity_100"):
+        for key in ("flank_roughness", "root_roughness"):
+            value = getattr(self, key)
+            if isinstance(value, Mapping):
+                object.__setattr__(self, key, MappingProxyType({k: _number(v, f"{key}.{k}") for k, v in value.items()}))
+            elif value is not None:
+                object.__setattr__(self, key, _number(value, key))
+        for key in ("viscosity_40", "viscosity_100"):
             if getattr(self, key) is not None:
                 object.__setattr__(self, key, _number(getattr(self, key), key))
         object.__setattr__(self, "shaft_deflection", _number(self.shaft_deflection, "shaft_deflection", strict=False))
@@ -234,6 +245,37 @@ class RatingSpec:
         rims = self.rim_thickness or {}
         return rims.get(f"{element}:{gear}", rims.get(gear))
 
+    def roughness_of(self, key: str, element: str, gear: str) -> float:
+        """R_z of ``gear`` of ``element``: ``key`` is ``flank_roughness`` or ``root_roughness``, µm.
+
+        Parameters
+        ----------
+        key : str
+            ``"flank_roughness"`` or ``"root_roughness"``.
+        element : str
+            The set or stage.
+        gear : str
+            The gear's name in it.
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        RatingError
+            No value for that gear (the key and the value commonly taken are named).
+        """
+        given = getattr(self, key)
+        if isinstance(given, Mapping):
+            for name in (f"{element}:{gear}", gear, "all"):
+                if name in given:
+                    return given[name]
+            raise RatingError(f"rating.{key} has no entry for gear {gear!r} of {element!r} (keys "
+                              f"{', '.join(map(repr, given)) or 'none'}); add {gear} = {SUGGESTED[key]} (R_z, µm) "
+                              f"or '{element}:{gear}'.")
+        return self.required(key)
+
     def required(self, key: str) -> float:
         """``flank_roughness``, ``root_roughness`` or ``viscosity_40``; an error naming the key if absent.
 
@@ -263,7 +305,7 @@ class RatingSpec:
                 "life": self.life, "S_Hmin": self.S_Hmin, "S_Fmin": self.S_Fmin,
                 "accuracy_grade": self.accuracy_grade, "K_Hbeta": self.K_Hbeta, "K_v": self.K_v,
                 "shaft_deflection": self.shaft_deflection, "load_sharing": self.load_sharing,
-                "flank_roughness": self.flank_roughness, "root_roughness": self.root_roughness,
+                "flank_roughness": _plain(self.flank_roughness), "root_roughness": _plain(self.root_roughness),
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
                 "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,
                 "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,
