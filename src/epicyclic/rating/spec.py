@@ -66,6 +66,15 @@ def _number(value: object, key: str, low: float = 0.0, *, strict: bool = True) -
     return float(value)
 
 
+def _per_gear(given: Mapping[str, Any], key: str, element: str, gear: str, suggestion: str):
+    """The entry of ``gear`` of ``element`` in a per-gear mapping (``"P1:ring"``, ``"ring"``, ``"all"``)."""
+    for name in (f"{element}:{gear}", gear, "all"):
+        if name in given:
+            return given[name]
+    raise RatingError(f"rating.{key} has no entry for gear {gear!r} of {element!r} (keys "
+                      f"{', '.join(map(repr, given)) or 'none'}); add {gear} = {suggestion} or '{element}:{gear}'.")
+
+
 def _plain(value):
     return dict(value) if isinstance(value, Mapping) else value
 
@@ -220,12 +229,7 @@ class RatingSpec:
         if isinstance(given, Material):
             return given
         if isinstance(given, Mapping):
-            for key in (f"{element}:{gear}", gear, "all"):
-                if key in given:
-                    return given[key]
-            raise RatingError(f"rating.material has no entry for gear {gear!r} of {element!r} (keys "
-                              f"{', '.join(map(repr, given)) or 'none'}); add {gear} = '{SUGGESTED['material']}' "
-                              f"or '{element}:{gear}'.")
+            return _per_gear(given, "material", element, gear, f"'{SUGGESTED['material']}'")
         raise _missing("material", "a material of the data file for every gear, see docs/rating.md")
 
     def rim_of(self, element: str, gear: str) -> float | None:
@@ -268,12 +272,7 @@ class RatingSpec:
         """
         given = getattr(self, key)
         if isinstance(given, Mapping):
-            for name in (f"{element}:{gear}", gear, "all"):
-                if name in given:
-                    return given[name]
-            raise RatingError(f"rating.{key} has no entry for gear {gear!r} of {element!r} (keys "
-                              f"{', '.join(map(repr, given)) or 'none'}); add {gear} = {SUGGESTED[key]} (R_z, µm) "
-                              f"or '{element}:{gear}'.")
+            return _per_gear(given, key, element, gear, f"{SUGGESTED[key]} (R_z, µm)")
         return self.required(key)
 
     def required(self, key: str) -> float:
