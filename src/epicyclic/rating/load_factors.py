@@ -261,7 +261,7 @@ def running_in_tip_relief(sigma_hlim1: float, sigma_hlim2: float) -> float:
     Case-carburised (1500 N/mm²) and through-hardened (700 N/mm²) gears: 2.0 and 8.5 µm:
 
     >>> round(running_in_tip_relief(1500, 1500), 3), round(running_in_tip_relief(700, 700), 2)
-    (1.997, 8.51)
+    (1.995, 8.51)
     """
     return 0.5 * sum((s / 97.0 - 18.45) ** 2 / 18.0 + 1.5 for s in (sigma_hlim1, sigma_hlim2))
 
