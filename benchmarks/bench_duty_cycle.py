@@ -16,6 +16,9 @@ their ratio.  A second pair of runs adds the tooth rating (ISO 6336 Method B of 
 :func:`~epicyclic.rating.train.rate_batch` per gear; the loop, one :func:`~epicyclic.rating.train.rate_solution`
 per case (the damage sums compared to 1e-7).
 
+A last pair of runs measures the cached α_wt of :class:`~epicyclic.geometry.MeshGeometry` against the
+property recomputing it at every use (patched in for those runs; CPU time, best of the repeats).
+
 Run:  .venv/bin/python benchmarks/bench_duty_cycle.py [cases [repeats]]   (best of repeats, default 100 3)
 """
 
@@ -28,7 +31,8 @@ from pathlib import Path
 import numpy as np
 
 from epicyclic import OperatingPoint
-from epicyclic.geometry import planetary_forces, share_planets
+from epicyclic.geometry import MeshGeometry, planetary_forces, share_planets
+from epicyclic.geometry.involute import operating_pressure_angle
 from epicyclic.io import load_train_file
 from epicyclic.losses import solve_with_losses
 from epicyclic.rating import DutyCycle, LoadCase, analyse_duty_cycle
@@ -137,6 +141,26 @@ def main(cases: int = 100, repeats: int = 3) -> None:
     print(f"speed-up                    {rated_loop / rated_vector:>10.1f} x")
     print(f"damage sums agree           {same!s:>10}   (largest D_H {worst.flank_damage:.3g}: {worst.element} "
           f"{worst.mesh} {worst.gear})")
+    # α_wt held by MeshGeometry from construction, against recomputing it (the inverse involute) at every
+    # use as before: the same runs with the property patched back to the uncached form, interleaved.
+    cached = MeshGeometry.alpha_wt
+    uncached = property(lambda m: float(operating_pressure_angle(m._x_sum, m._z_sum, m.rack.alpha_n, m.rack.alpha_t)))
+    times = {(kind, held): float("inf") for kind in ("vectorised", "loop") for held in (True, False)}
+    for _ in range(repeats):
+        for held in (True, False):
+            MeshGeometry.alpha_wt = cached if held else uncached
+            try:
+                start = time.process_time()
+                analyse_duty_cycle(f.train, duty, rating=spec, **kwargs)
+                times["vectorised", held] = min(times["vectorised", held], time.process_time() - start)
+                start = time.process_time()
+                per_case_loop(f, duty, spec)
+                times["loop", held] = min(times["loop", held], time.process_time() - start)
+            finally:
+                MeshGeometry.alpha_wt = cached
+    for kind in ("vectorised", "loop"):
+        print(f"alpha_wt held / recomputed  {times[kind, True] * 1e3:>10.1f} / {times[kind, False] * 1e3:.1f} ms CPU "
+              f"({kind}, with the rating: {times[kind, False] / times[kind, True]:.2f} x)")
     if not (agree and same):
         raise SystemExit("vectorised and per-case results disagree")
 

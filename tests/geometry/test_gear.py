@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
@@ -10,7 +11,12 @@ from hypothesis import strategies as st
 
 from epicyclic.geometry.errors import GeometryError
 from epicyclic.geometry.gear import BasicRack, GearGeometry, MeshGeometry, iso_profile_shift
-from epicyclic.geometry.involute import inv, inv_inverse, profile_shift_sum
+from epicyclic.geometry.involute import (
+    inv,
+    inv_inverse,
+    operating_pressure_angle,
+    profile_shift_sum,
+)
 
 
 def test_profile_shifted_external_pair_khk():
@@ -141,3 +147,19 @@ def test_internal_shift_sign_is_iso_21771():
     assert iso.alpha_wt == pytest.approx(inv_inverse(inv_w), abs=1e-12)
     with pytest.raises(GeometryError, match="internal_shift_convention must be one of 'iso', 'khk'"):
         iso_profile_shift(0.3, True, "din")
+
+
+def test_alpha_wt_is_computed_once_and_follows_every_new_pair():
+    # α_wt is held from construction (a pure function of the frozen gears): it equals the ISO 21771
+    # inverse involute of the pair, a replaced pair gets its own, and equality and repr ignore it.
+    rack = BasicRack(3)
+    mesh = MeshGeometry(GearGeometry(12, rack, 0.6), GearGeometry(24, rack, 0.36))
+    assert mesh.alpha_wt == float(operating_pressure_angle(0.96, 36, rack.alpha_n, rack.alpha_t))
+    assert math.degrees(mesh.alpha_wt) == pytest.approx(26.0886, abs=1e-4)  # KHK / SDP-SI z = 12/24
+    other = dataclasses.replace(mesh, gear2=GearGeometry(24, rack, 0.0))
+    assert other.alpha_wt == float(operating_pressure_angle(0.6, 36, rack.alpha_n, rack.alpha_t))
+    assert other.alpha_wt < mesh.alpha_wt
+    assert mesh == MeshGeometry(GearGeometry(12, rack, 0.6), GearGeometry(24, rack, 0.36))
+    assert "_alpha_wt" not in repr(mesh) and "_alpha_wt" not in mesh.to_dict()
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        mesh._alpha_wt = 0.5

@@ -144,5 +144,5 @@ def test_material_errors_and_range_warning():
         material("X")
     with pytest.warns(RatingWarning, match="ISO 6336-5:2016, Table 1"):
         assert allowable_stress_numbers("V", 500, "MQ") == allowable_stress_numbers("V", 390, "MQ")
-    with pytest.raises(RatingError, match="no ML line"):
-        allowable_stress_numbers("V(cast)", 250, "ML")
+    with pytest.raises(RatingError, match="no ISO 6336-5 line for treatment 'GG'"):
+        allowable_stress_numbers("GG", 200, "ML")

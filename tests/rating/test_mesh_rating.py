@@ -99,6 +99,11 @@ def test_material_per_gear_and_bad_values():
     s = spec(material={"pinion": "18CrNiMo7-6", "wheel": "42CrMo4"})
     r = rate_mesh(MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), s), 2000.0, 500.0)
     assert r.gears[1]["sigma_Hlim"] < r.gears[0]["sigma_Hlim"] and r["Z_W"] > 1.0
+    # Z_W raises the softer (through-hardened) wheel only, never the case-carburised pinion (ISO 6336-2, 12)
+    assert r.gears[1]["Z_W"] == r["Z_W"] and r.gears[0]["Z_W"] == 1.0
+    hard = r.gears[0]
+    assert hard["sigma_HG"] == pytest.approx(hard["sigma_Hlim"] * hard["Z_NT"] * r["Z_L"] * r["Z_v"] * r["Z_R"],
+                                             rel=1e-12)
     with pytest.raises(RatingError, match="no entry for gear 'wheel'"):
         MeshInput("pair", PAIR, 48.0, ("pinion", "wheel"), spec(material={"pinion": material("16MnCr5")}))
     with pytest.raises(RatingError, match="standard"):
@@ -154,7 +159,7 @@ def test_stresses_and_safeties_are_the_products_of_their_factors(mesh):
     for g, zbd in zip(r.gears, ("Z_B", "Z_D")):
         q = {k: v.value for k, v in g.factors.items()}
         assert q["sigma_H"] == pytest.approx(q[zbd] * sigma_h0 * math.sqrt(load_h), rel=1e-12)
-        limit_h = q["sigma_Hlim"] * q["Z_NT"] * f["Z_L"] * f["Z_v"] * f["Z_R"] * f["Z_W"] * f["Z_X"]
+        limit_h = q["sigma_Hlim"] * q["Z_NT"] * f["Z_L"] * f["Z_v"] * f["Z_R"] * q["Z_W"] * f["Z_X"]
         assert q["S_H"] == pytest.approx(limit_h / q["sigma_H"], rel=1e-12)
         assert q["sigma_HP"] == pytest.approx(limit_h / g.S_Hmin, rel=1e-12)
         sigma_f0 = f["F_t"] / (f["b"] * f["m_n"]) * q["Y_F"] * q["Y_S"] * f["Y_beta"] * q["Y_B"] * f["Y_DT"]
@@ -180,3 +185,46 @@ def test_nominal_contact_stress_is_hertz_at_the_pitch_point(internal):
     f_n = 2000 * 400.0 / mesh.gear1.reference_diameter / math.cos(alpha)
     hertz = math.sqrt(f_n * e_star * inv_r / (math.pi * 30.0))
     assert r["sigma_H0"] / r["Z_epsilon"] == pytest.approx(hertz, rel=1e-12)
+
+
+def test_a_given_dynamic_factor_replaces_method_b():
+    # ISO 6336-1, 6: K_v may be given (measured, method A); σ_H ∝ √K_v, σ_F ∝ K_v otherwise unchanged
+    computed = rated(3000.0, speed=3000.0)
+    given = rated(3000.0, speed=3000.0, K_v=1.3)
+    assert given["K_v"] == 1.3 and computed["K_v"] != 1.3
+    assert given.factors["K_v"].clause.endswith("6 (given)")
+    ratio = 1.3 / computed["K_v"]
+    for a, b in zip(computed.gears, given.gears):
+        assert b["sigma_H"] == pytest.approx(a["sigma_H"] * math.sqrt(ratio), rel=1e-9)
+        assert b["sigma_F"] == pytest.approx(a["sigma_F"] * ratio, rel=1e-9)
+    with pytest.raises(RatingError, match="K_v"):
+        spec(K_v=0.5)
+
+
+def test_without_a_tip_relief_k_v_takes_the_running_in_value():
+    # ISO 6336-1:2006, 6.3: C_ay = (σ_Hlim/97 − 18.45)²/18 + 1.5 µm per gear, the pair's mean
+    from epicyclic.rating.load_factors import running_in_tip_relief
+
+    assert running_in_tip_relief(1500, 1500) == pytest.approx((1500 / 97 - 18.45) ** 2 / 18 + 1.5, rel=1e-12)
+    assert running_in_tip_relief(1500, 700) == pytest.approx(0.5 * (1.99538 + 8.51063), abs=1e-5)
+    default, none, given = (rated(3000.0, speed=3000.0, **kw) for kw in ({}, {"tip_relief": 0.0},
+                                                                         {"tip_relief": 10.0}))
+    assert default["C_a"] == pytest.approx(running_in_tip_relief(1500, 1500), rel=1e-12)
+    assert none["C_a"] == 0.0 and given["C_a"] == 10.0
+    # B_k = |1 − c' C_a/(K_A F_t/b)| falls with C_a here, and K_v with it
+    assert given["K_v"] < default["K_v"] < none["K_v"]
+
+
+def test_roughness_per_gear():
+    # Z_R from the mean R_z of the pair (ISO 6336-2, eq. (28)); Y_RrelT from each gear's root R_z
+    per_gear = rated(3000.0, flank_roughness={"pinion": 2.0, "wheel": 4.0}, root_roughness={"pinion": 5.0,
+                                                                                              "all": 20.0})
+    mean = rated(3000.0, flank_roughness=3.0, root_roughness=5.0)
+    coarse = rated(3000.0, root_roughness=20.0)
+    assert per_gear["Z_R"] == pytest.approx(mean["Z_R"], rel=1e-12)
+    assert per_gear.gears[0]["Y_RrelT"] == mean.gears[0]["Y_RrelT"]
+    assert per_gear.gears[1]["Y_RrelT"] == coarse.gears[1]["Y_RrelT"] < mean.gears[1]["Y_RrelT"]
+    with pytest.raises(RatingError, match=r"flank_roughness has no entry for gear 'wheel'.*add wheel = 3.0"):
+        rated(3000.0, flank_roughness={"pinion": 2.0})
+    with pytest.raises(RatingError, match="root_roughness.pinion"):
+        spec(root_roughness={"pinion": -1.0})

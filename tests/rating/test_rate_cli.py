@@ -114,3 +114,15 @@ def test_rim_thickness_from_the_file():
                                             rating='rim_thickness = { ring = 7.5, "P:sun" = 20.0 }'))
     assert f.rating.rim_of("P", "ring") == 7.5 and f.rating.rim_of("P", "sun") == 20.0
     assert f.rating.rim_of("Q", "sun") is None and f.rating.rim_of("P", "planet") is None
+
+
+def test_roughness_per_gear_from_the_file():
+    f = loads_train_file(RATING_FILE.format(lubricant="[lubricant]\nviscosity_40 = 150.0",
+                                            rating="flank_roughness = { sun = 3.0, ring = 6.0, all = 4.0 }\n"
+                                                   "root_roughness = 10.0"))
+    spec = f.rating
+    assert spec.roughness_of("flank_roughness", "P", "ring") == 6.0
+    assert spec.roughness_of("flank_roughness", "P", "planet") == 4.0
+    assert spec.roughness_of("root_roughness", "P", "sun") == 10.0
+    with pytest.raises(RatingError, match=r"flank_roughness\.sun"):
+        loads_train_file(RATING_FILE.format(lubricant="", rating="flank_roughness = { sun = -1.0 }"))

@@ -34,7 +34,7 @@ Formelzeichen (d_0, r_g, r_b, h_k).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from ..limits import MAX_TOOTH_HEIGHT_FACTOR, MODULE_RANGE
@@ -315,6 +315,9 @@ class MeshGeometry:
     gear2: GearGeometry
     name: str = ""
     working_center_distance: float | None = None
+    # α_wt, a pure function of the frozen gears and centre distance: computed once in __post_init__ (it is
+    # asked for by a_w, d_w, ε_α, k and the rating of every load case; the inverse involute is an iteration).
+    _alpha_wt: float = field(init=False, repr=False, compare=False, default=float("nan"))
 
     def __post_init__(self) -> None:
         owner = f"MeshGeometry {self.name!r}" if self.name else "MeshGeometry"
@@ -343,7 +346,14 @@ class MeshGeometry:
             )
         # Fail early if the profile shifts give no real operating pressure angle.
         try:
-            alpha_wt = self.alpha_wt
+            if given is not None:  # the given centre distance decides: cos α_wt = a cos α_t / a_w
+                ratio = self.reference_center_distance * math.cos(self.rack.alpha_t) / given
+                if not 0.0 < ratio < 1.0:
+                    raise ValueError("no operating pressure angle")
+                alpha_wt = math.acos(ratio)
+            else:
+                alpha_wt = float(operating_pressure_angle(self._x_sum, self._z_sum, self.rack.alpha_n,
+                                                          self.rack.alpha_t))
         except ValueError:
             alpha_wt = -1.0
         if given is not None and abs(given - self.reference_center_distance) > _MAX_Y * self.rack.module:
@@ -362,6 +372,7 @@ class MeshGeometry:
                 f"{owner}: the profile-shift sum {self._x_sum:+.4f} gives no operating pressure angle for "
                 f"z = {self.gear1.teeth}/{self.gear2.teeth} (inv α_wt would be negative); raise the shifts."
             )
+        object.__setattr__(self, "_alpha_wt", alpha_wt)
 
     # ------------------------------------------------------------------ basics
     @classmethod
@@ -449,13 +460,9 @@ class MeshGeometry:
 
     @property
     def alpha_wt(self) -> float:
-        """Operating transverse pressure angle, rad (from the given centre distance where there is one)."""
-        if self.working_center_distance is not None:
-            ratio = self.reference_center_distance * math.cos(self.rack.alpha_t) / self.working_center_distance
-            if not 0.0 < ratio < 1.0:
-                raise ValueError("no operating pressure angle")
-            return math.acos(ratio)
-        return float(operating_pressure_angle(self._x_sum, self._z_sum, self.rack.alpha_n, self.rack.alpha_t))
+        """Operating transverse pressure angle, rad (from the given centre distance where there is one;
+        computed once, at construction)."""
+        return self._alpha_wt
 
     @property
     def operating_pressure_angle(self) -> float:

@@ -9,11 +9,12 @@
     S_Hmin = 1.0
     S_Fmin = 1.4
     accuracy_grade = 6                    # ISO 1328-1
-    flank_roughness = 3.0                 # R_z, µm (required)
-    root_roughness = 10.0                 # R_z, µm (required)
+    flank_roughness = 3.0                 # R_z, µm (required); or per gear: { sun = 3.0, ring = 6.0 }
+    root_roughness = 10.0                 # R_z, µm (required); or per gear
     material = "18CrNiMo7-6"              # or { sun = "...", planet = "...", ring = "42CrMo4", "P1:ring" = "..." }
     quality = "MQ"                        # ML, MQ or ME (ISO 6336-5)
     K_Hbeta = 1.3                         # given; otherwise method C with shaft_deflection (µm)
+    K_v = 1.05                            # given; otherwise method B
     load_sharing = 1.15                   # K_γ of every set (default: the set geometry's, else by planets)
     cutter = { teeth = 24, profile_shift = 0.0, addendum = 1.25, tip_radius = 0.25 }   # internal gears
     rim_thickness = { ring = 12.0 }       # s_R below the root, mm (Y_B); others solid
@@ -45,10 +46,10 @@ from .reader import at_key
 __all__ = ["RATING_KEYS", "read_rating"]
 
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
-               "root_roughness", "material", "quality", "K_Hbeta", "shaft_deflection", "load_sharing",
+               "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
                "rim_thickness"}
-_NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "flank_roughness", "root_roughness", "K_Hbeta",
+_NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "K_Hbeta", "K_v",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
 _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
 
@@ -111,6 +112,12 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
     table = reader.table(table, where)
     reader.check_keys(table, RATING_KEYS, where)
     values: dict[str, Any] = {k: reader.number(table[k], k, where) for k in _NUMBERS if k in table}
+    for key in ("flank_roughness", "root_roughness"):  # one R_z, or one per gear: { sun = 4.8, ring = 8.0 }
+        if isinstance(table.get(key), Mapping):
+            k_where = at_key(where, key)
+            values[key] = {k: reader.number(v, k, k_where) for k, v in reader.table(table[key], k_where).items()}
+        elif key in table:
+            values[key] = reader.number(table[key], key, where)
     if "standard" in table:
         values["standard"] = str(table["standard"])
     if "accuracy_grade" in table:

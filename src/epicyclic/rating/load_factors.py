@@ -238,6 +238,34 @@ def _cv(eps_gamma: float) -> tuple[float, ...]:
     return 0.32, c2, c3, c4, 0.47, c6, c7
 
 
+def running_in_tip_relief(sigma_hlim1: float, sigma_hlim2: float) -> float:
+    """C_ay, the tip relief that running-in produces, of a pair: the mean of both gears', µm.
+
+    Parameters
+    ----------
+    sigma_hlim1, sigma_hlim2 : float
+        σ_Hlim of the two gears, N/mm².
+
+    Returns
+    -------
+    float
+        ½ Σ [(σ_Hlim/97 − 18.45)²/18 + 1.5], µm: the C_a of B_k for gears without a designed
+        tip relief.
+
+    References
+    ----------
+    ISO 6336-1:2006, 6.3 (B_k, C_ay).
+
+    Examples
+    --------
+    Case-carburised (1500 N/mm²) and through-hardened (700 N/mm²) gears: 2.0 and 8.5 µm:
+
+    >>> round(running_in_tip_relief(1500, 1500), 3), round(running_in_tip_relief(700, 700), 2)
+    (1.995, 8.51)
+    """
+    return 0.5 * sum((s / 97.0 - 18.45) ** 2 / 18.0 + 1.5 for s in (sigma_hlim1, sigma_hlim2))
+
+
 def dynamic_factor(speed, teeth1: int, c_gamma_alpha, c_prime, reduced_mass_: float, line_load, f_pb_eff: float,
                    f_f_eff: float, eps_gamma: float, tip_relief: float = 0.0):
     """K_v by method B and the resonance ratio N (scalars or arrays over load cases).

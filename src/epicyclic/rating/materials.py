@@ -108,7 +108,7 @@ def allowable_stress_numbers(treatment: str, hardness: float, quality: str = DEF
     if quality not in lines["sigma_Hlim"]:
         raise RatingError(f"material: the data file has no {quality} line for {treatment!r} (only "
                           f"{', '.join(lines['sigma_Hlim'])}); give sigma_Hlim and sigma_Flim, or another quality.")
-    low, high = lines["range"]
+    low, high = lines.get("ranges", {}).get(quality, lines["range"])
     if not low <= hardness <= high:
         warn_validity(f"hardness {hardness:g} {lines['hardness_unit']} of {treatment!r} lies outside the figure "
                       f"line's range {low}-{high}; the line's end value is used.", "ISO 6336-5:2016, Table 1")

@@ -10,7 +10,8 @@ case) in one pass::
     F_t = 2000 T1 / d1                                   (ISO 6336-1, 6.1: at the reference circle)
     σ_H0 = Z_H Z_E Z_ε Z_β √(F_t/(d1 b) (u ± 1)/u)       (ISO 6336-2, eq. (2); − internal)
     σ_H1,2 = Z_B,D σ_H0 √(K_A K_γ K_v K_Hβ K_Hα)         (eq. (1))
-    σ_HG = σ_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X,  σ_HP = σ_HG / S_Hmin,  S_H = σ_HG / σ_H   (eqs. (3), (4))
+    σ_HG = σ_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X,  σ_HP = σ_HG / S_Hmin,  S_H = σ_HG / σ_H   (eqs. (3), (4);
+        Z_W of the softer gear only, 1 for the harder: ISO 6336-2, clause 12)
     σ_F0 = F_t/(b m_n) Y_F Y_S Y_β Y_B Y_DT               (ISO 6336-3, eq. (3))
     σ_F = σ_F0 K_A K_γ K_v K_Fβ K_Fα                     (eq. (2))
     σ_FG = σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X Y_M,  σ_FP = σ_FG / S_Fmin,  S_F = σ_FG / σ_F
@@ -141,7 +142,8 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     g1, g2 = mesh.gear1, mesh.gear2
     rack = mesh.rack
     mats = (spec.material_of(inp.element, inp.gears[0]), spec.material_of(inp.element, inp.gears[1]))
-    rz_flank, rz_root = spec.required("flank_roughness"), spec.required("root_roughness")
+    rz_flank = [spec.roughness_of("flank_roughness", inp.element, name) for name in inp.gears]
+    rz_root = [spec.roughness_of("root_roughness", inp.element, name) for name in inp.gears]
     nu40 = spec.required("viscosity_40")
     an, beta, at, awt = rack.alpha_n, rack.beta, rack.alpha_t, mesh.alpha_wt
     beta_b = math.asin(math.sin(beta) * math.cos(an))
@@ -171,9 +173,15 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     hlim = min(m.sigma_Hlim for m in mats)
     s["Z_L"] = flank.lubricant_factor(nu40, hlim)
     rho1, rho2 = flank.pitch_curvature(g1.base_diameter / 2, g2.base_diameter / 2, awt, mesh.internal)
-    s["Z_R"] = flank.roughness_factor(rz_flank, rz_flank, rho1, rho2, mesh.internal, hlim)
+    s["Z_R"] = flank.roughness_factor(rz_flank[0], rz_flank[1], rho1, rho2, mesh.internal, hlim)
     s["Z_W"] = flank.work_hardening_factor(*mats)
+    # Z_W raises the strength of the softer, through-hardened gear only (ISO 6336-2, 12); the hard gear: 1
+    s["Z_W_gears"] = [s["Z_W"] if (other.surface_hardened and not m.surface_hardened) else 1.0
+                      for m, other in ((mats[0], mats[1]), (mats[1], mats[0]))]
     s["sigma_Hlim_pair"] = hlim
+    # C_a of B_k in K_v: the designed tip relief, else what running-in wears off (C_ay)
+    s["C_a"] = (load_factors.running_in_tip_relief(mats[0].sigma_Hlim, mats[1].sigma_Hlim)
+                if spec.tip_relief is None else spec.tip_relief)
     # stiffness (the pinion is the gear with fewer teeth), deviations, running-in
     zn = [g.teeth / (math.cos(beta_b) ** 2 * math.cos(beta)) for g in (g1, g2)]
     xs = [g1.profile_shift, g2.profile_shift]
@@ -198,7 +206,7 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["Y_B"] = [root.rim_factor(spec.rim_of(inp.element, name), abs(g.root_diameter - g.tip_diameter) / 2,
                                 rack.module, g.internal) for name, g in zip(inp.gears, (g1, g2))]
     s["Y_delta"] = [root.relative_notch_sensitivity(f.q_s, m.treatment, m.yield_strength) for f, m in zip(forms, mats)]
-    s["Y_R"] = [root.relative_surface_factor(rz_root, m.treatment) for m in mats]
+    s["Y_R"] = [root.relative_surface_factor(rz, m.treatment) for rz, m in zip(rz_root, mats)]
     s["Y_X"] = [root.size_factor(rack.module, m.treatment) for m in mats]
     s["Y_M"] = [root.REVERSED_BENDING if r else 1.0 for r in inp.reversed_bending]
     s["Z_curves"] = [pitting_curve(m.treatment, pitting_permitted=spec.pitting_permitted,
@@ -265,7 +273,9 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     f_pb_eff, f_f_eff = np.maximum(0.0, s["f_pb"] - y_a), np.maximum(0.0, s["f_falpha"] - y_f)
     c_p, c_ga, c_gb = load_factors.mesh_stiffness(s["c_prime_th"], s["eps_alpha"], line)
     k_v, resonance, _ = load_factors.dynamic_factor(
-        n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, f_pb_eff, f_f_eff, s["eps_gamma"], spec.tip_relief)
+        n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, f_pb_eff, f_f_eff, s["eps_gamma"], s["C_a"])
+    if spec.K_v is not None:
+        k_v = np.full(np.shape(k_v), spec.K_v)
     f_m = line * k_v
     f_bx = np.maximum.reduce([np.full(f_m.shape, 1.33 * spec.shaft_deflection + s["f_Hbeta"]), 0.005 * f_m,
                               np.full(f_m.shape, 0.5 * s["f_Hbeta"])])
@@ -287,7 +297,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         y_nt = s["Y_curves"][i].factor(cycles)
         z_bd = s["Z_B"] if i == 0 else s["Z_D"]
         sigma_h = z_bd * sigma_h0 * np.sqrt(load_h)
-        sigma_hg = mat.sigma_Hlim * z_nt * s["Z_L"] * z_v * s["Z_R"] * s["Z_W"] * 1.0
+        sigma_hg = mat.sigma_Hlim * z_nt * s["Z_L"] * z_v * s["Z_R"] * s["Z_W_gears"][i] * 1.0
         form = s["forms"][i]
         sigma_f0 = f_t / (b * m_n) * form.Y_F * form.Y_S * s["Y_beta"] * s["Y_B"][i] * s["Y_DT"]
         sigma_f = sigma_f0 * ka * kg * k_v * k_fb * k_fa
@@ -300,6 +310,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
             Factor("sigma_H", _out(sigma_h), "N/mm^2", p2("eq. (1)"), "contact stress"),
             Factor("Z_NT", _out(z_nt), "1", p2("10, Table 2"), "life factor (pitting)"),
             Factor("sigma_Hlim", mat.sigma_Hlim, "N/mm^2", "ISO 6336-5:2016, Table 1", "allowable stress number"),
+            Factor("Z_W", s["Z_W_gears"][i], "1", p2("12"), "work hardening factor (1 for the harder gear)"),
             Factor("sigma_HG", _out(sigma_hg), "N/mm^2", p2("eq. (4)"), "pitting stress limit"),
             Factor("sigma_HP", _out(sigma_hg / spec.S_Hmin), "N/mm^2", p2("eq. (3)"), "permissible contact stress"),
             Factor("S_H", _out(_safety(sigma_hg, sigma_h)), "1", p2("eq. (4)"), "safety factor for pitting"),
@@ -342,7 +353,9 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("c_gamma_alpha", _out(c_ga), "N/(mm*um)", p1("9.3.2"), "mesh stiffness"),
         Factor("m_red", s["m_red"], "kg/mm", p1("6.5.9"), "reduced mass per face width"),
         Factor("N", _out(resonance), "1", p1("6.3, eq. (13)"), "resonance ratio"),
-        Factor("K_v", _out(k_v), "1", p1("6.3 (method B)"), "dynamic factor"),
+        Factor("C_a", s["C_a"], "um", p1("6.3" if spec.tip_relief is not None else "6.3 (C_ay, running-in)"),
+               "tip relief in K_v"),
+        Factor("K_v", _out(k_v), "1", p1("6.3 (method B)" if spec.K_v is None else "6 (given)"), "dynamic factor"),
         Factor("f_pb", s["f_pb"], "um", "ISO 1328-1:2013, 5.2", "transverse base pitch deviation"),
         Factor("y_alpha", _out(y_a), "um", p1("8.3.4"), "running-in allowance (pitch)"),
         Factor("F_betax", _out(f_bx), "um", p1("7.6 (method C)"), "initial equivalent misalignment"),
@@ -359,7 +372,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("Z_L", s["Z_L"], "1", p2("11.2"), "lubricant factor"),
         Factor("Z_v", _out(z_v), "1", p2("11.3"), "velocity factor"),
         Factor("Z_R", s["Z_R"], "1", p2("11.4"), "roughness factor"),
-        Factor("Z_W", s["Z_W"], "1", p2("12"), "work hardening factor"),
+        Factor("Z_W", s["Z_W"], "1", p2("12"), "work hardening factor of the softer gear of the pair"),
         Factor("Z_X", 1.0, "1", p2("13"), "size factor (pitting)"),
         Factor("Y_beta", s["Y_beta"], "1", p3("7.3"), "helix angle factor (root)"),
         Factor("Y_DT", s["Y_DT"], "1", p3("7.5"), "deep tooth factor"),

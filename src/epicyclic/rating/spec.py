@@ -11,13 +11,14 @@ life                    20000                       required life, h
 S_Hmin / S_Fmin         1.0 / 1.4                   minimum safeties
 accuracy_grade          6                           ISO 1328-1 flank tolerance class
 K_Hbeta                 method C                    a given K_Hβ, or F_βx from f_Hβ (+ 1.33 f_sh)
+K_v                     method B                    a given dynamic factor
 shaft_deflection        0                           f_sh for method C, µm
 load_sharing            of the geometry, else by    K_γ (AGMA 6123/ISO values may be given)
                         number of planets
 tool_tip_radius         0.25                        ρ_fP* of the basic rack (ISO 53 A)
 long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``"optimum"``: 1.0)
 pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
-tip_relief              0                           C_a for K_v, µm
+tip_relief              running-in C_ay             C_a for K_v, µm (without one: C_ay of the pair)
 rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
 ======================  ==========================  =============================================
 
@@ -50,7 +51,7 @@ __all__ = ["DEFAULTS", "SUGGESTED", "RatingSpec"]
 DEFAULTS: Mapping[str, Any] = MappingProxyType({
     "standard": DEFAULT_EDITION, "application_factor": 1.0, "life": 20000.0, "S_Hmin": 1.0, "S_Fmin": 1.4,
     "accuracy_grade": 6, "shaft_deflection": 0.0, "tool_tip_radius": 0.25, "long_life": "standard",
-    "pitting_permitted": False, "tip_relief": 0.0,
+    "pitting_permitted": False, "tip_relief": None,
 })
 #: The values an error for a missing required key proposes (never taken silently).
 SUGGESTED: Mapping[str, Any] = MappingProxyType({
@@ -63,6 +64,19 @@ def _number(value: object, key: str, low: float = 0.0, *, strict: bool = True) -
             value <= low if strict else value < low):
         raise RatingError(f"rating.{key} must be a number {'>' if strict else '>='} {low:g}, got {value!r}.")
     return float(value)
+
+
+def _per_gear(given: Mapping[str, Any], key: str, element: str, gear: str, suggestion: str):
+    """The entry of ``gear`` of ``element`` in a per-gear mapping (``"P1:ring"``, ``"ring"``, ``"all"``)."""
+    for name in (f"{element}:{gear}", gear, "all"):
+        if name in given:
+            return given[name]
+    raise RatingError(f"rating.{key} has no entry for gear {gear!r} of {element!r} (keys "
+                      f"{', '.join(map(repr, given)) or 'none'}); add {gear} = {suggestion} or '{element}:{gear}'.")
+
+
+def _plain(value):
+    return dict(value) if isinstance(value, Mapping) else value
 
 
 def _missing(key: str, meaning: str) -> RatingError:
@@ -80,8 +94,9 @@ class RatingSpec:
         One material for every gear, or one per gear name (``sun``, ``planet``, ``ring``,
         ``planet1`` ..., ``driving``/``driven`` for stages; an ``element:gear`` key such
         as ``"P1:ring"`` for one element).  Required.
-    flank_roughness, root_roughness : float, optional
-        R_z of flanks and root fillets, µm.  Required.
+    flank_roughness, root_roughness : float or mapping gear → float, optional
+        R_z of flanks and root fillets, µm: one value for every gear, or one per gear name
+        (keys as for ``material``: ``"P1:ring"``, ``"ring"``, ``"all"``).  Required.
     viscosity_40 : float, optional
         Kinematic viscosity of the oil at 40 °C, mm²/s.  Required.
     viscosity_100 : float, optional
@@ -95,6 +110,9 @@ class RatingSpec:
     accuracy_grade : int, default 6
     K_Hbeta : float, optional
         Given face load factor; otherwise method C.
+    K_v : float, optional
+        Given dynamic factor (from measurement or a method A analysis, ISO 6336-1, 6.3); otherwise
+        method B.
     shaft_deflection : float, default 0
         f_sh, µm (method C).
     load_sharing : float, optional
@@ -105,8 +123,10 @@ class RatingSpec:
         Pinion-type cutter of the internal gears (rack approximation without).
     long_life : str, default "standard"
     pitting_permitted : bool, default False
-    tip_relief : float, default 0
-        C_a, µm.
+    tip_relief : float, optional
+        C_a, µm.  Without one, the running-in tip relief C_ay of the pair (ISO 6336-1:2006, 6.3,
+        the mean of C_ay = (σ_Hlim/97 − 18.45)²/18 + 1.5 of both gears), as ISO 6336-1 prescribes
+        for gears without a designed tip relief; give 0 for none at all.
     notes : tuple of str, default ()
         Remarks carried into every mesh rating.
     rim_thickness : mapping gear → float, optional
@@ -124,8 +144,8 @@ class RatingSpec:
     """
 
     material: Material | Mapping[str, Material] | None = None
-    flank_roughness: float | None = None
-    root_roughness: float | None = None
+    flank_roughness: float | Mapping[str, float] | None = None
+    root_roughness: float | Mapping[str, float] | None = None
     viscosity_40: float | None = None
     viscosity_100: float | None = None
     standard: str = DEFAULT_EDITION
@@ -135,13 +155,14 @@ class RatingSpec:
     S_Fmin: float = 1.4
     accuracy_grade: int = 6
     K_Hbeta: float | None = None
+    K_v: float | None = None
     shaft_deflection: float = 0.0
     load_sharing: float | None = None
     tool_tip_radius: float = 0.25
     cutter: Cutter | None = None
     long_life: str = "standard"
     pitting_permitted: bool = False
-    tip_relief: float = 0.0
+    tip_relief: float | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
     rim_thickness: Mapping[str, float] | None = None
 
@@ -152,12 +173,19 @@ class RatingSpec:
         object.__setattr__(self, "life", _number(self.life, "life"))
         for key in ("S_Hmin", "S_Fmin", "tool_tip_radius"):
             object.__setattr__(self, key, _number(getattr(self, key), key))
-        for key in ("flank_roughness", "root_roughness", "viscosity_40", "viscosity_100"):
+        for key in ("flank_roughness", "root_roughness"):
+            value = getattr(self, key)
+            if isinstance(value, Mapping):
+                object.__setattr__(self, key, MappingProxyType({k: _number(v, f"{key}.{k}") for k, v in value.items()}))
+            elif value is not None:
+                object.__setattr__(self, key, _number(value, key))
+        for key in ("viscosity_40", "viscosity_100"):
             if getattr(self, key) is not None:
                 object.__setattr__(self, key, _number(getattr(self, key), key))
-        for key in ("shaft_deflection", "tip_relief"):
-            object.__setattr__(self, key, _number(getattr(self, key), key, strict=False))
-        for key in ("K_Hbeta", "load_sharing"):
+        object.__setattr__(self, "shaft_deflection", _number(self.shaft_deflection, "shaft_deflection", strict=False))
+        if self.tip_relief is not None:
+            object.__setattr__(self, "tip_relief", _number(self.tip_relief, "tip_relief", strict=False))
+        for key in ("K_Hbeta", "K_v", "load_sharing"):
             if getattr(self, key) is not None:
                 object.__setattr__(self, key, _number(getattr(self, key), key, 1.0, strict=False))
         g = self.accuracy_grade
@@ -201,12 +229,7 @@ class RatingSpec:
         if isinstance(given, Material):
             return given
         if isinstance(given, Mapping):
-            for key in (f"{element}:{gear}", gear, "all"):
-                if key in given:
-                    return given[key]
-            raise RatingError(f"rating.material has no entry for gear {gear!r} of {element!r} (keys "
-                              f"{', '.join(map(repr, given)) or 'none'}); add {gear} = '{SUGGESTED['material']}' "
-                              f"or '{element}:{gear}'.")
+            return _per_gear(given, "material", element, gear, f"'{SUGGESTED['material']}'")
         raise _missing("material", "a material of the data file for every gear, see docs/rating.md")
 
     def rim_of(self, element: str, gear: str) -> float | None:
@@ -225,6 +248,32 @@ class RatingSpec:
         """
         rims = self.rim_thickness or {}
         return rims.get(f"{element}:{gear}", rims.get(gear))
+
+    def roughness_of(self, key: str, element: str, gear: str) -> float:
+        """R_z of ``gear`` of ``element``: ``key`` is ``flank_roughness`` or ``root_roughness``, µm.
+
+        Parameters
+        ----------
+        key : str
+            ``"flank_roughness"`` or ``"root_roughness"``.
+        element : str
+            The set or stage.
+        gear : str
+            The gear's name in it.
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        RatingError
+            No value for that gear (the key and the value commonly taken are named).
+        """
+        given = getattr(self, key)
+        if isinstance(given, Mapping):
+            return _per_gear(given, key, element, gear, f"{SUGGESTED[key]} (R_z, µm)")
+        return self.required(key)
 
     def required(self, key: str) -> float:
         """``flank_roughness``, ``root_roughness`` or ``viscosity_40``; an error naming the key if absent.
@@ -253,9 +302,9 @@ class RatingSpec:
         mats = (m.to_dict() if isinstance(m, Material) else {k: v.to_dict() for k, v in m.items()}) if m else None
         return {"standard": f"ISO 6336:{self.standard}", "application_factor": self.application_factor,
                 "life": self.life, "S_Hmin": self.S_Hmin, "S_Fmin": self.S_Fmin,
-                "accuracy_grade": self.accuracy_grade, "K_Hbeta": self.K_Hbeta,
+                "accuracy_grade": self.accuracy_grade, "K_Hbeta": self.K_Hbeta, "K_v": self.K_v,
                 "shaft_deflection": self.shaft_deflection, "load_sharing": self.load_sharing,
-                "flank_roughness": self.flank_roughness, "root_roughness": self.root_roughness,
+                "flank_roughness": _plain(self.flank_roughness), "root_roughness": _plain(self.root_roughness),
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
                 "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,
                 "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,

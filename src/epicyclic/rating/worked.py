@@ -77,7 +77,7 @@ def worked_rating(mesh, gear: int = 0) -> str:
        f"{m['K_gamma']:.3f} · {m['K_v']:.4f} · {m['K_Hbeta']:.4f} · {m['K_Halpha']:.4f})", q["sigma_H"], "N/mm²",
        "sigma_H")
     eq(f"σ_HG = σ_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X = {q['sigma_Hlim']:g} · {q['Z_NT']:.4f} · {m['Z_L']:.4f} · "
-       f"{m['Z_v']:.4f} · {m['Z_R']:.4f} · {m['Z_W']:.4f} · {m['Z_X']:.4f}  (N_L = {q['N_L']:.4g})",
+       f"{m['Z_v']:.4f} · {m['Z_R']:.4f} · {q['Z_W']:.4f} · {m['Z_X']:.4f}  (N_L = {q['N_L']:.4g})",
        q["sigma_HG"], "N/mm²", "sigma_HG")
     eq(f"σ_HP = σ_HG / S_Hmin = {q['sigma_HG']:.2f} / {g.S_Hmin:g}", q["sigma_HP"], "N/mm²", "sigma_HP")
     eq(f"S_H = σ_HG / σ_H = {q['sigma_HG']:.2f} / {q['sigma_H']:.2f}", q["S_H"],
