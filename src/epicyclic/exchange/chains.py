@@ -46,8 +46,9 @@ def chains(mapper) -> list[tuple[dict[str, Any], None]]:
     """
     model, members = mapper.model, mapper.members
     free = [(s, g1, g2) for s, g1, g2 in mapper.meshes if s.id not in mapper.stage_owner]
+    out = _ratio_stages(mapper)
     if not free:
-        return []
+        return out
     node = {}
     for _, g1, g2 in free:
         for g in (g1, g2):
@@ -65,13 +66,18 @@ def chains(mapper) -> list[tuple[dict[str, Any], None]]:
                 if (model.components.get(r.role("assembly")) or Component(0, "", "")).type == "switchable_coupling"
                 for p in (r.role("inner_part"), r.role("outer_part")) if p is not None}
     loaded = {members.find(s) for s in mapper.operating.preferred_shafts()}
+    ends = set()  # the shafts epicyclic wrote as a stage's first and second: a stage of its own starts there
+    for k, (stage, g1, g2) in enumerate(free):
+        extras = _custom(model, stage, CUSTOM_ELEMENT)
+        for n in (node[g1], node[g2]):
+            if members.name(n) in (extras.get("first"), extras.get("second")):
+                ends.add(n)
 
     def terminal(n: object) -> bool:
-        return (n in planetary_members or n in switched or n in loaded or len(incident[n]) != 2
+        return (n in planetary_members or n in switched or n in loaded or n in ends or len(incident[n]) != 2
                 or (members.casing is not None and n == members.find(members.casing)))
 
     visited: set[int] = set()
-    out = []
     starts = sorted((n for n in incident if terminal(n)), key=lambda n: min(incident[n]))
     for start in starts:
         for k in sorted(incident[start]):
@@ -112,7 +118,7 @@ def _stage_table(mapper, start, end, path, custom_key: str, custom) -> tuple[dic
     elif gear_1.get(path[0][0].id) != path[0][1] and gear_1.get(path[-1][0].id) == path[-1][2]:
         path, start, end = reverse(path, start, end)  # from the end where the file's gear_1 sits
     first_stage = path[0][0]
-    extras.pop("first", None)
+    extras.pop("first", None), extras.pop("second", None)
     label = " + ".join(s.name or f"cylindrical_stage {s.id}" for s, _, _ in path)
     name = element_name(Component(first_stage.id, first_stage.type, extras.pop("name", label)), mapper.element_names)
     mapper.origins[f"gear.{name}"] = ", ".join(mapper.label(s) for s, _, _ in path)
@@ -136,6 +142,23 @@ def _stage_table(mapper, start, end, path, custom_key: str, custom) -> tuple[dic
         table["geometry"].update(extras.pop("geometry", {}))
     table.update(extras)
     return table, None
+
+
+def _ratio_stages(mapper) -> list[tuple[dict[str, Any], None]]:
+    """Stages epicyclic wrote by their ratio alone: a ``cylindrical_stage`` without gears, its data custom."""
+    model, out = mapper.model, []
+    meshed = {s.id for s, _, _ in mapper.meshes}
+    for stage in model.of_type("cylindrical_stage"):
+        if stage.id in meshed or stage.id in mapper.stage_owner:
+            continue
+        extras = _custom(model, stage, CUSTOM_ELEMENT)
+        if "ratio" not in extras:
+            continue  # a stage without gears and ratio: nothing to read (counted as ignored)
+        mapper.used.add(stage.id)
+        name = element_name(Component(stage.id, stage.type, extras.pop("name", stage.name)), mapper.element_names)
+        mapper.origins[f"gear.{name}"] = mapper.label(stage)
+        out.append(({"name": name, **extras}, None))
+    return out
 
 
 def _stage_geometry(mapper, data) -> dict[str, Any]:

@@ -291,6 +291,9 @@ class _Mapper:
         links = {(a, b) if b in planet_gears else (b, a) for _, a, b in meshes if (a in central_gears) != (b in central_gears)}
         doubles = {frozenset((a, b)) for _, a, b in meshes if a in planet_gears and b in planet_gears}
         kind, teeth, names = self.kind(stage, gear, first, second, links, doubles, on, extras)
+        written = extras.pop("teeth", None)
+        if isinstance(written, dict) and "module_ratio" in written:  # epicyclic's module ratio, no geometry
+            teeth["module_ratio"] = written["module_ratio"]
         planets = len({on[p] for c, p in links if c == first})
         table.update(sun=self.member(on[first]), ring=self.member(on[second]),
                      carrier=self.member(("carrier", stage.id)), teeth=teeth, planets=planets)
@@ -320,7 +323,6 @@ class _Mapper:
             return counts.pop()
 
         wanted = (extras.get("teeth") or {}).get("kind") if isinstance(extras.get("teeth"), dict) else None
-        extras.pop("teeth", None)
         if doubles:
             if not (ext_first and not ext_second):
                 raise model.error(stage, None, "planets mesh each other, but the central gears are not a sun and a "

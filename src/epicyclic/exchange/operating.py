@@ -238,6 +238,10 @@ class OperatingMapper:
         drives, loads = [], []
         for name, group, value, load in given:
             role = model.text(load, _ROLE)
+            if role == "none":  # a torque or power at a shaft that is neither drive nor load: signed
+                shown = value if group == "torques" else value / 1000.0
+                table.setdefault(group, {})[name] = f"{_number(shown)} {'N*m' if group == 'torques' else 'kW'}"
+                continue
             if role not in ("drive", "load"):
                 if name in speeds and value * speeds[name] != 0:
                     role = "drive" if value * speeds[name] > 0 else "load"
@@ -251,6 +255,8 @@ class OperatingMapper:
             (drives if role == "drive" else loads).append(name)
         for name, load in reacting:
             role = model.text(load, _ROLE) or ("load" if drives or not loads else "drive")
+            if role == "none":
+                continue
             target = drives if role == "drive" else loads
             if name not in drives + loads:
                 target.append(name)
