@@ -68,6 +68,10 @@ from . import synthesize as _synthesize  # noqa: E402
 
 app.command("synthesize")(_synthesize.synthesize)
 
+from . import convert as _convert  # noqa: E402
+
+app.command("convert")(_convert.convert)
+
 from . import serve as _serve  # noqa: E402
 
 app.command("serve")(_serve.serve)
