@@ -188,7 +188,7 @@ clutches = 2
 """
 
 #: The FVA-Workbench planetary stage (REXS 1.1 XML, tests/exchange/fixtures, Apache-2.0), and hostile variants.
-REXS = (Path(__file__).parents[1] / "exchange" / "fixtures" / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs").read_bytes()
+REXS = (Path(__file__).parents[2] / "examples" / "rexs" / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs").read_bytes()
 REXS_HEAD = b'<model version="1.7" applicationId="t" applicationVersion="1" date="2026-01-01T00:00:00+00:00">'
 
 

@@ -28,8 +28,9 @@ from epicyclic.io import InputFileError, load_train_file
 from epicyclic.io.geometry_report import geometry_results
 
 FIXTURES = Path(__file__).parent / "fixtures"
-PLANETARY = FIXTURES / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs"
-GEARBOX = FIXTURES / "FVA-Industriegetriebe_2stufig_1-4.rexs"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "rexs"
+PLANETARY = EXAMPLES / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs"
+GEARBOX = EXAMPLES / "FVA-Industriegetriebe_2stufig_1-4.rexs"
 
 
 def _json_variant(source: Path, tmp_path: Path) -> Path:

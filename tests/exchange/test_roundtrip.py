@@ -131,7 +131,7 @@ def test_attributes_written_are_rexs_1_7_attributes():
 
 
 def test_rexs_to_rexs_keeps_the_load_spectrum(tmp_path):
-    source = FIXTURES / "FVA-Industriegetriebe_2stufig_1-4.rexs"
+    source = ROOT / "examples" / "rexs" / "FVA-Industriegetriebe_2stufig_1-4.rexs"
     out = tmp_path / "gearbox.rexsj"
     convert(source, out, date=DATE)
     original, back = load_train_file(source), load_train_file(out)
@@ -147,7 +147,7 @@ def test_rexs_to_rexs_keeps_the_load_spectrum(tmp_path):
 
 def test_rexs_to_toml_is_commented(tmp_path):
     out = tmp_path / "stage.toml"
-    message = convert(FIXTURES / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs", out)
+    message = convert(ROOT / "examples" / "rexs" / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs", out)
     text = out.read_text()
     assert "ignored: 11 shaft sections" in message
     assert "# REXS planetary_stage 9 'Planetenstufe [9]'" in text
@@ -159,7 +159,7 @@ def test_rexs_to_toml_is_commented(tmp_path):
 
 def test_gearbox_toml_lists_the_load_cases(tmp_path):
     out = tmp_path / "gearbox.toml"
-    convert(FIXTURES / "FVA-Industriegetriebe_2stufig_1-4.rexs", out)
+    convert(ROOT / "examples" / "rexs" / "FVA-Industriegetriebe_2stufig_1-4.rexs", out)
     text = out.read_text()
     assert "# Load spectrum: 4 load cases" in text
     assert "#   load case 2: Shaft [6] 3456 1/min, Shaft [6] 345 N*m, 30 % of the time, oil 70 degC" in text
@@ -169,7 +169,7 @@ def test_convert_never_overwrites_the_input(tmp_path):
     from epicyclic.io.output import OutputError
 
     source = tmp_path / "a.rexs"
-    source.write_bytes((FIXTURES / "FVA-Industriegetriebe_2stufig_1-4.rexs").read_bytes())
+    source.write_bytes((ROOT / "examples" / "rexs" / "FVA-Industriegetriebe_2stufig_1-4.rexs").read_bytes())
     with pytest.raises(OutputError, match="is the input file"):
         convert(source, source)
 

@@ -8,7 +8,7 @@ reads a train file reads REXS.
 
 Examples
 --------
->>> doc = load_rexs_document("tests/exchange/fixtures/FVA_Planetary_stage_-_Minus_gearing_1.1.rexs")
+>>> doc = load_rexs_document("examples/rexs/FVA_Planetary_stage_-_Minus_gearing_1.1.rexs")
 >>> doc.data["planetary"][0]["teeth"]
 {'sun': 17, 'planet': 22, 'ring': 61}
 >>> doc.ignored.split(",")[0]

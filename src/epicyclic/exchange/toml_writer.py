@@ -11,7 +11,7 @@ Examples
 --------
 >>> text = document_toml({"title": "t", "planetary": [{"name": "P", "sun": "s", "ring": "r", "carrier": "c",
 ...                        "teeth": {"sun": 30, "planet": 24, "ring": 78}}]}, {"planetary.P": "planetary_stage 9"})
->>> print(text.splitlines()[4])
+>>> print(text.splitlines()[3])
 # REXS planetary_stage 9
 """
 
