@@ -189,23 +189,14 @@ def test_two_stage_gearbox_forces_by_hand():
     f = load_train_file(GEARBOX)
     s = f.solve()
     (result,) = geometry_results(f.geometry, s)
-    # working pitch diameter of the pinion of mesh 1: d_w1 = 2 a z1/(z1 + z2) = 2*190*27/78 (a = 190 mm)
-    d_w1 = 2 * 190 * 27 / 78
-    assert [m.center_distance for m in result.geometry.meshes] == pytest.approx([190.0, 190.0], abs=5e-4)
-    tangential = result.forces.to_dict()
-    assert 567 / (d_w1 / 2000) == pytest.approx(8621.05, rel=1e-5)  # F_t = T / r_w, the number analyze prints
-    assert any(abs(v - 567 / (d_w1 / 2000)) < 0.5 for v in _numbers(tangential))
-
-
-def _numbers(data):
-    if isinstance(data, dict):
-        for v in data.values():
-            yield from _numbers(v)
-    elif isinstance(data, (list, tuple)):
-        for v in data:
-            yield from _numbers(v)
-    elif isinstance(data, (int, float)) and not isinstance(data, bool):
-        yield float(data)
+    # the profile shifts of the file make both stages run at the REXS centre distance a = 190 mm
+    assert [m.center_distance for m in result.geometry.meshes] == pytest.approx([190.0, 190.0], abs=1e-5)
+    # F_t = T / r_w with the working pitch radius r_w1 = a z1 / (z1 + z2) of each pinion
+    mesh1, mesh2 = result.forces.to_dict()["meshes"]
+    assert mesh1["torque"] == pytest.approx(567.0)
+    assert mesh2["torque"] == pytest.approx(567.0 * 51 / 27)                       # 1071 N*m on the countershaft
+    assert mesh1["tangential"] == pytest.approx(567.0 / (190 * 27 / 78 / 1000), rel=1e-6)   # 8621.05 N
+    assert mesh2["tangential"] == pytest.approx(1071.0 / (190 * 23 / 57 / 1000), rel=1e-6)  # 13969.56 N
 
 
 @pytest.mark.parametrize("variant", ["xml", "json", "our json", "zip"])
@@ -227,3 +218,13 @@ def test_not_a_rexs_zip():
         archive.writestr("gde_file.gde", "")
     with pytest.raises(InputFileError, match="exactly one .rexs or .rexsj model"):
         read_model(data.getvalue(), "x.rexsz")
+
+
+def test_a_centre_distance_the_profile_shifts_do_not_give_is_noted(tmp_path):
+    # a = m (z_sun + z_planet) / 2 = 4 (17 + 22) / 2 = 78 mm with x = 0 (ISO 21771); the file altered to 79 mm
+    altered = tmp_path / "a79.rexs"
+    altered.write_bytes(PLANETARY.read_bytes().replace(b'unit="mm">78.0<', b'unit="mm">79.0<'))
+    notes = load_rexs_document(altered).notes
+    assert len(notes) == 2  # sun-planet and planet-ring, once for the three planets
+    assert "REXS gives the centre distance a = 79 mm, its profile shifts give a_w = 78.0000 mm" in notes[0]
+    assert load_rexs_document(PLANETARY).notes == ()

@@ -15,6 +15,7 @@ import math
 from pathlib import Path
 
 import pytest
+from hypothesis import assume, given, settings, strategies as st
 
 from epicyclic import OperatingPoint, solve
 from epicyclic.exchange.container import read_model
@@ -180,3 +181,45 @@ def test_rexsz_written_reads_back(tmp_path):
     assert out.read_bytes()[:2] == b"PK"
     same(fingerprint(load_train_file(ROOT / "examples" / "geometry_simple_set.toml")),
          fingerprint(load_train_file(out)))
+
+
+@settings(max_examples=15, deadline=None)
+@given(z_sun=st.integers(12, 40), z_planet=st.integers(12, 40), planets=st.integers(1, 5),
+       module=st.sampled_from([1.0, 2.5, 4.0]), x_sun=st.floats(0.0, 0.5), speed=st.floats(-3000, 3000),
+       torque=st.floats(1.0, 500.0), held=st.sampled_from(["ring", "sun", "carrier"]), kind=st.sampled_from(["xml", "json"]))
+def test_any_simple_set_round_trips(z_sun, z_planet, planets, module, x_sun, speed, torque, held, kind):
+    """Invariant: REXS written and read back gives the same speeds, torques and tooth forces."""
+    from epicyclic.exchange.reading import loads_rexs_document
+    from epicyclic.io import loads_train_file
+    from epicyclic.io.toml_format import read_document
+    from epicyclic.io.source import parse_toml
+
+    z_ring = z_sun + 2 * z_planet
+    assume(abs(speed) > 1.0)
+    drive, load = [m for m in ("sun", "ring", "carrier") if m != held]
+    text = f"""
+[[planetary]]
+name = "P"
+sun = "sun"
+ring = "ring"
+carrier = "carrier"
+teeth = {{ sun = {z_sun}, planet = {z_planet}, ring = {z_ring} }}
+planets = {planets}
+stationary_efficiency = 0.97
+[planetary.geometry]
+module = {module}
+profile_shift = {{ sun = {x_sun}, planet = {-x_sun}, ring = 0.0 }}
+face_width = 20.0
+[[brake]]
+name = "B"
+shaft = "{held}"
+[operating_point]
+speeds = {{ {drive} = {speed} }}
+torques = {{ {drive} = {torque} }}
+drives = ["{drive}"]
+loads = ["{load}"]
+"""
+    original = loads_train_file(text)
+    back = read_document(loads_rexs_document(
+        rexs_text(original, kind, DATE, document=parse_toml(text)).encode(), "t.rexs"))
+    same(fingerprint(original), fingerprint(back))

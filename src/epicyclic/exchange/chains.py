@@ -131,6 +131,8 @@ def _stage_table(mapper, start, end, path, custom_key: str, custom) -> tuple[dic
         raise model.error(first_stage, None, f"the stage chain {label!r} starts and ends on the same shaft "
                                              f"{first!r}.")
     data = [(s, mapper.gear(a), mapper.gear(b)) for s, a, b in path]
+    for stage, ga, gb in data:
+        mapper.check_center_distance(stage, ga, gb)
     meshes = [[ga.teeth, gb.teeth, "internal" if ga.internal or gb.internal else "external"] for _, ga, gb in data]
     table: dict[str, Any] = {"name": name, "first": first, "second": second, "meshes": meshes}
     for k, (_, ga, gb) in enumerate(data):

@@ -77,7 +77,7 @@ def toml_text(train_file) -> str:
     return document_toml(document.data, document.origins, header, _cases_lines(document))
 
 
-def rexs_text(train_file, kind: str = "xml", date: str | None = None) -> str:
+def rexs_text(train_file, kind: str = "xml", date: str | None = None, document=None) -> str:
     """The train file as REXS 1.7 text: ``kind`` ``"xml"`` or ``"json"``.
 
     Parameters
@@ -86,6 +86,9 @@ def rexs_text(train_file, kind: str = "xml", date: str | None = None) -> str:
     kind : str, default "xml"
     date : str, optional
         The file's date (ISO 8601 with offset); default now.
+    document : mapping, optional
+        The parsed TOML the train file was read from (default: read again from its source, or a REXS
+        file's mapped document).
 
     Returns
     -------
@@ -94,13 +97,15 @@ def rexs_text(train_file, kind: str = "xml", date: str | None = None) -> str:
     from .. import __version__
     from .writing import build_rexs
 
-    document = train_file.exchange
-    if document is None:
+    mapped = train_file.exchange
+    if document is not None:
+        data, cases = document, ()
+    elif mapped is None:
         from ..io.source import parse_toml, read_source
 
         data, cases = parse_toml(read_source(train_file.source), train_file.source), ()
     else:
-        data, cases = document.data, document.load_cases if len(document.load_cases) > 1 else ()
+        data, cases = mapped.data, mapped.load_cases if len(mapped.load_cases) > 1 else ()
     builder = build_rexs(train_file, data, cases, application_version=__version__, date=date)
     return builder.xml() if kind == "xml" else builder.json()
 

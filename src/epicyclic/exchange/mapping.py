@@ -101,8 +101,9 @@ class RexsDocument:
         counts = Counter(k for k in ("planetary", "gear", "clutch", "brake") for _ in self.data.get(k, []))
         read = ", ".join(f"{n} {k if n == 1 else k + 's'}" for k, n in counts.items() if n)
         cases = f", {len(self.load_cases)} load cases" if len(self.load_cases) > 1 else ""
+        notes = f"; {len(self.notes)} note(s), the first: {self.notes[0]}" if self.notes else ""
         return (f"{self.source}: REXS {self.version} ({self.container}, {self.application or 'unknown program'}): "
-                f"{read}{cases}" + (f"; {self.ignored}" if self.ignored else ""))
+                f"{read}{cases}" + (f"; {self.ignored}" if self.ignored else "") + notes)
 
 
 def _plural(kind: str, n: int) -> str:
@@ -149,6 +150,7 @@ class _Mapper:
         self.materials: dict[str, str] = {}
         self.element_names: set[str] = set()
         self.notes: list[str] = []
+        self.checked: set[tuple] = set()
         self.operating = OperatingMapper(model, self.members, self.used, self.notes)
         self.members.preferred = self.operating.preferred_shafts()
         self.stage_owner: dict[int, int] = {}  # cylindrical_stage id → planetary_stage id
@@ -170,6 +172,34 @@ class _Mapper:
 
     def label(self, component: Component) -> str:
         return f"{component.type} {component.id}" + (f" {component.name!r}" if component.name else "")
+
+    def check_center_distance(self, stage: Component, a: GearData, b: GearData) -> None:
+        """A note where the REXS ``center_distance`` differs from the working centre distance of the profile
+        shifts (ISO 21771), which the geometry tables use."""
+        from ..errors import EpicyclicError
+        from ..geometry import BasicRack, GearGeometry, MeshGeometry
+
+        if a.module is None or not self.model.has(stage, "center_distance"):
+            return
+        given = self.model.number(stage, "center_distance", "length")
+        key = (frozenset((a.teeth, b.teeth)), given, a.module)  # the planets of a set: one note
+        if key in self.checked:
+            return
+        self.checked.add(key)
+        if b.internal and not a.internal or not a.internal and not b.internal:
+            first, second = a, b
+        else:
+            first, second = b, a
+        try:
+            rack = BasicRack(a.module, a.pressure_angle or 20.0, a.helix_angle or 0.0)
+            mesh = MeshGeometry(GearGeometry(first.teeth, rack, first.profile_shift or 0.0),
+                                GearGeometry(second.teeth, rack, second.profile_shift or 0.0, internal=second.internal))
+            working = mesh.center_distance
+        except EpicyclicError:
+            return
+        if abs(working - given) > max(1e-3, 1e-4 * a.module):
+            self.notes.append(f"{self.label(stage)}: REXS gives the centre distance a = {given:g} mm, its profile "
+                              f"shifts give a_w = {working:.4f} mm (ISO 21771), which the geometry uses")
 
     def gear(self, gid: int) -> GearData:
         return gear_data(self.model, self.model.components[gid], self.links, self.used)
@@ -285,6 +315,8 @@ class _Mapper:
             raise model.error(stage, None, f"the stage meshes {len(central_gears)} central gears; epicyclic reads "
                                            "stages with two (sun and ring, two rings or two suns).")
         gear = {g: self.gear(g) for g in on}
+        for mesh_stage, g1, g2 in meshes:
+            self.check_center_distance(mesh_stage, gear[g1], gear[g2])
         first, second = central_gears
         if gear[first].internal and not gear[second].internal:
             first, second = second, first  # the external gear is the sun

@@ -104,6 +104,7 @@ class Members:
                 self.used.update((whole.id, part.id))
             elif whole.type == "planetary_stage" and part.type == "planet_carrier":
                 stage_carrier[whole.id] = part.id
+                self.used.add(part.id)
             elif whole.type == "shaft" and part.type in GEAR_TYPES:
                 self.gear_shaft[part.id] = whole.id
         for relation in model.relations_of("planet_carrier_shaft"):

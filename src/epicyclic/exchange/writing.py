@@ -200,6 +200,8 @@ class _Writer:
             return width.get(role) if isinstance(width, dict) else width
 
         name = t["name"]
+        shape = self.file.geometry.get(name)
+        a = [m.center_distance for m in shape.meshes] if shape is not None else [None, None, None]
         if kind == "simple":
             roles = [("sun", False, m1, 1), ("ring", True, m1, -1)]
             planet_gears = [("planet", "planet", m1)]
@@ -228,16 +230,16 @@ class _Writer:
                                shift.get("planet1"), w("planet1"))
                 p2 = self.gear(outer, f"{name} planet {k + 1} ring side", teeth["planet_ring"], False, g, m1, 1,
                                shift.get("planet2"), w("planet2"))
-                self.mesh(stage, f"{name} sun-planet {k + 1}", central1, p1)
-                self.mesh(stage, f"{name} planets {k + 1}", p1, p2)
-                self.mesh(stage, f"{name} planet {k + 1}-ring", p2, central2)
+                self.mesh(stage, f"{name} sun-planet {k + 1}", central1, p1, w("sun"), a[0])
+                self.mesh(stage, f"{name} planets {k + 1}", p1, p2, w("planet1"), a[1] if len(a) > 2 else None)
+                self.mesh(stage, f"{name} planet {k + 1}-ring", p2, central2, w("ring"), a[-1])
                 continue
             pshaft = b.component("shaft", f"{name} planet {k + 1}")
             b.relation("planet_shaft", [(stage, "planetary_stage"), (pshaft, "shaft")])
             made = [self.gear(pshaft, f"{name} planet {k + 1} {key}", teeth[key], False, g, module, -1,
                               shift.get(geo), w(geo)) for key, geo, module in planet_gears]
-            self.mesh(stage, f"{name} {c1}-planet {k + 1}", central1, made[0])
-            self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2)
+            self.mesh(stage, f"{name} {c1}-planet {k + 1}", central1, made[0], None, a[0])
+            self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2, None, a[-1])
 
     def stage(self, t: Mapping[str, Any]) -> None:
         b = self.b
@@ -258,6 +260,8 @@ class _Writer:
             return
         meshes = t["meshes"]
         here = self.shaft(t["first"])
+        shape = self.file.geometry.get(t["name"])
+        distances = [m.center_distance for m in shape.meshes] if shape is not None else [None] * len(meshes)
 
         def per(key, j, default=None):
             value = (g or {}).get(key, default)
@@ -282,7 +286,7 @@ class _Writer:
                            None if module is None else _number(module), 1, shifts[0], width)
             g2 = self.gear(there, f"{t['name']} mesh {j + 1} second", z2, internal and not ring1, geometry,
                            None if module is None else _number(module), 1 if internal else -1, shifts[1], width)
-            sid = self.mesh(None, t["name"] if j == 0 else f"{t['name']} mesh {j + 1}", g1, g2, width)
+            sid = self.mesh(None, t["name"] if j == 0 else f"{t['name']} mesh {j + 1}", g1, g2, width, distances[j])
             if j == 0:
                 b.add(sid, custom)
             here = there
