@@ -194,3 +194,18 @@ def test_no_gears_at_all_is_a_clear_error():
 def test_a_json_array_where_an_object_belongs():
     with pytest.raises(InputFileError, match="a component is 3, not an object"):
         read_model(json.dumps({"model": {"version": "1.7", "components": [3]}}).encode(), "arr.rexsj")
+
+
+def test_a_large_toml_file_keeps_the_toml_limit(tmp_path):
+    path = tmp_path / "large.toml"
+    path.write_text('title = "x"\n' + "# padding\n" * 200_000)  # 2 MB: over 1 MiB, under the REXS 16 MiB
+    with pytest.raises(InputFileError, match="at most 1 MiB"):
+        load_train_file(path)
+
+
+def test_a_large_rexs_file_gets_the_rexs_limit(tmp_path):
+    from epicyclic.exchange.topology import Members  # noqa: F401  (the package imports)
+
+    path = tmp_path / "large.rexs"
+    path.write_bytes(stage().replace(b"</model>", b"<!--" + b" " * (2 << 20) + b"--></model>"))
+    assert load_train_file(path).solve().speed("carrier") == pytest.approx(3000 / 3.6)

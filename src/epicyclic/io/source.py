@@ -108,7 +108,20 @@ def read_source(path: str | Path, max_bytes: int | None = None) -> str:
     return decode_source(read_bytes(path, max_bytes), str(path), max_bytes)
 
 
-def read_bytes(path: str | Path, max_bytes: int | None = None) -> bytes:
+def _head_is_rexs(path: str | Path, limit: int) -> bool:
+    """Whether a regular file larger than ``limit`` starts like REXS (its first 4 KiB, read without blocking)."""
+    try:
+        info = os.stat(path)
+        if not stat.S_ISREG(info.st_mode) or info.st_size <= limit:
+            return False
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(fd, "rb") as handle:
+            return stat.S_ISREG(os.fstat(handle.fileno()).st_mode) and sniff(handle.read(4096)) is not None
+    except OSError:
+        return False  # the full read reports it
+
+
+def read_bytes(path: str | Path, max_bytes: int | None = None, rexs_bytes: int | None = None) -> bytes:
     """The bytes of the input file ``path``, checked (steps 1–2 of the module docstring).
 
     Parameters
@@ -117,6 +130,9 @@ def read_bytes(path: str | Path, max_bytes: int | None = None) -> bytes:
         A regular file.
     max_bytes : int, optional
         Size limit in bytes; default :func:`epicyclic.limits.max_file_bytes`.
+    rexs_bytes : int, optional
+        A larger limit for a REXS file (:func:`sniff` of its first 4 KiB): REXS models are larger than
+        train files (:func:`epicyclic.limits.max_rexs_bytes`).
 
     Raises
     ------
@@ -124,6 +140,8 @@ def read_bytes(path: str | Path, max_bytes: int | None = None) -> bytes:
         Missing, unreadable, not a regular file, too large.
     """
     limit = max_file_bytes() if max_bytes is None else max_bytes
+    if rexs_bytes is not None and rexs_bytes > limit and _head_is_rexs(path, limit):
+        limit = rexs_bytes
     name = str(path)
 
     def error(message: str) -> InputFileError:

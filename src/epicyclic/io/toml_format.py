@@ -196,12 +196,12 @@ def load_train_file(path: str | Path, *, max_bytes: int | None = None, overrides
     """
     from ..limits import max_rexs_bytes
 
-    data = read_bytes(path, max(max_rexs_bytes(), max_bytes or 0))
+    limit = max_file_bytes() if max_bytes is None else max_bytes
+    data = read_bytes(path, limit, rexs_bytes=max(max_rexs_bytes(), limit))
     if sniff(data) is not None:  # REXS, by content: zip signature, '<' or '{' first
         from ..exchange.reading import loads_rexs_document
 
         return read_document(loads_rexs_document(data, str(path)), overrides)
-    limit = max_file_bytes() if max_bytes is None else max_bytes
     return loads_train_file(decode_source(data, str(path), limit), source=str(path), overrides=overrides)
 
 
