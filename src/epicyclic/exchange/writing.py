@@ -218,7 +218,7 @@ class _Writer:
         (c1, int1, mod1, hand1), (c2, int2, mod2, hand2) = roles
         gear_name = {"sun": "sun", "ring": "ring", "first": "first", "second": "second"}
         central1 = self.gear(sun, f"{name} {c1}", teeth[c1], int1, g, mod1, hand1, shift.get(gear_name[c1]), w(c1))
-        central2 = self.gear(ring, f"{name} {c2}", teeth[c2], int2, g, mod2, hand2 if not int2 else -hand1,
+        central2 = self.gear(ring, f"{name} {c2}", teeth[c2], int2, g, mod2, -1 if int2 else 1,
                              shift.get(gear_name[c2]), w(c2))
         for k in range(planets):
             if kind == "double":
