@@ -228,3 +228,28 @@ def test_a_centre_distance_the_profile_shifts_do_not_give_is_noted(tmp_path):
     assert len(notes) == 2  # sun-planet and planet-ring, once for the three planets
     assert "REXS gives the centre distance a = 79 mm, its profile shifts give a_w = 78.0000 mm" in notes[0]
     assert load_rexs_document(PLANETARY).notes == ()
+
+
+def test_sew_three_stage_gearbox_rexs_1_0():
+    # SEW three-stage cylindrical gearbox (fva-net/rexs-api-java, SEW_3-stage_cylindrical_gearbox_1.0.rexs):
+    # three external meshes 23/67, 13/76, 14/87: i = -(67/23)(76/13)(87/14) = -105.83 (three reversals)
+    f = load_train_file(FIXTURES / "SEW_3-stage_cylindrical_gearbox_1.0.rexs")
+    (g,) = f.exchange.data["gear"]
+    assert g["meshes"] == [[23, 67, "external"], [13, 76, "external"], [14, 87, "external"]]
+    s = f.solve()
+    ratio = -(67 / 23) * (76 / 13) * (87 / 14)
+    assert s.speed("ABW [54]") == pytest.approx(1400 / ratio, rel=1e-12)
+    assert s.torque("ABW [54]") == pytest.approx(-s.torque("ANW [4]") * ratio, rel=1e-9)  # lossless: T_out = -i T_in
+    assert s.torque("ABW [54]") == pytest.approx(500.0, rel=1e-9)  # the file gives 4.72456 N*m at the input: 500 N*m out
+    assert f.exchange.ignored == "ignored: 33 shaft sections, 9 rolling bearing rows, 9 rolling bearings with catalog geometry"
+
+
+def test_a_stage_of_other_gears_is_not_read():
+    # the planetary stage with its external gears made worm gears: its meshes are skipped, and the stage
+    # without meshes is a clear error naming it
+    from epicyclic.exchange.reading import loads_rexs_document
+
+    text = PLANETARY.read_bytes().replace(b'type="cylindrical_gear"', b'type="worm_gear"')
+    with pytest.raises(InputFileError, match=r"component 9 \(planetary_stage 'Planetenstufe \[9\]'\): the stage has no "
+                                             "cylindrical_stage meshes"):
+        loads_rexs_document(text, "worm.rexs")

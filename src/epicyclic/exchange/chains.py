@@ -105,7 +105,7 @@ def chains(mapper) -> list[tuple[dict[str, Any], None]]:
 
 
 def _stage_table(mapper, start, end, path, custom_key: str, custom) -> tuple[dict[str, Any], None]:
-    model, members = mapper.model, mapper.members
+    model = mapper.model
     gear_1 = {r.role("stage"): r.role("gear_1") for r in model.relations_of("stage")}
 
     def reverse(path, start, end):

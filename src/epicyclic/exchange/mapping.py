@@ -47,7 +47,7 @@ from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, custom as _custom
 from .gears import GearData, gear_data, gear_links
 from .operating import OperatingMapper, RexsLoadCase
 from .rexs_model import Component, RexsModel
-from .topology import Members, element_name
+from .topology import GEAR_TYPES, Members, element_name
 
 __all__ = ["CUSTOM_DOCUMENT", "CUSTOM_ELEMENT", "RexsDocument", "map_model"]
 
@@ -164,7 +164,8 @@ class _Mapper:
         for relation in model.relations_of("stage"):
             stage = model.component(relation.role("stage"), relation)
             g1, g2 = relation.role("gear_1"), relation.role("gear_2")
-            model.component(g1, relation), model.component(g2, relation)
+            if not all(model.component(g, relation).type in GEAR_TYPES for g in (g1, g2)):
+                continue  # a worm, bevel or crossed-helical stage: not read (counted as ignored)
             self.meshes.append((stage, g1, g2))
             self.used.add(stage.id)
         for relation in model.relations_of("stage_gear_data"):
@@ -271,7 +272,7 @@ class _Mapper:
 
     # ---- planetary stages
     def planetary(self, stage: Component) -> tuple[dict[str, Any], None]:
-        model, members = self.model, self.members
+        model = self.model
         self.used.add(stage.id)
         central = [r.role("shaft") for r in model.relations_of("central_shaft") if r.role("planetary_stage") == stage.id]
         order = {r.role("shaft"): r.order for r in model.relations_of("central_shaft")
