@@ -25,7 +25,7 @@ from epicyclic.io import load_train_file
 from epicyclic.io.geometry_report import geometry_results
 
 ROOT = Path(__file__).resolve().parents[2]
-EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
+EXAMPLES = sorted((ROOT / "examples").glob("*.toml")) + sorted((ROOT / "examples" / "rexs").glob("*.rexs"))
 FIXTURES = Path(__file__).parent / "fixtures"
 DATE = "2026-01-01T00:00:00+00:00"
 
