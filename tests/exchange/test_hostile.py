@@ -209,3 +209,13 @@ def test_a_large_rexs_file_gets_the_rexs_limit(tmp_path):
     path = tmp_path / "large.rexs"
     path.write_bytes(stage().replace(b"</model>", b"<!--" + b" " * (2 << 20) + b"--></model>"))
     assert load_train_file(path).solve().speed("carrier") == pytest.approx(3000 / 3.6)
+
+
+def test_without_defines_speed_the_first_speed_is_the_given_one():
+    from epicyclic.io.toml_format import read_document
+
+    unflagged = stage().replace(b'<attribute id="defines_speed" unit="none">true</attribute>', b"")
+    f = read_document(loads_rexs_document(unflagged, "s.rexs"))
+    assert f.solve().speed("carrier") == pytest.approx(3000 / 3.6)
+    assert "no shaft has defines_speed" in f.exchange.notes[0]
+    assert repr(f.exchange).startswith('RexsDocument("s.rexs: REXS 1.7 (xml, t 1): 1 planetary; 1 note(s)')

@@ -95,6 +95,9 @@ class RexsDocument:
     lubricant: Mapping[str, Any] | None = None
     notes: tuple[str, ...] = ()
 
+    def __repr__(self) -> str:
+        return f"RexsDocument({self.summary!r})"
+
     @property
     def summary(self) -> str:
         """One line for the terminal: what was read, and what was ignored."""

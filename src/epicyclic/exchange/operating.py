@@ -188,9 +188,20 @@ class OperatingMapper:
         """The ``[operating_point]`` table of the model with a load case's ``overrides``, or None."""
         model, members = self.model, self.members
         speeds: dict[str, float] = {}
-        for shaft in model.of_type("shaft"):
+        shafts = model.of_type("shaft")
+        flagged = any("defines_speed" in s.attributes or "defines_speed" in overrides.get(s.id, {}) for s in shafts)
+        if not flagged:  # no shaft says which speed is given: the first shaft of the train with a speed
+            first = next((s for s in shafts if model.has(s, "rotational_speed", overrides.get(s.id))
+                          and members.name(s.id) in known), None)
+            shafts = [first] if first is not None else []
+            if first is not None:
+                note = (f"{model.source}: no shaft has defines_speed; the speed of {first.label} is read as the "
+                        "given one")
+                if note not in self.notes:
+                    self.notes.append(note)
+        for shaft in shafts:
             extra = overrides.get(shaft.id)
-            if not model.boolean(shaft, "defines_speed", default=False, overrides=extra):
+            if flagged and not model.boolean(shaft, "defines_speed", default=False, overrides=extra):
                 continue
             if not model.has(shaft, "rotational_speed", extra):
                 if case and not model.has(shaft, "rotational_speed"):
