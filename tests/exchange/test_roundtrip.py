@@ -223,3 +223,59 @@ loads = ["{load}"]
     back = read_document(loads_rexs_document(
         rexs_text(original, kind, DATE, document=parse_toml(text)).encode(), "t.rexs"))
     same(fingerprint(original), fingerprint(back))
+
+
+def test_load_cases_in_different_gears_round_trip():
+    """A load spectrum whose cases run in different gears of the schedule (gear_shift_index per load case)."""
+    from epicyclic.exchange.operating import RexsLoadCase
+    from epicyclic.exchange.reading import loads_rexs_document
+    from epicyclic.exchange.writing import build_rexs
+    from epicyclic.io import loads_train_file
+    from epicyclic.io.source import parse_toml
+
+    text = """
+[[planetary]]
+name = "P"
+sun = "in"
+ring = "ring"
+carrier = "out"
+teeth = { sun = 30, planet = 24, ring = 78 }
+[[brake]]
+name = "B"
+shaft = "ring"
+[[clutch]]
+name = "C"
+first = "in"
+second = "ring"
+[transmission]
+input = "in"
+output = "out"
+[transmission.schedule]
+"low" = ["B"]
+"direct" = ["C"]
+[operating_point]
+speeds = { in = 3000 }
+torques = { in = 10 }
+drives = ["in"]
+loads = ["out"]
+gear = "low"
+"""
+    f = loads_train_file(text)
+    op = {"speeds": {"in": "3000 1/min"}, "torques": {"in": "10 N*m"}, "drives": ["in"], "loads": ["out"]}
+    cases = [RexsLoadCase(1, 1, op, 0.25, 60.0, "low"), RexsLoadCase(2, 1, {**op, "speeds": {"in": "2000 1/min"}},
+                                                                      0.75, 70.0, "direct")]
+    for kind in ("xml", "json"):
+        builder = build_rexs(f, parse_toml(text), cases, date=DATE)
+        written = builder.xml() if kind == "xml" else builder.json()
+        assert validate_rexs(written, kind) == []
+        back = loads_rexs_document(written.encode(), f"t.{kind}")
+        assert [c.gear for c in back.load_cases] == ["low", "direct"]
+        assert [c.duration_fraction for c in back.load_cases] == pytest.approx([0.25, 0.75])
+        assert back.data["transmission"]["schedule"] == {"low": ["B"], "direct": ["C"]}
+        # ratio 1 + 78/30 = 3.6 in "low", 1 in "direct"
+        for case, ratio in zip(back.load_cases, (3.6, 1.0)):
+            from epicyclic.io.toml_format import read_document
+
+            train = read_document(back).transmission.train_in_gear(read_document(back).train, case.gear)
+            s = solve(train, case.to_operating_point())
+            assert s.speed("in") / s.speed("out") == pytest.approx(ratio)

@@ -37,7 +37,7 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from types import MappingProxyType
 from typing import Any
 
@@ -257,6 +257,11 @@ class _Mapper:
         schedule = self.schedule(unit, [t for t, _ in clutches + brakes], cases, extras)
         if schedule is not None:
             data["transmission"] = schedule
+            names = list(schedule["schedule"])
+            cases = [replace(c, gear=names[int(c.gear) - 1] if c.gear and 1 <= int(c.gear) <= len(names) else None)
+                     for c in cases]
+        else:
+            cases = [replace(c, gear=None) for c in cases]
         if cases:
             data["operating_point"] = dict(cases[0].operating_point)
             if schedule is not None and unit is not None:

@@ -98,6 +98,9 @@ class RexsLoadCase:
         The share of the load case in the spectrum's time (``load_duration_fraction``, 0 … 1).
     lubricant_temperature : float or None
         °C, the casing's ``temperature_lubricant`` in this load case.
+    gear : str or None
+        The gear of the ``[transmission]`` schedule the load case runs in (the ``gear_unit``'s
+        ``gear_shift_index`` in the load case), or None where it gives none.
     """
 
     id: int
@@ -105,6 +108,7 @@ class RexsLoadCase:
     operating_point: Mapping[str, Any]
     duration_fraction: float | None = None
     lubricant_temperature: float | None = None
+    gear: str | None = None
 
     def to_operating_point(self) -> OperatingPoint:
         """The load case as an :class:`~epicyclic.model.OperatingPoint` (core units: 1/min, N·m, W).
@@ -174,8 +178,12 @@ class OperatingMapper:
             if casing is not None and model.has(casing, "temperature_lubricant", case.components.get(casing.id)):
                 temperature = model.number(casing, "temperature_lubricant", "temperature",
                                            case.components.get(casing.id))
+            gear = None
+            if unit is not None and "gear_shift_index" in case.components.get(unit.id, {}):
+                gear = str(model.integer(unit, "gear_shift_index", case.components.get(unit.id)))
             if table is not None:
-                cases.append(RexsLoadCase(case.id, case.spectrum, MappingProxyType(table), fraction, temperature))
+                cases.append(RexsLoadCase(case.id, case.spectrum, MappingProxyType(table), fraction, temperature,
+                                          gear))
         if not model.load_cases:
             table = self.point({}, known, "")
             if table is not None:

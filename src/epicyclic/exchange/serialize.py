@@ -120,10 +120,12 @@ class RexsBuilder:
         ----------
         overrides : list of (int, list of (id, kind, value, unit))
         """
-        for _, attributes in overrides:
+        merged: dict[int, list] = {}
+        for cid, attributes in overrides:
             for _, kind, value, _ in attributes:
                 self._check(kind, value)
-        self.load_cases.append((len(self.load_cases) + 1, overrides))
+            merged.setdefault(cid, []).extend(attributes)  # one entry per component
+        self.load_cases.append((len(self.load_cases) + 1, list(merged.items())))
 
     @staticmethod
     def _check(kind: str, value: Any) -> None:

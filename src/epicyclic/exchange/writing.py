@@ -37,7 +37,13 @@ _ROLE = "custom_epicyclic_role"
 _NATIVE_SET = {"name", "sun", "ring", "carrier", "teeth", "planets", "geometry"}
 _NATIVE_GEAR = {"name", "first", "second", "meshes", "geometry"}
 _NATIVE_GEOMETRY = {"module", "pressure_angle", "helix_angle", "addendum", "dedendum", "profile_shift",
-                    "face_width", "ring_module", "planets"}
+                    "face_width", "ring_module", "planets", "internal_shift_convention"}
+
+
+def _iso(x: Any, internal: bool, geometry: Mapping[str, Any] | None) -> Any:
+    """An internal gear's profile shift in the ISO 21771 sign REXS uses (a file in the KHK sign: −x)."""
+    khk = internal and (geometry or {}).get("internal_shift_convention") == "khk"
+    return -_number(x) if khk and x is not None else x
 
 
 def _number(value: Any) -> float:
@@ -217,9 +223,10 @@ class _Writer:
             planet_gears = [("planet_first", "planet_first", m1), ("planet_second", "planet_second", m2)]
         (c1, int1, mod1, hand1), (c2, int2, mod2, hand2) = roles
         gear_name = {"sun": "sun", "ring": "ring", "first": "first", "second": "second"}
-        central1 = self.gear(sun, f"{name} {c1}", teeth[c1], int1, g, mod1, hand1, shift.get(gear_name[c1]), w(c1))
+        central1 = self.gear(sun, f"{name} {c1}", teeth[c1], int1, g, mod1, hand1,
+                             _iso(shift.get(gear_name[c1]), int1, g), w(c1))
         central2 = self.gear(ring, f"{name} {c2}", teeth[c2], int2, g, mod2, -1 if int2 else 1,
-                             shift.get(gear_name[c2]), w(c2))
+                             _iso(shift.get(gear_name[c2]), int2, g), w(c2))
         for k in range(planets):
             if kind == "double":
                 inner = b.component("shaft", f"{name} planet {k + 1} (sun side)")
@@ -283,9 +290,10 @@ class _Writer:
             width = per("face_width", j)
             ring1 = internal and z1 > z2
             g1 = self.gear(here, f"{t['name']} mesh {j + 1} first", z1, ring1, geometry,
-                           None if module is None else _number(module), 1, shifts[0], width)
+                           None if module is None else _number(module), 1, _iso(shifts[0], ring1, g), width)
             g2 = self.gear(there, f"{t['name']} mesh {j + 1} second", z2, internal and not ring1, geometry,
-                           None if module is None else _number(module), 1 if internal else -1, shifts[1], width)
+                           None if module is None else _number(module), 1 if internal else -1,
+                           _iso(shifts[1], internal and not ring1, g), width)
             sid = self.mesh(None, t["name"] if j == 0 else f"{t['name']} mesh {j + 1}", g1, g2, width, distances[j])
             if j == 0:
                 b.add(sid, custom)
@@ -351,4 +359,7 @@ class _Writer:
                 overrides.append((self.unit, [_f("load_duration_fraction", 100.0 * case.duration_fraction, "%")]))
             if case.lubricant_temperature is not None:
                 overrides.append((self.casing, [_f("temperature_lubricant", case.lubricant_temperature, "C")]))
+            schedule = list(self.file.transmission.schedule) if self.file.transmission else []
+            if getattr(case, "gear", None) in schedule:
+                overrides.append((self.unit, [("gear_shift_index", "integer", schedule.index(case.gear) + 1, "none")]))
             b.load_case(overrides)
