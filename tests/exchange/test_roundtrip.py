@@ -118,10 +118,14 @@ def test_attributes_written_are_rexs_1_7_attributes():
     units = {"none": "none", "mm": "mm", "deg": "deg", "1 / min": "1 / min", "N m": "N m", "kW": "kW",
              "%": "%", "C": "C"}
     for example in ("zf_8hp70_geometry.toml", "brandenberger_1952.toml", "geometry_simple_set.toml",
-                    "wolfrom_drive.toml"):
+                    "wolfrom_drive.toml", "rexs/FVA-Industriegetriebe_2stufig_1-4.rexs"):
         model = read_model(rexs_text(load_train_file(ROOT / "examples" / example), "xml", DATE).encode(), example)
-        for c in model.components.values():
-            for a in c.attributes.values():
+        written = [(c, c.attributes.values()) for c in model.components.values()]
+        written += [(model.components[cid], attributes.values()) for case in model.load_cases
+                    for cid, attributes in case.components.items()]
+        assert model.load_cases or "rexs/" not in example
+        for c, attributes in written:
+            for a in attributes:
                 if a.id.startswith("custom_"):
                     continue
                 known = database["components"][c.type]
@@ -268,6 +272,7 @@ gear = "low"
         builder = build_rexs(f, parse_toml(text), cases, date=DATE)
         written = builder.xml() if kind == "xml" else builder.json()
         assert validate_rexs(written, kind) == []
+        assert "operating_time_fraction" in written  # the REXS 1.7 attribute (gear_unit, %)
         back = loads_rexs_document(written.encode(), f"t.{kind}")
         assert [c.gear for c in back.load_cases] == ["low", "direct"]
         assert [c.duration_fraction for c in back.load_cases] == pytest.approx([0.25, 0.75])

@@ -13,8 +13,9 @@
   reacting members get the other role.  Where the speed at that shaft is not
   given the defining load is taken as the drive, and a note says so.
 * Each ``load_case`` of a ``load_spectrum`` overrides these attributes for
-  its components: one operating point per load case, with its
-  ``load_duration_fraction`` (of the ``gear_unit``) and its lubricant
+  its components: one operating point per load case, with its share of the
+  time (``operating_time_fraction`` of the ``gear_unit``, %, or Bearinx's
+  ``load_duration_fraction``) and its lubricant
   temperature (``temperature_lubricant`` of the ``gear_casing``).
 * The ``lubricant``'s kinematic viscosities at 40 and 100 °C give the
   viscosity at the casing's lubricant temperature by Ubbelohde–Walther
@@ -95,7 +96,7 @@ class RexsLoadCase:
     operating_point : mapping
         The ``[operating_point]`` table: ``speeds``, ``torques``, ``powers`` with units, ``drives``, ``loads``.
     duration_fraction : float or None
-        The share of the load case in the spectrum's time (``load_duration_fraction``, 0 … 1).
+        The share of the load case in the spectrum's time (``operating_time_fraction``, 0 … 1).
     lubricant_temperature : float or None
         °C, the casing's ``temperature_lubricant`` in this load case.
     gear : str or None
@@ -173,8 +174,10 @@ class OperatingMapper:
         for case in model.load_cases or ():
             table = self.point(case.components, known, f"load case {case.id}")
             fraction = temperature = None
-            if unit is not None and model.has(unit, "load_duration_fraction", case.components.get(unit.id)):
-                fraction = model.number(unit, "load_duration_fraction", "fraction", case.components.get(unit.id))
+            for share in ("operating_time_fraction", "load_duration_fraction"):  # REXS 1.4+; Bearinx's name
+                if unit is not None and model.has(unit, share, case.components.get(unit.id)):
+                    fraction = model.number(unit, share, "fraction", case.components.get(unit.id))
+                    break
             if casing is not None and model.has(casing, "temperature_lubricant", case.components.get(casing.id)):
                 temperature = model.number(casing, "temperature_lubricant", "temperature",
                                            case.components.get(casing.id))

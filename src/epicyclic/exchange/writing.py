@@ -356,7 +356,7 @@ class _Writer:
         for p, case in zip(points, cases):
             overrides = values(p)
             if case.duration_fraction is not None:
-                overrides.append((self.unit, [_f("load_duration_fraction", 100.0 * case.duration_fraction, "%")]))
+                overrides.append((self.unit, [_f("operating_time_fraction", 100.0 * case.duration_fraction, "%")]))
             if case.lubricant_temperature is not None:
                 overrides.append((self.casing, [_f("temperature_lubricant", case.lubricant_temperature, "C")]))
             schedule = list(self.file.transmission.schedule) if self.file.transmission else []
