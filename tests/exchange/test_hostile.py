@@ -219,3 +219,16 @@ def test_without_defines_speed_the_first_speed_is_the_given_one():
     assert f.solve().speed("carrier") == pytest.approx(3000 / 3.6)
     assert "no shaft has defines_speed" in f.exchange.notes[0]
     assert repr(f.exchange).startswith('RexsDocument("s.rexs: REXS 1.7 (xml, t 1): 1 planetary; 1 note(s)')
+
+
+def test_a_ring_gear_in_the_casing_is_held():
+    # some exporters assemble a fixed ring gear into the gear_casing instead of a shaft held by a coupling
+    from epicyclic.io.toml_format import read_document
+
+    casing_ring = (stage().replace(b'<relation id="6" type="assembly"><ref id="3" role="assembly"/>',
+                                   b'<relation id="6" type="assembly"><ref id="40" role="assembly"/>')
+                   .replace(b'<relation id="2" type="central_shaft"><ref id="1" role="planetary_stage"/>'
+                            b'<ref id="3" role="shaft"/></relation>', b""))
+    f = read_document(loads_rexs_document(casing_ring, "casing.rexs"))
+    assert f.train.elements[0].ring == "housing"
+    assert f.solve().speed("carrier") == pytest.approx(3000 / 3.6)

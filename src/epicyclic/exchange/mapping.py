@@ -314,7 +314,8 @@ class _Mapper:
         for _, g1, g2 in meshes:
             for g in (g1, g2):
                 on[g] = self.shaft_of(g)
-        central_gears = sorted({g for g in on if on[g] in central}, key=lambda g: (order.get(on[g]) or 0, g))
+        central_gears = sorted({g for g in on if on[g] in central or self.members.is_housing(on[g])},
+                               key=lambda g: (order.get(on[g]) or 0, g))
         planet_gears = {g for g in on if on[g] in planet_shafts}
         stray = [g for g in on if g not in central_gears and g not in planet_gears]
         if stray:

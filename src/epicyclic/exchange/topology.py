@@ -105,8 +105,8 @@ class Members:
             elif whole.type == "planetary_stage" and part.type == "planet_carrier":
                 stage_carrier[whole.id] = part.id
                 self.used.add(part.id)
-            elif whole.type == "shaft" and part.type in GEAR_TYPES:
-                self.gear_shaft[part.id] = whole.id
+            elif whole.type in ("shaft", "gear_casing") and part.type in GEAR_TYPES:
+                self.gear_shaft[part.id] = whole.id  # a ring gear may sit in the casing itself
         for relation in model.relations_of("planet_carrier_shaft"):
             stage, shaft = relation.role("planetary_stage"), relation.role("shaft")
             if stage is None or shaft is None:
