@@ -47,6 +47,9 @@ def test_gears_and_animate_read_rexs(tmp_path):
     run("convert", ROOT / "examples" / "zf_8hp70_8speed.toml", "-o", rexs)
     result = run("gears", rexs, "--format", "json")
     assert "8" in result.stdout
+    assert "REXS 1.7 (zip/xml, epicyclic" in result.stderr and result.stderr.count("\n") == 1
+    assert "ignored" not in result.stderr  # a file epicyclic wrote holds nothing it does not use
+    assert run("explore", rexs).stdout
     run("animate", STAGE, "--out", tmp_path / "a.gif", "--frames", "2")
     assert (tmp_path / "a.gif").stat().st_size > 0
 

@@ -146,6 +146,19 @@ def note_exchange(train_file) -> None:
             _NOTES.append(line)
 
 
+def note_rexs(file: Path) -> None:
+    """:func:`note_exchange` for a command that read ``file`` itself (``gears``, ``explore``): a REXS file's
+    summary line (the file read once more, a few milliseconds)."""
+    from ..io.source import sniff
+
+    with open(file, "rb") as handle:
+        head = handle.read(4096)
+    if sniff(head) is not None:
+        from ..io import load_train_file
+
+        note_exchange(load_train_file(file))
+
+
 def load(file: Path, gear: str | None = None, overrides: list[str] | None = None):
     """The train file ``file`` (a :class:`~epicyclic.io.TrainFile`), in ``gear`` of its schedule if given.
 
