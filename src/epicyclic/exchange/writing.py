@@ -221,7 +221,7 @@ class _Writer:
             internal = kind == "two_rings"
             roles = [("first", internal, m1, 1), ("second", internal, m2, 1)]
             planet_gears = [("planet_first", "planet_first", m1), ("planet_second", "planet_second", m2)]
-        (c1, int1, mod1, hand1), (c2, int2, mod2, hand2) = roles
+        (c1, int1, mod1, hand1), (c2, int2, mod2, _) = roles
         gear_name = {"sun": "sun", "ring": "ring", "first": "first", "second": "second"}
         central1 = self.gear(sun, f"{name} {c1}", teeth[c1], int1, g, mod1, hand1,
                              _iso(shift.get(gear_name[c1]), int1, g), w(c1))
