@@ -5,7 +5,7 @@ VENV   ?= .venv
 PY      = $(VENV)/bin/python
 STAMP   = $(VENV)/.installed
 
-.PHONY: demo test bench docs gallery clean chromium
+.PHONY: demo test bench docs docs-serve gallery clean chromium
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -24,6 +24,10 @@ test: $(STAMP) chromium
 # The documentation site (mkdocs.yml) into site/; warnings are errors (strict).
 docs: $(STAMP)
 	NO_MKDOCS_2_WARNING=1 DISABLE_MKDOCS_2_WARNING=true $(VENV)/bin/mkdocs build --strict
+
+# The built site on http://127.0.0.1:8001/ (it also opens from the file system: site/index.html).
+docs-serve: docs
+	$(PY) -m http.server --bind 127.0.0.1 --directory site 8001
 
 # Every example × every kind of picture into docs/gallery/ and docs/gallery.md; the figures of docs/plotting.md.
 gallery: $(STAMP)

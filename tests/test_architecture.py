@@ -29,14 +29,16 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"model"},                                        # the description: elements, train, operating point
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results
-    {"analysis", "losses", "transmission", "demo"},   # built on the solver: modes, loss models, gears
+    {"analysis", "losses", "rating", "transmission", "demo"},  # built on the solver: modes, losses, rating, gears
     {"explain", "io", "plotting", "synthesis", "exchange"},  # files (REXS exchange too), reports, pictures
-    {"cli", "web"},                                   # the front ends
+    {"cli", "web", "notebook"},                       # the front ends (notebook: Jupyter previews)
     {"__main__"},
 ))
 
 #: Imports that reach up a layer, each lazy (inside the function that needs it) and why it is there.
 REACHING_UP = {
+    ("epicyclic", "epicyclic.notebook"):
+        "import epicyclic registers the Jupyter previews of descriptions in a running IPython",
     ("epicyclic.transmission.transmission", "epicyclic.io"):
         "Transmission.from_file reads a train file (the format lives in io)",
     ("epicyclic.losses.efficiency_map", "epicyclic.plotting.efficiency_map"):

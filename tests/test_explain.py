@@ -88,3 +88,26 @@ def test_explain_takes_units_as_a_mapping_and_names_wrong_arguments():
         explain(sol, units="PS")
     with pytest.raises(EpicyclicError, match=r"got a TrainFile \(a train file: explain\(f\.solve\(\), f\.units\)\)"):
         explain(f)
+
+
+@pytest.mark.parametrize("name, lang", [("brandenberger_1952.toml", "en"), ("brandenberger_1952.toml", "de"),
+                                        ("simple_set_ring_held_sun_drives.toml", "en")])
+def test_power_equals_torque_times_speed_in_the_units_shown(name, lang):
+    """Every substituted P = k·M·n holds with the numbers printed beside it, in the file's units (kp·cm,
+    U/min, PS: k = 9.80665e-2·π/30/735.499 = 1.39626e-5; SI: k = π/30), not SI numbers under other units."""
+    import math
+    import re
+
+    f = load_train_file(EXAMPLES / name)
+    text = explain(f.solve(), f.units, lang=lang).text()
+    number = r"\(?(-?[\d.]+(?:e[-+]?\d+)?)\)?"
+    products = re.findall(rf"P_\w+ = {number} · {number} \S+ · {number} \S+ = {number} ", text)
+    assert len(products) >= 2
+    for k, torque, speed, power in products:
+        assert float(k) * float(torque) * float(speed) == pytest.approx(float(power), rel=2e-5)
+    rolling = re.findall(rf"P_w1 = M1'·\(n1 − n3\)·π/30 = {number}·{number}·\({number} − {number}\) = {number} ", text)
+    assert rolling
+    for k, torque, n1, n3, power in rolling:
+        assert float(k) * float(torque) * (float(n1) - float(n3)) == pytest.approx(float(power), rel=2e-5, abs=1e-9)
+    if name.startswith("brandenberger"):
+        assert float(products[0][0]) == pytest.approx(0.0980665 * math.pi / 30 / 735.49875, rel=1e-5)

@@ -48,6 +48,9 @@ def main() -> None:
     print(planetary_animation(brandenberger.solution, frames=32, fps=12, size=300, context=brandenberger.context)
           .gif(HERE / "brandenberger_animation.gif", dpi=60))
     print(efficiency_map_figure())
+    from stamp import record  # beside this script
+
+    record("figures")  # the pictures are as new as the code that drew them (tests/docs/test_gallery.py)
 
 
 if __name__ == "__main__":

@@ -131,6 +131,10 @@ def main(argv: list[str] | None = None) -> int:
     if not args.examples:
         DOC.write_text(markdown(entries), encoding="utf-8")
         print(f"wrote {DOC}")
+        sys.path.insert(0, str(ROOT / "docs" / "figures"))
+        from stamp import record
+
+        record("gallery")  # the pictures are as new as the code that drew them (tests/docs/test_gallery.py)
     if args.html:
         args.html.parent.mkdir(parents=True, exist_ok=True)
         args.html.write_text(page(entries, args.html.resolve()), encoding="utf-8")

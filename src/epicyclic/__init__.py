@@ -36,6 +36,16 @@ from .solver import solve
 __version__ = "0.1.0"
 
 
+def _notebook_previews() -> None:
+    """In a running IPython (a notebook) sets, trains and transmissions show a schematic (epicyclic.notebook)."""
+    from .notebook import register
+
+    register()
+
+
+_notebook_previews()
+
+
 __all__ = [
     "HOUSING",
     "Brake",

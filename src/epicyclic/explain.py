@@ -38,6 +38,8 @@ eqs. 26–29; tec-science, "Willis-Gleichung".
 
 from __future__ import annotations
 
+import math
+
 import html
 from dataclasses import dataclass
 from typing import Any
@@ -87,7 +89,8 @@ _T = {
         "lossless": "lossless element (η = 1): M1·(n1 − n3) + M2·(n2 − n3) = 0",
         "shift": "clutches and brakes carry torque without loss",
         "balance_rule": "external torque = Σ torques the shaft passes to the elements (eq. 2)",
-        "power_rule": "P = M·n·π/30 (positive: drive, negative: load)",
+        "power_rule": "P = M·ω = M·n·π/30 in W, N·m, 1/min (positive: drive, negative: load)",
+        "power_factor": "in the units here: P [{power}] = {factor} · M [{torque}] · n [{speed}]",
         "input": "input power", "output": "output power", "total_loss": "total loss",
         "efficiency": "efficiency η = P_out/P_in", "selflock": "SELF-LOCKING",
         "circulating": "circulating power (power around a closed loop, Blindleistung) / input power",
@@ -131,7 +134,8 @@ _T = {
         "lossless": "verlustfreies Glied (η = 1): M1·(n1 − n3) + M2·(n2 − n3) = 0",
         "shift": "Kupplungen und Bremsen übertragen Moment ohne Verlust",
         "balance_rule": "äusseres Moment = Σ der Momente, die die Welle an die Glieder abgibt (Gl. 2)",
-        "power_rule": "P = M·n·π/30 (positiv: Antrieb, negativ: Abtrieb)",
+        "power_rule": "P = M·ω = M·n·π/30 in W, N·m, 1/min (positiv: Antrieb, negativ: Abtrieb)",
+        "power_factor": "in den Einheiten hier: P [{power}] = {factor} · M [{torque}] · n [{speed}]",
         "input": "Antriebsleistung", "output": "Abtriebsleistung", "total_loss": "Verlustleistung gesamt",
         "efficiency": "Wirkungsgrad η = P_ab/P_an", "selflock": "SELBSTHEMMUNG",
         "circulating": "Blindleistung (in einer geschlossenen Schleife umlaufende Leistung) / Antriebsleistung",
@@ -345,11 +349,16 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
         scale = max(abs(m(tq)) for _, _, tq in parts)
         balance.append(f"{shaft}: M_{shaft} = {terms} = {numbers} = {_zero(total, scale)} {u.torque}")
 
+    # P = M·ω holds in SI; in other units one factor turns torque × speed into power (1 unit each)
+    factor = p(math.pi / 30.0 / (m(1.0) * n(1.0)))
     results: list[str] = [t["power_rule"]]
+    if not math.isclose(factor, math.pi / 30.0, rel_tol=1e-12):
+        results.append(t["power_factor"].format(power=u.power, factor=fmt(factor, 6), torque=u.torque,
+                                                speed=u.speed))
     for shaft, sstate in solution.shafts.items():
         if sstate.role in ("drive", "load") or (sstate.torque != 0 and sstate.role != "housing"):
             results.append(
-                f"P_{shaft} = {_p(m(sstate.torque))} {u.torque} · {_p(speed[shaft])} {u.speed} → "
+                f"P_{shaft} = {fmt(factor, 6)} · {_p(m(sstate.torque))} {u.torque} · {_p(speed[shaft])} {u.speed} = "
                 f"{fmt(p(sstate.power))} {u.power} ({t['roles'].get(sstate.role, sstate.role)})"
             )
     results.append(f"{t['input']} = {fmt(p(solution.input_power))} {u.power}, "
@@ -393,9 +402,10 @@ def _lever_lines(element, state, t, n, m, p, u) -> list[str]:
         lines.append(f"    {_p(m1)}·({_p(n1)} − {_p(n3)}) + {_p(m2)}·({_p(n2)} − {_p(n3)}) = "
                      f"{fmt(m1 * (n1 - n3) + m2 * (n2 - n3), 4)} ≈ 0")
     else:
-        lines.append(f"    {t['rolling']} = {fmt(p(state.rolling_power))} {u.power}")
+        k = fmt(p(math.pi / 30.0 / (m(1.0) * n(1.0))), 6)  # P = k·M·n in the units shown (see step 5)
+        lines.append(f"    {t['rolling']} = {k}·{_p(m1)}·({_p(n1)} − {_p(n3)}) = {fmt(p(state.rolling_power))} {u.power}")
         if isinstance(element, PlanetarySet):
-            lines.append(f"    {t['coupling']} = {fmt(p(state.coupling_power))} {u.power}")
+            lines.append(f"    {t['coupling']} = {k}·{_p(m1)}·{_p(n3)} = {fmt(p(state.coupling_power))} {u.power}")
         key = {1: "w_plus", -1: "w_minus", 0: "w_zero"}[w]
         lines.append("    " + t[key])
         first, second = m1 * (n1 - n3), m2 * (n2 - n3)

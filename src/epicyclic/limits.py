@@ -50,6 +50,7 @@ __all__ = [
     "MAX_SHAFTS",
     "MAX_GEARS",
     "MAX_MESHES",
+    "MAX_LOAD_CASES",
     "MIN_TEETH",
     "MAX_TEETH",
     "MAX_PLANETS",
@@ -113,6 +114,8 @@ MAX_SHAFTS = 400
 MAX_GEARS = 64
 #: Most meshes in one fixed-axis stage.
 MAX_MESHES = 32
+#: Most load cases of a ``[duty_cycle]`` (a binned load spectrum has tens to a few thousand).
+MAX_LOAD_CASES = 10_000
 #: Fewest teeth of a gear (below 3 no involute gear exists).
 MIN_TEETH = 3
 #: Most teeth of a gear (large slewing rings have a few hundred).

@@ -30,3 +30,17 @@ def test_the_gallery_holds_no_example_that_is_gone():
     stems = {p.stem for p in EXAMPLES}
     folders = {p.name for p in GALLERY.iterdir() if p.is_dir() and p.name != "__pycache__"}
     assert folders <= stems, f"gallery folders without an example: {sorted(folders - stems)}"
+
+
+@pytest.mark.parametrize("name", ["gallery", "figures"])
+def test_shipped_pictures_are_not_older_than_the_code_that_draws_them(name):
+    """docs/figures/pictures.sha256 holds the digest of the drawing code (src/epicyclic/plotting, the
+    examples, the scripts) as it was when the pictures were drawn: changed code means stale pictures."""
+    import sys
+
+    sys.path.insert(0, str(ROOT / "docs" / "figures"))
+    from stamp import SOURCES, digest, recorded
+
+    assert recorded().get(name) == digest(name), (
+        f"the {name} pictures are older than the code that draws them ({', '.join(SOURCES[name])} changed "
+        f"since); run `make gallery` and commit the pictures with docs/figures/pictures.sha256")

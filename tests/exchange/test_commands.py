@@ -34,6 +34,11 @@ def test_analyze_a_rexs_file():
     assert result.stderr.count("\n") == 1 and "ignored: 11 shaft sections, 10 concept bearings" in result.stderr
 
 
+def test_duty_reads_a_rexs_load_spectrum():
+    result = run("duty", ROOT / "examples" / "rexs" / "FVA-Industriegetriebe_2stufig_1-4.rexs")
+    assert "REXS load spectrum 1, 4 cases" in result.stdout
+
+
 @pytest.mark.parametrize("command", [["explain"], ["fit"], ["forces"], ["map", "--speed", "500..1500:3", "--torque", "100..1000:3", "--out", "{tmp}/m.csv"],
                                      ["plot", "--out", "{tmp}/p.png"]])
 def test_every_file_command_reads_rexs(command, tmp_path):

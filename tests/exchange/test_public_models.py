@@ -253,3 +253,16 @@ def test_a_stage_of_other_gears_is_not_read():
     with pytest.raises(InputFileError, match=r"component 9 \(planetary_stage 'Planetenstufe \[9\]'\): the stage has no "
                                              "cylindrical_stage meshes"):
         loads_rexs_document(text, "worm.rexs")
+
+
+def test_two_stage_gearbox_load_spectrum_is_a_duty_cycle():
+    # the four load cases become the file's [duty_cycle]: `epicyclic duty` on the REXS file; energy per cycle
+    # hour of case k: E_k = T_k n_k (pi/30) share_k (W h per hour), from the file's torques, speeds, shares
+    from epicyclic.io.duty_format import analyse_file_duty_cycle
+
+    f = load_train_file(GEARBOX)
+    assert [c.name for c in f.duty_cycle.cases] == ["load case 1", "load case 2", "load case 3", "load case 4"]
+    result = analyse_file_duty_cycle(f).to_dict()
+    for case, (n, t, share) in zip(result["cases"], [(543, 567, 0.20), (3456, 345, 0.30), (1234, 456, 0.35),
+                                                     (789, 789, 0.15)]):
+        assert case["energy_in"]["value"] == pytest.approx(t * n * math.pi / 30 * share / 1000, rel=1e-9)

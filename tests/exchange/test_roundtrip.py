@@ -25,7 +25,8 @@ from epicyclic.io import load_train_file
 from epicyclic.io.geometry_report import geometry_results
 
 ROOT = Path(__file__).resolve().parents[2]
-EXAMPLES = sorted((ROOT / "examples").glob("*.toml")) + sorted((ROOT / "examples" / "rexs").glob("*.rexs"))
+EXAMPLES = (sorted((ROOT / "examples").glob("*.toml")) + sorted((ROOT / "examples" / "rating").glob("*.toml"))
+            + sorted((ROOT / "examples" / "rexs").glob("*.rexs")))
 FIXTURES = Path(__file__).parent / "fixtures"
 DATE = "2026-01-01T00:00:00+00:00"
 
@@ -92,6 +93,12 @@ def test_every_example_round_trips_through_rexs(example, suffix, tmp_path):
             g: set(v) for g, v in original.transmission.schedule.items()}
         assert back.gear == original.gear
     assert set(back.geometry) == set(original.geometry)
+    for part in ("rating", "duty_cycle", "bearings", "lubricant_table"):  # what only epicyclic reads travels too
+        assert (getattr(back, part, None) is None) == (getattr(original, part, None) is None), part
+    if original.duty_cycle is not None:
+        assert [(c.name, c.gear, c.hours, c.share) for c in back.duty_cycle.cases] == [
+            (c.name, c.gear, c.hours, c.share) for c in original.duty_cycle.cases]
+    assert set(back.bearings) == set(original.bearings)
     same(fingerprint(original), fingerprint(back))
     # and once more through TOML: REXS -> TOML reads back to the same train
     toml = tmp_path / (example.stem + ".toml")

@@ -2,12 +2,15 @@
 
 import re
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import pytest
 from PIL import Image
 
 from epicyclic.plotting import PlottingError
 from epicyclic.plotting.animation import gear_outline, planetary_animation
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 SVG = "{http://www.w3.org/2000/svg}"
 
@@ -133,3 +136,64 @@ def test_errors(brandenberger, kwargs, message):
 def test_bad_suffix(brandenberger, tmp_path):
     with pytest.raises(PlottingError, match=r"suffix '.mp4'; expected one of .svg, .html, .gif"):
         planetary_animation(brandenberger).save(tmp_path / "a.mp4")
+
+
+def test_gif_draws_the_ring_as_an_internal_gear(simple, tmp_path):
+    """The GIF's ring is a rim with inward teeth, as in the SVG: its inside is empty (no filled disk with
+    outward teeth); the pixel between two planets at the planets' axis radius shows the background."""
+    import math
+
+    from epicyclic.plotting._svg import _ring_annulus
+
+    anim = planetary_animation(simple)
+    ring = next(s for s in anim.shapes if s.member == "ring")
+    rim, teeth = (polygon for polygon in _ring_annulus(ring).to_polygons(closed_only=True))
+    radii = [math.hypot(*xy) for xy in teeth]
+    assert max(math.hypot(*xy) for xy in rim) == pytest.approx(ring.radius + 3.5 * ring.module)
+    assert min(radii) < ring.radius < max(radii) < ring.radius + 3.5 * ring.module  # teeth inside the rim
+
+    def area(points):
+        return sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, [*points[1:], points[0]]))
+
+    assert area(rim) * area(teeth) < 0  # wound the other way: a hole under the non-zero fill rule
+    gif = anim.gif(tmp_path / "set.gif")
+    with Image.open(gif) as image:
+        frame = image.convert("RGB")
+        planets = sorted({(s.axis, s.offset) for s in anim.shapes if s.member.startswith("planet")})
+        axis, offset = planets[0]
+        between = math.radians(offset + 180.0 / len(planets))  # halfway to the next planet, frame 0
+        from epicyclic.plotting._gears import extent
+
+        R = extent(anim.shapes)
+        scale = frame.width / (2 * R)
+        x = frame.width / 2 + axis * math.cos(between) * scale
+        y = frame.width / 2 - axis * math.sin(between) * scale
+        assert min(frame.getpixel((int(x), int(y)))) > 240, "the ring's inside is filled"
+
+
+def test_a_slow_set_is_shown_sped_up_not_slowed_down_below_one():
+    """At 1 1/min the fastest member (the sun) is shown faster than it turns: at the default 0.25 rev/s
+    = 15 1/min the caption says "sped up 15×", never "slowed down 0.0667×"."""
+    from epicyclic import Brake, GearTrain, OperatingPoint, PlanetarySet, solve
+
+    train = GearTrain([PlanetarySet.simple("P", sun="sun", ring="ring", carrier="carrier", z_sun=30, z_planet=24,
+                                           z_ring=78), Brake("B", "ring")])
+    slow = solve(train, OperatingPoint(speeds={"sun": 1.0}, torques={"sun": 1.0}, drives=["sun"], loads=["carrier"]))
+    anim = planetary_animation(slow)
+    caption = " ".join(anim.caption())
+    assert anim.slowdown == pytest.approx(1 / 15)
+    assert "shown sped up 15×" in caption and "slowed down" not in caption and "sped up 15×" in repr(anim)
+
+
+def test_a_set_given_by_i0_says_its_planet_speed_is_schematic():
+    from epicyclic.io import load_train_file
+
+    anim = planetary_animation(load_train_file(EXAMPLES / "plus_set_reduction.toml").solve())
+    planets = anim.caption()[1]
+    assert anim.schematic and anim.schematic_planets
+    assert "planet:" in planets and "(schematic: of the drawn teeth, not in the file)" in planets
+
+
+def test_a_set_with_its_own_teeth_has_no_schematic_planet(simple):
+    anim = planetary_animation(simple)
+    assert not anim.schematic_planets and "schematic" not in " ".join(anim.caption())

@@ -234,3 +234,34 @@ def test_8hp_reduced_lever_in_every_gear(gear):
     p = lever.positions
     ratio = (p["in"] - p["housing"]) / (p["out"] - p["housing"])
     assert ratio == pytest.approx(entry("zf_8hp70").published_ratios[gear], abs=5e-5)
+
+
+@pytest.mark.parametrize("gear", ["1", "3", "R"])
+def test_lever_names_stand_clear_of_the_nodes_and_inside_the_frame(gear):
+    """Each lever's name (``P1: i0 -2``) is drawn under its lever inside the axes, not over a node marker
+    or across the frame."""
+    import matplotlib.pyplot as plt
+
+    from epicyclic.transmission.library import build
+
+    t = build("zf_8hp70")
+    fig = lever_diagram(train=t.gear_train(gear), transmission=t, gear=gear).plot()
+    try:
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        ax = fig.axes[0]
+        frame = ax.get_window_extent(renderer)
+        names = [text for text in ax.texts if ": i0 " in text.get_text()]
+        assert len(names) == 4
+        markers = [line for line in ax.lines if line.get_marker() == "o"]
+        for text in names:
+            box = text.get_window_extent(renderer)
+            assert frame.y0 <= box.y0 and box.y1 <= frame.y1, f"{text.get_text()!r} crosses the frame"
+            for line in markers:
+                for x, y in ax.transData.transform(line.get_xydata()):
+                    radius = line.get_markersize() / 2 * fig.dpi / 72
+                    inside_x = box.x0 - radius < x < box.x1 + radius
+                    inside_y = box.y0 - radius < y < box.y1 + radius
+                    assert not (inside_x and inside_y), f"{text.get_text()!r} covers a node marker"
+    finally:
+        plt.close(fig)

@@ -3,7 +3,8 @@
 Formats: ``table`` (terminal), ``json`` (schema ``epicyclic-report/3``),
 ``markdown`` and ``html`` (one self-contained file).  Numbers are in the
 file's ``[units]`` (core units 1/min, N·m, W otherwise).  Elements with a
-``geometry`` table add their gears, fitting and forces (mm, N).
+``geometry`` table add their gears, fitting and forces (mm, N); a ``[rating]`` table
+with materials adds the ISO 6336 safeties of every mesh (``epicyclic rate`` gives all factors).
 """
 
 from __future__ import annotations
@@ -36,16 +37,42 @@ def analyze(
     solution = solved(train_file, file)
     units, title, source = train_file.units, report_title(train_file), str(file)
     sections = _GeometrySections(train_file.geometry, solution)
+    rating = _rating(train_file, solution)
     if format is OutputFormat.json:
         text = json_report(solution, units, title=title, source=source, geometry=sections.json())
+        if rating is not None:  # the safeties of every mesh (ISO 6336), docs/rating.md
+            import json
+
+            data = json.loads(text)
+            data["rating"] = rating.to_dict()
+            text = json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
     elif format is OutputFormat.markdown:
-        text = markdown_report(solution, units, title=title) + sections.markdown()
+        text = markdown_report(solution, units, title=title) + sections.markdown() + (
+            "\n" + _report().markdown_report(rating, details=False) if rating is not None else "")
     elif format is OutputFormat.html:
         text = html_report(solution, units, title=title, source=source, description=train_file.description,
-                           lang=lang, sections=sections.html(), geometry=train_file.geometry)
+                           lang=lang, sections=sections.html() + (_report().html_section(rating) if rating else ""),
+                           geometry=train_file.geometry)
     else:
-        text = text_report(solution, units, title=title) + sections.text()
+        text = text_report(solution, units, title=title) + sections.text() + (
+            "\n\n" + _report().text_report(rating, details=False) if rating is not None else "")
     emit(text, out)
+
+
+def _report():
+    from ..rating import report
+
+    return report
+
+
+def _rating(train_file, solution):
+    """The rating of every mesh when the file gives materials in its [rating] table (else None)."""
+    spec = train_file.rating
+    if spec is None or spec.material is None or not train_file.geometry:
+        return None
+    from ..rating.train import rate_solution
+
+    return rate_solution(solution, train_file.geometry, spec, gear=train_file.gear)
 
 
 class _GeometrySections:

@@ -68,6 +68,14 @@ from . import synthesize as _synthesize  # noqa: E402
 
 app.command("synthesize")(_synthesize.synthesize)
 
+from . import rate as _rate  # noqa: E402
+
+app.command("rate")(_rate.rate)
+
+from . import duty as _duty  # noqa: E402
+
+app.command("duty")(_duty.duty)
+
 from . import convert as _convert  # noqa: E402
 
 app.command("convert")(_convert.convert)

@@ -250,7 +250,7 @@ class _Mapper:
         lubricant = self.operating.lubricant(extras.pop("lubricant", None))
         if lubricant is not None:
             data["lubricant"] = lubricant
-        for key in ("description", "units", "shafts"):
+        for key in ("description", "units", "shafts", "rating", "duty_cycle"):
             if key in extras:
                 data[key] = extras.pop(key)
         cases = self.operating.load_cases(members - {None})
@@ -262,6 +262,10 @@ class _Mapper:
                      for c in cases]
         else:
             cases = [replace(c, gear=None) for c in cases]
+        if len(cases) > 1 and "duty_cycle" not in data:
+            duty = self.duty_cycle(unit, cases)
+            if duty is not None:
+                data["duty_cycle"] = duty
         if cases:
             data["operating_point"] = dict(cases[0].operating_point)
             if schedule is not None and unit is not None:
@@ -502,6 +506,21 @@ class _Mapper:
                               "input and output: the clutches and brakes are set as in gear_shift_index")
             return None
         return {"input": start, "output": end, "schedule": schedule}
+
+    def duty_cycle(self, unit, cases: list[RexsLoadCase]) -> dict[str, Any] | None:
+        """The ``[duty_cycle]`` of a load spectrum whose shares of time sum to 1 (else None and a note); its
+        hours are the gear unit's ``operating_time`` where given."""
+        shares = [c.duration_fraction for c in cases]
+        if any(share is None for share in shares) or abs(sum(shares) - 1.0) > 1e-6:
+            self.notes.append("the load spectrum's operating_time_fraction values are missing or do not sum to "
+                              "100 %, so it is not read as a [duty_cycle] (TrainFile.load_cases holds its cases)")
+            return None
+        table: dict[str, Any] = {"name": f"REXS load spectrum {cases[0].spectrum}"}
+        if unit is not None and self.model.has(unit, "operating_time"):
+            table["hours"] = self.model.number(unit, "operating_time", "time")
+        table["case"] = [{"name": f"load case {c.id}", "share": c.duration_fraction, **dict(c.operating_point),
+                          **({"gear": c.gear} if c.gear else {})} for c in cases]
+        return table
 
     def current_gear(self, unit, schedule: dict) -> str | None:
         model = self.model

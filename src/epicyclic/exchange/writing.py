@@ -139,7 +139,8 @@ class _Writer:
         transmission = self.file.transmission
         gears = list(transmission.schedule) if transmission else []
         index = gears.index(self.file.gear) + 1 if transmission and self.file.gear in gears else 1
-        extras = {k: doc[k] for k in ("title", "description", "units", "shafts", "lubricant") if k in doc}
+        extras = {k: doc[k] for k in ("title", "description", "units", "shafts", "lubricant", "rating",
+                                      "duty_cycle") if k in doc}
         if transmission:
             extras["gears"] = gears
             extras["transmission"] = {"input": transmission.input, "output": transmission.output}

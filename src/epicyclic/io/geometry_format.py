@@ -62,7 +62,7 @@ GEOMETRY_KEYS = {"module", "pressure_angle", "helix_angle", "addendum", "dedendu
 _STAGE_GEOMETRY_KEYS = GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing"}
 LOSSES_KEYS = {"friction", "roughness", "bearing", "drag"}
 _STAGE_LOSSES_KEYS = LOSSES_KEYS - {"bearing"}
-LUBRICANT_KEYS = {"viscosity", "lubricant_factor"}
+LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100"}  # _40/_100: mm²/s (rating)
 _BEARING_KEYS = {"bore", "type", "friction"}
 _DRAG_KEYS = {"member", "coefficients", "relative_to"}
 
@@ -91,6 +91,8 @@ def read_lubricant(reader, data: Mapping[str, Any]) -> Lubricant | None:
     where = "[lubricant]"
     table = reader.table(data["lubricant"], where)
     reader.check_keys(table, LUBRICANT_KEYS, where)
+    if "viscosity" not in table and ("viscosity_40" in table or "viscosity_100" in table):
+        return None  # only the rating's kinematic viscosities (read by io.rating_format)
     viscosity = _positive(reader, reader.require(table, "viscosity", where), "viscosity", where, "mPa*s")
     factor = _positive(reader, table.get("lubricant_factor", 1.0), "lubricant_factor", where, "X_L")
     return Lubricant(viscosity, factor)

@@ -61,9 +61,9 @@ from .source import InputFileError, check_document, decode_source, parse_toml, r
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file", "read_document"]
 
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant"}
+             "operating_point", "transmission", "lubricant", "rating", "duty_cycle"}
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
-                   "mesh_efficiencies", "planets", "geometry", "losses"}
+                   "mesh_efficiencies", "planets", "geometry", "losses", "bearings"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
                "double": {"kind", "sun", "planet_sun", "planet_ring", "ring"},
                "stepped": {"kind", "sun", "planet_sun", "planet_ring", "ring", "ring_internal", "module_ratio"},
@@ -101,6 +101,12 @@ class TrainFile:
         The elements' ``geometry`` tables (see ``docs/file-format.md``).
     losses : mapping element → ElementLosses
         The elements' ``losses`` tables (mesh friction, planet bearings, drag).
+    rating : RatingSpec or None
+        The ``[rating]`` table (ISO 6336 inputs, :mod:`epicyclic.io.rating_format`), None without one.
+    bearings : mapping element → mapping position → BearingRating
+        The sets' ``bearings`` tables (ISO 281 rating inputs; ``docs/file-format.md``).
+    duty_cycle : DutyCycle or None
+        The ``[duty_cycle]`` table.
     exchange : RexsDocument or None
         For a REXS file: what the file held beyond the train (its load cases, the summary of what was
         ignored, which REXS component each element came from; :mod:`epicyclic.exchange`).
@@ -116,6 +122,9 @@ class TrainFile:
     gear: str | None = None
     geometry: Mapping[str, Any] = field(default_factory=dict)
     losses: Mapping[str, Any] = field(default_factory=dict)
+    rating: Any = None
+    bearings: Mapping[str, Any] = field(default_factory=dict)
+    duty_cycle: Any = None
     exchange: Any = None
 
     @property
@@ -365,8 +374,29 @@ class _Reader(TableReader):
         if "operating_point" in data:
             op, gear = self.read_operating_point(
                 self.table(data["operating_point"], "[operating_point]"), train, transmission)
+        rating = None
+        if "rating" in data:  # the rating package is imported only for a file that has the table
+            from .rating_format import read_rating
+
+            lubricant_table = data.get("lubricant") if isinstance(data.get("lubricant"), dict) else None
+            rating = read_rating(self, data["rating"], lubricant_table)
+        bearings, duty = {}, None
+        if "duty_cycle" in data or any("bearings" in t for t in tables["planetary"] if isinstance(t, dict)):
+            from . import duty_format  # only for a file that has them
+
+            for k, table in enumerate(tables["planetary"]):
+                if "bearings" in table:
+                    where = self.element_where("planetary", k, table)
+                    if table["name"] not in geometry:
+                        raise self.error(at_key(where, "bearings"), "the bearing loads come from the tooth forces: "
+                                                                    "add a 'geometry' table (module, ...).")
+                    bearings[table["name"]] = MappingProxyType(
+                        duty_format.read_bearings(self, table["bearings"], where, table.get("losses")))
+            if "duty_cycle" in data:
+                duty = duty_format.read_duty_cycle(self, data["duty_cycle"], train, transmission, op, self.units)
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
-                         MappingProxyType(geometry), MappingProxyType(losses))
+                         MappingProxyType(geometry), MappingProxyType(losses), rating,
+                         bearings=MappingProxyType(bearings), duty_cycle=duty)
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")

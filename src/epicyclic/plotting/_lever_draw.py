@@ -191,7 +191,8 @@ def _draw_free(ax: Any, diagram: Any, colours: dict[str, str], texts: list[Any])
         ax.plot([], [], color="grey", lw=1.3, ls="--", label="same shaft")
     left = min([*rail_x.values(), -0.25 * bracket, 0.0]) - 0.8
     ax.set_xlim(left, SPACING * (len(diagram.free) - 1) + 1.2)
-    ax.set_ylim(-0.08, 1.1)
+    ax.set_ylim(-0.22, 1.1)  # room under the nodes for the levers' names, clear of the markers and the frame
+    ax.set_yticks([0.0, 0.2, 0.4, 0.6, 0.8, 1.0])
     ax.set_xticks([])
     ax.set_ylabel("node height on the lever (from the ratios)")
     ax.set_title("levers of the train, clutches and brakes", fontsize=10)

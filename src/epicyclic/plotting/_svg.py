@@ -39,11 +39,34 @@ def _path(points: list[tuple[float, float]]) -> str:
     return "M " + " L ".join(f"{x:.3f} {y:.3f}" for x, y in points) + " Z"
 
 
-def _ring_path(shape: GearShape) -> str:
-    outline = gear_outline(shape.teeth, shape.radius, internal=True)
+def _rim(shape: GearShape) -> list[tuple[float, float]]:
+    """The outer edge of an internal gear's rim: a circle 3.5 modules beyond the pitch circle."""
     outer = shape.radius + 3.5 * shape.module
-    circle = [(outer * math.cos(2 * math.pi * k / 96), outer * math.sin(2 * math.pi * k / 96)) for k in range(96)]
-    return _path(circle) + " " + _path(outline)
+    return [(outer * math.cos(2 * math.pi * k / 96), outer * math.sin(2 * math.pi * k / 96)) for k in range(96)]
+
+
+def _ring_path(shape: GearShape) -> str:
+    return _path(_rim(shape)) + " " + _path(gear_outline(shape.teeth, shape.radius, internal=True))
+
+
+def _ring_annulus(shape: GearShape):
+    """The internal gear as a matplotlib path: its rim (3.5 modules beyond the pitch circle) and the tooth
+    outline as a hole, wound the other way so that only the ring between them is filled."""
+    from matplotlib.path import Path as MplPath
+
+    inner = gear_outline(shape.teeth, shape.radius, internal=True)
+    outer = _rim(shape)
+    if _signed_area(inner) * _signed_area(outer) > 0:
+        inner = inner[::-1]
+    vertices = [*outer, outer[0], *inner, inner[0]]
+    codes = ([MplPath.MOVETO] + [MplPath.LINETO] * (len(outer) - 1) + [MplPath.CLOSEPOLY]
+             + [MplPath.MOVETO] + [MplPath.LINETO] * (len(inner) - 1) + [MplPath.CLOSEPOLY])
+    return MplPath(vertices, codes)
+
+
+def _signed_area(points: list[tuple[float, float]]) -> float:
+    """Twice the signed area of a closed polygon (> 0 counter-clockwise; the shoelace formula)."""
+    return sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, [*points[1:], points[0]]))
 
 
 def _rotation(anim: Any, member: str, relative_to: str | None = None) -> str:
@@ -93,6 +116,50 @@ def caption_lines(anim: Any, width_chars: int) -> list[str]:
     return out
 
 
+def _drawing(shapes: tuple[GearShape, ...], R: float, rotation: Any) -> list[str]:
+    """The SVG elements of the set: central gears, carrier arms, planets; ``rotation(member, relative_to)``
+    gives each member's animateTransform ("" for a still picture)."""
+    out = []
+    for shape in shapes[:2]:  # the central gears, in drawing order
+        member = shape.member
+        out.append(f'<g transform="rotate({shape.phase:.4f})"><g>{_gear(shape, COLOURS[member], R)}'
+                   f'{rotation(member)}</g></g>')
+    out.append("<g>")  # carrier
+    axes = sorted({(s.axis, s.offset) for s in shapes if s.member.startswith("planet")})
+    for axis, offset in axes:
+        x, y = axis * math.cos(math.radians(offset)), axis * math.sin(math.radians(offset))
+        out.append(f'<line x1="0" y1="0" x2="{x:.3f}" y2="{y:.3f}" stroke="{COLOURS["carrier"]}" '
+                   f'stroke-width="{STROKE["arm"] * R:.4g}" stroke-linecap="round" stroke-opacity="0.6"/>')
+    out.append(f'<circle r="{0.05 * R:.3f}" fill="{COLOURS["carrier"]}"/>')
+    for shape in shapes:
+        if not shape.member.startswith("planet"):
+            continue
+        colour = COLOURS[shape.member]
+        out.append(f'<g transform="rotate({shape.offset:.4f}) translate({shape.axis:.4f},0)">'
+                   f'<g transform="rotate({shape.phase - shape.offset:.4f})"><g>'
+                   f'{_gear(shape, colour, R)}{rotation(shape.member, "carrier")}</g></g>'
+                   f'<circle r="{0.02 * R:.3f}" fill="black"/></g>')
+    out.append(rotation("carrier"))
+    out.append("</g></g>")
+    return out
+
+
+def still_svg(shapes: tuple[GearShape, ...], label: str, px: int, lines: list[str]) -> str:
+    """A still SVG of a set's gears (no motion), ``px`` wide, with ``lines`` of text under it."""
+    R = extent(shapes)
+    size = FONT * R
+    height = 2 * R + (1.35 * len(lines) + 0.6) * size
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{-R:.3f} {-R:.3f} {2 * R:.3f} {height:.3f}" '
+           f'width="{px}" height="{px * height / (2 * R):.0f}" role="img" aria-label="{html.escape(label)}">',
+           f"<title>{html.escape(label)}</title>", '<g transform="scale(1,-1)">',
+           *_drawing(shapes, R, lambda member, relative_to=None: "")]  # closes the scale group too
+    for k, text in enumerate(lines):
+        out.append(f'<text x="{-R + size:.3f}" y="{R + 1.3 * size + 1.35 * k * size:.3f}" font-size="{size:.3f}" '
+                   f'font-family="sans-serif">{html.escape(text)}</text>')
+    out.append("</svg>")
+    return "\n".join(out)
+
+
 def animation_svg(anim: Any) -> str:
     """The animated SVG text (see module docs)."""
     R = extent(anim.shapes)
@@ -107,27 +174,7 @@ def animation_svg(anim: Any) -> str:
            f'aria-label="animation of planetary set {html.escape(anim.set_name)}">',
            f"<title>{html.escape(anim.heading or anim.set_name)}</title>",
            '<g transform="scale(1,-1)">']
-    for shape in anim.shapes[:2]:  # the central gears, in drawing order
-        member = shape.member
-        out.append(f'<g transform="rotate({shape.phase:.4f})"><g>{_gear(shape, COLOURS[member], R)}'
-                   f'{_rotation(anim, member)}</g></g>')
-    out.append("<g>")  # carrier
-    axes = sorted({(s.axis, s.offset) for s in anim.shapes if s.member.startswith("planet")})
-    for axis, offset in axes:
-        x, y = axis * math.cos(math.radians(offset)), axis * math.sin(math.radians(offset))
-        out.append(f'<line x1="0" y1="0" x2="{x:.3f}" y2="{y:.3f}" stroke="{COLOURS["carrier"]}" '
-                   f'stroke-width="{STROKE["arm"] * R:.4g}" stroke-linecap="round" stroke-opacity="0.6"/>')
-    out.append(f'<circle r="{0.05 * R:.3f}" fill="{COLOURS["carrier"]}"/>')
-    for shape in anim.shapes:
-        if not shape.member.startswith("planet"):
-            continue
-        colour = COLOURS[shape.member]
-        out.append(f'<g transform="rotate({shape.offset:.4f}) translate({shape.axis:.4f},0)">'
-                   f'<g transform="rotate({shape.phase - shape.offset:.4f})"><g>'
-                   f'{_gear(shape, colour, R)}{_rotation(anim, shape.member, "carrier")}</g></g>'
-                   f'<circle r="{0.02 * R:.3f}" fill="black"/></g>')
-    out.append(_rotation(anim, "carrier"))
-    out.append("</g></g>")
+    out += _drawing(anim.shapes, R, lambda member, relative_to=None: _rotation(anim, member, relative_to))
     y = R + 1.3 * size
     heading = len(anim.heading.split("\n")[0]) if anim.heading else 0
     for k, text in enumerate(lines):
@@ -151,7 +198,7 @@ def animation_svg(anim: Any) -> str:
 def write_gif(anim: Any, path: Path, dpi: int) -> Path:
     """Render the frames with matplotlib and write them with PillowWriter, ``anim.size`` pixels wide."""
     from matplotlib.animation import FuncAnimation, PillowWriter
-    from matplotlib.patches import Polygon
+    from matplotlib.patches import PathPatch, Polygon
     from matplotlib.transforms import Affine2D
 
     plt = pyplot()
@@ -171,10 +218,13 @@ def write_gif(anim: Any, path: Path, dpi: int) -> Path:
     for shape in anim.shapes:
         colour = COLOURS["planet2"] if shape.step else COLOURS[shape.member]
         internal = shape.member == "ring" and shape.internal
-        outline = gear_outline(shape.teeth, shape.radius, internal=internal)
         dashed = shape.step or (shape.member == "ring" and not shape.internal)
-        patch = Polygon(outline, closed=True, facecolor=colour, alpha=0.35 if internal or dashed else 0.6,
-                        edgecolor="black", lw=lw, ls="--" if dashed else "-")
+        style = {"facecolor": colour, "alpha": 0.35 if internal or dashed else 0.6, "edgecolor": "black",
+                 "lw": lw, "ls": "--" if dashed else "-"}
+        if internal:  # an internal gear: the rim, teeth pointing inwards (as the SVG draws it)
+            patch = PathPatch(_ring_annulus(shape), **style)
+        else:
+            patch = Polygon(gear_outline(shape.teeth, shape.radius), closed=True, **style)
         ax.add_patch(patch)
         mark = ax.plot([0, 0.8 * shape.radius], [0, 0], color="black", lw=1.5 * lw)[0]
         patches.append((shape, (patch, mark)))

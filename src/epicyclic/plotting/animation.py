@@ -84,6 +84,9 @@ class PlanetaryAnimation:
     planets : int
     schematic : str
         Empty for a set drawn with its own teeth, else what was chosen.
+    schematic_planets : bool
+        The planet speeds are those of the drawn teeth (a set given by i0 alone: the file gives
+        no planet teeth, so no planet speed); the caption says so.
     size : int
         Width of the SVG and GIF in pixels.
     """
@@ -104,6 +107,7 @@ class PlanetaryAnimation:
     size: int = DEFAULT_SIZE
     context: FigureContext = field(default_factory=FigureContext)
     heading: str = ""
+    schematic_planets: bool = False
 
     # ------------------------------------------------------------- kinematics
     def degrees_per_second(self, member: str) -> float:
@@ -147,14 +151,22 @@ class PlanetaryAnimation:
         unit = ctx.unit("speed")
         central = [f"{m} ({self.shafts[m]}): {fmt(ctx.convert(n, 'speed'), 5)} {unit}"
                    for m, n in self.speeds.items() if m in ("sun", "ring", "carrier")]
-        planets = [f"{m.replace('planet2', 'planet 2')}: {fmt(ctx.convert(n, 'speed'), 5)} {unit}"
+        # a set given by i0 alone has no planet teeth: its planet speed is that of the drawn (chosen) teeth
+        made_up = " (schematic: of the drawn teeth, not in the file)" if self.schematic_planets else ""
+        planets = [f"{m.replace('planet2', 'planet 2')}: {fmt(ctx.convert(n, 'speed'), 5)} {unit}{made_up}"
                    for m, n in self.speeds.items() if m.startswith("planet")]
         moving = any(self.speeds.values())
-        motion = f"shown slowed down {fmt(self.slowdown, 3)}×" if moving else "the set stands still in this state"
+        motion = f"shown {self.pace()}" if moving else "the set stands still in this state"
         lines = [", ".join(central), ", ".join(planets) + f"; {self.planets} planets; {motion}"]
         if self.schematic:
             lines.append(self.schematic)
         return lines
+
+    def pace(self) -> str:
+        """How the shown motion relates to the real one: "slowed down 135×" or, for a slow set, "sped up 15×"."""
+        if self.slowdown >= 1.0:
+            return f"slowed down {fmt(self.slowdown, 3)}×"
+        return f"sped up {fmt(1.0 / self.slowdown, 3)}×"
 
     # ------------------------------------------------------------- output
     def to_dict(self) -> dict[str, Any]:
@@ -176,7 +188,7 @@ class PlanetaryAnimation:
 
     def __repr__(self) -> str:
         speeds = ", ".join(f"{m} {fmt(n, 5)}" for m, n in self.speeds.items())
-        return (f"<PlanetaryAnimation {self.set_name!r}: {speeds} 1/min, slowed down {fmt(self.slowdown, 3)}×"
+        return (f"<PlanetaryAnimation {self.set_name!r}: {speeds} 1/min, {self.pace()}"
                 f"{', Willis phases' if self.willis else ''}{', schematic' if self.schematic else ''}>")
 
     def svg(self) -> str:
@@ -309,4 +321,4 @@ def planetary_animation(
     heading = context.heading(solution.train, f"set {pset.name}")
     return PlanetaryAnimation(pset.name, MappingProxyType(shafts), MappingProxyType(speeds), slowdown,
                               fps, frames, willis, MappingProxyType(factors), i0, shapes, pset.planets, layout,
-                              note, size, context, heading)
+                              note, size, context, heading, bool(drawn.schematic and not state.planet_speeds))

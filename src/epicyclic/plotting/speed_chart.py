@@ -92,7 +92,7 @@ class SpeedChart:
         fig, (left, right) = plt.subplots(1, 2, figsize=(width, 5.8))
         texts: list[Any] = []
         self._panel(left, self.speeds, "shaft speeds", texts, bold={self.input, self.output})
-        self._panel(right, self.slips, "slip of open clutches and brakes", texts, bold=set())
+        self._panel(right, self.slips, "slip of open clutches and brakes", texts, bold=set(), every_point=True)
         left.set_ylabel("speed per input speed n / n_in")
         right.set_ylabel("slip speed per input speed Δn / n_in")
         state = f"; gear {self.gear} highlighted ({shift_state_words(self.engaged[self.gear])})" if self.gear else ""
@@ -101,23 +101,26 @@ class SpeedChart:
         return fig
 
     def _panel(self, ax: Any, table: Mapping[str, Mapping[str, float]], what: str, texts: list[Any],
-               bold: set[str]) -> None:
+               bold: set[str], every_point: bool = False) -> None:
         x = {g: k for k, g in enumerate(self.gears)}
+        dodge = _dodge(table, self.gears)
         for k, (name, row) in enumerate(table.items()):
             colour = SHAFT_COLOURS[k % len(SHAFT_COLOURS)]
             gears = [g for g in self.gears if g in row]
             strong = name in bold
-            # a gap where the element is engaged: no line across it
-            ax.plot(list(x.values()), [row.get(g, float("nan")) for g in self.gears], "o-", color=colour,
-                    lw=2.2 if strong else 1.1, ms=5, alpha=0.95)
-            last = gears[-1]
+            # a gap where the element is engaged: no line across it; coincident points side by side
+            ax.plot([x[g] + dodge.get((name, g), 0.0) for g in self.gears], [row.get(g, float("nan")) for g in self.gears],
+                    "o-", color=colour, lw=2.2 if strong else 1.1, ms=5, alpha=0.95)
             role = " (input)" if name == self.input else " (output)" if name == self.output else ""
-            texts.append(ax.annotate(name + role, (x[last], row[last]), xytext=(8, 0), textcoords="offset points",
-                                     va="center", fontsize=8, color=colour, weight="bold" if strong else "normal"))
+            for g in (gears if every_point else gears[-1:]):
+                texts.append(ax.annotate(name + (role if g == gears[-1] else ""), (x[g] + dodge.get((name, g), 0.0),
+                                         row[g]), xytext=(9 if every_point else 6, 0), textcoords="offset points", va="center",
+                                         fontsize=7 if every_point else 8, color=colour,
+                                         weight="bold" if strong else "normal"))
         top = self.largest(table)
         if top is not None:
             name, gear, value = top
-            ax.plot([x[gear]], [value], "o", ms=13, mfc="none", mec="#C0392B", mew=1.8, zorder=5)
+            ax.plot([x[gear] + _dodge(table, self.gears).get((name, gear), 0.0)], [value], "o", ms=13, mfc="none", mec="#C0392B", mew=1.8, zorder=5)
             texts.append(ax.annotate(f"largest: {name} {fmt(value, 4)} × n_in (gear {gear})", (x[gear], value),
                                      xytext=(0, 12 if value >= 0 else -12), textcoords="offset points",
                                      ha="center", va="bottom" if value >= 0 else "top", fontsize=8,
@@ -126,12 +129,41 @@ class SpeedChart:
         if self.gear in x:
             ax.axvspan(x[self.gear] - 0.4, x[self.gear] + 0.4, color="#FFE9A8", alpha=0.6, zorder=0)
         ax.axhline(0, color="black", lw=0.7)
-        ax.set_xticks(list(x.values()), [f"{g}\n{'+'.join(self.engaged[g])}" for g in self.gears], fontsize=8)
+        ax.set_xticks(list(x.values()), [f"{g}\n{_engaged_label(self.engaged[g])}" for g in self.gears], fontsize=8)
         ax.set_xlim(-0.5, len(self.gears) - 0.5 + 0.25 * len(self.gears))
         ax.set_xlabel("gear (engaged clutches and brakes)")
         ax.set_title(what, fontsize=10)
         ax.grid(True, alpha=0.3)
         ax.margins(y=0.15)
+
+
+#: Horizontal distance (in gears) between coincident points of one gear, so that each stays visible.
+DODGE = 0.07
+
+
+def _dodge(table: Mapping[str, Mapping[str, float]], gears: tuple[str, ...]) -> dict[tuple[str, str], float]:
+    """(series, gear) → x offset for points that coincide with others in that gear (same value to 1e-9 of
+    the panel's largest magnitude): they are set side by side, centred on the gear."""
+    scale = max((abs(v) for row in table.values() for v in row.values()), default=0.0) or 1.0
+    offsets: dict[tuple[str, str], float] = {}
+    for g in gears:
+        groups: dict[int, list[str]] = {}
+        for name, row in table.items():
+            if g in row:
+                groups.setdefault(round(row[g] / scale * 1e9), []).append(name)
+        for names in groups.values():
+            for j, name in enumerate(names):
+                if len(names) > 1:
+                    offsets[(name, g)] = (j - (len(names) - 1) / 2) * DODGE
+    return offsets
+
+
+def _engaged_label(engaged: tuple[str, ...]) -> str:
+    """The engaged elements under a gear's tick: on two lines when there are more than three."""
+    if len(engaged) <= 3:
+        return "+".join(engaged)
+    half = (len(engaged) + 1) // 2
+    return "+".join(engaged[:half]) + "+\n" + "+".join(engaged[half:])
 
 
 def shift_state_words(engaged: tuple[str, ...]) -> str:

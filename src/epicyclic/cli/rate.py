@@ -1,0 +1,167 @@
+"""``epicyclic rate FILE``: the ISO 6336 tooth load capacity of every mesh.
+
+Needs a ``[rating]`` table (material, roughness, lubricant viscosity; see
+docs/rating.md) and ``geometry`` tables with face widths.  ``--gear G`` rates in gear G of
+the schedule, ``--gear all`` in every gear; ``--explain MESH`` prints the worked rating of
+one mesh (``P1:sun-planet``, the gear after a second colon: ``P1:sun-planet:planet``).
+Formats: table, json (``epicyclic-rating/1``), markdown, html.  A mesh below its
+minimum safety is marked (``!``, red in HTML) and named on stderr.  Values outside the
+standard's range of validity are warned about on stderr with the clause.
+"""
+
+from __future__ import annotations
+
+import json
+import warnings
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ._common import (
+    FormatOption,
+    OutOption,
+    OutputFormat,
+    SetOption,
+    check_finite,
+    emit,
+    guarded,
+    load,
+    report_title,
+    solved,
+)
+
+__all__ = ["rate", "rate_file"]
+
+
+def _spec(train_file, file):
+    from ..rating.errors import RatingError
+
+    if train_file.rating is None:
+        raise RatingError(f"{file}: the file has no [rating] table; add one with material, flank_roughness, "
+                          "root_roughness and the lubricant's viscosity_40 (see docs/rating.md).")
+    if not train_file.geometry:
+        raise RatingError(f"{file}: no element has a geometry table; the rating needs module, face width and "
+                          "tooth counts (see docs/file-format.md).")
+    return train_file.rating
+
+
+def rate_file(train_file, file, gears):
+    """[(gear, TrainRating)] of ``train_file`` in each of ``gears`` (None: the file's operating gear).
+
+    Parameters
+    ----------
+    train_file : TrainFile
+        With a ``[rating]`` table and geometry.
+    file : Path or str
+        For messages.
+    gears : list of str or None
+        Gears of the schedule, or [None] for the file's own operating point.
+
+    Returns
+    -------
+    list of (str or None, TrainRating)
+
+    Raises
+    ------
+    RatingError
+        No [rating] table, no geometry, a required rating input missing.
+
+    References
+    ----------
+    ISO 6336-1:2019, -2:2019, -3:2019.
+    """
+    from dataclasses import replace
+
+    from ..rating.train import mesh_inputs, rate_solution
+
+    spec = _spec(train_file, file)
+    planned = mesh_inputs(train_file.geometry, spec)
+    out = []
+    for gear in gears:
+        current = train_file if gear is None else replace(train_file, gear=gear)
+        solution = solved(current, file)
+        out.append((current.gear, rate_solution(solution, current.geometry, spec, gear=current.gear,
+                                                planned=planned)))
+    return out
+
+
+def _explain(ratings, which: str) -> str:
+    from ..rating.errors import RatingError
+
+    parts = which.split(":")
+    if len(parts) < 2:
+        raise RatingError(f"--explain: expected ELEMENT:MESH[:GEAR], e.g. P1:sun-planet:planet, got {which!r}.")
+    out = []
+    for gear, rating in ratings:
+        mesh = rating.mesh(parts[0], parts[1])
+        index = 0
+        if len(parts) > 2:
+            names = [g.gear for g in mesh.gears]
+            if parts[2] not in names:
+                raise RatingError(f"--explain: mesh {parts[1]!r} has the gears {', '.join(names)}, not {parts[2]!r}.")
+            index = names.index(parts[2])
+        out.append((f"gear {gear}: " if gear else "") + mesh.explain(index))
+    return "\n".join(out)
+
+
+@guarded
+def rate(
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with [rating] and geometry tables.")],
+    format: FormatOption = OutputFormat.table,
+    out: OutOption = None,
+    gear: Annotated[str | None, typer.Option(
+        "--gear", "-g", help="Rate in this gear of the \\[transmission] schedule ('all': every gear).")] = None,
+    explain: Annotated[str | None, typer.Option(
+        "--explain", help="Print the worked rating of one mesh: ELEMENT:MESH[:GEAR], e.g. P1:sun-planet:planet.")]
+        = None,
+    set_: SetOption = None,
+) -> None:
+    """Rate FILE's meshes by ISO 6336 Method B: safeties S_H (pitting) and S_F (tooth root) of every gear."""
+    from ..rating import report
+
+    train_file = load(file, None if gear == "all" else gear, set_)
+    if gear == "all":
+        if train_file.transmission is None:
+            from ..errors import ModelError
+
+            raise ModelError("--gear all needs a [transmission] table with a schedule in the file.")
+        gears = list(train_file.transmission.schedule)
+    else:
+        gears = [None]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        ratings = rate_file(train_file, file, gears)
+        if explain:
+            emit(_explain(ratings, explain), out)
+            _stderr(caught, ratings)
+            return
+    title = report_title(train_file) if gear != "all" else (train_file.title or train_file.train.name)
+    if format is OutputFormat.json:
+        data = {"schema": "epicyclic-rating/1", "source": str(file), "title": title,
+                "inputs": train_file.rating.to_dict(), "ratings": [r.to_dict() for _, r in ratings],
+                "warnings": sorted({str(w.message) for w in caught})}
+        check_finite(data, file, "rating")
+        text = json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False)
+    elif format is OutputFormat.markdown:
+        text = f"# {title}\n\n" + "\n".join(report.markdown_report(r) for _, r in ratings)
+    elif format is OutputFormat.html:
+        text = report.html_document(ratings[0][1], title) if len(ratings) == 1 else (
+            "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>rating</title></head><body>"
+            + "".join(report.html_section(r) for _, r in ratings) + "</body></html>")
+    else:
+        text = "\n\n".join(report.text_report(r) for _, r in ratings)
+    emit(text, out)
+    _stderr(caught, ratings)
+
+
+def _stderr(caught, ratings) -> None:
+    from ..text import terminal_text
+
+    for message in sorted({str(w.message) for w in caught}):
+        typer.echo(terminal_text(f"warning: {message}"), err=True)
+    for gear, rating in ratings:
+        for m in rating.meshes:
+            if not m.ok:
+                typer.echo(terminal_text(f"below minimum safety: {m.element} {m.mesh}" + (f" in gear {gear}" if gear
+                                                                                         else "")), err=True)

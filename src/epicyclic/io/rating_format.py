@@ -1,0 +1,156 @@
+"""The ``[rating]`` table of a train file: inputs of the ISO 6336 tooth load capacity rating.
+
+::
+
+    [rating]                              # every key optional; defaults in docs/rating.md
+    standard = "2019"                     # ISO 6336 edition: "2006" or "2019"
+    application_factor = 1.25             # K_A
+    life = 20000                          # required life, h
+    S_Hmin = 1.0
+    S_Fmin = 1.4
+    accuracy_grade = 6                    # ISO 1328-1
+    flank_roughness = 3.0                 # R_z, µm (required)
+    root_roughness = 10.0                 # R_z, µm (required)
+    material = "18CrNiMo7-6"              # or { sun = "...", planet = "...", ring = "42CrMo4", "P1:ring" = "..." }
+    quality = "MQ"                        # ML, MQ or ME (ISO 6336-5)
+    K_Hbeta = 1.3                         # given; otherwise method C with shaft_deflection (µm)
+    load_sharing = 1.15                   # K_γ of every set (default: the set geometry's, else by planets)
+    cutter = { teeth = 24, profile_shift = 0.0, addendum = 1.25, tip_radius = 0.25 }   # internal gears
+    rim_thickness = { ring = 12.0 }       # s_R below the root, mm (Y_B); others solid
+    long_life = "standard"                # or "optimum"
+    [rating.lubricant]
+    viscosity_40 = 35.0                   # mm²/s (or in the top-level [lubricant])
+    viscosity_100 = 7.0
+    [rating.materials.MySteel]            # a user material, then material = "MySteel"
+    treatment = "Eh"                      # ISO 6336-5 symbol
+    sigma_Hlim = 1550.0
+    sigma_Flim = 480.0
+
+References
+----------
+ISO 6336-1:2019, ISO 6336-2:2019, ISO 6336-3:2019, ISO 6336-5:2016; ``docs/file-format.md``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from ..errors import EpicyclicError
+from ..rating.materials import DEFAULT_QUALITY, Material, material, material_names
+from ..rating.spec import RatingSpec
+from ..rating.tooth_form import Cutter
+from .reader import at_key
+
+__all__ = ["RATING_KEYS", "read_rating"]
+
+RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
+               "root_roughness", "material", "quality", "K_Hbeta", "shaft_deflection", "load_sharing",
+               "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
+               "rim_thickness"}
+_NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "flank_roughness", "root_roughness", "K_Hbeta",
+            "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
+_USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
+
+
+def _user_materials(reader, table, where: str, quality: str) -> dict[str, Material]:
+    out = {}
+    for name, entry in table.items():
+        w = f"{where}.{name}"
+        entry = reader.table(entry, w)
+        reader.check_keys(entry, _USER_MATERIAL, w)
+        values = {k: reader.number(entry[k], k, w) for k in entry if k != "treatment"}
+        for key in ("sigma_Hlim", "sigma_Flim"):
+            reader.require(entry, key, w)
+        treatment = reader.string(entry, "treatment", w)
+        try:
+            out[name] = Material(name, treatment, quality=quality, **values)
+        except EpicyclicError as exc:
+            raise reader.wrap(w, exc) from None
+    return out
+
+
+def _material(reader, value, users, quality, where: str) -> Material:
+    if not isinstance(value, str):
+        raise reader.error(where, f"expected a material name, got {value!r}; names are "
+                                  f"{', '.join(material_names() + tuple(users))}.")
+    if value in users:
+        return users[value]
+    try:
+        return material(value, quality=quality)
+    except EpicyclicError as exc:
+        raise reader.wrap(where, exc) from None
+
+
+def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] | None) -> RatingSpec:
+    """The :class:`~epicyclic.rating.spec.RatingSpec` of a ``[rating]`` table.
+
+    Parameters
+    ----------
+    reader : TableReader
+        The file's reader (messages name the file and the key).
+    table : mapping
+        The parsed ``[rating]`` table.
+    lubricant : mapping or None
+        The top-level ``[lubricant]`` table (its ``viscosity_40`` and ``viscosity_100``, mm²/s).
+
+    Returns
+    -------
+    RatingSpec
+
+    Raises
+    ------
+    InputFileError
+        An unknown key, a value of the wrong kind, an unknown material.
+
+    References
+    ----------
+    ISO 6336-1:2019; ISO 6336-5:2016 (materials); ``docs/file-format.md``.
+    """
+    where = "[rating]"
+    table = reader.table(table, where)
+    reader.check_keys(table, RATING_KEYS, where)
+    values: dict[str, Any] = {k: reader.number(table[k], k, where) for k in _NUMBERS if k in table}
+    if "standard" in table:
+        values["standard"] = str(table["standard"])
+    if "accuracy_grade" in table:
+        values["accuracy_grade"] = reader.integer(table["accuracy_grade"], "accuracy_grade", where)
+    if "long_life" in table:
+        values["long_life"] = reader.string(table, "long_life", where)
+    if "pitting_permitted" in table:
+        values["pitting_permitted"] = reader.boolean(table, "pitting_permitted", where, False)
+    quality = reader.string(table, "quality", where, default=DEFAULT_QUALITY)
+    users = _user_materials(reader, reader.table(table.get("materials", {}), "[rating.materials]"),
+                            "[rating.materials]", quality)
+    if "material" in table:
+        given = table["material"]
+        if isinstance(given, dict):
+            values["material"] = {k: _material(reader, v, users, quality, at_key(where, f"material.{k}"))
+                                  for k, v in given.items()}
+        else:
+            values["material"] = _material(reader, given, users, quality, at_key(where, "material"))
+    if "cutter" in table:
+        c_where = at_key(where, "cutter")
+        ct = reader.table(table["cutter"], c_where)
+        reader.check_keys(ct, {"teeth", "profile_shift", "addendum", "tip_radius"}, c_where)
+        kwargs = {k: reader.number(ct[k], k, c_where) for k in ("profile_shift", "addendum", "tip_radius") if k in ct}
+        try:
+            values["cutter"] = Cutter(reader.integer(reader.require(ct, "teeth", c_where), "teeth", c_where), **kwargs)
+        except EpicyclicError as exc:
+            raise reader.wrap(c_where, exc) from None
+    if "rim_thickness" in table:
+        r_where = at_key(where, "rim_thickness")
+        rims = reader.table(table["rim_thickness"], r_where)
+        values["rim_thickness"] = {k: reader.number(v, k, r_where) for k, v in rims.items()}
+    oil = dict(lubricant or {})
+    if "lubricant" in table:
+        own = reader.table(table["lubricant"], "[rating.lubricant]")
+        reader.check_keys(own, {"viscosity_40", "viscosity_100"}, "[rating.lubricant]")
+        oil.update(own)
+    for key in ("viscosity_40", "viscosity_100"):
+        if key in oil:
+            values[key] = reader.number(oil[key], key, "[lubricant]")
+    try:
+        return RatingSpec(**values)
+    except EpicyclicError as exc:
+        raise reader.wrap(where, exc) from None

@@ -1,0 +1,180 @@
+"""The smallest module (and face width) that meets S_Hmin and S_Fmin for a set's torque and life.
+
+:func:`smallest_module` rates a planetary set of a solved train with each module of a
+series in increasing order — the preferred modules of ISO 54 (series I and II) from
+``min_module`` to ``max_module`` (the search bound, 0.5 … 50 mm by default) — and
+returns the first whose every mesh meets S_Hmin and S_Fmin (ISO 6336 Method B,
+:func:`~epicyclic.rating.mesh_rating.rate_mesh`).  The face width is either given (mm)
+or follows the module as ``face_width_ratio`` × the sun's reference diameter (b/d1).
+Tooth counts, profile shifts, torques and speeds stay those of the set and the
+solution; the life is the spec's.  If no module of the series up to the bound
+suffices, :class:`~epicyclic.rating.errors.RatingError` says so with the best
+safeties reached — a set that cannot carry the load is never reported as sized.
+
+References
+----------
+ISO 54:1996 (preferred modules); ISO 6336-2:2019 and ISO 6336-3:2019 (S_H, S_F).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..geometry.errors import GeometryError
+from ..geometry.set_geometry import SetGeometry
+from .errors import RatingError
+from .results import TrainRating
+from .spec import RatingSpec
+
+__all__ = ["ISO_54_MODULES", "SizingResult", "smallest_module"]
+
+#: ISO 54 preferred normal modules, mm (series I and II merged, ascending).
+ISO_54_MODULES = (0.5, 0.55, 0.6, 0.7, 0.8, 0.9, 1.0, 1.125, 1.25, 1.375, 1.5, 1.75, 2.0, 2.25, 2.5, 2.75, 3.0, 3.5,
+                  4.0, 4.5, 5.0, 5.5, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 14.0, 16.0, 18.0, 20.0, 22.0, 25.0,
+                  28.0, 32.0, 36.0, 40.0, 45.0, 50.0)
+
+
+@dataclass(frozen=True)
+class SizingResult:
+    """The module found and the rating with it.
+
+    Attributes
+    ----------
+    module : float
+        m_n, mm.
+    face_width : float
+        b, mm.
+    geometry : SetGeometry
+    rating : TrainRating
+        The set's meshes rated with that module.
+    tried : tuple of (float, float, float)
+        (module, lowest S_H, lowest S_F) of every module rated, in order.
+    bound : (float, float)
+        The searched module range, mm.
+    """
+
+    module: float
+    face_width: float
+    geometry: SetGeometry
+    rating: TrainRating
+    tried: tuple[tuple[float, float, float], ...]
+    bound: tuple[float, float]
+
+    def to_dict(self) -> dict:
+        """Plain data: module, face width (mm), bound, tried modules, the rating."""
+        return {"module": self.module, "face_width": self.face_width, "bound": list(self.bound),
+                "tried": [list(t) for t in self.tried], "rating": self.rating.to_dict()}
+
+
+def smallest_module(solution, set_name: str, spec: RatingSpec, *, face_width: float | None = None,
+                    face_width_ratio: float | None = None, min_module: float = 0.5, max_module: float = 50.0,
+                    modules: Sequence[float] | None = None, **geometry) -> SizingResult:
+    """The smallest module of a series for which every mesh of ``set_name`` meets S_Hmin and S_Fmin.
+
+    Parameters
+    ----------
+    solution : Solution
+        The solved operating point (the set's torques and speeds).
+    set_name : str
+        A planetary set of the train with tooth counts.
+    spec : RatingSpec
+        Materials, roughness, lubricant, life, minimum safeties.
+    face_width : float, optional
+        b in mm for every module; or
+    face_width_ratio : float, optional
+        b = ratio · d_sun (b/d1), growing with the module.  One of the two is required.
+    min_module, max_module : float, default 0.5, 50
+        The search bound, mm.
+    modules : sequence of float, optional
+        The series to search (default :data:`ISO_54_MODULES`).
+    **geometry
+        Further :meth:`~epicyclic.geometry.SetGeometry.create` arguments (pressure_angle,
+        helix_angle, x_sun, x_planet, x_ring, load_sharing ...).
+
+    Returns
+    -------
+    SizingResult
+
+    Raises
+    ------
+    RatingError
+        Neither or both of face_width and face_width_ratio; no module up to the bound
+        suffices (the message gives the best safeties and the bound).
+
+    References
+    ----------
+    ISO 54:1996; ISO 6336-2:2019, eq. (4); ISO 6336-3:2019, eq. (5).
+
+    Examples
+    --------
+    >>> from epicyclic import GearTrain, OperatingPoint, PlanetarySet, solve, Brake
+    >>> from epicyclic.rating import RatingSpec
+    >>> p = PlanetarySet.simple("P", sun="in", ring="r", carrier="out", z_sun=21, z_planet=39, z_ring=99)
+    >>> sol = solve(GearTrain([p, Brake("B", "r")]), OperatingPoint(speeds={"in": 1500}, torques={"in": 300},
+    ...             drives=["in"], loads=["out"]))
+    >>> spec = RatingSpec(material="18CrNiMo7-6", flank_roughness=3, root_roughness=10, viscosity_40=220)
+    >>> result = smallest_module(sol, "P", spec, face_width_ratio=0.6)
+    >>> result.module, [m for m, *_ in result.tried]
+    (2.25, [0.5, 0.55, 0.6, 0.7, 0.8, 0.9, 1.0, 1.125, 1.25, 1.375, 1.5, 1.75, 2.0, 2.25])
+    """
+    from .train import _set_meshes
+
+    if (face_width is None) == (face_width_ratio is None):
+        raise RatingError("smallest_module: give face_width (mm) or face_width_ratio (b/d of the sun), not both "
+                          "nor neither.")
+    element = next((e for e in solution.train.elements if e.name == set_name), None)
+    if element is None or getattr(element, "teeth", None) is None:
+        raise RatingError(f"smallest_module: {set_name!r} is not a planetary set with tooth counts in the train.")
+    series = sorted(m for m in (modules or ISO_54_MODULES) if min_module <= m <= max_module)
+    if not series:
+        raise RatingError(f"smallest_module: no module of the series lies in the bound {min_module:g} ... "
+                          f"{max_module:g} mm.")
+    state = solution.elements[set_name]
+    torques, speeds = dict(state.torques), dict(state.speeds)
+    tried = []
+    for m in series:
+        b = face_width if face_width is not None else face_width_ratio * element.teeth.sun * m
+        try:
+            shape = SetGeometry.create(element, m, face_width=b, **geometry)
+            meshes = [rate_one(item, torques, speeds) for item in _set_meshes(set_name, shape, spec)]
+        except GeometryError:
+            continue
+        rating = TrainRating(tuple(meshes), None, f"ISO 6336:{spec.standard}", spec.life)
+        s_h = min(float(np.min(x.S_H)) for x in meshes)
+        s_f = min(float(np.min(x.S_F)) for x in meshes)
+        tried.append((m, s_h, s_f))
+        if rating.ok:
+            return SizingResult(m, float(b), shape, rating, tuple(tried), (series[0], series[-1]))
+    best = max(tried, key=lambda t: min(t[1] / spec.S_Hmin, t[2] / spec.S_Fmin), default=None)
+    detail = (f"; the best was m = {best[0]:g} mm with S_H {best[1]:.3f}, S_F {best[2]:.3f}" if best else
+              "; no module gave a valid geometry")
+    raise RatingError(f"smallest_module: no module of {series[0]:g} ... {series[-1]:g} mm meets S_Hmin "
+                      f"{spec.S_Hmin:g} and S_Fmin {spec.S_Fmin:g} for {set_name!r}{detail}. Raise max_module, "
+                      "the face width, or the material.")
+
+
+def rate_one(item, torques, speeds):
+    """Rate one planned mesh at an element's port torques and speeds.
+
+    Parameters
+    ----------
+    item : PlannedMesh
+        From :func:`~epicyclic.rating.train.mesh_inputs`.
+    torques, speeds : mapping port → float or ndarray
+        The element's port torques (N·m) and speeds (1/min).
+
+    Returns
+    -------
+    MeshRating
+
+    References
+    ----------
+    ISO 6336-1:2019, 6.1.
+    """
+    from .mesh_rating import rate_mesh
+
+    torque, speed = item.loads(torques, speeds)
+    return rate_mesh(item.input, torque, speed)

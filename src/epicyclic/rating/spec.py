@@ -1,0 +1,262 @@
+"""What a rating needs besides geometry and loads: :class:`RatingSpec` (the file's ``[rating]``).
+
+Defaults (stated here and in ``docs/rating.md``):
+
+======================  ==========================  =============================================
+key                     default                     meaning
+======================  ==========================  =============================================
+standard                ``"2019"``                  ISO 6336 edition (``"2006"`` or ``"2019"``)
+application_factor      1.0                         K_A (uniform driver and load)
+life                    20000                       required life, h
+S_Hmin / S_Fmin         1.0 / 1.4                   minimum safeties
+accuracy_grade          6                           ISO 1328-1 flank tolerance class
+K_Hbeta                 method C                    a given K_Hβ, or F_βx from f_Hβ (+ 1.33 f_sh)
+shaft_deflection        0                           f_sh for method C, µm
+load_sharing            of the geometry, else by    K_γ (AGMA 6123/ISO values may be given)
+                        number of planets
+tool_tip_radius         0.25                        ρ_fP* of the basic rack (ISO 53 A)
+long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``"optimum"``: 1.0)
+pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
+tip_relief              0                           C_a for K_v, µm
+rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
+======================  ==========================  =============================================
+
+Required (an error names the key and the value it would suggest): ``material`` (a
+name of the data file, or per gear), ``flank_roughness`` and ``root_roughness`` (R_z,
+µm), the lubricant's ``viscosity_40`` (mm²/s; from ``[lubricant]`` or
+``[rating.lubricant]``).
+
+References
+----------
+ISO 6336-1:2019, clause 4 and Annex (minimum safeties are agreed between customer and
+supplier; 1.0 / 1.4 are the values commercial tools propose); ISO 6336-5:2016.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any
+
+from .errors import RatingError
+from .materials import Material, material
+from .standard import DEFAULT_EDITION, edition
+from .tooth_form import Cutter
+
+__all__ = ["DEFAULTS", "SUGGESTED", "RatingSpec"]
+
+DEFAULTS: Mapping[str, Any] = MappingProxyType({
+    "standard": DEFAULT_EDITION, "application_factor": 1.0, "life": 20000.0, "S_Hmin": 1.0, "S_Fmin": 1.4,
+    "accuracy_grade": 6, "shaft_deflection": 0.0, "tool_tip_radius": 0.25, "long_life": "standard",
+    "pitting_permitted": False, "tip_relief": 0.0,
+})
+#: The values an error for a missing required key proposes (never taken silently).
+SUGGESTED: Mapping[str, Any] = MappingProxyType({
+    "material": "18CrNiMo7-6", "flank_roughness": 3.0, "root_roughness": 10.0, "viscosity_40": 100.0,
+})
+
+
+def _number(value: object, key: str, low: float = 0.0, *, strict: bool = True) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or (
+            value <= low if strict else value < low):
+        raise RatingError(f"rating.{key} must be a number {'>' if strict else '>='} {low:g}, got {value!r}.")
+    return float(value)
+
+
+def _missing(key: str, meaning: str) -> RatingError:
+    return RatingError(f"rating.{key} is missing ({meaning}); give it in [rating] - e.g. {key} = "
+                       f"{SUGGESTED[key]!r}, the value commonly taken.")
+
+
+@dataclass(frozen=True)
+class RatingSpec:
+    """Inputs of an ISO 6336 rating that the geometry and the loads do not give.
+
+    Parameters
+    ----------
+    material : Material or mapping gear → Material, optional
+        One material for every gear, or one per gear name (``sun``, ``planet``, ``ring``,
+        ``planet1`` ..., ``driving``/``driven`` for stages; an ``element:gear`` key such
+        as ``"P1:ring"`` for one element).  Required.
+    flank_roughness, root_roughness : float, optional
+        R_z of flanks and root fillets, µm.  Required.
+    viscosity_40 : float, optional
+        Kinematic viscosity of the oil at 40 °C, mm²/s.  Required.
+    viscosity_100 : float, optional
+        At 100 °C, mm²/s (kept for the report).
+    standard : str, default "2019"
+    application_factor : float, default 1.0
+        K_A.
+    life : float, default 20000
+        Required life, h.
+    S_Hmin, S_Fmin : float, default 1.0, 1.4
+    accuracy_grade : int, default 6
+    K_Hbeta : float, optional
+        Given face load factor; otherwise method C.
+    shaft_deflection : float, default 0
+        f_sh, µm (method C).
+    load_sharing : float, optional
+        K_γ for every planetary set (default: the set geometry's, else by number of planets).
+    tool_tip_radius : float, default 0.25
+        ρ_fP* of the basic rack.
+    cutter : Cutter, optional
+        Pinion-type cutter of the internal gears (rack approximation without).
+    long_life : str, default "standard"
+    pitting_permitted : bool, default False
+    tip_relief : float, default 0
+        C_a, µm.
+    notes : tuple of str, default ()
+        Remarks carried into every mesh rating.
+    rim_thickness : mapping gear → float, optional
+        Rim thickness s_R below the root per gear name (``ring``, ``"P1:ring"``), mm, for Y_B;
+        gears not named are solid (Y_B = 1).
+
+    Raises
+    ------
+    RatingError
+        A value of the wrong kind or out of range.
+
+    References
+    ----------
+    ISO 6336-1:2019 (K_A, K_γ, accuracy); ISO 6336-2:2019, 11 (ν_40, R_z); ISO 6336-3:2019, 14 (R_z root).
+    """
+
+    material: Material | Mapping[str, Material] | None = None
+    flank_roughness: float | None = None
+    root_roughness: float | None = None
+    viscosity_40: float | None = None
+    viscosity_100: float | None = None
+    standard: str = DEFAULT_EDITION
+    application_factor: float = 1.0
+    life: float = 20000.0
+    S_Hmin: float = 1.0
+    S_Fmin: float = 1.4
+    accuracy_grade: int = 6
+    K_Hbeta: float | None = None
+    shaft_deflection: float = 0.0
+    load_sharing: float | None = None
+    tool_tip_radius: float = 0.25
+    cutter: Cutter | None = None
+    long_life: str = "standard"
+    pitting_permitted: bool = False
+    tip_relief: float = 0.0
+    notes: tuple[str, ...] = field(default=(), compare=False)
+    rim_thickness: Mapping[str, float] | None = None
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "standard", edition(self.standard))
+        object.__setattr__(self, "application_factor", _number(self.application_factor, "application_factor", 1.0,
+                                                                strict=False))
+        object.__setattr__(self, "life", _number(self.life, "life"))
+        for key in ("S_Hmin", "S_Fmin", "tool_tip_radius"):
+            object.__setattr__(self, key, _number(getattr(self, key), key))
+        for key in ("flank_roughness", "root_roughness", "viscosity_40", "viscosity_100"):
+            if getattr(self, key) is not None:
+                object.__setattr__(self, key, _number(getattr(self, key), key))
+        for key in ("shaft_deflection", "tip_relief"):
+            object.__setattr__(self, key, _number(getattr(self, key), key, strict=False))
+        for key in ("K_Hbeta", "load_sharing"):
+            if getattr(self, key) is not None:
+                object.__setattr__(self, key, _number(getattr(self, key), key, 1.0, strict=False))
+        g = self.accuracy_grade
+        if isinstance(g, bool) or not isinstance(g, int) or not 1 <= g <= 11:
+            raise RatingError(f"rating.accuracy_grade must be a whole number 1 ... 11 (ISO 1328-1), got {g!r}; "
+                              "the default is 6.")
+        if self.long_life not in ("standard", "optimum"):
+            raise RatingError(f"rating.long_life must be 'standard' or 'optimum', got {self.long_life!r}.")
+        if self.rim_thickness is not None:
+            rims = dict(self.rim_thickness)
+            for key, value in rims.items():
+                rims[key] = _number(value, f"rim_thickness.{key}")
+            object.__setattr__(self, "rim_thickness", MappingProxyType(rims))
+        if isinstance(self.material, str):
+            object.__setattr__(self, "material", material(self.material))
+        elif isinstance(self.material, Mapping):
+            object.__setattr__(self, "material", MappingProxyType(
+                {k: material(v) if isinstance(v, str) else v for k, v in self.material.items()}))
+
+    # ------------------------------------------------------------------ required values
+    def material_of(self, element: str, gear: str) -> Material:
+        """The material of ``gear`` of ``element`` (``"P1:ring"``, then ``"ring"``, then the one for all).
+
+        Parameters
+        ----------
+        element : str
+            The set or stage.
+        gear : str
+            The gear's name in it (``sun``, ``planet``, ``ring``, ``driving`` ...).
+
+        Returns
+        -------
+        Material
+
+        Raises
+        ------
+        RatingError
+            No material is given for it: the key and the suggested material are named.
+        """
+        given = self.material
+        if isinstance(given, Material):
+            return given
+        if isinstance(given, Mapping):
+            for key in (f"{element}:{gear}", gear, "all"):
+                if key in given:
+                    return given[key]
+            raise RatingError(f"rating.material has no entry for gear {gear!r} of {element!r} (keys "
+                              f"{', '.join(map(repr, given)) or 'none'}); add {gear} = '{SUGGESTED['material']}' "
+                              f"or '{element}:{gear}'.")
+        raise _missing("material", "a material of the data file for every gear, see docs/rating.md")
+
+    def rim_of(self, element: str, gear: str) -> float | None:
+        """The rim thickness s_R of ``gear`` of ``element`` in mm, None for a solid gear.
+
+        Parameters
+        ----------
+        element : str
+            The set or stage.
+        gear : str
+            The gear's name in it.
+
+        Returns
+        -------
+        float or None
+        """
+        rims = self.rim_thickness or {}
+        return rims.get(f"{element}:{gear}", rims.get(gear))
+
+    def required(self, key: str) -> float:
+        """``flank_roughness``, ``root_roughness`` or ``viscosity_40``; an error naming the key if absent.
+
+        Parameters
+        ----------
+        key : str
+            One of the three keys.
+
+        Returns
+        -------
+        float
+        """
+        value = getattr(self, key)
+        if value is None:
+            meaning = {"flank_roughness": "R_z of the tooth flanks in µm, for Z_R",
+                       "root_roughness": "R_z of the root fillets in µm, for Y_RrelT",
+                       "viscosity_40": "kinematic viscosity of the oil at 40 degC in mm^2/s, for Z_L; "
+                                       "or lubricant.viscosity_40"}[key]
+            raise _missing(key, meaning)
+        return value
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain data of the inputs (materials by name)."""
+        m = self.material
+        mats = (m.to_dict() if isinstance(m, Material) else {k: v.to_dict() for k, v in m.items()}) if m else None
+        return {"standard": f"ISO 6336:{self.standard}", "application_factor": self.application_factor,
+                "life": self.life, "S_Hmin": self.S_Hmin, "S_Fmin": self.S_Fmin,
+                "accuracy_grade": self.accuracy_grade, "K_Hbeta": self.K_Hbeta,
+                "shaft_deflection": self.shaft_deflection, "load_sharing": self.load_sharing,
+                "flank_roughness": self.flank_roughness, "root_roughness": self.root_roughness,
+                "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
+                "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,
+                "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,
+                "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None}
