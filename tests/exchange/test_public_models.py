@@ -117,6 +117,7 @@ def test_planetary_stage_lubricant_at_80_degrees():
     nu = walther_viscosity(100.0, 11.0, 80.0)
     assert 18.0 < nu < 21.0  # ISO 3448 viscosity-temperature charts: VG 100 with VI ~ 95 reads about 19 at 80 degC
     assert doc.data["lubricant"]["viscosity"] == pytest.approx(nu * 0.88 * (1 - OIL_EXPANSION * 65), rel=1e-6)
+    assert (doc.data["lubricant"]["viscosity_40"], doc.data["lubricant"]["viscosity_100"]) == (100.0, 11.0)
 
 
 @pytest.mark.parametrize("container", ["xml", "json", "zip/xml", "zip/json", "published zip"])

@@ -123,9 +123,10 @@ def test_the_schema_validation_can_fail():
 def test_attributes_written_are_rexs_1_7_attributes():
     database = json.loads((FIXTURES / "rexs_1.7_database_excerpt.json").read_text(encoding="utf-8"))
     units = {"none": "none", "mm": "mm", "deg": "deg", "1 / min": "1 / min", "N m": "N m", "kW": "kW",
-             "%": "%", "C": "C"}
+             "%": "%", "C": "C", "mm^2 / s": "mm^2 / s"}
     for example in ("zf_8hp70_geometry.toml", "brandenberger_1952.toml", "geometry_simple_set.toml",
-                    "wolfrom_drive.toml", "rexs/FVA-Industriegetriebe_2stufig_1-4.rexs"):
+                    "wolfrom_drive.toml", "rexs/FVA-Industriegetriebe_2stufig_1-4.rexs",
+                    "rating/simple_set_duty_cycle.toml"):
         model = read_model(rexs_text(load_train_file(ROOT / "examples" / example), "xml", DATE).encode(), example)
         written = [(c, c.attributes.values()) for c in model.components.values()]
         written += [(model.components[cid], attributes.values()) for case in model.load_cases

@@ -308,8 +308,9 @@ class OperatingMapper:
         self.lubricant_data = MappingProxyType(data)
         if custom:
             return dict(custom)
+        table = {key: data[key] for key in ("viscosity_40", "viscosity_100") if key in data}  # the rating's
         if not all(k in data for k in ("viscosity_40", "viscosity_100", "density_15", "temperature")):
-            return None
+            return table or None
         nu40, nu100 = data["viscosity_40"], data["viscosity_100"]
         if not nu40 > nu100 > 0:
             raise model.error(found, "viscosity_at_100_degree_celsius", f"expected 0 < ν100 < ν40, got ν40 = "
@@ -317,4 +318,4 @@ class OperatingMapper:
         temperature = data["temperature"]
         nu = walther_viscosity(nu40, nu100, temperature)
         density = data["density_15"] * (1.0 - OIL_EXPANSION * (temperature - 15.0))
-        return {"viscosity": round(nu * density, 6)}
+        return {"viscosity": round(nu * density, 6), **table}

@@ -150,7 +150,10 @@ class _Writer:
         self.casing = b.component("gear_casing", "casing")
         b.relation("assembly", [(self.unit, "assembly"), (self.casing, "part")])
         if "lubricant" in doc:
-            b.component("lubricant", "lubricant")
+            oil = doc["lubricant"]
+            b.component("lubricant", "lubricant", [
+                _f("viscosity_at_40_degree_celsius", oil.get("viscosity_40"), "mm^2 / s"),
+                _f("viscosity_at_100_degree_celsius", oil.get("viscosity_100"), "mm^2 / s")])
         for table in doc.get("planetary", []):
             self.planetary(table)
         for table in doc.get("gear", []):
