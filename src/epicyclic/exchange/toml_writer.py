@@ -31,6 +31,11 @@ def _value(value: Any, inline: bool = False):
         for k, v in value.items():
             table[k] = _value(v, True)
         return table
+    if isinstance(value, (list, tuple)) and not inline and value and all(isinstance(v, Mapping) for v in value):
+        tables = tomlkit.aot()  # [[duty_cycle.case]] and the like
+        for v in value:
+            tables.append(_value(v))
+        return tables
     if isinstance(value, (list, tuple)):
         array = tomlkit.array()
         for v in value:
@@ -105,6 +110,15 @@ def document_toml(data: Mapping[str, Any], origins: Mapping[str, str] | None = N
             for k, v in data[key].items():
                 table[k] = _value(v, not (key == "transmission" and k == "schedule"))
             doc[key] = table
+    written = {"title", "description", "shafts", "units", "lubricant", "planetary", "gear", "clutch", "brake",
+               "transmission", "operating_point"}
+    for key in [k for k in data if k not in written]:  # [rating], [duty_cycle], ...
+        doc.add(tomlkit.nl())
+        table = tomlkit.table()
+        for k, v in data[key].items():
+            table[k] = _value(v, not isinstance(v, (Mapping, list)) or isinstance(v, list) and not all(
+                isinstance(x, Mapping) for x in v) or not v)
+        doc[key] = table
     text = tomlkit.dumps(doc)
     if footer:
         text += "\n" + "".join(f"# {line}\n" if line else "#\n" for line in footer)

@@ -118,6 +118,8 @@ def to_file_unit(value: float, unit: str | None, quantity: str, where: str) -> f
         raise RexsUnitError(f"{where}: the unit {unit[:40]!r} is {what}; REXS writes {quantity}s in "
                             f"{_EXAMPLES[quantity]}.")
     _, factor, offset = known
+    if factor < 1.0 and (1.0 / factor).is_integer():  # divide by 100 or 1000: 35 % is 0.35, not 0.35000000000000003
+        return float(value) / (1.0 / factor) + offset
     return float(value) * factor + offset
 
 
