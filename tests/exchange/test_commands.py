@@ -34,6 +34,11 @@ def test_analyze_a_rexs_file():
     assert result.stderr.count("\n") == 1 and "ignored: 11 shaft sections, 10 concept bearings" in result.stderr
 
 
+def test_rate_reads_a_rexs_file_with_materials_and_roughness():
+    result = run("rate", FIXTURES / "FVA_Planetary_stage_-_Minus_gearing_1.1_vers2.rexsj")
+    assert "Planetary stage [9]" in result.stdout and "ISO 6336" in result.stdout
+
+
 def test_duty_reads_a_rexs_load_spectrum():
     result = run("duty", ROOT / "examples" / "rexs" / "FVA-Industriegetriebe_2stufig_1-4.rexs")
     assert "REXS load spectrum 1, 4 cases" in result.stdout

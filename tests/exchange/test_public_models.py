@@ -267,3 +267,24 @@ def test_two_stage_gearbox_load_spectrum_is_a_duty_cycle():
     for case, (n, t, share) in zip(result["cases"], [(543, 567, 0.20), (3456, 345, 0.30), (1234, 456, 0.35),
                                                      (789, 789, 0.15)]):
         assert case["energy_in"]["value"] == pytest.approx(t * n * math.pi / 30 * share / 1000, rel=1e-9)
+
+
+def test_workbench_7_export_is_rated_as_it_is():
+    # FVA-Workbench 7.1 gives each gear's material (18CrNiMo7-6 sun and planets, 42CrMo4 ring) and R_z
+    # (flank 5 um, root 20 um), and the oil's nu_40 = 100 mm^2/s: a [rating] table, so `epicyclic rate` runs.
+    # Hand check of its first line: F_t = T_sun / (N d_sun / 2) = (100 kW / (1500 pi/30)) / (3 * 0.034 m)
+    # = 6241.4 N; v = pi d_sun (n_sun - n_carrier) / 60000 with n_carrier = 1500 / (1 + 61/17).
+    from epicyclic.rating.train import rate_solution
+
+    f = load_train_file(FIXTURES / (PLANETARY.stem + "_vers2.rexsj"))
+    assert f.exchange.data["rating"] == {
+        "material": {"Planetary stage [9]:sun": "18CrNiMo7-6", "Planetary stage [9]:planet": "18CrNiMo7-6",
+                     "Planetary stage [9]:ring": "42CrMo4"}, "flank_roughness": 5.0, "root_roughness": 20.0}
+    assert f.rating is not None
+    assert load_rexs_document(PLANETARY).data.get("rating") is None  # the 1.1 file gives no roughness
+    rating = rate_solution(f.solve(), f.geometry, f.rating).to_dict()
+    first = rating["meshes"][0]["factors"]
+    torque = 100e3 / (1500 * math.pi / 30)
+    assert first["F_t"]["value"] == pytest.approx(torque / (3 * 0.034), rel=1e-9)                       # 6241.4 N
+    assert first["v"]["value"] == pytest.approx(math.pi * 68 * (1500 - 1500 / (1 + 61 / 17)) / 60000, rel=1e-9)
+    assert rating["ok"] is True

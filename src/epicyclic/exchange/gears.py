@@ -5,7 +5,10 @@ REXS keeps a cylindrical gear's data in three places: the gear
 ``helix_angle_reference_diameter``), its flanks (``flank`` relation to
 ``flank_geometry`` in REXS 1.1, ``cylindrical_gear_flank`` from 1.4:
 ``addendum_modification_coefficient`` x, ``normal_pressure_angle`` α_n,
-``addendum_coefficient_basic_profile`` h_a*) and its tool (``ordered_reference``
+``addendum_coefficient_basic_profile`` h_a*), its roughness
+(``averaged_peak_to_valley_height_flank``/``_root``, R_z), its material
+(``reference`` to a ``material``: ``material_designation``, else the component's
+name) and its tool (``ordered_reference``
 or ``manufacturing_step`` to a ``rack_shaped_tool``/``cutter_wheel_tool``:
 the tool's ``addendum_coefficient_reference_profile`` is the gear's
 dedendum h_f*).  :func:`gear_data` collects them in the train file's units.
@@ -18,6 +21,7 @@ github.com/fva-net/rexs-api-java, Apache-2.0); ISO 21771:2007, basic rack and pr
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from .rexs_model import Component, RexsModel
@@ -43,6 +47,8 @@ class GearData:
     addendum: float | None = None
     dedendum: float | None = None
     material: str | None = None
+    flank_roughness: float | None = None
+    root_roughness: float | None = None
 
 
 def gear_links(model: RexsModel) -> tuple[dict[int, list[int]], dict[int, list[int]], dict[int, int]]:
@@ -117,7 +123,8 @@ def gear_data(model: RexsModel, gear: Component, links, used: set[int]) -> GearD
     if gear.id in materials:
         used.add(materials[gear.id])
         found = model.components.get(materials[gear.id])
-        material = model.text(found, "material_designation") or found.name if found else None
+        material = (model.text(found, "material_designation") or re.sub(r"\s*\[\d+\]$", "", found.name)
+                    if found else None) or None
     return GearData(
         component=gear,
         teeth=model.integer(gear, "number_of_teeth"),
@@ -131,4 +138,11 @@ def gear_data(model: RexsModel, gear: Component, links, used: set[int]) -> GearD
         addendum=from_flank("addendum_coefficient_basic_profile"),
         dedendum=optional(tool[0] if tool else None, "addendum_coefficient_reference_profile"),
         material=material,
+        flank_roughness=_micrometres(optional(gear, "averaged_peak_to_valley_height_flank", "length")),
+        root_roughness=_micrometres(optional(gear, "averaged_peak_to_valley_height_root", "length")),
     )
+
+
+def _micrometres(mm: float | None) -> float | None:
+    """R_z in µm (the rating's unit) from mm; REXS writes ``mum``."""
+    return None if mm is None else round(mm * 1000.0, 9)

@@ -46,6 +46,7 @@ from .chains import chains
 from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, custom as _custom
 from .gears import GearData, gear_data, gear_links
 from .operating import OperatingMapper, RexsLoadCase
+from .rating_map import rating_table
 from .rexs_model import Component, RexsModel
 from .topology import GEAR_TYPES, Members, element_name
 
@@ -154,6 +155,7 @@ class _Mapper:
         self.element_names: set[str] = set()
         self.notes: list[str] = []
         self.checked: set[tuple] = set()
+        self.rating_gears: list[tuple[str, str, GearData]] = []
         self.operating = OperatingMapper(model, self.members, self.used, self.notes)
         self.members.preferred = self.operating.preferred_shafts()
         self.stage_owner: dict[int, int] = {}  # cylindrical_stage id → planetary_stage id
@@ -253,6 +255,10 @@ class _Mapper:
         for key in ("description", "units", "shafts", "rating", "duty_cycle"):
             if key in extras:
                 data[key] = extras.pop(key)
+        if "rating" not in data and not gears:  # fixed-axis stages: their gears are not named for [rating]
+            rating = rating_table(self.rating_gears, data.get("lubricant"))
+            if rating is not None:
+                data["rating"] = rating
         cases = self.operating.load_cases(members - {None})
         schedule = self.schedule(unit, [t for t, _ in clutches + brakes], cases, extras)
         if schedule is not None:
@@ -345,6 +351,7 @@ class _Mapper:
                      carrier=self.member(("carrier", stage.id)), teeth=teeth, planets=planets)
         geometry = self.set_geometry(kind, names, gear, stage, meshes)
         for role, gid in names.items():
+            self.rating_gears.append((name, role, gear[gid]))
             if gear[gid].material:
                 self.materials[f"{name}.{role}"] = gear[gid].material
         extra_geometry = extras.pop("geometry", {})
