@@ -33,6 +33,12 @@ from .errors import EpicyclicError
 __all__ = [
     "LimitError",
     "MAX_FILE_BYTES",
+    "REXS_BYTES_FACTOR",
+    "max_rexs_bytes",
+    "MAX_REXS_COMPONENTS",
+    "MAX_REXS_RELATIONS",
+    "MAX_REXS_ARRAY_VALUES",
+    "MAX_ZIP_RATIO",
     "FILE_BYTES_VARIABLE",
     "max_file_bytes",
     "MAX_NESTING",
@@ -80,6 +86,18 @@ MAX_FILE_BYTES = 1 << 20
 FILE_BYTES_VARIABLE = "EPICYCLIC_MAX_FILE_BYTES"
 #: Deepest nesting of arrays and tables in a TOML file (the format needs 5).
 MAX_NESTING = 16
+#: REXS exchange files (``epicyclic.exchange``) may be this many times :func:`max_file_bytes`: 16 MiB by default
+#: (an FVA-Workbench planetary stage is 112 KB; a model with shaft sections and FE data a few MB); the same
+#: limit holds for the model inside a zipped ``.rexsz``.
+REXS_BYTES_FACTOR = 16
+#: Components and relations of one REXS model (a full wind-turbine gearbox has a few thousand).
+MAX_REXS_COMPONENTS = 50_000
+MAX_REXS_RELATIONS = 100_000
+#: Values in one REXS array or matrix attribute.
+MAX_REXS_ARRAY_VALUES = 1_000_000
+#: Uncompressed size / compressed size of a ``.rexsz`` member: REXS XML compresses about 20:1; a zip bomb
+#: (1000:1 and more) is refused before it is expanded.
+MAX_ZIP_RATIO = 200
 #: Most keys and values in a TOML file (keys, strings, arrays, tables, list items); the
 #: largest example holds about 400.
 MAX_TOML_VALUES = 20_000
@@ -197,6 +215,18 @@ def max_file_bytes() -> int:
         raise LimitError(f"{FILE_BYTES_VARIABLE}={text[:40]!r}: expected a positive whole number of bytes, "
                          f"e.g. {MAX_FILE_BYTES}.", FILE_BYTES_VARIABLE)
     return value
+
+
+def max_rexs_bytes() -> int:
+    """The size limit of a REXS file (and of the model inside a ``.rexsz``): :data:`REXS_BYTES_FACTOR` ×
+    :func:`max_file_bytes`.
+
+    Raises
+    ------
+    LimitError
+        ``$EPICYCLIC_MAX_FILE_BYTES`` is set but is not a positive whole number.
+    """
+    return REXS_BYTES_FACTOR * max_file_bytes()
 
 
 def check_range(value: int | float, field: str, bounds: tuple[int | float, int | float]) -> int | float:

@@ -187,8 +187,61 @@ brakes = 2
 clutches = 2
 """
 
+#: The FVA-Workbench planetary stage (REXS 1.1 XML, tests/exchange/fixtures, Apache-2.0), and hostile variants.
+REXS = (Path(__file__).parents[2] / "examples" / "rexs" / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs").read_bytes()
+REXS_HEAD = b'<model version="1.7" applicationId="t" applicationVersion="1" date="2026-01-01T00:00:00+00:00">'
+
+
+def rexs_sub(old: bytes, new: bytes) -> bytes:
+    assert old in REXS, old
+    return REXS.replace(old, new, 1)
+
+
+def zipped(member: str, data: bytes, method: int = 8) -> bytes:
+    import io
+    import zipfile
+
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w", method) as archive:
+        archive.writestr(member, data)
+    return buffer.getvalue()
+
+
 # ------------------------------------------------------------------ the corpus
 CORPUS: list[Bad] = [
+    # ---- REXS files (read by content, whatever the suffix; epicyclic.exchange)
+    Bad("REXS: external entity (XXE)", "analyze", b'<?xml version="1.0"?><!DOCTYPE m [<!ENTITY x SYSTEM '
+        b'"file:///etc/passwd">]><model version="&x;"/>', "declares a document type or entities"),
+    Bad("REXS: billion laughs", "explain", b'<!DOCTYPE m [<!ENTITY a "aaaa"><!ENTITY b "&a;&a;&a;&a;">]>'
+        b'<model version="&b;"/>', "declares a document type or entities"),
+    Bad("REXS: zip bomb", "fit", zipped("model.rexs", b"<model " + b" " * (4 << 20) + b"/>"), "zip bomb"),
+    Bad("REXS: zip without a model", "forces", zipped("gear.gde", b""), "exactly one .rexs or .rexsj model"),
+    Bad("REXS: XML nested too deeply", "analyze", REXS_HEAD + b"<a>" * 100 + b"</a>" * 100 + b"</model>",
+        "nested more than 16 levels"),
+    Bad("REXS: JSON nested too deeply", "map", b'{"model": ' + b"[" * 3000 + b"]" * 3000 + b"}",
+        "nested more than 16 levels"),
+    Bad("REXS: JSON with NaN", "gears", b'{"model": {"version": "1.7", "components": [{"id": 1, "x": NaN}]}}',
+        "not valid JSON"),
+    Bad("REXS: not well-formed XML", "plot", REXS[:5000], "not well-formed XML"),
+    Bad("REXS: root is not <model>", "analyze", b"<gearbox/>", "not <model>"),
+    Bad("REXS: malformed speed", "analyze", rexs_sub(b'unit="1 / min">1500.0<', b'unit="1 / min">fast<'),
+        "component 34 (shaft 'Sonnenwelle [34]'), attribute 'rotational_speed': expected a number, got 'fast'"),
+    Bad("REXS: speed in mm", "forces", rexs_sub(b'unit="1 / min">1500.0<', b'unit="mm">1500.0<'),
+        "the unit 'mm' is not a speed"),
+    Bad("REXS: tooth count missing", "fit", rexs_sub(b'<attribute id="number_of_teeth" unit="none">61</attribute>',
+                                                     b""), "attribute 'number_of_teeth': missing"),
+    Bad("REXS: tooth count not whole", "analyze", rexs_sub(b'unit="none">61<', b'unit="none">61.5<'),
+        "attribute 'number_of_teeth': expected a whole number"),
+    Bad("REXS: ring coupling open", "analyze", rexs_sub(b"<c>true</c>", b"<c>false</c>").replace(
+        b"<c>true</c>", b"<c>false</c>", 1), "is still free"),
+    Bad("REXS: a relation to a missing component", "analyze", rexs_sub(b'id="53" role="gear_1"/>',
+                                                                      b'id="5300" role="gear_1"/>'),
+        "names component 5300, which the file does not have"),
+    Bad("convert: missing file", "convert", None, "no such file", ("{tmp}/missing.rexs", "-o", "{tmp}/a.toml")),
+    Bad("convert: --out with an unknown suffix", "convert", GOOD, "--out", ("{file}", "-o", "{tmp}/a.txt")),
+    Bad("convert: --out is the input", "convert", GOOD, "is the input file", ("{file}", "-o", "{file}")),
+    Bad("convert: bad REXS", "convert", rexs_sub(b'unit="none">61<', b'unit="none">-61<'), "z_ring",
+        ("{file}", "-o", "{tmp}/a.rexsj")),
     # ---- the file itself
     Bad("missing file", "analyze", None, "no such file", ("{tmp}/missing.toml",)),
     Bad("folder as input", "analyze", folder, "is a folder"),

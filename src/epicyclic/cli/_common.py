@@ -73,12 +73,16 @@ def guarded(command: F) -> F:
         from ..io.output import refuse_input
 
         source = kwargs.get("file")
+        _NOTES.clear()
         try:
             if kwargs.get("out") is not None:
                 refuse_input(kwargs["out"], [source])
             with warnings.catch_warnings():  # overflow shows as one clear error, never as numpy warnings
                 warnings.simplefilter("ignore", RuntimeWarning)
-                return command(*args, **kwargs)
+                result = command(*args, **kwargs)
+            for note in _NOTES:  # after the work: an error stays the one line on stderr
+                typer.echo(note, err=True)
+            return result
         except typer.Exit:
             raise
         except EpicyclicError as exc:
@@ -127,6 +131,34 @@ def check_finite(data: Any, file: Path | str | None, what: str = "") -> None:
     check(data, str(file) if file is not None else "result", what)
 
 
+#: Lines for stderr once a command has done its work (what a REXS file held that was ignored).
+_NOTES: list[str] = []
+
+
+def note_exchange(train_file) -> None:
+    """For a REXS file: one line for stderr, after the command's work, saying what was read and what was
+    ignored (stdout stays the report; a command that fails prints only its error)."""
+    if getattr(train_file, "exchange", None) is not None:
+        from ..text import terminal_text
+
+        line = " ".join(terminal_text(train_file.exchange.summary).split())
+        if line not in _NOTES:
+            _NOTES.append(line)
+
+
+def note_rexs(file: Path) -> None:
+    """:func:`note_exchange` for a command that read ``file`` itself (``gears``, ``explore``): a REXS file's
+    summary line (the file read once more, a few milliseconds)."""
+    from ..io.source import sniff
+
+    with open(file, "rb") as handle:
+        head = handle.read(4096)
+    if sniff(head) is not None:
+        from ..io import load_train_file
+
+        note_exchange(load_train_file(file))
+
+
 def load(file: Path, gear: str | None = None, overrides: list[str] | None = None):
     """The train file ``file`` (a :class:`~epicyclic.io.TrainFile`), in ``gear`` of its schedule if given.
 
@@ -138,6 +170,7 @@ def load(file: Path, gear: str | None = None, overrides: list[str] | None = None
     from ..io import load_train_file
 
     train_file = load_train_file(file, overrides=overrides or ())
+    note_exchange(train_file)
     if gear is None:
         return train_file
     if train_file.transmission is None:

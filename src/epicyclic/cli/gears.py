@@ -18,7 +18,7 @@ import typer
 
 from ..errors import EpicyclicError
 from ..io.located import located
-from ._common import FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded
+from ._common import FormatOption, OutOption, OutputFormat, SetOption, check_finite, emit, guarded, note_rexs
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..transmission import Transmission
@@ -63,6 +63,7 @@ def gears(
     from ..transmission import Transmission  # imported here: other commands start faster without it
 
     transmission = Transmission.from_file(file, overrides=set_ or ())
+    note_rexs(file)
     try:
         analysis = transmission.analyze_all()
     except EpicyclicError as exc:  # name the gear: the file has no [operating_point] to blame
@@ -98,6 +99,7 @@ def explore(
     from ..transmission import Transmission, explore as _explore
 
     transmission = Transmission.from_file(file, overrides=set_ or ())
+    note_rexs(file)
     states = _explore(transmission, include_redundant=redundant)
     check_finite(states.to_dict(), file)
     emit(_render(states, format), out)

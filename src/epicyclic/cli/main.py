@@ -76,6 +76,10 @@ from . import duty as _duty  # noqa: E402
 
 app.command("duty")(_duty.duty)
 
+from . import convert as _convert  # noqa: E402
+
+app.command("convert")(_convert.convert)
+
 from . import serve as _serve  # noqa: E402
 
 app.command("serve")(_serve.serve)

@@ -36,7 +36,7 @@ from typing import Any
 from ..errors import ModelError
 from ..limits import MAX_NESTING, MAX_STRING_CHARS, MAX_TOML_VALUES, max_file_bytes
 
-__all__ = ["InputFileError", "read_source", "decode_source", "parse_toml"]
+__all__ = ["InputFileError", "check_document", "decode_source", "parse_toml", "read_bytes", "read_source", "sniff"]
 
 
 class InputFileError(ModelError):
@@ -60,6 +60,36 @@ def _size(n: int) -> str:
     return f"{n / 1048576:.3g} MiB ({n:,} bytes)" if n >= 1048576 else f"{n:,} bytes"
 
 
+def sniff(data: bytes) -> str | None:
+    """The REXS container of a file's bytes: ``"zip"``, ``"xml"``, ``"json"``, or None (a TOML train file).
+
+    By content, not by suffix: the zip signature ``PK``, else the first character that is not white
+    space (a byte-order mark skipped): ``<`` is XML, ``{`` is JSON.  A TOML file starts with neither.
+
+    Parameters
+    ----------
+    data : bytes
+        The file's content (its first few kilobytes suffice).
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> sniff(b'<?xml version="1.0"?><model/>'), sniff(b'  {"model": {}}'), sniff(b'title = "x"')
+    ('xml', 'json', None)
+    """
+    if data.startswith((b"PK\x03\x04", b"PK\x05\x06")):  # an empty zip is a zip too
+        return "zip"
+    head = data[:4096].lstrip(b"\xef\xbb\xbf").lstrip(b" \t\r\n")
+    if head.startswith(b"<"):
+        return "xml"
+    if head.startswith(b"{"):
+        return "json"
+    return None
+
+
 def read_source(path: str | Path, max_bytes: int | None = None) -> str:
     """The text of the input file ``path``, checked (steps 1–3 of the module docstring).
 
@@ -75,7 +105,43 @@ def read_source(path: str | Path, max_bytes: int | None = None) -> str:
     InputFileError
         Missing, unreadable, not a regular file, too large, not UTF-8 text.
     """
+    return decode_source(read_bytes(path, max_bytes), str(path), max_bytes)
+
+
+def _head_is_rexs(path: str | Path, limit: int) -> bool:
+    """Whether a regular file larger than ``limit`` starts like REXS (its first 4 KiB, read without blocking)."""
+    try:
+        info = os.stat(path)
+        if not stat.S_ISREG(info.st_mode) or info.st_size <= limit:
+            return False
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(fd, "rb") as handle:
+            return stat.S_ISREG(os.fstat(handle.fileno()).st_mode) and sniff(handle.read(4096)) is not None
+    except OSError:
+        return False  # the full read reports it
+
+
+def read_bytes(path: str | Path, max_bytes: int | None = None, rexs_bytes: int | None = None) -> bytes:
+    """The bytes of the input file ``path``, checked (steps 1–2 of the module docstring).
+
+    Parameters
+    ----------
+    path : str or Path
+        A regular file.
+    max_bytes : int, optional
+        Size limit in bytes; default :func:`epicyclic.limits.max_file_bytes`.
+    rexs_bytes : int, optional
+        A larger limit for a REXS file (:func:`sniff` of its first 4 KiB): REXS models are larger than
+        train files (:func:`epicyclic.limits.max_rexs_bytes`).
+
+    Raises
+    ------
+    InputFileError
+        Missing, unreadable, not a regular file, too large.
+    """
     limit = max_file_bytes() if max_bytes is None else max_bytes
+    if rexs_bytes is not None and rexs_bytes > limit and _head_is_rexs(path, limit):
+        limit = rexs_bytes
     name = str(path)
 
     def error(message: str) -> InputFileError:
@@ -108,7 +174,7 @@ def read_source(path: str | Path, max_bytes: int | None = None) -> str:
         raise error(f"cannot read the file ({exc.strerror or exc}).") from None
     if len(data) > limit:  # a file that grew, or one whose size stat() does not know
         raise error(f"the file is larger than {_size(limit)}, the most that is read (see docs/limits.md).")
-    return decode_source(data, name)
+    return data
 
 
 def decode_source(data: bytes, name: str, max_bytes: int | None = None) -> str:
@@ -238,6 +304,26 @@ def _check_values(data: Any, source: str) -> None:
                 stack.append((item, where, depth + 1))
 
 
+def check_document(data: Any, source: str) -> None:
+    """Check a parsed document (TOML, or a REXS file mapped onto the same structure) within the limits:
+    nesting at most :data:`~epicyclic.limits.MAX_NESTING`, strings and keys at most
+    :data:`~epicyclic.limits.MAX_STRING_CHARS` characters.
+
+    Parameters
+    ----------
+    data : Any
+        The document (tables, arrays, values).
+    source : str
+        The file, the start of every message.
+
+    Raises
+    ------
+    InputFileError
+        Nested too deeply, a string or key too long.
+    """
+    _check_values(data, source)
+
+
 def parse_toml(text: str, source: str = "<string>") -> dict[str, Any]:
     """Parse ``text`` as TOML after the nesting check (steps 4–5 of the module docstring).
 
@@ -250,8 +336,7 @@ def parse_toml(text: str, source: str = "<string>") -> dict[str, Any]:
     if len(text) > limit:
         raise InputFileError(f"{source}: the text is {len(text):,} characters; at most {_size(limit)} are read "
                           "(see docs/limits.md).", source)
-    if text.startswith("\ufeff"):
-        text = text[1:]
+    text = text.removeprefix("\ufeff")
     _check_nesting(text, source)
     try:
         data = tomllib.loads(text)

@@ -46,8 +46,8 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
-from ..errors import EpicyclicError, ModelError
-from ..limits import MAX_ELEMENTS, MAX_GEARS, MAX_MESHES, MAX_SHAFTS, MAX_TITLE_CHARS, check_count
+from ..errors import EpicyclicError
+from ..limits import MAX_ELEMENTS, MAX_GEARS, MAX_MESHES, MAX_SHAFTS, MAX_TITLE_CHARS, check_count, max_file_bytes
 from ..model import HOUSING, Brake, Clutch, GearStage, GearTrain, OperatingPoint, PlanetarySet
 from ..model.planetary import check_planets
 from ..text import short, terminal_text
@@ -55,9 +55,10 @@ from ..units import Units, to_core
 from .located import locate_error, operating_point_where
 from .overrides import OverrideError, apply_overrides
 from .reader import TableReader, at_key, kind_of
-from .source import InputFileError, parse_toml, read_source
+from .schedule import Transmission
+from .source import InputFileError, check_document, decode_source, parse_toml, read_bytes, sniff
 
-__all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
+__all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file", "read_document"]
 
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
              "operating_point", "transmission", "lubricant", "rating", "duty_cycle"}
@@ -74,59 +75,6 @@ _BRAKE_KEYS = {"name", "shaft", "engaged"}
 _UNIT_KEYS = {"speed", "torque", "power"}
 _OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
 _TRANSMISSION_KEYS = {"input", "output", "schedule"}
-
-
-@dataclass(frozen=True)
-class Transmission:
-    """A multi-speed transmission: input and output shaft and the shift schedule.
-
-    Parameters
-    ----------
-    input, output : str
-        The input and output shafts.
-    schedule : mapping gear name → tuple of str
-        For each gear, the clutches and brakes engaged in it (all others open).
-    """
-
-    input: str
-    output: str
-    schedule: Mapping[str, tuple[str, ...]]
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "schedule", MappingProxyType({k: tuple(v) for k, v in self.schedule.items()}))
-
-    @property
-    def gears(self) -> tuple[str, ...]:
-        """Gear names in the file's order."""
-        return tuple(self.schedule)
-
-    def train_in_gear(self, train: GearTrain, gear: str) -> GearTrain:
-        """``train`` with exactly the shift elements of ``gear`` engaged.
-
-        Parameters
-        ----------
-        train : GearTrain
-            The file's train (its clutches and brakes in any state).
-        gear : str
-            A gear of the schedule (``"1"``, ``"R"``, ...).
-
-        Returns
-        -------
-        GearTrain
-            A copy whose clutches and brakes named by ``schedule[gear]`` are engaged, all
-            others open.
-
-        Raises
-        ------
-        ModelError
-            ``gear`` is not in the schedule; the message lists the gears.
-        """
-        if gear not in self.schedule:
-            raise ModelError(
-                f"transmission: no gear {short(gear)} in the schedule; gears are "
-                f"{', '.join(repr(g) for g in self.schedule) or 'none'}."
-            )
-        return train.with_engaged(self.schedule[gear])
 
 
 @dataclass(frozen=True)
@@ -159,6 +107,9 @@ class TrainFile:
         The sets' ``bearings`` tables (ISO 281 rating inputs; ``docs/file-format.md``).
     duty_cycle : DutyCycle or None
         The ``[duty_cycle]`` table.
+    exchange : RexsDocument or None
+        For a REXS file: what the file held beyond the train (its load cases, the summary of what was
+        ignored, which REXS component each element came from; :mod:`epicyclic.exchange`).
     """
 
     source: str
@@ -174,6 +125,7 @@ class TrainFile:
     rating: Any = None
     bearings: Mapping[str, Any] = field(default_factory=dict)
     duty_cycle: Any = None
+    exchange: Any = None
 
     @property
     def operating_train(self) -> GearTrain:
@@ -181,6 +133,12 @@ class TrainFile:
         if self.gear is not None and self.transmission is not None:
             return self.transmission.train_in_gear(self.train, self.gear)
         return self.train
+
+    @property
+    def load_cases(self) -> tuple:
+        """The operating points of a REXS file's load spectrum (:class:`~epicyclic.exchange.RexsLoadCase`),
+        the first of which is :attr:`operating_point`; ``()`` for a TOML file."""
+        return tuple(self.exchange.load_cases) if self.exchange is not None else ()
 
     def solve(self, *, lossless: bool = False):
         """Solve the operating train at the file's operating point.
@@ -193,9 +151,12 @@ class TrainFile:
         from ..solver import solve
 
         if self.operating_point is None:
+            fix = ("add speeds, torques or powers, drives and loads." if self.exchange is None else
+                   "no shaft has defines_speed = true with a rotational_speed and no external_load defines a "
+                   "torque or power (in the components or a load_case).")
             raise InputFileError(
                 f"{self.source}: [operating_point]: the file has no [operating_point] table, so there is nothing "
-                "to solve; add speeds, torques or powers, drives and loads.", self.source, "[operating_point]",
+                f"to solve; {fix}", self.source, "[operating_point]",
             )
         try:
             if self.losses and not lossless:  # losses from the geometry (docs/losses.md)
@@ -204,7 +165,14 @@ class TrainFile:
                 return solve_with_losses(self.operating_train, self.operating_point, self.losses)
             return solve(self.operating_train, self.operating_point, lossless=lossless)
         except EpicyclicError as exc:
-            raise locate_error(exc, self.source, self.operating_point, "[operating_point]") from None
+            located_error = locate_error(exc, self.source, self.operating_point, "[operating_point]")
+            if self.exchange is not None:  # name the REXS components behind the shafts the message names
+                origins = [f"{name!r} is {origin}" for key, origin in self.exchange.origins.items()
+                           for name in [key.partition(".")[2]] if key.startswith("shaft.") and repr(name) in
+                           str(located_error)]
+                if origins:
+                    located_error.args = (f"{located_error} (REXS: {'; '.join(origins[:4])})",)
+            raise located_error from None
 
 
 # ---------------------------------------------------------------------- public functions
@@ -235,7 +203,42 @@ def load_train_file(path: str | Path, *, max_bytes: int | None = None, overrides
         Model errors (tooth counts, efficiencies, shafts), prefixed with the
         file and the element.
     """
-    return loads_train_file(read_source(path, max_bytes), source=str(path), overrides=overrides)
+    from ..limits import max_rexs_bytes
+
+    limit = max_file_bytes() if max_bytes is None else max_bytes
+    data = read_bytes(path, limit, rexs_bytes=max(max_rexs_bytes(), limit))
+    if sniff(data) is not None:  # REXS, by content: zip signature, '<' or '{' first
+        from ..exchange.reading import loads_rexs_document
+
+        return read_document(loads_rexs_document(data, str(path)), overrides)
+    return loads_train_file(decode_source(data, str(path), limit), source=str(path), overrides=overrides)
+
+
+def read_document(document, overrides: Sequence[str] = ()) -> TrainFile:
+    """The train file of a mapped REXS document (:class:`~epicyclic.exchange.RexsDocument`).
+
+    Parameters
+    ----------
+    document : RexsDocument
+        Its ``data`` is read as a parsed TOML train file is, within the same limits.
+    overrides : sequence of str, default ()
+        ``KEY=VALUE`` overrides applied to the document before it is read.
+
+    Returns
+    -------
+    TrainFile
+        With :attr:`TrainFile.exchange` set to ``document``.
+    """
+    from dataclasses import replace
+
+    data = document.data
+    check_document(data, document.source)
+    if overrides:
+        try:
+            data = apply_overrides(data, overrides)
+        except OverrideError as exc:
+            raise OverrideError(f"{document.source}: {exc}") from None
+    return replace(_Reader(document.source).read(data), exchange=document)
 
 
 def loads_train_file(text: str, source: str = "<string>", overrides: Sequence[str] = ()) -> TrainFile:

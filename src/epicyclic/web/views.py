@@ -212,9 +212,18 @@ def _form(train_file: TrainFile, text: str) -> dict[str, Any]:
 
 @_guard
 def open_file(data: bytes, source: str, units: str = "file", lang: str = "en") -> Reply:
-    """:func:`open_text` of an uploaded file, read as the command line reads one (size, NUL bytes, UTF-8)."""
-    from ..io.source import decode_source
+    """:func:`open_text` of an uploaded file, read as the command line reads one (size, NUL bytes, UTF-8).
 
+    A REXS file (XML, JSON or zip, by content) opens as the commented TOML that ``epicyclic convert`` writes.
+    """
+    from ..io.source import decode_source, sniff
+
+    if sniff(data[:4096]) is not None:
+        from ..exchange.convert import toml_text
+        from ..exchange.reading import loads_rexs_document
+        from ..io.toml_format import read_document
+
+        return open_text(toml_text(read_document(loads_rexs_document(data, source))), source, units, lang)
     return open_text(decode_source(data, source), source, units, lang)
 
 
