@@ -162,6 +162,20 @@ class ChurningGear:
                 * self.coefficient(speed, kinematic_viscosity)) + 0.0
 
     def loss(self, speed, kinematic_viscosity, density):
-        """Power lost, W: T |ω| (arguments as :meth:`torque`)."""
+        """Power lost, W: T |ω|.
+
+        Parameters
+        ----------
+        speed : float or array_like
+            1/min.
+        kinematic_viscosity : float or array_like
+            ν, mm²/s.
+        density : float or array_like
+            ρ, kg/m³.
+
+        Returns
+        -------
+        ndarray
+        """
         return self.torque(speed, kinematic_viscosity, density) * np.abs(np.asarray(speed, dtype=float)) \
             * RPM_TO_RAD_S

@@ -227,7 +227,21 @@ class ClutchDrag:
         return self.gaps * self.groove_factor * np.pi * eta * omega * (r_e ** 4 - r_i ** 4) / (2.0 * h) + 0.0
 
     def loss(self, slip, viscosity, density):
-        """Power lost, W: T |ω_slip| ≥ 0 (arguments as :meth:`torque`)."""
+        """Power lost, W: T |ω_slip| ≥ 0.
+
+        Parameters
+        ----------
+        slip : float or array_like
+            1/min.
+        viscosity : float or array_like
+            η, mPa·s.
+        density : float or array_like
+            ρ, kg/m³.
+
+        Returns
+        -------
+        ndarray
+        """
         return self.torque(slip, viscosity, density) * np.abs(np.asarray(slip, dtype=float)) * RPM_TO_RAD_S
 
     def peak_slip(self, viscosity: float, density: float) -> float:
