@@ -43,6 +43,8 @@ REACHING_UP = {
         "EfficiencyMap.plot() draws itself",
     ("epicyclic.losses.efficiency_map", "epicyclic.plotting._common"):
         "EfficiencyMap._repr_html_ and .save() render its figure",
+    ("epicyclic.losses.breakdown", "epicyclic.plotting.loss_bars"):
+        "LossBreakdown.plot() draws itself (stacked bars by source)",
 }
 
 

@@ -86,11 +86,11 @@ def _models(train: GearTrain, losses: Mapping[str, ElementLosses]) -> dict[str, 
     return out
 
 
-def _state(models, speeds, port_torques):
-    """Factors and drag torques of every model at the given element states."""
+def _state(models, speeds, port_torques, viscosity=None):
+    """Factors and drag torques of every model at the given element states (η_oil per point, if given)."""
     efficiencies, torques = {}, {}
     for name, model in models.items():
-        state = model.evaluate(speeds(model), port_torques(model))
+        state = model.evaluate(speeds(model), port_torques(model), viscosity)
         efficiencies[name] = dict(state.factors)
         torques[name] = dict(state.torques)
     return efficiencies, torques
@@ -107,6 +107,11 @@ def _merged(loss_torques, spin: SpinState | None):
         merged.update({source: dict(shafts) for source, shafts in by_source.items()})
         out[host] = merged
     return out
+
+
+def _viscosity(spin: SpinState | None):
+    """η_oil (mPa·s) at the spin state's oil temperature, for Schlenk's friction; None without an oil."""
+    return None if spin is None or spin.viscosity is None else spin.viscosity
 
 
 def _checked_spin(spin, train: GearTrain, input: str | None) -> SpinLosses | None:
@@ -226,7 +231,7 @@ def _solve_point(train, operating_point, models, tolerance, max_iterations, spin
 
     previous = None
     for _ in range(max_iterations):
-        efficiencies, loss_torques = _state(models, speeds, torques)
+        efficiencies, loss_torques = _state(models, speeds, torques, _viscosity(spin_state))
         state = solve(train, operating_point, efficiencies=efficiencies,
                       loss_torques=_merged(loss_torques, spin_state))
         if _change(previous, efficiencies) <= tolerance:
@@ -329,7 +334,7 @@ def _solve_batch(train, models, common, tolerance, max_iterations, spin_state=No
 
     previous = None
     for _ in range(max_iterations):
-        efficiencies, loss_torques = _state(models, element_speeds, element_torques)
+        efficiencies, loss_torques = _state(models, element_speeds, element_torques, _viscosity(spin_state))
         state = solve_batch(train, efficiencies=efficiencies, loss_torques=_merged(loss_torques, spin_state),
                             **common)
         if _change(previous, efficiencies) <= tolerance:

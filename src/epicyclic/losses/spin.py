@@ -40,10 +40,12 @@ from .seals import ShaftSeal
 from .thermal import Housing
 from .windage import WindageGear
 
-__all__ = ["SpinLosses", "SpinState", "SPIN_SOURCES"]
+__all__ = ["SpinLosses", "SpinState", "SPIN_SOURCES", "ALL_SOURCES"]
 
 #: Names of the spin-loss sources, in report order.
 SPIN_SOURCES = ("clutch_drag", "pump", "churning", "windage", "seals")
+#: Every loss source, load-dependent first, in report order.
+ALL_SOURCES = ("mesh", "bearing", "drag", *SPIN_SOURCES)
 
 
 @dataclass(frozen=True, eq=False)
@@ -59,11 +61,15 @@ class SpinState:
         Power lost, W (≥ 0).
     temperature : ndarray
         Oil temperature at each point, °C.
+    viscosity : ndarray or None
+        The oil's dynamic viscosity there, mPa·s (None without an oil): every viscosity-dependent
+        loss, Schlenk's mesh friction included, is evaluated with it.
     """
 
     torques: Mapping[str, Mapping[str, Mapping[str, np.ndarray]]]
     losses: Mapping[tuple[str, str], np.ndarray]
     temperature: np.ndarray
+    viscosity: np.ndarray | None = None
 
     @property
     def total(self) -> np.ndarray:
@@ -152,8 +158,9 @@ class SpinLosses:
     # ---------------------------------------------------------------- facts
     @property
     def is_empty(self) -> bool:
-        """No model at all (the train's losses are those of its elements)."""
-        return not (self.clutch_drag or self.pump or self.churning or self.windage or self.seals)
+        """No model and no oil (the train's losses are those of its elements, bit for bit)."""
+        return self.oil is None and not (self.clutch_drag or self.pump or self.churning or self.windage
+                                         or self.seals)
 
     @property
     def thermal(self) -> bool:
@@ -280,7 +287,7 @@ class SpinLosses:
             put(HOUSING, "seals", seal.shaft, HOUSING, np.full(shape, seal.torque()), n)
         frozen = MappingProxyType({h: MappingProxyType({s: MappingProxyType(t) for s, t in by.items()})
                                    for h, by in torques.items()})
-        return SpinState(frozen, MappingProxyType(losses), np.array(temp))
+        return SpinState(frozen, MappingProxyType(losses), np.array(temp), None if eta is None else np.array(eta))
 
     def describe(self) -> dict[str, Any]:
         """Plain data for reports: the oil, its temperature and every model's parameters."""
