@@ -187,7 +187,7 @@ def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses:
         return _solve_point(train, operating_point, models, tolerance, max_iterations)
     base = solve(train, operating_point, lossless=True)
     speeds = {s: np.asarray(base.shafts[s].speed) for s in train.shafts if s != HOUSING}
-    temperature = np.asarray(spin.temperature if spin.temperature is not None else spin.housing.ambient + 60.0)
+    temperature = np.asarray(_start_temperature(spin))
     for _ in range(MAX_THERMAL_ITERATIONS):
         spin_state = spin.evaluate(speeds, temperature, train=train, gear=gear, input=input)
         state = _solve_point(train, operating_point, models, tolerance, max_iterations, spin_state)
@@ -203,6 +203,13 @@ def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses:
     else:
         raise _no_thermal_fixed_point()
     return state.replace(oil_temperature=float(temperature))
+
+
+def _start_temperature(spin: SpinLosses) -> float:
+    """The given oil temperature, or the first guess of the thermal balance (60 K above the air)."""
+    if spin.temperature is not None:
+        return spin.temperature
+    return spin.housing.ambient + 60.0 if spin.housing is not None else 80.0
 
 
 def _no_thermal_fixed_point() -> LossModelError:
@@ -299,7 +306,7 @@ def solve_batch_with_losses(train: GearTrain, losses: Mapping[str, ElementLosses
     base = solve_batch(train, **common)  # the speeds: kinematics, which no loss changes
     shaft_speeds = {s: base.speeds[s] for s in train.shafts if s != HOUSING}
     shape = base.shape
-    temperature = np.full(shape, spin.temperature if spin.temperature is not None else spin.housing.ambient + 60.0)
+    temperature = np.full(shape, _start_temperature(spin))
     for _ in range(MAX_THERMAL_ITERATIONS):
         spin_state = spin.evaluate(shaft_speeds, temperature, train=train, gear=gear, input=input)
         state = _solve_batch(train, models, common, tolerance, max_iterations, spin_state)
