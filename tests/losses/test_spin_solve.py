@@ -231,3 +231,12 @@ def test_gears_and_breakdown_report_the_losses_by_source():
     assert "<table>" in bars._repr_html_()
     plain = Transmission.from_file(ROOT / "examples" / "zf_8hp70_8speed.toml").analyze_all()
     assert "losses by source" not in plain.table()  # typed-in η0: every loss is mesh loss, nothing to split
+
+
+def test_viscosity_table_in_the_file():
+    text = "[lubricant]\nviscosity_table = [[0.0, 580.0], [40.0, 46.0], [100.0, 6.8]]\ntemperature = 70.0\n" \
+        + HEAD.format(drag="")
+    f = loads_train_file(text)
+    assert f.spin.oil.kinematic_viscosity(40.0) == pytest.approx(46.0, rel=0.005)
+    with pytest.raises((InputFileError, LossModelError), match="viscosity_table"):
+        loads_train_file("[lubricant]\nviscosity_table = [40.0, 46.0]\ntemperature = 70.0\n" + HEAD.format(drag=""))
