@@ -105,6 +105,8 @@ class SpinLosses:
     churning : tuple of ChurningGear
     windage : tuple of WindageGear
     seals : tuple of ShaftSeal
+    defaults : tuple of str
+        The defaults the models' inputs took (stated by the file reader, shown by ``explain``).
 
     Examples
     --------
@@ -122,6 +124,7 @@ class SpinLosses:
     churning: tuple[ChurningGear, ...] = ()
     windage: tuple[WindageGear, ...] = ()
     seals: tuple[ShaftSeal, ...] = ()
+    defaults: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         owner = "spin losses"
@@ -304,4 +307,5 @@ class SpinLosses:
             "churning": [plain(g) for g in self.churning],
             "windage": [plain(g) for g in self.windage],
             "seals": [plain(s) for s in self.seals],
+            "defaults": list(self.defaults),
         }
