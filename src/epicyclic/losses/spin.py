@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from ..limits import OIL_TEMPERATURE_RANGE
 from ..model.elements import HOUSING, Brake, Clutch
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
@@ -143,9 +144,10 @@ class SpinLosses:
             raise LossModelError(f"{owner}: pump must be an OilPump, got {self.pump!r}.")
         if self.temperature is not None:
             t = self.temperature
-            if isinstance(t, bool) or not isinstance(t, (int, float)) or not -40.0 <= t <= 200.0:
-                raise LossModelError(f"{owner}: temperature must be an oil temperature in -40 ... 200 degC, "
-                                     f"got {t!r}.")
+            low, high = OIL_TEMPERATURE_RANGE
+            if isinstance(t, bool) or not isinstance(t, (int, float)) or not low <= t <= high:
+                raise LossModelError(f"{owner}: temperature must be an oil temperature in {low:g} ... {high:g} degC "
+                                     f"(see docs/limits.md), got {t!r}.")
             object.__setattr__(self, "temperature", float(t))
         if (self.clutch_drag or self.churning) and self.oil is None:
             raise LossModelError(f"{owner}: clutch drag and churning need the oil: give viscosity_40 and "
