@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from .io.tables import fmt
-from .model import Brake, Clutch
+from .model import Clutch
 from .model.elements import HOUSING
 
 __all__ = ["loss_step", "LOSS_TEXT", "model_efficiency"]

@@ -201,21 +201,6 @@ class ClutchDrag:
         edge[film] = np.minimum(self.inner_radius * np.exp(0.5 * u), self.outer_radius)
         full[short] = edge
         return full
-        per_gap = self.supply / self.gaps
-        need = self.film_flow(slip, viscosity, density)
-        short = need > per_gap
-        if not np.any(short):
-            return full
-        low = np.full(short.sum(), self.inner_radius)
-        high = np.full(short.sum(), self.outer_radius)
-        args = slip[short], viscosity[short], density[short]
-        for _ in range(BISECTIONS):
-            middle = 0.5 * (low + high)
-            too_much = self.film_flow(*args, film_radius=middle) > per_gap
-            high = np.where(too_much, middle, high)
-            low = np.where(too_much, low, middle)
-        full[short] = 0.5 * (low + high)
-        return full
 
     def torque(self, slip, viscosity, density):
         """Drag torque magnitude, N·m, at slip speed ``slip`` (1/min) and the oil's η (mPa·s), ρ (kg/m³).
