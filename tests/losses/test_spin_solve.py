@@ -253,3 +253,17 @@ def test_defaults_are_stated_and_can_be_refused():
         loads_train_file('defaults = "refuse"\n' + spin_tables + HEAD.format(drag=""))
     with pytest.raises(InputFileError, match="key 'defaults'"):
         loads_train_file('defaults = "maybe"\n' + spin_tables + HEAD.format(drag=""))
+
+
+def test_explain_states_the_heat_balance_of_a_thermal_file():
+    from epicyclic.explain import explain
+
+    text = EXAMPLE.read_text(encoding="utf-8").replace("temperature = 80.0", 'temperature = "thermal"')
+    text += "\n[housing]\narea = 1.0\ncooler = 150.0\n"
+    f = loads_train_file(text)
+    solution = f.solve()
+    assert 20.0 < solution.oil_temperature < 200.0
+    lines = explain(solution, f.units, losses=f.losses, spin=f.spin, gear=f.gear, input="in").text()
+    assert "heat balance (ISO/TR 14179-1)" in lines
+    shed = float(f.spin.housing.dissipated(solution.oil_temperature))
+    assert shed == pytest.approx(solution.loss, rel=1e-6)
