@@ -159,12 +159,17 @@ schedule = {{ "1" = ["H"] }}
 
 @pytest.mark.parametrize("extra, drag, match", [
     ("[lubricant]\nviscosity_40 = 30.0\ntemperature = 80.0", "", "give both 'viscosity_40' and 'viscosity_100'"),
-    ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0", "", "missing key 'temperature'"),
+    ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0",
+     "[brake.drag]\ngaps = 8\ninner_radius = 70.0\nouter_radius = 88.0\nclearance = 0.15",
+     "need the oil at its temperature"),
+    ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0\nviscosity = 10.0\ntemperature = 80.0", "",
+     "'viscosity' and 'temperature' both"),
     ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0\ntemperature = \"hot\"", "", "key 'temperature'"),
     ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0\ntemperature = \"thermal\"", "",
      "needs a \\[housing\\] table"),
     ("", "[brake.drag]\ngaps = 8\ninner_radius = 70.0\nouter_radius = 88.0\nclearance = 0.15",
      "clutch drag and churning need the oil"),
+    ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0\ndensity = 850.0", "", "add 'temperature'"),
     ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0\ntemperature = 80.0",
      "[brake.drag]\ngaps = 8\ninner_radius = 70.0\nouter_radius = 88.0", "missing key 'clearance'"),
     ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0\ntemperature = 80.0",
@@ -267,3 +272,12 @@ def test_explain_states_the_heat_balance_of_a_thermal_file():
     assert "heat balance (ISO/TR 14179-1)" in lines
     shed = float(f.spin.housing.dissipated(solution.oil_temperature))
     assert shed == pytest.approx(solution.loss, rel=1e-6)
+
+
+def test_the_ratings_lubricant_table_alone_is_no_spin_model():
+    # [lubricant] with only the data sheet's viscosities (what the ISO 6336 rating reads): no oil state, no spin
+    f = loads_train_file("[lubricant]\nviscosity_40 = 220.0\nviscosity_100 = 19.0\n" + HEAD.format(drag=""))
+    assert f.spin is None
+    both = loads_train_file("[lubricant]\nviscosity = 30.0\nviscosity_40 = 220.0\nviscosity_100 = 19.0\n"
+                            + HEAD.format(drag=""))
+    assert both.spin is None

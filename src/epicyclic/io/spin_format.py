@@ -71,7 +71,8 @@ from ..losses import ChurningGear, ClutchDrag, Housing, Lubricant, Oil, OilPump,
 from ..text import short
 from .reader import at_key
 
-__all__ = ["SPIN_TOP_KEYS", "LUBRICANT_KEYS", "DRAG_KEYS", "read_lubricant", "read_spin", "has_spin"]
+__all__ = ["SPIN_TOP_KEYS", "LUBRICANT_KEYS", "DRAG_KEYS", "read_lubricant", "read_spin", "has_spin",
+           "refuses_defaults"]
 
 #: Top-level tables this module reads (besides [lubricant]).
 SPIN_TOP_KEYS = {"pump", "housing", "seal", "churning", "windage"}
@@ -86,14 +87,20 @@ _SEAL_KEYS = {"shaft", "diameter", "count", "factor"}
 
 
 def has_spin(data: Mapping[str, Any]) -> bool:
-    """Whether the file has any spin-loss table (so that this module is needed)."""
+    """Whether the file has any spin-loss table: a top-level one or a clutch's or brake's ``drag``."""
     if any(k in data for k in SPIN_TOP_KEYS):
-        return True
-    lubricant = data.get("lubricant")
-    if isinstance(lubricant, dict) and ("viscosity_40" in lubricant or "temperature" in lubricant):
         return True
     return any(isinstance(t, dict) and "drag" in t for kind in ("clutch", "brake")
                for t in (data.get(kind) if isinstance(data.get(kind), list) else []))
+
+
+def refuses_defaults(reader, data: Mapping[str, Any]) -> bool:
+    """Whether the file refuses the loss models' defaults (top-level ``defaults = "refuse"``)."""
+    value = data.get("defaults", "use")
+    if value not in ("use", "refuse"):
+        raise reader.error("top level, key 'defaults'", f"expected \"use\" (the stated defaults of the loss tables) "
+                                                        f"or \"refuse\" (every key given), got {short(value)}.")
+    return value == "refuse"
 
 
 def _default(reader, table, key: str, where: str, default, meaning: str) -> None:
@@ -162,12 +169,17 @@ def read_lubricant(reader, data: Mapping[str, Any]) -> tuple[Lubricant | None, O
             raise reader.error(where, "missing key 'viscosity' (mPa*s at the operating temperature) or "
                                       "'viscosity_40' and 'viscosity_100' (mm^2/s).")
         return Lubricant(viscosity, factor), None, None
+    if temperature is None:  # the data sheet alone (e.g. for the rating): no oil state for the spin losses
+        for key in ("density", "expansion", "specific_heat"):
+            if key in table:
+                raise reader.error(at_key(where, key), "is for the spin losses at the oil temperature: add "
+                                                       "'temperature' (degC, or \"thermal\" with [housing]).")
+        viscosity = _number(reader, table, "viscosity", where, unit="mPa*s", positive=True)
+        return (None if viscosity is None else Lubricant(viscosity, factor)), None, None
     if "viscosity" in table:
-        raise reader.error(at_key(where, "viscosity"), "the viscosity follows from 'viscosity_40' and 'viscosity_100' "
-                                                       "at the oil temperature; remove 'viscosity'.")
-    if temperature is None:
-        raise reader.error(where, "missing key 'temperature': the oil temperature in degC, or \"thermal\" for the "
-                                  "heat balance of [housing].")
+        raise reader.error(at_key(where, "viscosity"), "'viscosity' and 'temperature' both give the oil's viscosity "
+                                                       "at the operating point (the second from 'viscosity_40' and "
+                                                       "'viscosity_100'); give one.")
     data_sheet = dict(density=_number(reader, table, "density", where, 860.0, unit="kg/m^3", positive=True),
                       expansion=_number(reader, table, "expansion", where, 6.5e-4, unit="1/K", minimum=0.0),
                       specific_heat=_number(reader, table, "specific_heat", where, 2000.0, unit="J/(kg K)",
@@ -336,8 +348,9 @@ def read_spin(reader, data: Mapping[str, Any], oil: Oil | None, temperature, tra
         raise reader.error("[housing]", "the housing's heat balance is used with [lubricant] temperature = "
                                         "\"thermal\"; set that, or remove [housing].")
     if (drags or churning) and oil is None:
-        raise reader.error("[lubricant]", "clutch drag and churning need the oil: give 'viscosity_40', "
-                                          "'viscosity_100' (mm^2/s) and 'temperature' in [lubricant].")
+        raise reader.error("[lubricant]", "clutch drag and churning need the oil at its temperature: give "
+                                          "'viscosity_40', 'viscosity_100' (mm^2/s) and 'temperature' (degC or "
+                                          "\"thermal\") in [lubricant].")
     if not (drags or pump or churning or windage or seals or oil is not None):
         return None
     spin = _checked(reader, "top level", SpinLosses, oil, None if temperature == "thermal" else temperature,

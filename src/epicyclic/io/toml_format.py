@@ -342,19 +342,14 @@ class _Reader(TableReader):
                 "clutch": self.read_shift, "brake": self.read_shift}
         # geometry and loss tables are optional: their reader (and the geometry and loss packages) is
         # imported only for a file that has them, so that a plain file starts fast
-        extras = None
-        spin_wanted = any(k in data for k in _SPIN_TABLES) or any(
-            isinstance(t, dict) and "drag" in t for kind in ("clutch", "brake") for t in tables[kind])
-        if spin_wanted or "lubricant" in data or any("geometry" in t or "losses" in t for g in tables.values()
-                                                     for t in g if isinstance(t, dict)):
-            from . import geometry_format as extras
+        extras = spin = None
+        if any(k in data for k in (*_SPIN_TABLES, "lubricant", "defaults")) or any(
+                k in t for g in tables.values() for t in g if isinstance(t, dict) for k in ("geometry", "losses", "drag")):
+            from . import geometry_format as extras, spin_format as spin  # only for a file that has them
         lubricant = oil = temperature = None
-        self.refuse_defaults, self.spin_defaults = self.read_defaults(data), []
         if extras:
-            from .spin_format import read_lubricant
-
-            lubricant, oil, temperature = read_lubricant(self, data)
-            spin_wanted = spin_wanted or oil is not None
+            self.refuse_defaults, self.spin_defaults = spin.refuses_defaults(self, data), []
+            lubricant, oil, temperature = spin.read_lubricant(self, data)
         elements, geometry, losses = [], {}, {}
         for kind, group in tables.items():
             for k, table in enumerate(group):
@@ -379,21 +374,12 @@ class _Reader(TableReader):
         if "operating_point" in data:
             op, gear = self.read_operating_point(
                 self.table(data["operating_point"], "[operating_point]"), train, transmission)
-        spin = None
-        if spin_wanted:
-            from .spin_format import read_spin
-
-            spin = read_spin(self, data, oil, temperature, train, None if transmission is None else transmission.input)
+        if spin is not None and (spin.has_spin(data) or oil is not None):  # spin losses (docs/losses.md)
+            spin = spin.read_spin(self, data, oil, temperature, train, transmission and transmission.input)
+        else:
+            spin = None
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
-                         MappingProxyType(geometry), MappingProxyType(losses), spin)
-
-    def read_defaults(self, data: Mapping[str, Any]) -> bool:
-        """Whether the file refuses the loss models' defaults (top-level ``defaults = "refuse"``)."""
-        value = data.get("defaults", "use")
-        if value not in ("use", "refuse"):
-            raise self.error("top level, key 'defaults'", f"expected \"use\" (the stated defaults of the loss "
-                                                          f"tables) or \"refuse\" (every key given), got {short(value)}.")
-        return value == "refuse"
+                         MappingProxyType(geometry), MappingProxyType(losses), spin=spin)
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")
