@@ -59,11 +59,9 @@ from .source import InputFileError, parse_toml, read_source
 
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
+_SPIN_TABLES = ("pump", "housing", "seal", "churning", "windage", "defaults")  # io.spin_format reads them
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant", "pump", "housing", "seal", "churning", "windage",
-             "defaults"}
-#: Top-level tables of the spin losses (read by :mod:`epicyclic.io.spin_format`).
-_SPIN_TABLES = ("pump", "housing", "seal", "churning", "windage")
+             "operating_point", "transmission", "lubricant", *_SPIN_TABLES}
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
                    "mesh_efficiencies", "planets", "geometry", "losses"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
@@ -157,8 +155,7 @@ class TrainFile:
     losses : mapping element → ElementLosses
         The elements' ``losses`` tables (mesh friction, planet bearings, drag).
     spin : SpinLosses or None
-        The spin losses (``[lubricant]`` oil and temperature, ``drag`` of clutches and brakes,
-        ``[pump]``, ``[[churning]]``, ``[[windage]]``, ``[[seal]]``, ``[housing]``); None without them.
+        The spin losses (oil, clutch and brake ``drag``, pump, churning, windage, seals, housing) or None.
     """
 
     source: str
@@ -200,8 +197,7 @@ class TrainFile:
                 from ..losses import solve_with_losses
 
                 return solve_with_losses(self.operating_train, self.operating_point, self.losses, spin=self.spin,
-                                         gear=self.gear,
-                                         input=None if self.transmission is None else self.transmission.input)
+                                         gear=self.gear, input=getattr(self.transmission, "input", None))
             return solve(self.operating_train, self.operating_point, lossless=lossless)
         except EpicyclicError as exc:
             raise locate_error(exc, self.source, self.operating_point, "[operating_point]") from None
@@ -343,7 +339,7 @@ class _Reader(TableReader):
         # geometry and loss tables are optional: their reader (and the geometry and loss packages) is
         # imported only for a file that has them, so that a plain file starts fast
         extras = spin = None
-        if any(k in data for k in (*_SPIN_TABLES, "lubricant", "defaults")) or any(
+        if any(k in data for k in (*_SPIN_TABLES, "lubricant")) or any(
                 k in t for g in tables.values() for t in g if isinstance(t, dict) for k in ("geometry", "losses", "drag")):
             from . import geometry_format as extras, spin_format as spin  # only for a file that has them
         lubricant = oil = temperature = None
@@ -374,10 +370,8 @@ class _Reader(TableReader):
         if "operating_point" in data:
             op, gear = self.read_operating_point(
                 self.table(data["operating_point"], "[operating_point]"), train, transmission)
-        if spin is not None and (spin.has_spin(data) or oil is not None):  # spin losses (docs/losses.md)
-            spin = spin.read_spin(self, data, oil, temperature, train, transmission and transmission.input)
-        else:
-            spin = None
+        spin = spin.read_spin(self, data, oil, temperature, train, transmission and transmission.input) if (
+            spin is not None and (spin.has_spin(data) or oil is not None)) else None  # spin losses, docs/losses.md
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
                          MappingProxyType(geometry), MappingProxyType(losses), spin=spin)
 
