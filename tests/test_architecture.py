@@ -30,7 +30,7 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results
     {"analysis", "losses", "rating", "transmission", "demo"},  # built on the solver: modes, losses, rating, gears
-    {"explain", "io", "plotting", "synthesis", "exchange"},  # files (REXS exchange too), reports, pictures
+    {"explain", "explain_losses", "io", "plotting", "synthesis", "exchange"},  # files (REXS too), reports, pictures
     {"cli", "web", "notebook"},                       # the front ends (notebook: Jupyter previews)
     {"__main__"},
 ))
@@ -45,6 +45,8 @@ REACHING_UP = {
         "EfficiencyMap.plot() draws itself",
     ("epicyclic.losses.efficiency_map", "epicyclic.plotting._common"):
         "EfficiencyMap._repr_html_ and .save() render its figure",
+    ("epicyclic.losses.breakdown", "epicyclic.plotting.loss_bars"):
+        "LossBreakdown.plot() draws itself (stacked bars by source)",
 }
 
 

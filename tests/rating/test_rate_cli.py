@@ -65,8 +65,11 @@ def test_bad_input_exit_2():
 def test_all_gears_of_a_transmission(tmp_path):
     source = (EXAMPLES / "zf_8hp70_geometry.toml").read_text()
     path = tmp_path / "8hp.toml"
-    path.write_text(source.replace("[lubricant]\n", "[lubricant]\nviscosity_40 = 35.0\n") + (
-        "\n[rating]\nmaterial = \"18CrNiMo7-6\"\nflank_roughness = 3.0\nroot_roughness = 10.0\n"))
+    # the file's [lubricant] gives the viscosity at the operating temperature (Schlenk's friction); the
+    # rating's data-sheet ν40 goes into [rating.lubricant] (one oil description per table, docs/file-format.md)
+    path.write_text(source + (
+        "\n[rating]\nmaterial = \"18CrNiMo7-6\"\nflank_roughness = 3.0\nroot_roughness = 10.0\n"
+        "lubricant = { viscosity_40 = 35.0 }\n"))
     result = runner.invoke(app, ["rate", str(path), "--gear", "all", "-f", "json"])
     assert result.exit_code == 0, result.output
     ratings = json.loads(result.stdout)["ratings"]

@@ -52,7 +52,7 @@ def analyze(
     elif format is OutputFormat.html:
         text = html_report(solution, units, title=title, source=source, description=train_file.description,
                            lang=lang, sections=sections.html() + (_report().html_section(rating) if rating else ""),
-                           geometry=train_file.geometry)
+                           geometry=train_file.geometry, losses=train_file.losses, spin=train_file.spin)
     else:
         text = text_report(solution, units, title=title) + sections.text() + (
             "\n\n" + _report().text_report(rating, details=False) if rating is not None else "")

@@ -26,7 +26,11 @@ from typing import Any
 from ..limits import MAX_STRING_CHARS
 from .rexs_model import Component, RexsModel
 
-__all__ = ["CUSTOM_ELEMENT", "CUSTOM_DOCUMENT", "custom"]
+__all__ = ["CUSTOM_ELEMENT", "CUSTOM_DOCUMENT", "SPIN_TABLES", "custom"]
+
+#: The train file's spin-loss tables (pump, housing, seals, churning, windage; docs/losses.md): REXS has no
+#: attribute for them, so they travel in the document's custom attribute.
+SPIN_TABLES = ("pump", "housing", "seal", "churning", "windage", "defaults")
 
 #: Custom attribute (a JSON string) with an element's keys that REXS has no attribute for.
 CUSTOM_ELEMENT = "custom_epicyclic_element"

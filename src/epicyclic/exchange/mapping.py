@@ -43,7 +43,7 @@ from typing import Any
 
 from ..model import HOUSING
 from .chains import chains
-from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, custom as _custom
+from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES, custom as _custom
 from .gears import GearData, gear_data, gear_links
 from .operating import OperatingMapper, RexsLoadCase
 from .rating_map import rating_table
@@ -252,7 +252,7 @@ class _Mapper:
         lubricant = self.operating.lubricant(extras.pop("lubricant", None))
         if lubricant is not None:
             data["lubricant"] = lubricant
-        for key in ("description", "units", "shafts", "rating", "duty_cycle"):
+        for key in ("description", "units", "shafts", "rating", "duty_cycle", *SPIN_TABLES):
             if key in extras:
                 data[key] = extras.pop(key)
         if "rating" not in data and not gears:  # fixed-axis stages: their gears are not named for [rating]
@@ -474,12 +474,13 @@ class _Mapper:
                 continue
             extras = _custom(model, joint, CUSTOM_ELEMENT)
             name = element_name(Component(joint.id, joint.type, extras.pop("name", joint.name)), self.element_names)
+            drag = {"drag": extras["drag"]} if "drag" in extras else {}  # written by epicyclic (spin losses)
             if HOUSING in (a, b):
-                table = {"name": name, "shaft": b if a == HOUSING else a}
+                table = {"name": name, "shaft": b if a == HOUSING else a, **drag}
                 brakes.append((table, engaged))
                 self.origins[seen.setdefault(key, f"brake.{name}")] = self.label(joint)
             else:
-                table = {"name": name, "first": a, "second": b}
+                table = {"name": name, "first": a, "second": b, **drag}
                 clutches.append((table, engaged))
                 self.origins[seen.setdefault(key, f"clutch.{name}")] = self.label(joint)
         return clutches, brakes

@@ -112,8 +112,11 @@ def document_toml(data: Mapping[str, Any], origins: Mapping[str, str] | None = N
             doc[key] = table
     written = {"title", "description", "shafts", "units", "lubricant", "planetary", "gear", "clutch", "brake",
                "transmission", "operating_point"}
-    for key in [k for k in data if k not in written]:  # [rating], [duty_cycle], ...
+    for key in [k for k in data if k not in written]:  # [rating], [duty_cycle], [pump], [[seal]], ...
         doc.add(tomlkit.nl())
+        if not isinstance(data[key], Mapping):  # an array of tables ([[seal]], [[churning]]) or a value
+            doc[key] = _value(data[key])
+            continue
         table = tomlkit.table()
         for k, v in data[key].items():
             table[k] = _value(v, not isinstance(v, (Mapping, list)) or isinstance(v, list) and not all(

@@ -28,7 +28,7 @@ from typing import Any
 
 from ..io.expressions import evaluate
 from ..model import HOUSING
-from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT
+from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES
 from .serialize import RexsBuilder
 
 __all__ = ["build_rexs"]
@@ -140,7 +140,7 @@ class _Writer:
         gears = list(transmission.schedule) if transmission else []
         index = gears.index(self.file.gear) + 1 if transmission and self.file.gear in gears else 1
         extras = {k: doc[k] for k in ("title", "description", "units", "shafts", "lubricant", "rating",
-                                      "duty_cycle") if k in doc}
+                                      "duty_cycle", *SPIN_TABLES) if k in doc}
         if transmission:
             extras["gears"] = gears
             extras["transmission"] = {"input": transmission.input, "output": transmission.output}
@@ -306,7 +306,10 @@ class _Writer:
     def shift(self, kind: str, t: Mapping[str, Any], gears: list[str]) -> None:
         schedule = self.file.transmission.schedule if self.file.transmission else {}
         engaged = [t["name"] in schedule[gear] for gear in gears] or [bool(t.get("engaged", True))]
-        joint = self.b.component("switchable_coupling", t["name"], [("is_engaged", "boolean_array", engaged, "none")])
+        attributes = [("is_engaged", "boolean_array", engaged, "none")]
+        if "drag" in t:  # an open wet clutch's drag model (docs/losses.md): epicyclic's data, REXS has none
+            attributes.append((CUSTOM_ELEMENT, "string", _json({"name": t["name"], "drag": t["drag"]}), "none"))
+        joint = self.b.component("switchable_coupling", t["name"], attributes)
         self.b.relation("assembly", [(self.unit, "assembly"), (joint, "part")])
         inner = self.shaft(t["shaft"] if kind == "brake" else t["first"])
         outer = self.casing if kind == "brake" else self.shaft(t["second"])

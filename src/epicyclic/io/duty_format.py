@@ -55,6 +55,7 @@ from ..units import to_core
 from .reader import at_key
 
 __all__ = [
+    "read_design_tables",
     "BEARING_KEYS",
     "BEARING_POSITIONS",
     "CASE_KEYS",
@@ -292,3 +293,48 @@ def analyse_file_duty_cycle(train_file):
             raise located(exc, train_file.source, f"[[duty_cycle.case]] #{k + 1} {short(name, 40)}",
                           f"duty cycle, case {name!r}") from None
         raise locate_error(exc, train_file.source, None, "[duty_cycle]") from None
+
+
+def read_design_tables(reader, data: Mapping[str, Any], planetary: list, geometry: Mapping[str, Any], train,
+                       transmission, operating_point) -> tuple[Any, dict, DutyCycle | None]:
+    """The design-check tables of a file: ``[rating]``, the sets' ``bearings`` and ``[duty_cycle]``.
+
+    Parameters
+    ----------
+    reader : TableReader
+        The file's reader (errors name the file and key).
+    data : mapping
+        The whole document.
+    planetary : list of mapping
+        The ``[[planetary]]`` tables.
+    geometry : mapping element → geometry
+        The sets' geometry (the bearing loads come from the tooth forces).
+    train, transmission, operating_point
+        As read from the file.
+
+    Returns
+    -------
+    tuple
+        (RatingSpec or None, element → read-only mapping position → BearingRating, DutyCycle or None).
+    """
+    from types import MappingProxyType
+
+    rating = None
+    if "rating" in data:
+        from .rating_format import read_rating
+
+        lubricant_table = data.get("lubricant") if isinstance(data.get("lubricant"), dict) else None
+        rating = read_rating(reader, data["rating"], lubricant_table)
+    bearings: dict[str, Any] = {}
+    for k, table in enumerate(planetary):
+        if isinstance(table, dict) and "bearings" in table:
+            where = reader.element_where("planetary", k, table)
+            if table["name"] not in geometry:
+                raise reader.error(at_key(where, "bearings"), "the bearing loads come from the tooth forces: "
+                                                              "add a 'geometry' table (module, ...).")
+            bearings[table["name"]] = MappingProxyType(read_bearings(reader, table["bearings"], where,
+                                                                     table.get("losses")))
+    duty = None
+    if "duty_cycle" in data:
+        duty = read_duty_cycle(reader, data["duty_cycle"], train, transmission, operating_point, reader.units)
+    return rating, bearings, duty

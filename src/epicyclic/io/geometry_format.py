@@ -61,7 +61,8 @@ GEOMETRY_KEYS = {"module", "pressure_angle", "helix_angle", "addendum", "dedendu
                  "center_distance_tolerance", "center_distance", "thickness_allowance"}
 _STAGE_GEOMETRY_KEYS = (GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing", "center_distance_tolerance",
                                          "thickness_allowance"}) | {"idlers"}
-LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100"}  # _40/_100: mm²/s (rating)
+LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100", "density", "temperature",
+                  "expansion", "specific_heat"}  # _40/_100: mm²/s (spin losses and rating)
 
 
 def _positive(reader, value: object, key: str, where: str, unit: str) -> float:
@@ -82,17 +83,10 @@ def module_ratio(reader, table: Mapping[str, Any], where: str) -> float:
 
 
 def read_lubricant(reader, data: Mapping[str, Any]) -> Lubricant | None:
-    """The top-level ``[lubricant]`` table, or None."""
-    if "lubricant" not in data:
-        return None
-    where = "[lubricant]"
-    table = reader.table(data["lubricant"], where)
-    reader.check_keys(table, LUBRICANT_KEYS, where)
-    if "viscosity" not in table and ("viscosity_40" in table or "viscosity_100" in table):
-        return None  # only the rating's kinematic viscosities (read by io.rating_format)
-    viscosity = _positive(reader, reader.require(table, "viscosity", where), "viscosity", where, "mPa*s")
-    factor = _positive(reader, table.get("lubricant_factor", 1.0), "lubricant_factor", where, "X_L")
-    return Lubricant(viscosity, factor)
+    """The top-level ``[lubricant]`` table as Schlenk's lubricant, or None (see :mod:`.spin_format`)."""
+    from .spin_format import read_lubricant as read
+
+    return read(reader, data)[0]
 
 
 def read_extras(reader, kind: str, table: Mapping[str, Any], element, where: str,

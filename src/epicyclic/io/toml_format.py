@@ -60,8 +60,9 @@ from .source import InputFileError, check_document, decode_source, parse_toml, r
 
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file", "read_document"]
 
+_SPIN_TABLES = ("pump", "housing", "seal", "churning", "windage", "defaults")  # io.spin_format reads them
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant", "rating", "duty_cycle"}
+             "operating_point", "transmission", "lubricant", "rating", "duty_cycle", *_SPIN_TABLES}
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
                    "mesh_efficiencies", "planets", "geometry", "losses", "bearings"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
@@ -70,8 +71,8 @@ _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
                "two_rings": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"},
                "two_suns": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"}}
 _GEAR_KEYS = {"name", "first", "second", "meshes", "ratio", "efficiency", "geometry", "losses"}
-_CLUTCH_KEYS = {"name", "first", "second", "engaged"}
-_BRAKE_KEYS = {"name", "shaft", "engaged"}
+_CLUTCH_KEYS = {"name", "first", "second", "engaged", "drag"}
+_BRAKE_KEYS = {"name", "shaft", "engaged", "drag"}
 _UNIT_KEYS = {"speed", "torque", "power"}
 _OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
 _TRANSMISSION_KEYS = {"input", "output", "schedule"}
@@ -110,6 +111,8 @@ class TrainFile:
     exchange : RexsDocument or None
         For a REXS file: what the file held beyond the train (its load cases, the summary of what was
         ignored, which REXS component each element came from; :mod:`epicyclic.exchange`).
+    spin : SpinLosses or None
+        The spin losses (oil, clutch and brake ``drag``, pump, churning, windage, seals, housing) or None.
     """
 
     source: str
@@ -126,6 +129,7 @@ class TrainFile:
     bearings: Mapping[str, Any] = field(default_factory=dict)
     duty_cycle: Any = None
     exchange: Any = None
+    spin: Any = None
 
     @property
     def operating_train(self) -> GearTrain:
@@ -159,10 +163,11 @@ class TrainFile:
                 f"to solve; {fix}", self.source, "[operating_point]",
             )
         try:
-            if self.losses and not lossless:  # losses from the geometry (docs/losses.md)
+            if (self.losses or self.spin is not None) and not lossless:  # loss models (docs/losses.md)
                 from ..losses import solve_with_losses
 
-                return solve_with_losses(self.operating_train, self.operating_point, self.losses)
+                return solve_with_losses(self.operating_train, self.operating_point, self.losses, spin=self.spin,
+                                         gear=self.gear, input=getattr(self.transmission, "input", None))
             return solve(self.operating_train, self.operating_point, lossless=lossless)
         except EpicyclicError as exc:
             located_error = locate_error(exc, self.source, self.operating_point, "[operating_point]")
@@ -345,11 +350,14 @@ class _Reader(TableReader):
                 "clutch": self.read_shift, "brake": self.read_shift}
         # geometry and loss tables are optional: their reader (and the geometry and loss packages) is
         # imported only for a file that has them, so that a plain file starts fast
-        extras = None
-        if "lubricant" in data or any("geometry" in t or "losses" in t for g in tables.values() for t in g
-                                       if isinstance(t, dict)):
-            from . import geometry_format as extras
-        lubricant = extras.read_lubricant(self, data) if extras else None
+        extras = spin = None
+        if any(k in data for k in (*_SPIN_TABLES, "lubricant")) or any(
+                k in t for g in tables.values() for t in g if isinstance(t, dict) for k in ("geometry", "losses", "drag")):
+            from . import geometry_format as extras, spin_format as spin  # only for a file that has them
+        lubricant = oil = temperature = None
+        if extras:
+            self.refuse_defaults, self.spin_defaults = spin.refuses_defaults(self, data), []
+            lubricant, oil, temperature = spin.read_lubricant(self, data)
         elements, geometry, losses = [], {}, {}
         for kind, group in tables.items():
             for k, table in enumerate(group):
@@ -374,29 +382,18 @@ class _Reader(TableReader):
         if "operating_point" in data:
             op, gear = self.read_operating_point(
                 self.table(data["operating_point"], "[operating_point]"), train, transmission)
-        rating = None
-        if "rating" in data:  # the rating package is imported only for a file that has the table
-            from .rating_format import read_rating
+        rating, bearings, duty = None, {}, None
+        if "rating" in data or "duty_cycle" in data or any("bearings" in t for t in tables["planetary"]
+                                                           if isinstance(t, dict)):
+            from .duty_format import read_design_tables  # the rating package only for a file that has them
 
-            lubricant_table = data.get("lubricant") if isinstance(data.get("lubricant"), dict) else None
-            rating = read_rating(self, data["rating"], lubricant_table)
-        bearings, duty = {}, None
-        if "duty_cycle" in data or any("bearings" in t for t in tables["planetary"] if isinstance(t, dict)):
-            from . import duty_format  # only for a file that has them
-
-            for k, table in enumerate(tables["planetary"]):
-                if "bearings" in table:
-                    where = self.element_where("planetary", k, table)
-                    if table["name"] not in geometry:
-                        raise self.error(at_key(where, "bearings"), "the bearing loads come from the tooth forces: "
-                                                                    "add a 'geometry' table (module, ...).")
-                    bearings[table["name"]] = MappingProxyType(
-                        duty_format.read_bearings(self, table["bearings"], where, table.get("losses")))
-            if "duty_cycle" in data:
-                duty = duty_format.read_duty_cycle(self, data["duty_cycle"], train, transmission, op, self.units)
+            rating, bearings, duty = read_design_tables(self, data, tables["planetary"], geometry, train,
+                                                        transmission, op)
+        spin = spin.read_spin(self, data, oil, temperature, train, transmission and transmission.input) if (
+            spin is not None and (spin.has_spin(data) or oil is not None)) else None  # spin losses, docs/losses.md
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
                          MappingProxyType(geometry), MappingProxyType(losses), rating,
-                         bearings=MappingProxyType(bearings), duty_cycle=duty)
+                         bearings=MappingProxyType(bearings), duty_cycle=duty, spin=spin)
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")

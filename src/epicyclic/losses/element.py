@@ -231,7 +231,7 @@ class ElementLosses:
     def _relative_port(self) -> tuple[str, str]:
         return ("sun", "carrier") if isinstance(self.element, PlanetarySet) else ("first", HOUSING)
 
-    def evaluate(self, speeds: Mapping[str, Any], torques: Mapping[str, Any]) -> LossState:
+    def evaluate(self, speeds: Mapping[str, Any], torques: Mapping[str, Any], viscosity=None) -> LossState:
         """The losses at arrays of port speeds (1/min) and port torques (N·m; torque of a shaft on the port).
 
         The mesh factor is Π (1 − μ H_V) over the meshes at each point's load and
@@ -245,6 +245,9 @@ class ElementLosses:
             Speed of each port (``sun``/``ring``/``carrier`` or ``first``/``second``), 1/min.
         torques : mapping port → array_like
             Torque of the shaft on each port, N·m (from a lossless or previous solve).
+        viscosity : float or array_like, optional
+            The oil's dynamic viscosity at its temperature, mPa·s (one per point): replaces the
+            lubricant's of Schlenk's friction (:meth:`SchlenkFriction.at_viscosity`).
 
         Returns
         -------
@@ -268,7 +271,13 @@ class ElementLosses:
         factors: dict[str, np.ndarray] = {}
         mus: tuple[np.ndarray, ...] = ()
         if self.has_mesh_model:
-            factors["mesh"], mus = meshes_efficiency(self.meshes, self.friction,
+            friction, meshes = self.friction, self.meshes
+            if viscosity is not None:  # Schlenk's μ at the oil's viscosity of each point, per mesh too
+                at = np.broadcast_to(np.asarray(viscosity, dtype=float), shape)
+                friction = _at_viscosity(friction, at)
+                meshes = tuple(replace(m, friction=_at_viscosity(m.friction, at)) if m.friction is not None else m
+                               for m in meshes)
+            factors["mesh"], mus = meshes_efficiency(meshes, friction,
                                                      {p: np.asarray(torques[p], dtype=float) for p in self.ports
                                                       if p != HOUSING}, relative)
         else:
@@ -314,3 +323,8 @@ def _with_friction(meshes: tuple[MeshLoss, ...], mesh_friction: Mapping[str, Fri
     if unknown:
         raise LossModelError(f"mesh friction: no mesh {unknown[0]!r}; the meshes are {', '.join(map(repr, names))}.")
     return tuple(replace(m, friction=mesh_friction.get(m.mesh.name)) for m in meshes)
+
+
+def _at_viscosity(friction, viscosity):
+    """Schlenk's friction at the given oil viscosity (an array over the points); other models unchanged."""
+    return friction.at_viscosity(viscosity) if isinstance(friction, SchlenkFriction) else friction
