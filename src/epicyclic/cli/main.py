@@ -64,6 +64,10 @@ from . import efficiency_map as _efficiency_map  # noqa: E402
 
 app.command("map")(_efficiency_map.efficiency_map)
 
+from . import shift_map as _shift_map  # noqa: E402
+
+app.command("shiftmap")(_shift_map.shift_map)
+
 from . import synthesize as _synthesize  # noqa: E402
 
 app.command("synthesize")(_synthesize.synthesize)
