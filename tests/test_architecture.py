@@ -47,6 +47,8 @@ REACHING_UP = {
         "ShiftMap.plot() draws itself",
     ("epicyclic.transmission.shift_map", "epicyclic.plotting._common"):
         "ShiftMap._repr_html_ and .save() render its figure",
+    ("epicyclic.losses.breakdown", "epicyclic.plotting.loss_bars"):
+        "LossBreakdown.plot() draws itself (stacked bars by source)",
 }
 
 

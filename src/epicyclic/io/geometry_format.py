@@ -62,7 +62,8 @@ GEOMETRY_KEYS = {"module", "pressure_angle", "helix_angle", "addendum", "dedendu
 _STAGE_GEOMETRY_KEYS = GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing"}
 LOSSES_KEYS = {"friction", "roughness", "bearing", "drag"}
 _STAGE_LOSSES_KEYS = LOSSES_KEYS - {"bearing"}
-LUBRICANT_KEYS = {"viscosity", "lubricant_factor"}
+LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100", "density", "temperature",
+                  "expansion", "specific_heat"}
 _BEARING_KEYS = {"bore", "type", "friction"}
 _DRAG_KEYS = {"member", "coefficients", "relative_to"}
 
@@ -85,15 +86,10 @@ def module_ratio(reader, table: Mapping[str, Any], where: str) -> float:
 
 
 def read_lubricant(reader, data: Mapping[str, Any]) -> Lubricant | None:
-    """The top-level ``[lubricant]`` table, or None."""
-    if "lubricant" not in data:
-        return None
-    where = "[lubricant]"
-    table = reader.table(data["lubricant"], where)
-    reader.check_keys(table, LUBRICANT_KEYS, where)
-    viscosity = _positive(reader, reader.require(table, "viscosity", where), "viscosity", where, "mPa*s")
-    factor = _positive(reader, table.get("lubricant_factor", 1.0), "lubricant_factor", where, "X_L")
-    return Lubricant(viscosity, factor)
+    """The top-level ``[lubricant]`` table as Schlenk's lubricant, or None (see :mod:`.spin_format`)."""
+    from .spin_format import read_lubricant as read
+
+    return read(reader, data)[0]
 
 
 def read_extras(reader, kind: str, table: Mapping[str, Any], element, where: str,

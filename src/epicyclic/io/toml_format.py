@@ -60,7 +60,9 @@ from .source import InputFileError, parse_toml, read_source
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant"}
+             "operating_point", "transmission", "lubricant", "pump", "housing", "seal", "churning", "windage"}
+#: Top-level tables of the spin losses (read by :mod:`epicyclic.io.spin_format`).
+_SPIN_TABLES = ("pump", "housing", "seal", "churning", "windage")
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
                    "mesh_efficiencies", "planets", "geometry", "losses"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
@@ -69,8 +71,8 @@ _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
                "two_rings": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"},
                "two_suns": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"}}
 _GEAR_KEYS = {"name", "first", "second", "meshes", "ratio", "efficiency", "geometry", "losses"}
-_CLUTCH_KEYS = {"name", "first", "second", "engaged"}
-_BRAKE_KEYS = {"name", "shaft", "engaged"}
+_CLUTCH_KEYS = {"name", "first", "second", "engaged", "drag"}
+_BRAKE_KEYS = {"name", "shaft", "engaged", "drag"}
 _UNIT_KEYS = {"speed", "torque", "power"}
 _OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
 _TRANSMISSION_KEYS = {"input", "output", "schedule"}
@@ -153,6 +155,9 @@ class TrainFile:
         The elements' ``geometry`` tables (see ``docs/file-format.md``).
     losses : mapping element → ElementLosses
         The elements' ``losses`` tables (mesh friction, planet bearings, drag).
+    spin : SpinLosses or None
+        The spin losses (``[lubricant]`` oil and temperature, ``drag`` of clutches and brakes,
+        ``[pump]``, ``[[churning]]``, ``[[windage]]``, ``[[seal]]``, ``[housing]``); None without them.
     """
 
     source: str
@@ -165,6 +170,7 @@ class TrainFile:
     gear: str | None = None
     geometry: Mapping[str, Any] = field(default_factory=dict)
     losses: Mapping[str, Any] = field(default_factory=dict)
+    spin: Any = None
 
     @property
     def operating_train(self) -> GearTrain:
@@ -189,10 +195,12 @@ class TrainFile:
                 "to solve; add speeds, torques or powers, drives and loads.", self.source, "[operating_point]",
             )
         try:
-            if self.losses and not lossless:  # losses from the geometry (docs/losses.md)
+            if (self.losses or self.spin is not None) and not lossless:  # loss models (docs/losses.md)
                 from ..losses import solve_with_losses
 
-                return solve_with_losses(self.operating_train, self.operating_point, self.losses)
+                return solve_with_losses(self.operating_train, self.operating_point, self.losses, spin=self.spin,
+                                         gear=self.gear,
+                                         input=None if self.transmission is None else self.transmission.input)
             return solve(self.operating_train, self.operating_point, lossless=lossless)
         except EpicyclicError as exc:
             raise locate_error(exc, self.source, self.operating_point, "[operating_point]") from None
@@ -334,10 +342,17 @@ class _Reader(TableReader):
         # geometry and loss tables are optional: their reader (and the geometry and loss packages) is
         # imported only for a file that has them, so that a plain file starts fast
         extras = None
-        if "lubricant" in data or any("geometry" in t or "losses" in t for g in tables.values() for t in g
-                                       if isinstance(t, dict)):
+        spin_wanted = any(k in data for k in _SPIN_TABLES) or any(
+            isinstance(t, dict) and "drag" in t for kind in ("clutch", "brake") for t in tables[kind])
+        if spin_wanted or "lubricant" in data or any("geometry" in t or "losses" in t for g in tables.values()
+                                                     for t in g if isinstance(t, dict)):
             from . import geometry_format as extras
-        lubricant = extras.read_lubricant(self, data) if extras else None
+        lubricant = oil = temperature = None
+        if extras:
+            from .spin_format import read_lubricant
+
+            lubricant, oil, temperature = read_lubricant(self, data)
+            spin_wanted = spin_wanted or oil is not None
         elements, geometry, losses = [], {}, {}
         for kind, group in tables.items():
             for k, table in enumerate(group):
@@ -362,8 +377,13 @@ class _Reader(TableReader):
         if "operating_point" in data:
             op, gear = self.read_operating_point(
                 self.table(data["operating_point"], "[operating_point]"), train, transmission)
+        spin = None
+        if spin_wanted:
+            from .spin_format import read_spin
+
+            spin = read_spin(self, data, oil, temperature, train, None if transmission is None else transmission.input)
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
-                         MappingProxyType(geometry), MappingProxyType(losses))
+                         MappingProxyType(geometry), MappingProxyType(losses), spin)
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")

@@ -28,7 +28,8 @@ from ..errors import ModelError
 from ..limits import MAX_MAP_POINTS, check_count
 from ..model.train import GearTrain
 from ..units import Units, to_core_array, unit_factor
-from .element import SOURCES, ElementLosses
+from .element import ElementLosses
+from .spin import ALL_SOURCES as SOURCES
 from .solve import solve_batch_with_losses
 
 __all__ = ["EfficiencyMap", "efficiency_map", "MAP_SUFFIXES"]
@@ -57,7 +58,8 @@ class EfficiencyMap:
     input_power, output_power, loss : ndarray (T, S)
         W.
     losses : mapping source → ndarray (T, S)
-        Losses by source (``mesh``, ``bearing``, ``drag``), W.
+        Losses by source (``mesh``, ``bearing``, ``drag``, ``clutch_drag``, ``pump``, ``churning``,
+        ``windage``, ``seals``), W.
     self_locking : ndarray of bool (T, S)
     ratio : float
         n_input/n_output.
@@ -65,6 +67,8 @@ class EfficiencyMap:
         The units the summary and the figure show speeds and torques in (a
         train file's ``[units]``; default 1/min and N·m).  The arrays, CSV and
         JSON stay in 1/min, N·m and W.
+    oil_temperature : ndarray (T, S) or None
+        The oil (sump) temperature the spin losses were evaluated at, °C (None without them).
     """
 
     name: str
@@ -82,6 +86,7 @@ class EfficiencyMap:
     self_locking: np.ndarray
     ratio: float
     units: Units | None = None
+    oil_temperature: np.ndarray | None = None
 
     def shown(self, quantity: str) -> tuple[np.ndarray, str]:
         """The ``"speed"`` or ``"torque"`` axis in the units the map is shown in, and that unit."""
@@ -155,6 +160,9 @@ class EfficiencyMap:
                          f"(mean {s['efficiency_mean']:.4f})")
         lines.append(f"self-locking at {s['self_locking_points']} of {s['points']} points")
         lines.append(f"losses by source (sum over the map): {split or 'none'}")
+        if self.oil_temperature is not None:
+            oil = np.asarray(self.oil_temperature)
+            lines.append(f"oil temperature {oil.min():.1f} .. {oil.max():.1f} degC")
         return "\n".join(lines)
 
     def __repr__(self) -> str:
@@ -176,6 +184,7 @@ class EfficiencyMap:
             "efficiency": grid(self.efficiency), "input_power": grid(self.input_power),
             "loss": grid(self.loss), "losses": {k: grid(v) for k, v in self.losses.items()},
             "self_locking": self.self_locking.tolist(), "summary": self.summary(),
+            "oil_temperature": None if self.oil_temperature is None else grid(np.asarray(self.oil_temperature)),
         }
 
     def to_json(self) -> str:
@@ -277,7 +286,8 @@ def _check_one_freedom(train: GearTrain, input: str, output: str) -> None:
 
 def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequence[float] | np.ndarray, *,
                    gear: str | None = None, losses: Mapping[str, ElementLosses] | None = None,
-                   direction: str = "drive", input: str | None = None, output: str | None = None) -> EfficiencyMap:
+                   direction: str = "drive", input: str | None = None, output: str | None = None,
+                   spin=None) -> EfficiencyMap:
     """η and losses over a grid of input speeds × input torques.
 
     Parameters
@@ -300,6 +310,8 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     direction : {"drive", "coast"}
     input, output : str, optional
         Shafts (default: the transmission's, else the file's drive and load).
+    spin : SpinLosses, optional
+        Spin losses (clutch drag, pump, churning, windage, seals; default: the train file's).
 
     Returns
     -------
@@ -323,7 +335,7 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     """
     if direction not in ("drive", "coast"):
         raise ModelError(f"efficiency_map: direction must be 'drive' or 'coast', got {direction!r}.")
-    name, title_gear, units = "gear train", gear, None
+    name, title_gear, units, file, transmission_input = "gear train", gear, None, None, input
     if hasattr(train, "operating_train") and hasattr(train, "losses"):  # a TrainFile
         file = train
         name, units = file.title, file.units
@@ -340,6 +352,7 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
             base = file.train
         op = file.operating_point
         if file.transmission is not None:
+            transmission_input = file.transmission.input
             input = input or file.transmission.input
             output = output or file.transmission.output
         elif op is not None:
@@ -352,7 +365,10 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
             raise ModelError("efficiency_map: a transmission needs gear=... (one of "
                              f"{', '.join(repr(g) for g in train.gears)}).")
         base = train.gear_train(gear)
+        transmission_input = train.input
         input, output = input or train.input, output or train.output
+        spin = spin if spin is not None else getattr(train, "spin", None)
+        losses = losses if losses is not None else dict(getattr(train, "losses", {}) or {})
     elif isinstance(train, GearTrain):
         base, name = train, train.name
     else:
@@ -368,19 +384,24 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     check_count(n.size * t.size, "efficiency_map: speeds × torques", MAX_MAP_POINTS, "grid points")
     speed_grid, torque_grid = np.meshgrid(n, t)
     models = dict(losses or {})
+    if spin is None and file is not None:
+        spin = file.spin
+    spin_kw = dict(spin=spin, gear=title_gear, input=transmission_input)
     ratio_sol = solve_batch_with_losses(base, {}, speeds={input: np.array([1000.0])}, torques={input: np.array([1.0])},
                                         drives=[input], loads=[output])
     ratio = float(1000.0 / ratio_sol.speeds[output][0])
     if direction == "drive":
         sol = solve_batch_with_losses(base, models, speeds={input: speed_grid}, torques={input: torque_grid},
-                                      drives=[input], loads=[output])
+                                      drives=[input], loads=[output], **spin_kw)
     else:
         sol = solve_batch_with_losses(base, models, speeds={input: speed_grid},
-                                      torques={output: torque_grid * abs(ratio)}, drives=[output], loads=[input])
+                                      torques={output: torque_grid * abs(ratio)}, drives=[output], loads=[input],
+                                      **spin_kw)
     sources = {s: np.zeros(sol.shape) for s in SOURCES}
     for parts in sol.loss_sources.values():
         for source, value in parts.items():
             sources[source] = sources.get(source, np.zeros(sol.shape)) + value
     sources = {k: v for k, v in sources.items() if np.any(v != 0) or k == "mesh"}
     return EfficiencyMap(name, title_gear, direction, input, output, n, t, sol.efficiency, sol.input_power,
-                         sol.output_power, sol.loss, sources, sol.self_locking, ratio, units)
+                         sol.output_power, sol.loss, sources, sol.self_locking, ratio, units,
+                         sol.oil_temperature)

@@ -214,7 +214,7 @@ class ElementLosses:
     def _relative_port(self) -> tuple[str, str]:
         return ("sun", "carrier") if isinstance(self.element, PlanetarySet) else ("first", HOUSING)
 
-    def evaluate(self, speeds: Mapping[str, Any], torques: Mapping[str, Any]) -> LossState:
+    def evaluate(self, speeds: Mapping[str, Any], torques: Mapping[str, Any], viscosity=None) -> LossState:
         """The losses at arrays of port speeds (1/min) and port torques (N·m; torque of a shaft on the port).
 
         The mesh factor is Π (1 − μ H_V) over the meshes at each point's load and
@@ -228,6 +228,9 @@ class ElementLosses:
             Speed of each port (``sun``/``ring``/``carrier`` or ``first``/``second``), 1/min.
         torques : mapping port → array_like
             Torque of the shaft on each port, N·m (from a lossless or previous solve).
+        viscosity : float or array_like, optional
+            The oil's dynamic viscosity at its temperature, mPa·s (one per point): replaces the
+            lubricant's of Schlenk's friction (:meth:`SchlenkFriction.at_viscosity`).
 
         Returns
         -------
@@ -251,7 +254,10 @@ class ElementLosses:
         factors: dict[str, np.ndarray] = {}
         mus: tuple[np.ndarray, ...] = ()
         if self.friction is not None:
-            factors["mesh"], mus = meshes_efficiency(self.meshes, self.friction,
+            friction = self.friction
+            if viscosity is not None and isinstance(friction, SchlenkFriction):
+                friction = friction.at_viscosity(np.broadcast_to(np.asarray(viscosity, dtype=float), shape))
+            factors["mesh"], mus = meshes_efficiency(self.meshes, friction,
                                                      {p: np.asarray(torques[p], dtype=float) for p in self.ports
                                                       if p != HOUSING}, relative)
         else:

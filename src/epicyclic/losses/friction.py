@@ -230,8 +230,29 @@ class SchlenkFriction:
         Schlenk 1994; ISO/TR 14179-2:2001 (mean coefficient of friction μ_mZ).
         """
         lub = self.lubricant
-        return schlenk_friction(load_per_width, sum_velocity, radius, lub.viscosity, self.roughness,
+        viscosity = self.__dict__.get("_viscosity", lub.viscosity)  # one per point: at_viscosity
+        return schlenk_friction(load_per_width, sum_velocity, radius, viscosity, self.roughness,
                                 lub.lubricant_factor)
+
+    def at_viscosity(self, viscosity) -> SchlenkFriction:
+        """This model with the oil's dynamic viscosity replaced (mPa·s; a float or one per point).
+
+        Parameters
+        ----------
+        viscosity : float or ndarray
+            η_oil at the oil temperature, mPa·s (> 0).
+
+        Returns
+        -------
+        SchlenkFriction
+            A model whose :meth:`coefficient` uses ``viscosity`` (arrays broadcast with the loads).
+        """
+        eta = np.asarray(viscosity, dtype=float)
+        if not np.all(np.isfinite(eta) & (eta > 0)):
+            raise LossModelError(f"SchlenkFriction: viscosity must be positive mPa*s values, got {viscosity!r}.")
+        model = SchlenkFriction(Lubricant(float(np.mean(eta)), self.lubricant.lubricant_factor), self.roughness)
+        object.__setattr__(model, "_viscosity", eta)
+        return model
 
     @property
     def label(self) -> str:

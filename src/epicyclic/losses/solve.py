@@ -17,10 +17,20 @@ The drag torques depend on the speeds only, which the losses do not change.
 The batch form does the same over arrays of operating points, each round one
 batch solve.
 
+The spin losses (:class:`~epicyclic.losses.spin.SpinLosses`: open clutch drag,
+pump, churning, windage, seals) are torques on shafts at the oil temperature,
+given to the solver by source.  With ``temperature = "thermal"`` an outer
+fixed point finds the sump temperature: solve, take the load-dependent losses,
+find the ϑ where the housing sheds them plus the spin losses at ϑ
+(:func:`~epicyclic.losses.thermal.steady_temperature`), re-evaluate the spin
+losses there and solve again, until ϑ changes by less than
+:data:`TEMPERATURE_TOLERANCE` (at most :data:`MAX_THERMAL_ITERATIONS` rounds).
+
 References
 ----------
 Brandenberger 1952, eqs. 3', 7 (η0 in the direction of the rolling power);
-ISO/TR 14179-2:2001 (μ_mZ from the load: evaluated at the state it acts in).
+ISO/TR 14179-2:2001 (μ_mZ from the load: evaluated at the state it acts in);
+ISO/TR 14179-1:2001 (thermal equilibrium P_V = P_Q).
 """
 
 from __future__ import annotations
@@ -29,19 +39,29 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
+from dataclasses import replace
+
+from ..model.elements import HOUSING
 from ..model.operating_point import OperatingPoint
 from ..model.train import GearTrain
 from ..solver import solve
 from ..solver.batch import BatchSolution, solve_batch
 from .element import ElementLosses
 from .errors import LossModelError
+from .spin import SpinLosses, SpinState
+from .thermal import steady_temperature
 
-__all__ = ["solve_with_losses", "solve_batch_with_losses", "TOLERANCE", "MAX_ITERATIONS"]
+__all__ = ["solve_with_losses", "solve_batch_with_losses", "TOLERANCE", "MAX_ITERATIONS",
+           "TEMPERATURE_TOLERANCE", "MAX_THERMAL_ITERATIONS"]
 
 #: Largest change of any efficiency factor between two rounds at convergence.
 TOLERANCE = 1e-12
 #: Rounds of the fixed-point iteration before giving up.
 MAX_ITERATIONS = 30
+#: Largest change of the sump temperature (K) between two thermal rounds at convergence.
+TEMPERATURE_TOLERANCE = 1e-6
+#: Rounds of the thermal fixed point before giving up.
+MAX_THERMAL_ITERATIONS = 40
 
 
 def _models(train: GearTrain, losses: Mapping[str, ElementLosses]) -> dict[str, ElementLosses]:
@@ -66,14 +86,53 @@ def _models(train: GearTrain, losses: Mapping[str, ElementLosses]) -> dict[str, 
     return out
 
 
-def _state(models, speeds, port_torques):
-    """Factors and drag torques of every model at the given element states."""
+def _state(models, speeds, port_torques, viscosity=None):
+    """Factors and drag torques of every model at the given element states (η_oil per point, if given)."""
     efficiencies, torques = {}, {}
     for name, model in models.items():
-        state = model.evaluate(speeds(model), port_torques(model))
+        state = model.evaluate(speeds(model), port_torques(model), viscosity)
         efficiencies[name] = dict(state.factors)
         torques[name] = dict(state.torques)
     return efficiencies, torques
+
+
+def _merged(loss_torques, spin: SpinState | None):
+    """The models' drag torques and the spin losses' torques by source, in one ``loss_torques``."""
+    if spin is None or not spin.torques:
+        return loss_torques
+    out = {name: dict(value) for name, value in loss_torques.items()}
+    for host, by_source in spin.torques.items():
+        own = out.pop(host, None)
+        merged = {"drag": own} if own else {}
+        merged.update({source: dict(shafts) for source, shafts in by_source.items()})
+        out[host] = merged
+    return out
+
+
+def _viscosity(spin: SpinState | None):
+    """η_oil (mPa·s) at the spin state's oil temperature, for Schlenk's friction; None without an oil."""
+    return None if spin is None or spin.viscosity is None else spin.viscosity
+
+
+def _checked_spin(spin, train: GearTrain, input: str | None) -> SpinLosses | None:
+    if spin is None:
+        return None
+    if not isinstance(spin, SpinLosses):
+        raise LossModelError(f"losses: spin must be a SpinLosses, got {type(spin).__name__}.")
+    if spin.is_empty:
+        return None
+    spin.check(train, input)
+    return spin
+
+
+def _thermal_round(spin: SpinLosses, state, spin_state: SpinState, speeds, shape, train, gear, input):
+    """The next sump temperature: where the housing sheds the load-dependent losses plus the spin losses."""
+    load_dependent = np.maximum(np.nan_to_num(np.asarray(state.loss, dtype=float) - spin_state.total), 0.0)
+
+    def loss(temperature):
+        return load_dependent + spin.evaluate(speeds, temperature, train=train, gear=gear, input=input).total
+
+    return steady_temperature(spin.housing, loss, shape)
 
 
 def _change(old, new) -> float:
@@ -88,7 +147,8 @@ def _change(old, new) -> float:
 
 
 def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses: Mapping[str, ElementLosses], *,
-                      tolerance: float = TOLERANCE, max_iterations: int = MAX_ITERATIONS):
+                      tolerance: float = TOLERANCE, max_iterations: int = MAX_ITERATIONS,
+                      spin: SpinLosses | None = None, gear: str | None = None, input: str | None = None):
     """Solve ``train`` at an operating point with the elements' loss models.
 
     Parameters
@@ -100,21 +160,72 @@ def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses:
     tolerance : float
         Convergence of the efficiency factors.
     max_iterations : int
+    spin : SpinLosses, optional
+        The spin losses (clutch drag, pump, churning, windage, seals) at the oil temperature,
+        fixed or from the thermal balance.
+    gear : str, optional
+        The gear ``train`` is in (a pump pressure by gear).
+    input : str, optional
+        The transmission's input (drives a pump that names no shaft).
 
     Returns
     -------
     Solution
         Each element's losses split by source in ``elements[name].loss_sources``
-        (``mesh``, ``bearing``, ``drag``, W).
+        (``mesh``, ``bearing``, ``drag``, ``clutch_drag``, ``churning``, ``windage``, W), the
+        pump's and seals' in ``housing_loss_sources``, the oil temperature in ``oil_temperature``.
 
     Raises
     ------
     LossModelError
-        A model for an element the train does not have, or no convergence.
+        A model for an element the train does not have, no convergence, or no steady sump
+        temperature.
     """
     models = _models(train, losses)
+    spin = _checked_spin(spin, train, input)
+    if spin is None:
+        return _solve_point(train, operating_point, models, tolerance, max_iterations)
+    base = solve(train, operating_point, lossless=True)
+    speeds = {s: np.asarray(base.shafts[s].speed) for s in train.shafts if s != HOUSING}
+    temperature = np.asarray(_start_temperature(spin))
+    for _ in range(MAX_THERMAL_ITERATIONS):
+        spin_state = spin.evaluate(speeds, temperature, train=train, gear=gear, input=input)
+        state = _solve_point(train, operating_point, models, tolerance, max_iterations, spin_state)
+        if not spin.thermal:
+            break
+        new = _thermal_round(spin, state, spin_state, speeds, (), train, gear, input)
+        settled = abs(float(new) - float(temperature)) <= TEMPERATURE_TOLERANCE
+        temperature = new
+        if settled:
+            spin_state = spin.evaluate(speeds, temperature, train=train, gear=gear, input=input)
+            state = _solve_point(train, operating_point, models, tolerance, max_iterations, spin_state)
+            break
+    else:
+        raise _no_thermal_fixed_point()
+    return state.replace(oil_temperature=float(temperature))
+
+
+def _start_temperature(spin: SpinLosses) -> float:
+    """The given oil temperature, or the first guess of the thermal balance (60 K above the air)."""
+    if spin.temperature is not None:
+        return spin.temperature
+    return spin.housing.ambient + 60.0 if spin.housing is not None else 80.0
+
+
+def _no_thermal_fixed_point() -> LossModelError:
+    return LossModelError(
+        f"losses: the sump temperature did not settle in {MAX_THERMAL_ITERATIONS} rounds of the thermal "
+        "balance (losses and temperature keep pushing each other); give a fixed [lubricant] temperature or check "
+        "the [housing] and the loss inputs."
+    )
+
+
+def _solve_point(train, operating_point, models, tolerance, max_iterations, spin_state=None):
+    """The fixed point of the load-dependent losses at one operating point (spin torques held)."""
     if not models:
-        return solve(train, operating_point)
+        if spin_state is None:
+            return solve(train, operating_point)
+        return solve(train, operating_point, loss_torques=_merged({}, spin_state))
     state = solve(train, operating_point, lossless=True)
 
     def speeds(model):
@@ -127,8 +238,9 @@ def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses:
 
     previous = None
     for _ in range(max_iterations):
-        efficiencies, loss_torques = _state(models, speeds, torques)
-        state = solve(train, operating_point, efficiencies=efficiencies, loss_torques=loss_torques)
+        efficiencies, loss_torques = _state(models, speeds, torques, _viscosity(spin_state))
+        state = solve(train, operating_point, efficiencies=efficiencies,
+                      loss_torques=_merged(loss_torques, spin_state))
         if _change(previous, efficiencies) <= tolerance:
             return state
         previous = efficiencies
@@ -142,7 +254,8 @@ def solve_batch_with_losses(train: GearTrain, losses: Mapping[str, ElementLosses
                             speeds: Mapping[str, object], torques: Mapping[str, object] | None = None,
                             powers: Mapping[str, object] | None = None, drives: Sequence[str] = (),
                             loads: Sequence[str] = (), tolerance: float = TOLERANCE,
-                            max_iterations: int = MAX_ITERATIONS) -> BatchSolution:
+                            max_iterations: int = MAX_ITERATIONS, spin: SpinLosses | None = None,
+                            gear: str | None = None, input: str | None = None) -> BatchSolution:
     """:func:`solve_with_losses` over arrays of operating points (see :func:`~epicyclic.solver.batch.solve_batch`).
 
     Each round is one batch solve with per-point efficiency factors and drag torques,
@@ -163,6 +276,12 @@ def solve_batch_with_losses(train: GearTrain, losses: Mapping[str, ElementLosses
         Largest change of an efficiency factor between rounds at convergence.
     max_iterations : int, default 30
         Most rounds.
+    spin : SpinLosses, optional
+        Spin losses at the oil temperature (fixed, or the thermal balance at every point).
+    gear : str, optional
+        The gear ``train`` is in (a pump pressure by gear).
+    input : str, optional
+        The transmission's input (drives a pump that names no shaft).
 
     Returns
     -------
@@ -181,8 +300,36 @@ def solve_batch_with_losses(train: GearTrain, losses: Mapping[str, ElementLosses
     """
     models = _models(train, losses)
     common = dict(speeds=speeds, torques=torques, powers=powers, drives=drives, loads=loads)
+    spin = _checked_spin(spin, train, input)
+    if spin is None:
+        return _solve_batch(train, models, common, tolerance, max_iterations)
+    base = solve_batch(train, **common)  # the speeds: kinematics, which no loss changes
+    shaft_speeds = {s: base.speeds[s] for s in train.shafts if s != HOUSING}
+    shape = base.shape
+    temperature = np.full(shape, _start_temperature(spin))
+    for _ in range(MAX_THERMAL_ITERATIONS):
+        spin_state = spin.evaluate(shaft_speeds, temperature, train=train, gear=gear, input=input)
+        state = _solve_batch(train, models, common, tolerance, max_iterations, spin_state)
+        if not spin.thermal:
+            break
+        new = _thermal_round(spin, state, spin_state, shaft_speeds, shape, train, gear, input)
+        settled = float(np.max(np.abs(new - temperature), initial=0.0)) <= TEMPERATURE_TOLERANCE
+        temperature = new
+        if settled:
+            spin_state = spin.evaluate(shaft_speeds, temperature, train=train, gear=gear, input=input)
+            state = _solve_batch(train, models, common, tolerance, max_iterations, spin_state)
+            break
+    else:
+        raise _no_thermal_fixed_point()
+    return replace(state, oil_temperature=np.array(temperature))
+
+
+def _solve_batch(train, models, common, tolerance, max_iterations, spin_state=None) -> BatchSolution:
+    """The batch fixed point of the load-dependent losses (spin torques held)."""
     if not models:
-        return solve_batch(train, **common)
+        if spin_state is None:
+            return solve_batch(train, **common)
+        return solve_batch(train, loss_torques=_merged({}, spin_state), **common)
     unit = {name: {"mesh": 1.0} for name in models}
     state = solve_batch(train, efficiencies=unit, **common)
 
@@ -194,8 +341,9 @@ def solve_batch_with_losses(train: GearTrain, losses: Mapping[str, ElementLosses
 
     previous = None
     for _ in range(max_iterations):
-        efficiencies, loss_torques = _state(models, element_speeds, element_torques)
-        state = solve_batch(train, efficiencies=efficiencies, loss_torques=loss_torques, **common)
+        efficiencies, loss_torques = _state(models, element_speeds, element_torques, _viscosity(spin_state))
+        state = solve_batch(train, efficiencies=efficiencies, loss_torques=_merged(loss_torques, spin_state),
+                            **common)
         if _change(previous, efficiencies) <= tolerance:
             return state
         previous = efficiencies

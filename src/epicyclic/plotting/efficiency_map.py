@@ -80,7 +80,8 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
     left.set_title("efficiency η = P_out / P_in", fontsize=10)
 
     total = np.where(emap.loss > 0, emap.loss, np.nan)
-    drag = emap.losses.get("drag")
+    spin = [v for k, v in emap.losses.items() if k not in ("mesh", "bearing")]  # drag, clutch drag, pump, ...
+    drag = sum(spin) if spin else None
     split = emap.loss_split()
     text = ", ".join(f"{k} {100 * v:.1f} %" for k, v in split.items())
     if drag is not None and np.any(drag > 0) and emap.speeds.size > 1 and emap.torques.size > 1:
@@ -90,15 +91,15 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
 
         cmap = plt.get_cmap("magma_r")
         filled = right.contourf(n, t, share, levels=levels, cmap=cmap, norm=BoundaryNorm(levels, cmap.N))
-        bar = fig.colorbar(filled, ax=right, label=f"drag share of the loss in % ({scale})", spacing="uniform")
+        bar = fig.colorbar(filled, ax=right, label=f"load-independent share of the loss in % ({scale})", spacing="uniform")
         bar.set_ticks(levels[::2] if levels.size > 7 else levels)
         bar.ax.set_yticklabels([f"{v:.2g}" for v in (levels[::2] if levels.size > 7 else levels)])
-        right.set_title(f"load-independent (drag) share of the loss: {float(share.min()):.2g} … "
+        right.set_title(f"load-independent (drag, spin) share of the loss: {float(share.min()):.2g} … "
                         f"{float(share.max()):.2g} %", fontsize=10)
     else:
         filled = right.contourf(n, t, np.ma.masked_invalid(total), levels=12, cmap="magma_r")
         fig.colorbar(filled, ax=right, label="total loss in W")
-        right.set_title("total loss (no drag model)", fontsize=10)
+        right.set_title("total loss (no drag or spin-loss model)", fontsize=10)
     right.set_xlabel(left.get_xlabel())
     right.set_ylabel(left.get_ylabel())
     right.set_title(right.get_title() + f"\nsum over the map: {text}", fontsize=10)

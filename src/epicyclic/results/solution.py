@@ -196,6 +196,11 @@ class Solution:
     warnings : tuple of str
     ideal : Solution or None
         The lossless solution at the same operating point.
+    housing_loss_sources : mapping source → float
+        Losses of auxiliaries that belong to no element (oil pump, shaft seals), W, by source;
+        part of ``loss`` and of :attr:`loss_sources`.
+    oil_temperature : float or None
+        The oil temperature the spin losses were evaluated at, °C (None without spin losses).
 
     ``circulation``, ``warnings`` and ``ideal`` may be given as callables that make them: the solver
     does so, and each is made on first access (many callers never read them).  A pickled or copied
@@ -215,6 +220,8 @@ class Solution:
     circulation: Circulation = field(default=_Deferred())
     warnings: tuple[str, ...] = field(default=_Deferred(()))
     ideal: Solution | None = field(default=_Deferred(), compare=False, repr=False)
+    housing_loss_sources: Mapping[str, float] = field(default_factory=dict)
+    oil_temperature: float | None = None
 
     def __getstate__(self) -> dict[str, Any]:  # pickled and copied with the deferred fields built
         return {**self.__dict__, **{"_" + name: getattr(self, name) for name in _DEFERRED}}
@@ -251,8 +258,8 @@ class Solution:
     def loss_sources(self) -> dict[str, float]:
         """The train's loss by source (``mesh``, ``bearing``, ``drag``), W: the elements' summed."""
         out: dict[str, float] = {}
-        for element in self.elements.values():
-            for source, value in element.loss_sources.items():
+        for parts in (*(e.loss_sources for e in self.elements.values()), self.housing_loss_sources):
+            for source, value in parts.items():
                 out[source] = out.get(source, 0.0) + value
         return out
 

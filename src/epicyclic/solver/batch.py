@@ -29,7 +29,7 @@ from ..units import to_core_array
 from .assembly import matrices
 from .evaluate import directions, evaluate, given_columns, relative_speeds
 from .friction_state import ambiguous_points
-from .given_losses import DRAG, given_losses, with_efficiencies
+from .given_losses import given_losses, with_efficiencies
 from .kinematics import check_speeds, speed_solver
 from .linear import span
 from .self_locking import SELF_LOCKING_MARGIN, limit_solver, with_pattern
@@ -54,7 +54,7 @@ class BatchSolution:
     port_torques : mapping (element, port) → ndarray
         Torque a shaft exerts on each element port, N·m.
     losses : mapping element → ndarray
-        Loss per element, W.
+        Loss per element, W (and under ``"housing"`` the auxiliaries' given torques: pump, seals).
     input_power, output_power, loss : ndarray
         W.
     efficiency : ndarray
@@ -69,7 +69,11 @@ class BatchSolution:
     patterns : int
         Number of distinct loss-direction patterns solved.
     loss_sources : mapping element → mapping source → ndarray
-        Each element's loss by source (``mesh``, ``bearing``, ``drag``), W.
+        Each element's loss by source (``mesh``, ``bearing``, ``drag``, or the sources the loss
+        torques are given by), W; ``"housing"``: the auxiliaries' (pump, seals).
+    oil_temperature : ndarray or None
+        The oil temperature the spin losses were evaluated at, °C (None without spin losses;
+        see :func:`epicyclic.losses.solve_batch_with_losses`).
     """
 
     train: GearTrain
@@ -86,6 +90,7 @@ class BatchSolution:
     patterns: int
     loss_sources: Mapping[str, ArrayMap] = field(default_factory=dict)
     ambiguous: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    oil_temperature: np.ndarray | None = None
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -399,10 +404,16 @@ def _solve_points(problem: _Problem, points: slice) -> dict:
         k = lever_index.get(e.name)
         rolling = ev.loss[k] if k is not None else np.zeros(count)
         parts = ({"mesh": rolling} if extra is None else extra.split(k, rolling, points)) if k is not None else {}
+        spin = 0.0
         if extra is not None and e.name in extra.element_torques:
-            parts[DRAG] = extra.drag_loss(e.name, ev.speeds, points)
-        losses[e.name] = rolling + parts.get(DRAG, 0.0)
+            for source, value in extra.drag_losses(e.name, ev.speeds, points).items():
+                parts[source] = parts[source] + value if source in parts else value
+                spin = spin + value
+        losses[e.name] = rolling + spin
         sources[e.name] = parts
+    if extra is not None and HOUSING in extra.element_torques:  # auxiliaries: pump, seals
+        sources[HOUSING] = extra.drag_losses(HOUSING, ev.speeds, points)
+        losses[HOUSING] = sum(sources[HOUSING].values())
     drive_power = np.zeros(count)
     load_power = np.zeros(count)
     for s in mats.external:

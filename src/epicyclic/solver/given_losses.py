@@ -9,12 +9,15 @@ element and per operating point,
 * loss torques on shafts (``{shaft: T}``, the torque that acts on the shaft,
   opposing its motion: drag), which enter the shafts' torque balances; their
   reactions (on the housing or another shaft) are part of the same mapping.
+  They may be given by source (``{source: {shaft: T}}``, e.g. ``clutch_drag``,
+  ``churning``), and under the name ``"housing"`` for auxiliaries mounted in the
+  housing that belong to no element (oil pump, shaft seals).
 
 The solver reports every element's loss split by source: the rolling loss
 P_w (1 − η0^w) is shared between the factors in proportion to their
 logarithms (the factors multiply, so each one's share of ln η0 is its share of
 the loss, whatever their order); the torques' loss is −Σ T ω (source
-``"drag"``).  Without overrides the element's own η0 is the source ``"mesh"``.
+``"drag"``, or the source they are given by).  Without overrides the element's own η0 is the source ``"mesh"``.
 
 References
 ----------
@@ -25,14 +28,14 @@ Brandenberger 1952, eqs. 3', 7 (the loss P_w (1 − η0^w)); ISO/TR 14179-2:2001
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 from types import MappingProxyType
 
 import numpy as np
 
 from ..errors import EfficiencyError, ModelError
-from ..model.elements import GearStage
+from ..model.elements import HOUSING, GearStage
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
@@ -59,12 +62,15 @@ class GivenLosses:
     torques : ndarray (shafts, P)
         Sum of the given torques acting on each shaft (train order, housing last), N·m.
     element_torques : mapping element → ndarray (shafts, P)
+    source_torques : mapping element → mapping source → ndarray (shafts, P)
+        The same split by source (``drag`` for torques given without one).
     """
 
     factors: Mapping[str, np.ndarray]
     efficiency: np.ndarray
     torques: np.ndarray
     element_torques: Mapping[str, np.ndarray]
+    source_torques: Mapping[str, Mapping[str, np.ndarray]] = field(default_factory=dict)
 
     @property
     def has_torques(self) -> bool:
@@ -107,6 +113,30 @@ class GivenLosses:
         if torques is None:
             return np.zeros(speeds.shape[1:])
         return -(torques[:, points] * speeds).sum(axis=0) * RPM_TO_RAD_S + 0.0
+
+    def drag_losses(self, name: str, speeds: np.ndarray, points: slice = slice(None)) -> dict[str, np.ndarray]:
+        """:meth:`drag_loss` split by the sources the torques were given by (``drag`` without one).
+
+        Parameters
+        ----------
+        name : str
+            The element (or ``"housing"`` for the auxiliaries).
+        speeds : ndarray (shafts, points)
+            Every shaft's speed, 1/min, in the train's shaft order.
+        points : slice, default all
+            Which of the batch's points ``speeds`` holds.
+
+        Returns
+        -------
+        dict of str to ndarray
+            Source → power lost, W, at each point.
+
+        References
+        ----------
+        ISO/TR 14179-2:2001 (no-load losses as torques that oppose the motion: P = T·ω).
+        """
+        return {source: -(torques[:, points] * speeds).sum(axis=0) * RPM_TO_RAD_S + 0.0
+                for source, torques in self.source_torques.get(name, {}).items()}
 
     @cached_property
     def _sources(self) -> tuple[tuple[str, ...], ...]:
@@ -165,7 +195,9 @@ def given_losses(mats: TrainMatrices, efficiencies: Mapping[str, Mapping[str, ob
         Efficiency factors by source whose product replaces a set's or stage's η0; sets and stages
         not named keep their own η0 as the source ``"mesh"``.
     loss_torques : mapping element → mapping shaft → float or array, or None
-        Torques (N·m) an element puts on shafts against their motion (drag), with their reactions.
+        Torques (N·m) an element puts on shafts against their motion (drag), with their reactions;
+        or element → source → shaft → torque, the loss reported by source.  The name ``"housing"``
+        takes the torques of auxiliaries that belong to no element (pump, seals).
     points : int
         Number of operating points; every value is a number or an array of ``points`` values.
 
@@ -215,20 +247,29 @@ def given_losses(mats: TrainMatrices, efficiencies: Mapping[str, Mapping[str, ob
         efficiency = efficiency * value
     torques = np.zeros((len(rows), points))
     per_element: dict[str, np.ndarray] = {}
-    for name, by_shaft in (loss_torques or {}).items():
-        known(name, "loss_torques")
+    per_source: dict[str, dict[str, np.ndarray]] = {}
+    for name, given in (loss_torques or {}).items():
+        if name != HOUSING:
+            known(name, "loss_torques")
+        by_source = (given if given and all(isinstance(v, Mapping) for v in given.values())
+                     else {DRAG: given})
         mine = np.zeros((len(rows), points))
-        for shaft, value in by_shaft.items():
-            if shaft not in rows:
-                raise ModelError(f"given losses: {name!r} puts a torque on {shaft!r}, which is not a shaft of the "
-                                 "train.")
-            value = _points(value, points)
-            if not np.all(np.isfinite(value)):
-                raise ModelError(f"given losses: the torque of {name!r} on {shaft!r} must be finite.")
-            mine[rows[shaft]] += value
+        for source, by_shaft in by_source.items():
+            part = np.zeros((len(rows), points))
+            for shaft, value in by_shaft.items():
+                if shaft not in rows:
+                    raise ModelError(f"given losses: {name!r} puts a torque on {shaft!r}, which is not a shaft "
+                                     "of the train.")
+                value = _points(value, points)
+                if not np.all(np.isfinite(value)):
+                    raise ModelError(f"given losses: the torque of {name!r} on {shaft!r} must be finite.")
+                part[rows[shaft]] += value
+            per_source.setdefault(name, {})[source] = part
+            mine += part
         per_element[name] = mine
         torques += mine
-    return GivenLosses(MappingProxyType(factors), efficiency, torques, MappingProxyType(per_element))
+    return GivenLosses(MappingProxyType(factors), efficiency, torques, MappingProxyType(per_element),
+                       MappingProxyType({k: MappingProxyType(v) for k, v in per_source.items()}))
 
 
 def with_efficiencies(train: GearTrain, efficiencies: Mapping[str, float]) -> GearTrain:

@@ -42,7 +42,7 @@ from ..results.solution import RPM_TO_RAD_S, ElementState, ShaftState, Solution
 from ..results.zero import clean, scale_of
 from .assembly import TrainMatrices, matrices
 from .evaluate import Evaluation
-from .given_losses import DRAG, GivenLosses, given_losses, with_efficiencies
+from .given_losses import GivenLosses, given_losses, with_efficiencies
 from .kinematics import degrees_of_freedom, solve_speeds
 from .friction_state import describe, reversible_levers, wrong_way_at_designated
 from .point import evaluate_point
@@ -339,7 +339,9 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
 
     drive_power = sum(s.power for s in shafts.values() if s.role == "drive") + 0.0
     load_power = -sum(s.power for s in shafts.values() if s.role == "load") + 0.0
-    loss = sum(e.loss for e in elements.values()) + 0.0
+    housing = {} if lossless or extra is None else {
+        source: float(value[0]) for source, value in extra.drag_losses(HOUSING, ev.speeds).items()}
+    loss = sum(e.loss for e in elements.values()) + sum(housing.values()) + 0.0
     efficiency = _efficiency(drive_power, load_power, loss)
 
     @_once
@@ -361,6 +363,7 @@ def _build(train, op, mats, ev: Evaluation, solver: TorqueSolver, roles, ideal, 
         self_locking=None,
         circulation=circ,
         degrees_of_freedom=degrees_of_freedom(mats),
+        housing_loss_sources=MappingProxyType(housing),
         warnings=lambda: tuple(_warnings(shafts, solver, circ(), drive_power, load_power)) + (other() if other else ()),
         ideal=ideal,
     )
@@ -454,10 +457,13 @@ def _sources(element, extra: GivenLosses | None, ev: Evaluation, k: int | None, 
     if extra is not None:
         if k is not None:
             parts = {source: float(v[0]) for source, v in extra.split(k, ev.loss[k]).items()}
-        drag = float(extra.drag_loss(element.name, ev.speeds)[0])
-        if drag:
-            parts[DRAG] = drag
-    return rolling + parts.get(DRAG, 0.0), parts
+        spin = 0.0
+        for source, value in extra.drag_losses(element.name, ev.speeds).items():
+            if float(value[0]):
+                parts[source] = parts.get(source, 0.0) + float(value[0])
+                spin += float(value[0])
+        return rolling + spin, parts
+    return rolling, parts
 
 
 def _element_state(element, layout: _ElementLayout, ev: Evaluation, col: _Column, lossless,

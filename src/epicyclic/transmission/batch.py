@@ -141,13 +141,14 @@ def solve_gears(
     solutions = {}
     ratios = {}
     batch = solve_batch
-    if getattr(t, "losses", None):  # a file's loss models: every gear solved with them
-        from functools import partial
-
-        from ..losses import solve_batch_with_losses
-
-        batch = partial(solve_batch_with_losses, losses=t.losses)
+    spin = getattr(t, "spin", None)
     for gear in chosen:
+        if getattr(t, "losses", None) or spin is not None:  # a file's loss models: every gear solved with them
+            from functools import partial
+
+            from ..losses import solve_batch_with_losses
+
+            batch = partial(solve_batch_with_losses, losses=t.losses, spin=spin, gear=gear, input=t.input)
         train = t.gear_train(gear)
         ratio = t.ratio(gear)
         ratios[gear] = ratio

@@ -113,6 +113,9 @@ class Transmission:
     #: Loss models of elements (element → :class:`~epicyclic.losses.ElementLosses`), e.g. a file's loss tables:
     #: every gear is then solved with them (:func:`~epicyclic.losses.solve_with_losses`).
     losses: Mapping[str, Any] = field(default_factory=dict, repr=False, compare=False)
+    #: Spin losses (:class:`~epicyclic.losses.SpinLosses`: clutch drag, pump, churning, windage, seals at the
+    #: oil temperature), e.g. a file's; every gear is solved with them.
+    spin: Any = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not isinstance(self.train, GearTrain):
@@ -292,11 +295,11 @@ class Transmission:
         drive_op = OperatingPoint(speeds={self.input: input_speed}, torques={self.input: input_torque},
                                   drives=[self.input], loads=[self.output])
         run = solve
-        if self.losses:
+        if self.losses or self.spin is not None:
             from ..losses import solve_with_losses
 
             def run(train, op):
-                return solve_with_losses(train, op, self.losses)
+                return solve_with_losses(train, op, self.losses, spin=self.spin, gear=gear, input=self.input)
 
         drive = run(train, drive_op)
         ratio = self.ratio(gear)
@@ -389,7 +392,7 @@ class Transmission:
                 "schedule); add one to analyse gears."
             )
         return cls(data.train, dict(spec.schedule), spec.input, spec.output,
-                   name=getattr(data, "title", "") or data.train.name, losses=dict(getattr(data, "losses", {})))
+                   name=getattr(data, "title", "") or data.train.name, losses=dict(getattr(data, "losses", {})), spin=getattr(data, "spin", None))
 
     # ------------------------------------------------------------------ rendering
     def __repr__(self) -> str:

@@ -1,0 +1,281 @@
+"""Drag of an open wet multi-plate clutch or brake: the oil film sheared between its plates.
+
+Each of the ``gaps`` oil films between a friction plate and a steel plate
+(clearance h, plates from r_i to r_o) carries the Couette shear of the slip
+speed ω; the torque of a full film is (Newton's law integrated over the
+annulus)
+
+.. math:: T_{full} = \\frac{\\pi \\eta \\omega}{2 h} (r_o^4 - r_i^4)
+
+At low slip the oil fed at the inner radius fills every gap.  The rotating
+plate pumps the oil outward (centrifugal term of the thin-film equations); with
+ambient pressure at the inner radius and at the edge r_e of the film, the flow
+a gap passes is (Yuan et al. 2007, eq. 9 without the surface tension term)
+
+.. math:: Q(r_e) = \\frac{\\pi \\rho \\omega^2 h^3 (r_e^2 - r_i^2)}{40 \\eta \\ln(r_e / r_i)}
+
+Once that exceeds the oil supplied per gap (Q_supply / gaps) the film cannot
+reach the outer radius: it ends at the r_e where Q(r_e) equals the supply, air
+fills the rest (aeration), and the drag falls with speed (once even
+Q(r_i) = π ρ ω² h³ r_i² / (20 η) exceeds the supply no coherent film is left
+and the model's drag is 0):
+
+.. math:: T = N_{gaps}\\, f_g \\frac{\\pi \\eta \\omega}{2 h} (r_e^4 - r_i^4)
+
+with the groove factor f_g ∈ (0, 1] the share of the plate that shears a film
+(1 for plain plates; 1 − groove area share for grooved ones, Kitabayashi et al.
+2003).  The drag peaks at the slip where Q(r_o) equals the supply.
+
+Validity (stated by the sources): a thin laminar film, h ≪ r_o (h/r_o < 0.01)
+and the Reynolds number ρ ω r_o h / η below about 2000 (Couette flow stays
+laminar); single-phase oil up to the film edge, plates parallel and not in
+contact; surface tension and the second rise of the drag at very high slip
+(plate wobble, Pan & Zhou 2019) are left out, so past the peak the model's
+drop is steeper than measured.  Without a given supply the film is taken full
+(no aeration): an upper bound.
+
+References
+----------
+Yuan, Y., Liu, E. A., Hill, J., Zou, Q.: *An improved hydrodynamic model for open wet transmission
+clutches*, ASME J. Fluids Eng. 129 (2007) 333–337, eqs. (5)–(9);
+Kitabayashi, H., Li, C. Y., Hiraki, H.: *Analysis of the various factors affecting drag torque in
+multiple-plate wet clutches*, SAE 2003-01-1973;
+Iqbal, S., Al-Bender, F., Pluymers, B., Desmet, W.: *Model for predicting drag torque in open
+multi-disks wet clutches*, ASME J. Fluids Eng. 136 (2014) 021103 (first published 2013);
+Pahlovy, S. A., Mahmud, S. F., Ogawa, M., Kubota, M., Takakura, M.: *Multiphase drag modeling for
+prediction of the drag torque characteristics in disengaged wet clutches*, SAE Int. J. Commer. Veh.
+7 (2014) / SAE 2016-01-1145.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..results.solution import RPM_TO_RAD_S
+from ._checks import positive
+from .errors import LossModelError
+
+__all__ = ["ClutchDrag", "LAMINAR_REYNOLDS", "BISECTIONS"]
+
+#: Reynolds number ρ ω r_o h / η up to which the film is laminar (Couette flow).
+LAMINAR_REYNOLDS = 2000.0
+#: Halvings of the film-edge search (r_o − r_i) / 2^60: exact to round-off.
+BISECTIONS = 60
+
+
+@dataclass(frozen=True)
+class ClutchDrag:
+    """The drag model of one open wet multi-plate clutch or brake.
+
+    Parameters
+    ----------
+    element : str
+        Name of the clutch or brake in the train.
+    gaps : int
+        Number of oil films (friction surfaces), e.g. 2 per friction plate.
+    inner_radius, outer_radius : float
+        Of the friction lining, mm.
+    clearance : float
+        Oil film thickness per gap when open, mm (total free travel / gaps).
+    supply : float or None, default None
+        Oil flow fed to the pack, l/min; None: the gaps stay full (no aeration).
+    groove_factor : float, default 1.0
+        Share of the plate area that shears a film, (0, 1].
+
+    Examples
+    --------
+    >>> drag = ClutchDrag("C", gaps=8, inner_radius=65.0, outer_radius=80.0, clearance=0.2)
+    >>> round(float(drag.torque(1000.0, 10.0, 850.0)), 3)  # N·m at 1000 1/min slip, 10 mPa·s
+    1.521
+    """
+
+    element: str
+    gaps: int
+    inner_radius: float
+    outer_radius: float
+    clearance: float
+    supply: float | None = None
+    groove_factor: float = 1.0
+
+    def __post_init__(self) -> None:
+        owner = f"clutch drag of {self.element!r}"
+        if isinstance(self.gaps, bool) or not isinstance(self.gaps, int) or not 1 <= self.gaps <= 100:
+            raise LossModelError(f"{owner}: gaps must be a whole number of oil films in 1 ... 100, got {self.gaps!r}.")
+        r_i = positive(self.inner_radius, "inner_radius (mm)", owner)
+        r_o = positive(self.outer_radius, "outer_radius (mm)", owner)
+        if not r_o > r_i:
+            raise LossModelError(f"{owner}: outer_radius must exceed inner_radius, got {r_o!r} and {r_i!r}.")
+        h = positive(self.clearance, "clearance (mm)", owner)
+        if h > 0.05 * r_o:
+            raise LossModelError(f"{owner}: clearance {h!r} mm is no thin film on plates of radius {r_o!r} mm "
+                                 "(the model needs h < 0.05 r_o; typical: 0.1 ... 0.3 mm).")
+        supply = None if self.supply is None else positive(self.supply, "supply (l/min)", owner, allow_zero=True)
+        groove = positive(self.groove_factor, "groove_factor", owner)
+        if groove > 1.0:
+            raise LossModelError(f"{owner}: groove_factor is the share of the plate that shears oil, in (0, 1]; "
+                                 f"got {groove!r}.")
+        for name, value in (("inner_radius", r_i), ("outer_radius", r_o), ("clearance", h), ("supply", supply),
+                            ("groove_factor", groove)):
+            object.__setattr__(self, name, value)
+
+    # ---------------------------------------------------------------- the model
+    def _si(self):
+        return self.inner_radius * 1e-3, self.outer_radius * 1e-3, self.clearance * 1e-3
+
+    def film_flow(self, slip, viscosity, density, film_radius=None):
+        """Flow one gap passes with the film out to ``film_radius`` (default r_o), l/min.
+
+        Parameters
+        ----------
+        slip : float or array_like
+            Slip speed, 1/min.
+        viscosity : float or array_like
+            Dynamic viscosity η, mPa·s.
+        density : float or array_like
+            ρ, kg/m³.
+        film_radius : float or array_like, optional
+            r_e, mm (r_i < r_e ≤ r_o).
+
+        Returns
+        -------
+        ndarray
+            Q(r_e) = π ρ ω² h³ (r_e² − r_i²) / (40 η ln(r_e/r_i)), l/min.
+
+        References
+        ----------
+        Yuan et al. 2007, eq. (9) without the surface tension term.
+        """
+        r_i, r_o, h = self._si()
+        r_e = r_o if film_radius is None else np.asarray(film_radius, dtype=float) * 1e-3
+        omega = np.abs(np.asarray(slip, dtype=float)) * RPM_TO_RAD_S
+        eta = np.asarray(viscosity, dtype=float) * 1e-3
+        ratio = np.asarray(r_e / r_i, dtype=float)
+        with np.errstate(divide="ignore", invalid="ignore"):  # (r_e² − r_i²)/ln(r_e/r_i) → 2 r_i² at r_e = r_i
+            shape = np.where(ratio > 1.0 + 1e-12, (r_e ** 2 - r_i ** 2) / np.log(ratio), 2.0 * r_i ** 2)
+        q = np.pi * np.asarray(density, dtype=float) * omega ** 2 * h ** 3 * shape / (40.0 * eta)
+        return q * 6e4  # m³/s → l/min
+
+    def film_radius(self, slip, viscosity, density):
+        """Outer edge r_e of the oil film, mm: r_o while the supply fills the gap, less once it aerates.
+
+        Parameters
+        ----------
+        slip : float or array_like
+            Slip speed, 1/min.
+        viscosity : float or array_like
+            η, mPa·s.
+        density : float or array_like
+            ρ, kg/m³.
+
+        Returns
+        -------
+        ndarray
+            r_e, mm (found by bisection on the monotone Q(r_e), vectorised over points).
+
+        References
+        ----------
+        Yuan et al. 2007, eq. (9); Iqbal et al. 2013 (film shrinkage by aeration).
+        """
+        slip, viscosity, density = np.broadcast_arrays(*(np.asarray(v, dtype=float)
+                                                         for v in (slip, viscosity, density)))
+        full = np.full(slip.shape, self.outer_radius)
+        if self.supply is None:
+            return full
+        per_gap = self.supply / self.gaps
+        need = self.film_flow(slip, viscosity, density)
+        short = need > per_gap
+        if not np.any(short):
+            return full
+        low = np.full(short.sum(), self.inner_radius)
+        high = np.full(short.sum(), self.outer_radius)
+        args = slip[short], viscosity[short], density[short]
+        for _ in range(BISECTIONS):
+            middle = 0.5 * (low + high)
+            too_much = self.film_flow(*args, film_radius=middle) > per_gap
+            high = np.where(too_much, middle, high)
+            low = np.where(too_much, low, middle)
+        full[short] = 0.5 * (low + high)
+        return full
+
+    def torque(self, slip, viscosity, density):
+        """Drag torque magnitude, N·m, at slip speed ``slip`` (1/min) and the oil's η (mPa·s), ρ (kg/m³).
+
+        Parameters
+        ----------
+        slip : float or array_like
+            Speed difference across the element, 1/min (its sign does not matter).
+        viscosity : float or array_like
+            η at the oil temperature, mPa·s.
+        density : float or array_like
+            ρ at the oil temperature, kg/m³.
+
+        Returns
+        -------
+        ndarray
+            N_gaps f_g π η ω (r_e⁴ − r_i⁴) / (2 h) ≥ 0.
+
+        References
+        ----------
+        Yuan et al. 2007, eqs. (5)–(9); Kitabayashi et al. 2003 (groove factor).
+        """
+        r_i, _, h = self._si()
+        omega = np.abs(np.asarray(slip, dtype=float)) * RPM_TO_RAD_S
+        r_e = self.film_radius(slip, viscosity, density) * 1e-3
+        eta = np.asarray(viscosity, dtype=float) * 1e-3
+        return self.gaps * self.groove_factor * np.pi * eta * omega * (r_e ** 4 - r_i ** 4) / (2.0 * h) + 0.0
+
+    def loss(self, slip, viscosity, density):
+        """Power lost, W: T |ω_slip| ≥ 0.
+
+        Parameters
+        ----------
+        slip : float or array_like
+            1/min.
+        viscosity : float or array_like
+            η, mPa·s.
+        density : float or array_like
+            ρ, kg/m³.
+
+        Returns
+        -------
+        ndarray
+        """
+        return self.torque(slip, viscosity, density) * np.abs(np.asarray(slip, dtype=float)) * RPM_TO_RAD_S
+
+    def peak_slip(self, viscosity: float, density: float) -> float:
+        """Slip speed (1/min) of the largest drag: where the gap's pumped flow Q(r_o) equals the supply.
+
+        Parameters
+        ----------
+        viscosity : float
+            η, mPa·s.
+        density : float
+            ρ, kg/m³.
+
+        Returns
+        -------
+        float
+            1/min; infinite without a supply (the full film's drag grows without bound).
+        """
+        if self.supply is None:
+            return float("inf")
+        unit = float(self.film_flow(1.0, viscosity, density))  # Q ∝ ω²
+        return float(np.sqrt(self.supply / self.gaps / unit))
+
+    def reynolds(self, slip, viscosity, density):
+        """ρ ω r_o h / η of the film (laminar below :data:`LAMINAR_REYNOLDS`).
+
+        Parameters
+        ----------
+        slip, viscosity, density : float or array_like
+            1/min, mPa·s, kg/m³.
+
+        Returns
+        -------
+        ndarray
+        """
+        _, r_o, h = self._si()
+        return (np.asarray(density, dtype=float) * np.abs(np.asarray(slip, dtype=float)) * RPM_TO_RAD_S * r_o * h
+                / (np.asarray(viscosity, dtype=float) * 1e-3))

@@ -1,0 +1,198 @@
+"""The oil: kinematic viscosity at any temperature (ASTM D341, Walther), density and thermal data.
+
+Walther's equation, standardised in ASTM D341, is a straight line through two
+measured viscosities on the doubly logarithmic chart:
+
+.. math::
+
+    \\log_{10}\\log_{10}(\\nu + 0.7) = A - B \\log_{10} T
+
+with ν in mm²/s (cSt) and T in kelvin; A and B follow from ν at 40 °C and
+100 °C (the two values every data sheet gives, ISO 3104).  Valid for mineral
+and most synthetic oils from the cloud point up to the onset of thermal
+decomposition, for ν ≥ 2 mm²/s (ASTM D341; the 0.7 constant is the one for
+that range).  The density falls linearly with temperature,
+ρ(T) = ρ_15 (1 − α (T − 15 °C)), α ≈ 6.5·10⁻⁴ 1/K for mineral oils (DIN
+51757 / ASTM D1250 give tabulated values of this order); the dynamic
+viscosity is η = ρ ν.
+
+References
+----------
+ASTM D341-20, *Standard Practice for Viscosity-Temperature Equations and Charts for Liquid
+Petroleum or Hydrocarbon Products*, eq. (1) with Z = ν + 0.7;
+Walther, C.: *Über die Auswertung von Viskositätsangaben*, Erdöl und Teer 7 (1931) 382–384;
+DIN 51757:2011 (density of mineral oils and its temperature dependence).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ._checks import positive
+from .errors import LossModelError
+from .friction import Lubricant
+
+__all__ = ["Oil", "KELVIN", "walther_constants"]
+
+#: 0 °C in kelvin.
+KELVIN = 273.15
+#: Walther's constant for ν ≥ 2 mm²/s (ASTM D341).
+_WALTHER_SHIFT = 0.7
+#: Temperatures (°C) the viscosity may be asked at: the equation's useful range for gear oils.
+TEMPERATURE_RANGE = (-40.0, 200.0)
+
+
+def walther_constants(viscosity_40: float, viscosity_100: float) -> tuple[float, float]:
+    """A and B of Walther's equation through ν(40 °C) and ν(100 °C), mm²/s.
+
+    Parameters
+    ----------
+    viscosity_40, viscosity_100 : float
+        Kinematic viscosities at 40 °C and 100 °C, mm²/s (ν_40 > ν_100 ≥ 2).
+
+    Returns
+    -------
+    tuple of float
+        (A, B) with log10 log10(ν + 0.7) = A − B log10(T / K).
+
+    References
+    ----------
+    ASTM D341-20, eq. (1).
+    """
+    z1 = math.log10(math.log10(viscosity_40 + _WALTHER_SHIFT))
+    z2 = math.log10(math.log10(viscosity_100 + _WALTHER_SHIFT))
+    t1, t2 = math.log10(40.0 + KELVIN), math.log10(100.0 + KELVIN)
+    b = (z1 - z2) / (t2 - t1)
+    return z1 + b * t1, b
+
+
+@dataclass(frozen=True)
+class Oil:
+    """A lubricant given by its data sheet: ν at 40 and 100 °C, density, thermal data.
+
+    Parameters
+    ----------
+    viscosity_40, viscosity_100 : float
+        Kinematic viscosity at 40 °C and at 100 °C, mm²/s (ν_40 > ν_100 ≥ 2).
+    density : float, default 860
+        Density at 15 °C, kg/m³ (ATF and mineral gear oils: 840–880).
+    expansion : float, default 6.5e-4
+        α of ρ(T) = ρ_15 (1 − α (T − 15)), 1/K.
+    specific_heat : float, default 2000
+        c_p, J/(kg K) (mineral oils 1900–2100 at 80 °C).
+    lubricant_factor : float, default 1.0
+        X_L of Schlenk's mesh friction (1 for mineral oil).
+
+    Examples
+    --------
+    >>> oil = Oil(46.0, 6.8)
+    >>> round(float(oil.kinematic_viscosity(40.0)), 6), round(float(oil.kinematic_viscosity(100.0)), 6)
+    (46.0, 6.8)
+    >>> round(float(oil.dynamic_viscosity(80.0)), 2)  # mPa·s
+    9.14
+    """
+
+    viscosity_40: float
+    viscosity_100: float
+    density: float = 860.0
+    expansion: float = 6.5e-4
+    specific_heat: float = 2000.0
+    lubricant_factor: float = 1.0
+
+    def __post_init__(self) -> None:
+        owner = "Oil"
+        v40 = positive(self.viscosity_40, "viscosity_40 (mm^2/s at 40 degC)", owner)
+        v100 = positive(self.viscosity_100, "viscosity_100 (mm^2/s at 100 degC)", owner)
+        if v100 < 2.0:
+            raise LossModelError(f"{owner}: viscosity_100 must be >= 2 mm^2/s (ASTM D341's range), got {v100!r}.")
+        if not v40 > v100:
+            raise LossModelError(f"{owner}: viscosity_40 must exceed viscosity_100 (oil thins when warm), "
+                                 f"got {v40!r} and {v100!r}.")
+        density = positive(self.density, "density (kg/m^3 at 15 degC)", owner)
+        if not 500.0 <= density <= 2000.0:
+            raise LossModelError(f"{owner}: density must lie in 500 ... 2000 kg/m^3, got {density!r}.")
+        expansion = positive(self.expansion, "expansion (1/K)", owner, allow_zero=True)
+        if expansion > 2e-3:
+            raise LossModelError(f"{owner}: expansion must be at most 2e-3 1/K (oils: 6e-4 ... 8e-4), "
+                                 f"got {expansion!r}.")
+        for name, value in (("viscosity_40", v40), ("viscosity_100", v100), ("density", density),
+                            ("expansion", expansion),
+                            ("specific_heat", positive(self.specific_heat, "specific_heat (J/(kg K))", owner)),
+                            ("lubricant_factor", positive(self.lubricant_factor, "lubricant_factor (X_L)", owner))):
+            object.__setattr__(self, name, value)
+
+    def _temperature(self, temperature) -> np.ndarray:
+        t = np.asarray(temperature, dtype=float)
+        low, high = TEMPERATURE_RANGE
+        if not np.all(np.isfinite(t)) or np.any(t < low) or np.any(t > high):
+            bad = t[~(np.isfinite(t) & (t >= low) & (t <= high))].ravel()[0]
+            raise LossModelError(f"Oil: the temperature must lie in {low:g} ... {high:g} degC, got {float(bad)!r}.")
+        return t
+
+    def kinematic_viscosity(self, temperature):
+        """ν at ``temperature`` (°C; float or array), mm²/s, by Walther's equation (ASTM D341).
+
+        Parameters
+        ----------
+        temperature : float or array_like
+            Oil temperature, °C (−40 … 200).
+
+        Returns
+        -------
+        ndarray or float
+            ν, mm²/s.
+
+        References
+        ----------
+        ASTM D341-20, eq. (1): log10 log10(ν + 0.7) = A − B log10 T.
+        """
+        a, b = walther_constants(self.viscosity_40, self.viscosity_100)
+        t = self._temperature(temperature)
+        return 10.0 ** (10.0 ** (a - b * np.log10(t + KELVIN))) - _WALTHER_SHIFT
+
+    def density_at(self, temperature):
+        """ρ at ``temperature`` (°C), kg/m³: ρ_15 (1 − α (T − 15)).
+
+        Parameters
+        ----------
+        temperature : float or array_like
+            °C.
+
+        Returns
+        -------
+        ndarray or float
+            kg/m³.
+        """
+        return self.density * (1.0 - self.expansion * (self._temperature(temperature) - 15.0))
+
+    def dynamic_viscosity(self, temperature):
+        """η = ρ ν at ``temperature`` (°C), mPa·s.
+
+        Parameters
+        ----------
+        temperature : float or array_like
+            °C.
+
+        Returns
+        -------
+        ndarray or float
+            mPa·s (ν in mm²/s times ρ in g/cm³).
+        """
+        return self.kinematic_viscosity(temperature) * self.density_at(temperature) * 1e-3
+
+    def lubricant(self, temperature: float) -> Lubricant:
+        """The :class:`~epicyclic.losses.friction.Lubricant` (η at ``temperature``) for Schlenk's friction.
+
+        Parameters
+        ----------
+        temperature : float
+            °C.
+
+        Returns
+        -------
+        Lubricant
+        """
+        return Lubricant(float(self.dynamic_viscosity(float(temperature))), self.lubricant_factor)
