@@ -24,7 +24,16 @@ import typer
 
 from ._common import FormatOption, OutputFormat, SetOption, check_finite, emit, guarded, say
 
-__all__ = ["shift_map", "DEFAULT_MAP_INPUT_TORQUE"]
+__all__ = ["shift_map", "DEFAULT_MAP_INPUT_TORQUE", "limits_from_options", "EngineSpeedOption",
+           "MaxInputTorqueOption", "CapacityOption"]
+
+#: The carrying limits of ``shiftmap`` and ``cycle`` (:func:`limits_from_options`).
+EngineSpeedOption = Annotated[Optional[str], typer.Option(
+    "--engine-speed", help="Input speeds a gear may run at, LOW..HIGH. Default: 800..6000 1/min.")]
+MaxInputTorqueOption = Annotated[Optional[str], typer.Option(
+    "--max-input-torque", help="Most input (engine) torque. Default: no limit.")]
+CapacityOption = Annotated[Optional[list[str]], typer.Option(
+    "--capacity", help="Torque capacity of a shift element, NAME=TORQUE (repeatable).")]
 
 #: Input torque (N·m) the default output-torque axis reaches in first gear when no --max-input-torque is given.
 DEFAULT_MAP_INPUT_TORQUE = 500.0
@@ -87,12 +96,9 @@ def shift_map(
     torque: Annotated[Optional[str], typer.Option(
         "--torque", help="Output torques A..B:N. Default: 10 N*m to first gear's at the input torque limit "
                          "(500 N*m without one), 50 values.")] = None,
-    engine_speed: Annotated[Optional[str], typer.Option(
-        "--engine-speed", help="Input speeds a gear may run at, LOW..HIGH. Default: 800..6000 1/min.")] = None,
-    max_input_torque: Annotated[Optional[str], typer.Option(
-        "--max-input-torque", help="Most input (engine) torque. Default: no limit.")] = None,
-    capacity: Annotated[Optional[list[str]], typer.Option(
-        "--capacity", help="Torque capacity of a shift element, NAME=TORQUE (repeatable).")] = None,
+    engine_speed: EngineSpeedOption = None,
+    max_input_torque: MaxInputTorqueOption = None,
+    capacity: CapacityOption = None,
     schedule: Annotated[Optional[Path], typer.Option(
         "--schedule", help="A shift schedule to compare with: CSV of upshift lines (docs/shift-map.md).")] = None,
     gears: Annotated[Optional[str], typer.Option(

@@ -126,10 +126,8 @@ def _broadcast(groups: Sequence[Mapping[str, object]]) -> tuple[list[dict[str, n
         shape = np.broadcast_shapes(*(s for _, s in named))
     except ValueError:
         given = ", ".join(f"{n} has shape {s}" for n, s in named)
-        raise OperatingPointError(
-            f"solve_batch: the given arrays do not broadcast to one shape ({given}); give arrays of one shape, "
-            "or scalars beside them (numpy broadcasting rules)."
-        ) from None
+        raise OperatingPointError(f"solve_batch: the given arrays do not broadcast to one shape ({given}); give "
+                                  "arrays of one shape, or scalars beside them.") from None
     return [{k: np.broadcast_to(v, shape).ravel() for k, v in g.items()} for g in groups], shape
 
 

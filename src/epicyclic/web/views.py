@@ -112,7 +112,8 @@ def _transmission(train_file: TrainFile) -> Any:
 
     spec = train_file.transmission
     return Transmission(train_file.train, dict(spec.schedule), spec.input, spec.output,
-                        name=train_file.title or train_file.train.name, losses=dict(train_file.losses))
+                        name=train_file.title or train_file.train.name, losses=dict(train_file.losses),
+                        spin=getattr(train_file, "spin", None))
 
 
 def _unit_input(train_file: TrainFile, gear: str) -> str:
