@@ -30,7 +30,7 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results
     {"analysis", "losses", "transmission", "demo"},   # built on the solver: modes, loss models, gears
-    {"explain", "io", "plotting", "synthesis"},       # files, reports and pictures of solutions
+    {"explain", "explain_losses", "io", "plotting", "synthesis"},       # files, reports and pictures of solutions
     {"cli", "web"},                                   # the front ends
     {"__main__"},
 ))

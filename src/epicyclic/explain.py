@@ -229,7 +229,8 @@ def _p(value: float) -> str:
     return f"({text})" if text.startswith("-") else text
 
 
-def explain(solution: Solution, units: Units | None = None, lang: str = "en", title: str | None = None) -> Explanation:
+def explain(solution: Solution, units: Units | None = None, lang: str = "en", title: str | None = None, *,
+            losses=None, spin=None, gear: str | None = None, input: str | None = None) -> Explanation:
     """Write out the worked solution of ``solution``.
 
     Parameters
@@ -244,6 +245,15 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
         Language of the text; ``"de"`` uses the sources' German terms.
     title : str, optional
         Heading (default: the train's name).
+    losses : mapping element → ElementLosses, optional
+        The loss models the solution was solved with (a file's ``f.losses``): step 6 writes out
+        η0 at the point, μ and H_V of every mesh and the drag torques.
+    spin : SpinLosses, optional
+        The spin losses (a file's ``f.spin``): the oil at its temperature and every source.
+    gear : str, optional
+        The gear (a pump pressure by gear).
+    input : str, optional
+        The transmission's input (drives the pump by default).
 
     Returns
     -------
@@ -376,6 +386,11 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
         Step(t["balance"], tuple(balance)),
         Step(t["results"], tuple(results)),
     )
+    from .explain_losses import loss_step
+
+    extra = loss_step(solution, losses, spin, lang, gear=gear, input=input)
+    if extra is not None:
+        steps += (Step(*extra),)
     return Explanation(heading, lang, u, steps)
 
 
@@ -386,9 +401,14 @@ def _lever_lines(element, state, t, n, m, p, u) -> list[str]:
     n1, n2, n3 = (n(state.speeds[k]) for k in (a, b, c))
     eta = element.stationary_efficiency if isinstance(element, PlanetarySet) else element.efficiency
     w = state.loss_direction
+    from .explain_losses import model_efficiency
+
+    applied = model_efficiency(state)  # η0 the solver used: a loss model's at this point, or the element's
+    if applied is not None:
+        eta = applied
     label = f"{element.name} (1 = {state.ports[a]!r}, 2 = {state.ports[b]!r}, 3 = {state.ports[c]!r})"
     lines = [f"{label}:"]
-    if eta == 1.0:
+    if eta == 1.0 and not any(state.loss_sources.values()):
         lines.append("    " + t["lossless"])
         lines.append(f"    {_p(m1)}·({_p(n1)} − {_p(n3)}) + {_p(m2)}·({_p(n2)} − {_p(n3)}) = "
                      f"{fmt(m1 * (n1 - n3) + m2 * (n2 - n3), 4)} ≈ 0")

@@ -196,3 +196,20 @@ def _write(text: str) -> Path:
     path = Path(tempfile.mkdtemp()) / "spin.toml"
     path.write_text(text, encoding="utf-8")
     return path
+
+
+def test_explain_writes_out_the_loss_models_in_english_and_german():
+    from epicyclic.explain import explain
+
+    f = load_train_file(EXAMPLE)
+    solution = f.solve()
+    spec = f.transmission
+    en = explain(solution, f.units, losses=f.losses, spin=f.spin, gear=f.gear, input=spec.input).text()
+    assert "lossless element" not in en.split("4. Torque balance")[0].split("P2 (")[1]  # η0 from the models
+    for part in ("6. Losses by source", "H_V =", "μ =", "η0 at the point", "Walther (ASTM D341)",
+                 "T = V·Δp/(2π·η_hm)", "7.69e-6", "(Yuan et al. 2007)"):
+        assert part in en
+    de = explain(solution, f.units, lang="de", losses=f.losses, spin=f.spin, gear=f.gear, input=spec.input).text()
+    assert "Verluste nach Quellen" in de and "Pumpe an" in de and "Eingriff" in de
+    total = solution.loss
+    assert f"(solver: {total:.6g}" in en or "solver:" in en

@@ -42,7 +42,8 @@ def analyze(
         text = markdown_report(solution, units, title=title) + sections.markdown()
     elif format is OutputFormat.html:
         text = html_report(solution, units, title=title, source=source, description=train_file.description,
-                           lang=lang, sections=sections.html(), geometry=train_file.geometry)
+                           lang=lang, sections=sections.html(), geometry=train_file.geometry,
+                           losses=train_file.losses, spin=train_file.spin)
     else:
         text = text_report(solution, units, title=title) + sections.text()
     emit(text, out)

@@ -46,5 +46,8 @@ def explain(
 
     train_file = load(file, gear, set_)
     solution = solved(train_file, file)
-    result = worked_solution(solution, train_file.units, lang=lang.value, title=report_title(train_file))
+    spec = train_file.transmission
+    result = worked_solution(solution, train_file.units, lang=lang.value, title=report_title(train_file),
+                             losses=train_file.losses, spin=train_file.spin, gear=train_file.gear,
+                             input=None if spec is None else spec.input)
     emit(result.markdown() if format is ExplainFormat.markdown else result.text(), out)

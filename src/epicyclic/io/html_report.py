@@ -77,6 +77,8 @@ def html_report(
     lang: str = "en",
     sections: str = "",
     geometry: Any = None,
+    losses: Any = None,
+    spin: Any = None,
 ) -> str:
     """The report as one self-contained HTML document.
 
@@ -99,6 +101,9 @@ def html_report(
     geometry : mapping set name → SetGeometry, optional
         The file's gear geometry (``TrainFile.geometry``): the speed plan draws
         those sets at their operating pitch radii.
+    losses, spin : optional
+        The file's loss models (``TrainFile.losses``, ``TrainFile.spin``): the worked solution writes
+        out η0 at the point, μ and H_V per mesh and every loss source.
 
     Returns
     -------
@@ -159,6 +164,6 @@ def html_report(
         from ..explain import explain
 
         parts.append("<h2>Worked solution</h2>")
-        parts.append(explain(solution, units, lang=lang, title=name).html())
+        parts.append(explain(solution, units, lang=lang, title=name, losses=losses, spin=spin).html())
     parts.append("</body></html>")
     return "\n".join(parts) + "\n"

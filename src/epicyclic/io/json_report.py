@@ -19,7 +19,9 @@ The report is :meth:`Solution.to_dict() <epicyclic.results.Solution.to_dict>`
         "input_power", "output_power", "loss", "efficiency", "self_locking",
         "circulation": {"power", "ratio", "loops": [{"path", "power", "ratio"}],
                         "largest_element_power", "largest_element_ratio", "indeterminate"},
-        "degrees_of_freedom", "warnings", "ratio"
+        "degrees_of_freedom", "warnings", "ratio",
+        "housing_loss_sources": {source: power},   # only with spin losses (pump, seals)
+        "oil_temperature": degC                    # only with spin losses
       },
       "ideal": {... same as "solution", lossless ...} | null,
       "geometry": {element: {"kind", "geometry", "fitting", "forces"}}   # only with geometry; mm, deg, N, N*m
@@ -101,6 +103,8 @@ def _convert_solution(data: dict[str, Any], units: Units) -> dict[str, Any]:
     out["elements"] = elements
     for key in ("input_power", "output_power", "loss"):
         out[key] = power(data[key])
+    if "housing_loss_sources" in data:  # pump, seals (spin losses, docs/losses.md)
+        out["housing_loss_sources"] = {k: power(v) for k, v in data["housing_loss_sources"].items()}
     circ = dict(data["circulation"])
     for key in ("power", "largest_element_power"):
         circ[key] = None if circ[key] is None else power(circ[key])

@@ -115,6 +115,8 @@ def summary_lines(solution: Solution, units: Units | None = None) -> list[tuple[
     if set(sources) - {"mesh"}:  # losses from loss models (docs/losses.md)
         lines.append(("loss by source", ", ".join(f"{k} {fmt(u.power_from_core(v))} {u.power}"
                                                    for k, v in sources.items())))
+    if solution.oil_temperature is not None:
+        lines.append(("oil temperature", f"{fmt(solution.oil_temperature, 4)} degC"))
     if solution.self_locking is not None:
         lines.append(("efficiency", "— (self-locking)"))
         lines.append(("self-locking", solution.self_locking.message))

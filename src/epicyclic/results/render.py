@@ -127,6 +127,8 @@ def solution_to_dict(sol: Any) -> dict[str, Any]:
         "circulation": sol.circulation.to_dict(),
         "degrees_of_freedom": sol.degrees_of_freedom,
         "warnings": list(sol.warnings),
+        **({"housing_loss_sources": dict(sol.housing_loss_sources)} if sol.housing_loss_sources else {}),
+        **({"oil_temperature": sol.oil_temperature} if sol.oil_temperature is not None else {}),
     }
 
 

@@ -147,16 +147,22 @@ def loss_split(solution: Solution, units: Units) -> Any:
     load-dependent mesh losses and load-independent losses add up).
     """
     from ..io.tables import ReportTable
-    from ..losses.element import SOURCES
+    from ..losses.spin import ALL_SOURCES as SOURCES
 
     def power(value: float) -> str:
         return fmt(units.power_from_core(value), 6)
 
     elements = [e for e in solution.elements.values() if e.loss_sources]
     sources = [s for s in SOURCES if any(s in e.loss_sources for e in elements)]
-    sources += sorted({s for e in elements for s in e.loss_sources} - set(sources))
+    housing_sources = set(solution.housing_loss_sources)
+    sources = [s for s in SOURCES if any(s in e.loss_sources for e in elements) or s in housing_sources]
+    sources += sorted(({s for e in elements for s in e.loss_sources} | housing_sources) - set(sources))
     rows = [(e.name, *(power(e.loss_sources.get(s, 0.0)) for s in sources), power(sum(e.loss_sources.values())))
             for e in elements]
+    housing = solution.housing_loss_sources
+    if housing:  # auxiliaries that belong to no element: pump, seals
+        rows.append(("housing (pump, seals)", *(power(housing.get(s, 0.0)) for s in sources),
+                     power(sum(housing.values()))))
     totals = solution.loss_sources
     rows.append(("all", *(power(totals.get(s, 0.0)) for s in sources), power(sum(totals.values()))))
     return ReportTable("Losses by source", ("element", *(f"{s} [{units.power}]" for s in sources),

@@ -113,7 +113,7 @@ def _transmission(train_file: TrainFile) -> Any:
     spec = train_file.transmission
     return Transmission(train_file.train, dict(spec.schedule), spec.input, spec.output,
                         name=train_file.title or train_file.train.name, losses=dict(train_file.losses),
-                        spin=getattr(train_file, "spin", None))
+                        spin=train_file.spin)
 
 
 def _unit_input(train_file: TrainFile, gear: str) -> str:
@@ -168,8 +168,11 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
             circulation=circulation_view(solution, units),
             warnings=other_warnings(solution),
             figures=[(k, k.options(subject)) for k in applicable(subject)],
-            explanation=explain(solution, units, lang=state.lang, title=train_file.title).html(),
-            loss_split=loss_split(solution, units) if train_file.losses else None,
+            explanation=explain(solution, units, lang=state.lang, title=train_file.title, losses=train_file.losses,
+                                spin=train_file.spin, gear=train_file.gear,
+                                input=None if train_file.transmission is None else train_file.transmission.input
+                                ).html(),
+            loss_split=loss_split(solution, units) if train_file.losses or train_file.spin else None,
         )
     return result
 
@@ -411,5 +414,6 @@ def download(state: PageState, kind: str) -> Reply:
     else:
         description = " ".join(filter(None, (train_file.description, *subject.context.notes)))
         body = html_report(subject.solution, units, title=train_file.title, source=state.source,
-                           description=description, lang=state.lang, geometry=subject.context.geometry)
+                           description=description, lang=state.lang, geometry=subject.context.geometry,
+                           losses=train_file.losses, spin=train_file.spin)
     return Reply(body, media_type=_DOWNLOADS[kind], filename=name)
