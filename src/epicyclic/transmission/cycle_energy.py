@@ -356,8 +356,14 @@ def run_cycle(transmission, cycle: DriveCycle, *, rule: GearRule | None = None, 
         loss = np.full((len(gears), cycle.rows), np.inf)
         carries = np.zeros((len(gears), cycle.rows), dtype=bool)
         for k, gear in enumerate(gears):
-            n_in = speed * abs(t.ratio(gear))
-            rows = np.flatnonzero(moving & (n_in >= limits.input_speed[0]) & (n_in <= limits.input_speed[1]))
+            # rows the gear cannot carry by its kinematics alone are not solved: the input speed n_out·i is
+            # exact, and the lossless input torque T_out/i is a lower bound of the real one in drive
+            ratio = abs(t.ratio(gear))
+            n_in = speed * ratio
+            reach = moving & (n_in >= limits.input_speed[0]) & (n_in <= limits.input_speed[1])
+            if limits.max_input_torque is not None:
+                reach &= torque / ratio <= limits.max_input_torque
+            rows = np.flatnonzero(reach)
             if rows.size:
                 points = solve(gear, rows)
                 solved[gear] = (rows, points)
@@ -395,16 +401,19 @@ def _assemble(t, cycle: DriveCycle, names, solved, solve, moving, limits: CarryL
     for step, gear in enumerate(distinct):
         rows = np.flatnonzero((gear_array == gear) & moving)
         have = solved.get(gear)
-        if have is not None and np.all(np.isin(rows, have[0])):
-            position = np.searchsorted(have[0], rows)
-            points, pick = have[1], position
-        else:
-            points, pick = solve(gear, rows), slice(None)
-        p_in[rows], p_out[rows], loss[rows] = points.input_power[pick], points.output_power[pick], points.loss[pick]
-        carried[rows] = limits.carries(points)[pick]
-        for target, parts in ((by_source, points.losses_by_source), (by_element, points.losses_by_element)):
-            for key, value in parts.items():
-                target.setdefault(key, np.zeros(rows_total))[rows] = np.broadcast_to(value, points.shape)[pick]
+        parts = []  # (rows of the cycle, points, index into the points) from the rule's solve, and solved now
+        if have is not None:
+            inside = np.isin(rows, have[0])
+            parts.append((rows[inside], have[1], np.searchsorted(have[0], rows[inside])))
+            rows = rows[~inside]  # rows the rule did not solve in this gear (a launch in first gear)
+        if rows.size:
+            parts.append((rows, solve(gear, rows), slice(None)))
+        for rows, points, pick in parts:
+            p_in[rows], p_out[rows] = points.input_power[pick], points.output_power[pick]
+            loss[rows], carried[rows] = points.loss[pick], limits.carries(points)[pick]
+            for target, values in ((by_source, points.losses_by_source), (by_element, points.losses_by_element)):
+                for key, value in values.items():
+                    target.setdefault(key, np.zeros(rows_total))[rows] = np.broadcast_to(value, points.shape)[pick]
         if progress is not None and rule.mode != "best":
             progress(step + 1, len(distinct))
     if progress is not None and rule.mode == "best":
