@@ -89,7 +89,19 @@ class ShiftSchedule:
 
     @staticmethod
     def label(k: int, gears: Sequence[str]) -> str:
-        """``"1-2"``: the name of upshift ``k`` (from ``gears[k]`` to ``gears[k + 1]``)."""
+        """``"1-2"``: the name of upshift ``k`` (from ``gears[k]`` to ``gears[k + 1]``).
+
+        Parameters
+        ----------
+        k : int
+            The upshift's index.
+        gears : sequence of str
+            The gears in shift order.
+
+        Returns
+        -------
+        str
+        """
         return f"{gears[k]}-{gears[k + 1]}"
 
     @classmethod
