@@ -52,17 +52,16 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.special import lambertw
 
 from ..results.solution import RPM_TO_RAD_S
 from ._checks import positive
 from .errors import LossModelError
 
-__all__ = ["ClutchDrag", "LAMINAR_REYNOLDS", "BISECTIONS"]
+__all__ = ["ClutchDrag", "LAMINAR_REYNOLDS"]
 
 #: Reynolds number ρ ω r_o h / η up to which the film is laminar (Couette flow).
 LAMINAR_REYNOLDS = 2000.0
-#: Halvings of the film-edge search (r_o − r_i) / 2^60: exact to round-off.
-BISECTIONS = 60
 
 
 @dataclass(frozen=True)
@@ -172,7 +171,7 @@ class ClutchDrag:
         Returns
         -------
         ndarray
-            r_e, mm (found by bisection on the monotone Q(r_e), vectorised over points).
+            r_e, mm (Q(r_e) = supply solved in closed form with Lambert's W, vectorised over points).
 
         References
         ----------
@@ -183,6 +182,23 @@ class ClutchDrag:
         full = np.full(slip.shape, self.outer_radius)
         if self.supply is None:
             return full
+        per_gap = self.supply / self.gaps
+        short = self.film_flow(slip, viscosity, density) > per_gap
+        if not np.any(short):
+            return full
+        # Q(r_e) = 2 A r_i² (x − 1)/ln x with x = (r_e/r_i)², A = π ρ ω² h³/(40 η): (x − 1)/ln x = k is
+        # x = e^u, u = −W₋₁(−e^(−1/k)/k) − 1/k (Lambert W, lower branch; the principal one is x = 1)
+        r_i = self.inner_radius * 1e-3
+        a = (np.pi * density[short] * (np.abs(slip[short]) * RPM_TO_RAD_S) ** 2 * (self.clearance * 1e-3) ** 3
+             / (40.0 * viscosity[short] * 1e-3))
+        k = per_gap / 6e4 / (2.0 * a * r_i ** 2)
+        edge = np.full(k.shape, self.inner_radius)
+        film = k > 1.0 + 1e-12  # else not even Q(r_i) is supplied: no coherent film
+        kk = k[film]
+        u = -np.real(lambertw(-np.exp(-1.0 / kk) / kk, -1)) - 1.0 / kk
+        edge[film] = np.minimum(self.inner_radius * np.exp(0.5 * u), self.outer_radius)
+        full[short] = edge
+        return full
         per_gap = self.supply / self.gaps
         need = self.film_flow(slip, viscosity, density)
         short = need > per_gap

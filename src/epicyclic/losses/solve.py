@@ -59,7 +59,7 @@ TOLERANCE = 1e-12
 #: Rounds of the fixed-point iteration before giving up.
 MAX_ITERATIONS = 30
 #: Largest change of the sump temperature (K) between two thermal rounds at convergence.
-TEMPERATURE_TOLERANCE = 1e-6
+TEMPERATURE_TOLERANCE = 1e-7
 #: Rounds of the thermal fixed point before giving up.
 MAX_THERMAL_ITERATIONS = 40
 
@@ -183,26 +183,75 @@ def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses:
     """
     models = _models(train, losses)
     spin = _checked_spin(spin, train, input)
-    if spin is None:
-        return _solve_point(train, operating_point, models, tolerance, max_iterations)
-    base = solve(train, operating_point, lossless=True)
-    speeds = {s: np.asarray(base.shafts[s].speed) for s in train.shafts if s != HOUSING}
-    temperature = np.asarray(_start_temperature(spin))
-    for _ in range(MAX_THERMAL_ITERATIONS):
-        spin_state = spin.evaluate(speeds, temperature, train=train, gear=gear, input=input)
-        state = _solve_point(train, operating_point, models, tolerance, max_iterations, spin_state)
-        if not spin.thermal:
-            break
-        new = _thermal_round(spin, state, spin_state, speeds, (), train, gear, input)
-        settled = abs(float(new) - float(temperature)) <= TEMPERATURE_TOLERANCE
-        temperature = new
-        if settled:
-            spin_state = spin.evaluate(speeds, temperature, train=train, gear=gear, input=input)
-            state = _solve_point(train, operating_point, models, tolerance, max_iterations, spin_state)
-            break
-    else:
-        raise _no_thermal_fixed_point()
-    return state.replace(oil_temperature=float(temperature))
+    if spin is None and not models:
+        return solve(train, operating_point)
+    state = solve(train, operating_point, lossless=True)
+    oil = None if spin is None else _OilState(spin, {s: np.asarray(state.shafts[s].speed) for s in train.shafts
+                                                     if s != HOUSING}, (), train, gear, input)
+
+    def speeds(model):
+        e = state.elements[model.name]
+        return {p: e.speeds[p] for p in model.ports if p != "housing"}
+
+    def torques(model):
+        e = state.elements[model.name]
+        return {p: e.torques[p] for p in model.ports if p != "housing"}
+
+    def run(efficiencies, loss_torques):
+        return solve(train, operating_point, efficiencies=efficiencies or None, loss_torques=loss_torques or None)
+
+    for state, temperature in _fixed_point(models, oil, speeds, torques, run, tolerance, max_iterations, ""):
+        pass
+    return state if oil is None else state.replace(oil_temperature=float(temperature))
+
+
+class _OilState:
+    """The spin losses at the current oil temperature, and the thermal balance's next temperature."""
+
+    def __init__(self, spin: SpinLosses, speeds, shape, train, gear, input):
+        self.spin, self.speeds, self.shape = spin, speeds, shape
+        self.where = dict(train=train, gear=gear, input=input)
+        self.temperature = np.full(shape, _start_temperature(spin)) if shape else np.asarray(_start_temperature(spin))
+        self.state = spin.evaluate(speeds, self.temperature, **self.where)
+
+    def update(self, solution) -> float:
+        """Move to the temperature of the heat balance at ``solution``'s losses; the change, K (0 if fixed)."""
+        if not self.spin.thermal:
+            return 0.0
+        new = _thermal_round(self.spin, solution, self.state, self.speeds, self.shape, **self.where)
+        change = float(np.max(np.abs(new - self.temperature), initial=0.0))
+        self.temperature = new
+        self.state = self.spin.evaluate(self.speeds, new, **self.where)
+        return change
+
+
+def _fixed_point(models, oil, speeds, torques, run, tolerance, max_iterations, where):
+    """Yield (state, oil temperature) of each round until the factors and the temperature settle.
+
+    One loop for both fixed points: each round evaluates the mesh models at the last state and the
+    oil temperature, solves, and moves the temperature to the heat balance of that solution; once it
+    moves by no more than :data:`TEMPERATURE_TOLERANCE` it stays, and the factors settle at it.
+    """
+    previous, settled = None, False
+    rounds = max_iterations + (MAX_THERMAL_ITERATIONS if oil is not None and oil.spin.thermal else 0)
+    for _ in range(rounds):
+        spin_state = None if oil is None else oil.state
+        temperature = None if oil is None else oil.temperature
+        efficiencies, loss_torques = _state(models, speeds, torques, _viscosity(spin_state))
+        state = run(efficiencies, _merged(loss_torques, spin_state))
+        yield state, temperature
+        mesh_change = _change(previous, efficiencies) if models else 0.0
+        previous = efficiencies
+        if not settled:  # the temperature moves until it settles, then stays (the factors settle at it)
+            settled = oil is None or oil.update(state) <= TEMPERATURE_TOLERANCE
+        if mesh_change <= tolerance and settled:
+            return
+    if settled:
+        raise LossModelError(
+            f"losses: the load-dependent efficiencies did not settle in {max_iterations} rounds{where}; the train "
+            "is too close to self-locking for the friction model (check the friction inputs)."
+        )
+    raise _no_thermal_fixed_point()
 
 
 def _start_temperature(spin: SpinLosses) -> float:
@@ -217,36 +266,6 @@ def _no_thermal_fixed_point() -> LossModelError:
         f"losses: the sump temperature did not settle in {MAX_THERMAL_ITERATIONS} rounds of the thermal "
         "balance (losses and temperature keep pushing each other); give a fixed [lubricant] temperature or check "
         "the [housing] and the loss inputs."
-    )
-
-
-def _solve_point(train, operating_point, models, tolerance, max_iterations, spin_state=None):
-    """The fixed point of the load-dependent losses at one operating point (spin torques held)."""
-    if not models:
-        if spin_state is None:
-            return solve(train, operating_point)
-        return solve(train, operating_point, loss_torques=_merged({}, spin_state))
-    state = solve(train, operating_point, lossless=True)
-
-    def speeds(model):
-        e = state.elements[model.name]
-        return {p: e.speeds[p] for p in model.ports if p != "housing"}
-
-    def torques(model):
-        e = state.elements[model.name]
-        return {p: e.torques[p] for p in model.ports if p != "housing"}
-
-    previous = None
-    for _ in range(max_iterations):
-        efficiencies, loss_torques = _state(models, speeds, torques, _viscosity(spin_state))
-        state = solve(train, operating_point, efficiencies=efficiencies,
-                      loss_torques=_merged(loss_torques, spin_state))
-        if _change(previous, efficiencies) <= tolerance:
-            return state
-        previous = efficiencies
-    raise LossModelError(
-        f"losses: the load-dependent efficiencies did not settle in {max_iterations} rounds; the train is too "
-        "close to self-locking for the friction model (check the friction inputs)."
     )
 
 
@@ -301,37 +320,11 @@ def solve_batch_with_losses(train: GearTrain, losses: Mapping[str, ElementLosses
     models = _models(train, losses)
     common = dict(speeds=speeds, torques=torques, powers=powers, drives=drives, loads=loads)
     spin = _checked_spin(spin, train, input)
-    if spin is None:
-        return _solve_batch(train, models, common, tolerance, max_iterations)
-    base = solve_batch(train, **common)  # the speeds: kinematics, which no loss changes
-    shaft_speeds = {s: base.speeds[s] for s in train.shafts if s != HOUSING}
-    shape = base.shape
-    temperature = np.full(shape, _start_temperature(spin))
-    for _ in range(MAX_THERMAL_ITERATIONS):
-        spin_state = spin.evaluate(shaft_speeds, temperature, train=train, gear=gear, input=input)
-        state = _solve_batch(train, models, common, tolerance, max_iterations, spin_state)
-        if not spin.thermal:
-            break
-        new = _thermal_round(spin, state, spin_state, shaft_speeds, shape, train, gear, input)
-        settled = float(np.max(np.abs(new - temperature), initial=0.0)) <= TEMPERATURE_TOLERANCE
-        temperature = new
-        if settled:
-            spin_state = spin.evaluate(shaft_speeds, temperature, train=train, gear=gear, input=input)
-            state = _solve_batch(train, models, common, tolerance, max_iterations, spin_state)
-            break
-    else:
-        raise _no_thermal_fixed_point()
-    return replace(state, oil_temperature=np.array(temperature))
-
-
-def _solve_batch(train, models, common, tolerance, max_iterations, spin_state=None) -> BatchSolution:
-    """The batch fixed point of the load-dependent losses (spin torques held)."""
-    if not models:
-        if spin_state is None:
-            return solve_batch(train, **common)
-        return solve_batch(train, loss_torques=_merged({}, spin_state), **common)
-    unit = {name: {"mesh": 1.0} for name in models}
-    state = solve_batch(train, efficiencies=unit, **common)
+    if spin is None and not models:
+        return solve_batch(train, **common)
+    state = solve_batch(train, efficiencies={name: {"mesh": 1.0} for name in models} or None, **common)
+    oil = None if spin is None else _OilState(spin, {s: state.speeds[s] for s in train.shafts if s != HOUSING},
+                                              state.shape, train, gear, input)
 
     def element_speeds(model):
         return {p: state.speeds[shaft] for p, shaft in model.ports.items() if p != "housing"}
@@ -339,15 +332,10 @@ def _solve_batch(train, models, common, tolerance, max_iterations, spin_state=No
     def element_torques(model):
         return {p: state.port_torques[(model.name, p)] for p in model.ports if p != "housing"}
 
-    previous = None
-    for _ in range(max_iterations):
-        efficiencies, loss_torques = _state(models, element_speeds, element_torques, _viscosity(spin_state))
-        state = solve_batch(train, efficiencies=efficiencies, loss_torques=_merged(loss_torques, spin_state),
-                            **common)
-        if _change(previous, efficiencies) <= tolerance:
-            return state
-        previous = efficiencies
-    raise LossModelError(
-        f"losses: the load-dependent efficiencies did not settle in {max_iterations} rounds at some operating "
-        "points; the train is too close to self-locking for the friction model there."
-    )
+    def run(efficiencies, loss_torques):
+        return solve_batch(train, efficiencies=efficiencies or None, loss_torques=loss_torques or None, **common)
+
+    for state, temperature in _fixed_point(models, oil, element_speeds, element_torques, run, tolerance,
+                                           max_iterations, " at some operating points"):
+        pass
+    return state if oil is None else replace(state, oil_temperature=np.array(temperature))

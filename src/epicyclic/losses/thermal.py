@@ -15,8 +15,8 @@ a painted or cast surface), σ Stefan–Boltzmann's constant, and k_cool the
 cooler's heat transfer W/K to coolant at ϑ_c.  P_Q rises monotonically with
 the sump temperature ϑ, so P_Q(ϑ) = P_V has one root; since the spin losses
 fall with temperature (the oil thins), the balance P_Q(ϑ) = P_V(ϑ) has one
-root too, found by bisection (:func:`steady_temperature`), vectorised over
-operating points.
+root too, found by bracketed regula falsi (Illinois rule, :func:`steady_temperature`),
+vectorised over operating points.
 
 Validity: a housing in still or moving air with its whole surface at the sump
 temperature (ISO/TR 14179-1's assumption; a real housing is cooler far from the
@@ -43,14 +43,17 @@ from ._checks import fraction, positive
 from .errors import LossModelError
 from .oil import KELVIN
 
-__all__ = ["Housing", "steady_temperature", "STEFAN_BOLTZMANN", "MAX_SUMP_TEMPERATURE", "BISECTIONS"]
+__all__ = ["Housing", "steady_temperature", "STEFAN_BOLTZMANN", "MAX_SUMP_TEMPERATURE", "ITERATIONS", "TOLERANCE"]
 
 #: σ, W/(m² K⁴).
 STEFAN_BOLTZMANN = 5.670374419e-8
 #: Highest sump temperature searched, °C: hotter than any oil survives.
 MAX_SUMP_TEMPERATURE = 200.0
-#: Halvings of the temperature search (200 K / 2^40: far below 1e-9 K).
-BISECTIONS = 40
+#: Most steps of the temperature search (regula falsi, Illinois rule; each step at least halves the
+#: bracket's stale side, so 100 steps are far more than the tolerance needs).
+ITERATIONS = 100
+#: Width of the temperature bracket at which the search stops, K.
+TOLERANCE = 1e-10
 
 
 @dataclass(frozen=True)
@@ -151,7 +154,7 @@ class Housing:
 
 def steady_temperature(housing: Housing, loss: Callable[[np.ndarray], np.ndarray], shape: tuple[int, ...],
                        *, ceiling: float = MAX_SUMP_TEMPERATURE) -> np.ndarray:
-    """The sump temperature ϑ at which P_Q(ϑ) = P_V(ϑ), at every operating point (bisection).
+    """The sump temperature ϑ at which P_Q(ϑ) = P_V(ϑ), at every operating point.
 
     Parameters
     ----------
@@ -167,7 +170,7 @@ def steady_temperature(housing: Housing, loss: Callable[[np.ndarray], np.ndarray
     Returns
     -------
     ndarray
-        ϑ, °C, within 1e-9 K.
+        ϑ, °C, within :data:`TOLERANCE` (regula falsi with the Illinois rule, bracketed).
 
     Raises
     ------
@@ -183,17 +186,31 @@ def steady_temperature(housing: Housing, loss: Callable[[np.ndarray], np.ndarray
                                                                                          housing.coolant)
     low = np.full(shape, coolest)
     high = np.full(shape, float(ceiling))
-    excess = loss(high) - housing.dissipated(high)
-    if np.any(excess > 0):
+    f_high = loss(high) - housing.dissipated(high)
+    if np.any(f_high > 0):
         worst = float(np.max(loss(high)))
         raise LossModelError(
             f"thermal balance: the losses ({worst:.4g} W at {ceiling:g} degC) exceed what the housing sheds "
             f"({float(np.min(housing.dissipated(high))):.4g} W) at some operating points: no steady sump "
             "temperature below that; enlarge [housing] area or add a cooler, or give a fixed temperature."
         )
-    for _ in range(BISECTIONS):
-        middle = 0.5 * (low + high)
-        hotter = loss(middle) > housing.dissipated(middle)
-        low = np.where(hotter, middle, low)
-        high = np.where(hotter, high, middle)
-    return 0.5 * (low + high)
+    f_low = loss(low) - housing.dissipated(low)  # > 0: the losses exceed what a cold housing sheds
+    cold = f_low <= 0  # even the coldest sump sheds the losses: it stays at the coolest temperature
+    # regula falsi with the Illinois rule (superlinear, always bracketed), vectorised over the points
+    x = np.where(cold, low, 0.5 * (low + high))
+    side = np.zeros(shape)
+    for _ in range(ITERATIONS):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            guess = np.where(f_low != f_high, high - f_high * (high - low) / (f_high - f_low), 0.5 * (low + high))
+        guess = np.where(cold, low, np.clip(guess, low, high))
+        step = np.abs(guess - x)
+        x = guess
+        if np.all(cold | (step <= TOLERANCE) | (high - low <= TOLERANCE)):
+            break
+        f_x = loss(x) - housing.dissipated(x)
+        hotter = f_x > 0  # the root lies above x
+        low, high = np.where(hotter, x, low), np.where(hotter, high, x)
+        f_low = np.where(hotter, f_x, np.where(side == -1, 0.5 * f_low, f_low))   # Illinois: halve the stale end
+        f_high = np.where(hotter, np.where(side == 1, 0.5 * f_high, f_high), f_x)
+        side = np.where(hotter, 1, -1)
+    return x

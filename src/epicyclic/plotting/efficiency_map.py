@@ -102,5 +102,8 @@ def efficiency_map_figure(emap: Any, *, figsize: tuple[float, float] = (11.0, 4.
         right.set_title("total loss (no drag or spin-loss model)", fontsize=10)
     right.set_xlabel(left.get_xlabel())
     right.set_ylabel(left.get_ylabel())
-    right.set_title(right.get_title() + f"\nsum over the map: {text}", fontsize=10)
+    import textwrap
+
+    summed = textwrap.fill(f"sum over the map: {text}", 72)  # many sources: wrapped, not over the colour bar
+    right.set_title(right.get_title() + "\n" + summed, fontsize=10 if "\n" not in summed else 9)
     return fig
