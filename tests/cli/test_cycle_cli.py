@@ -58,6 +58,10 @@ def test_hostile_cycle_files_are_exit_2(tmp_path, text, says):
     (["--gear-rule", "fast"], "--gear-rule"),
     (["--gear-rule", "given"], "no 'gear' column"),
     (["-o", "x.png"], "--out"),
+    (["--gear-rule", "best", "--schedule", str(EXAMPLES / "schedules" / "zf_8hp70_upshift.csv")],
+     "--schedule is read by --gear-rule schedule only"),
+    (["--min-dwell", "nan"], "min_dwell"),
+    (["--mass", "-3"], "mass"),
 ])
 def test_bad_options_are_exit_2(args, says):
     result = runner.invoke(app, ["cycle", FILE, "--cycle", WLTC, *args] if "--wheel-radius" in args

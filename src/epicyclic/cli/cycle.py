@@ -105,6 +105,8 @@ def cycle(
     mode = gear_rule or ("schedule" if given is not None else "given" if drive_cycle.gear is not None else "best")
     if mode not in ("given", "best", "schedule"):
         raise ModelError(f"--gear-rule {mode!r:.40}: expected given, best or schedule.")
+    if given is not None and mode != "schedule":
+        raise ModelError(f"--schedule is read by --gear-rule schedule only, not by --gear-rule {mode}; drop one.")
     if mode == "given" and drive_cycle.gear is None:
         raise ModelError(f"--gear-rule given: {cycle_file} has no 'gear' column; give one, or --gear-rule best.")
     rule = GearRule(mode, given, min_dwell, hysteresis)
