@@ -185,3 +185,21 @@ def test_vehicle_refuses(kwargs, says):
 def test_road_load_needs_the_mass():
     with pytest.raises(ModelError, match="mass"):
         Vehicle(0.3, 3.0).tractive_force(10.0, 0.0, 0.0)
+
+
+@pytest.mark.parametrize("dwell, hysteresis, max_torque", [(0.0, 0.0, None), (2.0, 0.0, 500.0), (3.0, 40.0, 450.0)])
+def test_pruning_by_the_spin_losses_changes_nothing(spin_transmission, monkeypatch, dwell, hysteresis, max_torque):
+    # the best-gear rule skips gears whose spin losses alone exceed the least loss found; solving every gear
+    # at every row (the bound switched off) must give the same gears and energies
+    import epicyclic.transmission.cycle_energy as cycle_energy
+
+    car = Vehicle(0.33, 2.8, mass=1800.0, drag_area=0.7)
+    cycle = read_drive_cycle(WLTC, car)
+    cycle = DriveCycle(cycle.time[:700], cycle.output_speed[:700], cycle.output_torque[:700])
+    rule, limits = GearRule("best", min_dwell=dwell, hysteresis=hysteresis), CarryLimits(max_input_torque=max_torque)
+    pruned = run_cycle(spin_transmission, cycle, rule=rule, limits=limits)
+    monkeypatch.setattr(cycle_energy, "_spin_bounds", lambda *args: None)
+    full = run_cycle(spin_transmission, cycle, rule=rule, limits=limits)
+    assert pruned.gear == full.gear and pruned.shifts == full.shifts
+    assert pruned.energy_lost == pytest.approx(full.energy_lost, rel=1e-12)
+    assert pruned.energy_in == pytest.approx(full.energy_in, rel=1e-12)

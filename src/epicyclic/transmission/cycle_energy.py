@@ -347,32 +347,15 @@ def run_cycle(transmission, cycle: DriveCycle, *, rule: GearRule | None = None, 
     moving = speed > 0
     torque = np.where(cycle.output_torque > NEGLIGIBLE, cycle.output_torque, 0.0)  # braking: no torque through
     gears = forward_gears(t)
-    solved: dict[str, tuple[np.ndarray, Any]] = {}
+    solved: dict[str, list[tuple[np.ndarray, Any]]] = {}
 
     def solve(gear: str, rows: np.ndarray):
-        return solve_gear_points(t, gear, speed[rows], torque[rows])
+        points = solve_gear_points(t, gear, speed[rows], torque[rows])
+        solved.setdefault(gear, []).append((rows, points))
+        return points
 
     if rule.mode == "best":
-        loss = np.full((len(gears), cycle.rows), np.inf)
-        carries = np.zeros((len(gears), cycle.rows), dtype=bool)
-        for k, gear in enumerate(gears):
-            # rows the gear cannot carry by its kinematics alone are not solved: the input speed n_out·i is
-            # exact, and the lossless input torque T_out/i is a lower bound of the real one in drive
-            ratio = abs(t.ratio(gear))
-            n_in = speed * ratio
-            reach = moving & (n_in >= limits.input_speed[0]) & (n_in <= limits.input_speed[1])
-            if limits.max_input_torque is not None:
-                reach &= torque / ratio <= limits.max_input_torque
-            rows = np.flatnonzero(reach)
-            if rows.size:
-                points = solve(gear, rows)
-                solved[gear] = (rows, points)
-                loss[k, rows] = points.loss
-                carries[k, rows] = limits.carries(points)
-            if progress is not None:
-                progress(k + 1, len(gears) + 1)
-        index, shifts = _choose(loss, carries, moving, cycle.time, rule)
-        names = tuple(gears[k] for k in index)
+        names, shifts = _best_gears(t, gears, speed, torque, moving, cycle.time, rule, limits, solve, progress)
     else:
         if rule.mode == "given":
             names = cycle.gear  # type: ignore[assignment]
@@ -388,6 +371,89 @@ def run_cycle(transmission, cycle: DriveCycle, *, rule: GearRule | None = None, 
     return _assemble(t, cycle, names, solved, solve, moving, limits, rule, shifts, progress)
 
 
+def _spin_bounds(t, gear: str, speed: np.ndarray) -> np.ndarray | None:
+    """A lower bound of the loss of ``gear`` at output speeds ``speed``: its spin losses alone.
+
+    The spin losses (clutch drag, pump, churning, windage, seals) depend on the shafts' speeds and the oil
+    temperature only, and every other loss is ≥ 0.  The speeds of a one-degree-of-freedom gear are the
+    output speed times fixed ratios (one lossless solve at n_out = 1).  None without spin losses, or with
+    the thermal balance (its temperature depends on the load-dependent losses).
+    """
+    from ..solver.batch import solve_batch
+
+    spin = getattr(t, "spin", None)
+    if spin is None or spin.thermal:
+        return None
+    train = t.gear_train(gear)
+    unit = solve_batch(train, speeds={t.output: np.array([1.0])}, torques={t.output: np.array([1.0])},
+                       drives=[t.input], loads=[t.output])
+    speeds = {shaft: float(value[0]) * speed for shaft, value in unit.speeds.items()}
+    return np.asarray(spin.evaluate(speeds, train=train, gear=gear, input=t.input).total, dtype=float)
+
+
+def _best_gears(t, gears, speed, torque, moving, time, rule: GearRule, limits: CarryLimits, solve,
+                progress) -> tuple[tuple[str, ...], int]:
+    """The best-gear rule over the cycle, solving no gear at a row where it cannot win.
+
+    A gear is solved at a row only where it can carry the row by its kinematics (input speed n_out·i within
+    the range, lossless input torque T_out/i within the limit: a lower bound of the real one in drive) and
+    where its spin losses alone (:func:`_spin_bounds`, a lower bound of its loss) do not exceed the least
+    loss found there (first the gear of the least bound) by more than the hysteresis.  Such a gear is
+    never the best gear; it can only be kept by the minimum dwell, and where the rule keeps one, it is
+    solved there and the rule run again with its real loss and limits, until nothing changes — so the
+    result is the same as solving every gear at every row.
+    """
+    count, rows_total = len(gears), time.size
+    loss = np.full((count, rows_total), np.inf)
+    carries = np.zeros((count, rows_total), dtype=bool)
+    known = np.zeros((count, rows_total), dtype=bool)
+    reach = np.zeros((count, rows_total), dtype=bool)
+    bound = np.zeros((count, rows_total))
+    bounded = True
+    for k, gear in enumerate(gears):
+        ratio = abs(t.ratio(gear))
+        n_in = speed * ratio
+        reach[k] = moving & (n_in >= limits.input_speed[0]) & (n_in <= limits.input_speed[1])
+        if limits.max_input_torque is not None:
+            reach[k] &= torque / ratio <= limits.max_input_torque
+        rows = np.flatnonzero(reach[k])
+        value = _spin_bounds(t, gear, speed[rows]) if bounded and rows.size else None
+        if value is None and rows.size:
+            bounded = False
+        elif rows.size:
+            bound[k, rows] = value
+
+    def run(k: int, rows: np.ndarray) -> None:
+        if rows.size:
+            points = solve(gears[k], rows)
+            loss[k, rows], carries[k, rows], known[k, rows] = points.loss, limits.carries(points), True
+
+    if not bounded:  # every reachable gear at every row
+        for k in range(count):
+            run(k, np.flatnonzero(reach[k]))
+            if progress is not None:
+                progress(k + 1, count + 1)
+    else:
+        first = np.argmin(np.where(reach, bound, np.inf), axis=0)
+        for k in range(count):
+            run(k, np.flatnonzero(reach[k] & (first == k)))
+        least = np.min(np.where(carries, loss, np.inf), axis=0)
+        margin = rule.hysteresis + 1e-9 * np.where(np.isfinite(least), np.abs(least), 0.0)
+        for k in range(count):
+            run(k, np.flatnonzero(reach[k] & ~known[k] & (bound[k] <= least + margin)))
+            if progress is not None:
+                progress(k + 1, count + 1)
+    while True:
+        # a gear not solved at a row loses at least its bound there and is taken to carry it; the rule keeps
+        # such a gear only through the dwell, and then it is solved there and the rule runs again
+        index, shifts = _choose(np.where(known, loss, bound), known & carries | reach & ~known, moving, time, rule)
+        rows = np.flatnonzero(moving & ~known[index, np.arange(rows_total)] & reach[index, np.arange(rows_total)])
+        if not rows.size:
+            return tuple(gears[k] for k in index), shifts
+        for k in np.unique(index[rows]):
+            run(int(k), rows[index[rows] == k])
+
+
 def _assemble(t, cycle: DriveCycle, names, solved, solve, moving, limits: CarryLimits, rule: GearRule, shifts: int,
               progress) -> CycleResult:
     """The per-row powers of the chosen gears (from the rule's solves where it made them, else solved now)."""
@@ -400,13 +466,13 @@ def _assemble(t, cycle: DriveCycle, names, solved, solve, moving, limits: CarryL
     distinct = list(dict.fromkeys(g for g, m in zip(names, moving) if m))
     for step, gear in enumerate(distinct):
         rows = np.flatnonzero((gear_array == gear) & moving)
-        have = solved.get(gear)
-        parts = []  # (rows of the cycle, points, index into the points) from the rule's solve, and solved now
-        if have is not None:
-            inside = np.isin(rows, have[0])
-            parts.append((rows[inside], have[1], np.searchsorted(have[0], rows[inside])))
-            rows = rows[~inside]  # rows the rule did not solve in this gear (a launch in first gear)
-        if rows.size:
+        parts = []  # (rows of the cycle, points, index into the points) from the rule's solves, and solved now
+        for have_rows, have_points in list(solved.get(gear, ())):
+            inside = np.isin(rows, have_rows)
+            if inside.any():
+                parts.append((rows[inside], have_points, np.searchsorted(have_rows, rows[inside])))
+                rows = rows[~inside]
+        if rows.size:  # rows the rule did not solve in this gear (a launch in first gear)
             parts.append((rows, solve(gear, rows), slice(None)))
         for rows, points, pick in parts:
             p_in[rows], p_out[rows] = points.input_power[pick], points.output_power[pick]
