@@ -206,3 +206,15 @@ def test_steady_temperature_of_a_linear_housing():
 def test_no_steady_state_is_a_clear_error():
     with pytest.raises(LossModelError, match="exceed what the housing sheds"):
         steady_temperature(Housing(0.1), lambda t: np.full(np.shape(t), 1e5), (1,))
+
+
+def test_walther_line_from_a_table():
+    # two points: the line through them; Tellus S2 M 46's three data-sheet points (0/40/100 °C): within 0.5 %
+    assert Oil.from_table([(40.0, 46.0), (100.0, 6.8)]).viscosity_40 == pytest.approx(46.0, rel=1e-12)
+    fitted = Oil.from_table([(0.0, 580.0), (40.0, 46.0), (100.0, 6.8)])
+    assert fitted.kinematic_viscosity(40.0) == pytest.approx(46.0, rel=0.005)
+    assert fitted.kinematic_viscosity(0.0) == pytest.approx(580.0, rel=0.005)
+    with pytest.raises(LossModelError, match="two different temperatures"):
+        Oil.from_table([(40.0, 46.0)])
+    with pytest.raises(LossModelError, match="fall with temperature"):
+        Oil.from_table([(40.0, 6.0), (100.0, 46.0)])

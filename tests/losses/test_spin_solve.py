@@ -213,3 +213,30 @@ def test_explain_writes_out_the_loss_models_in_english_and_german():
     assert "Verluste nach Quellen" in de and "Pumpe an" in de and "Eingriff" in de
     total = solution.loss
     assert f"(solver: {total:.6g}" in en or "solver:" in en
+
+
+def test_gears_and_breakdown_report_the_losses_by_source():
+    import json
+
+    t = Transmission.from_file(EXAMPLE)
+    analysis = t.analyze_all(input_speed=2000.0, input_torque=50.0)
+    text = analysis.table()
+    assert "drive losses by source" in text and "pump" in text and "oil at 80.0 degC" in text
+    first = analysis.gears[0].to_dict()
+    shares = first["loss_sources_per_input_power"]
+    assert sum(shares.values()) == pytest.approx(1.0 - analysis.gears[0].efficiency_drive, rel=1e-9)
+    bars = gear_loss_breakdown(analysis)
+    data = json.loads(bars.to_json())
+    assert data["total"] == pytest.approx(sum(g.drive.loss for g in analysis.gears), rel=1e-12)
+    assert "<table>" in bars._repr_html_()
+    plain = Transmission.from_file(ROOT / "examples" / "zf_8hp70_8speed.toml").analyze_all()
+    assert "losses by source" not in plain.table()  # typed-in η0: every loss is mesh loss, nothing to split
+
+
+def test_viscosity_table_in_the_file():
+    text = "[lubricant]\nviscosity_table = [[0.0, 580.0], [40.0, 46.0], [100.0, 6.8]]\ntemperature = 70.0\n" \
+        + HEAD.format(drag="")
+    f = loads_train_file(text)
+    assert f.spin.oil.kinematic_viscosity(40.0) == pytest.approx(46.0, rel=0.005)
+    with pytest.raises((InputFileError, LossModelError), match="viscosity_table"):
+        loads_train_file("[lubricant]\nviscosity_table = [40.0, 46.0]\ntemperature = 70.0\n" + HEAD.format(drag=""))

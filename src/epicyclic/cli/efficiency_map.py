@@ -67,7 +67,7 @@ def efficiency_map(
     train_file = load(file, gear, set_)
     speeds, torques = map_grid(speed, torque, units=train_file.units)  # in the file's units
     emap = compute(train_file, speeds, torques, direction="coast" if coast else "drive")
-    note = "" if train_file.losses else (
+    note = "" if train_file.losses or train_file.spin is not None else (
         "note: the file has no loss tables ([planetary.losses], [gear.losses]): every efficiency comes from the "
         "typed-in stationary efficiencies and is the same at every point (see docs/losses.md).")
     if out is None:

@@ -4,7 +4,7 @@
 
     [lubricant]                          # top level
     viscosity_40 = 29.5                  # mm²/s at 40 °C  } ASTM D341: ν at any temperature
-    viscosity_100 = 6.0                  # mm²/s at 100 °C }
+    viscosity_100 = 6.0                  # mm²/s at 100 °C }  or viscosity_table = [[0.0, 250.0], [40.0, 29.5], ...]
     density = 850.0                      # kg/m³ at 15 °C (default 860)
     temperature = 80.0                   # °C, or "thermal" (needs [housing])
     lubricant_factor = 1.0               # X_L of Schlenk's friction (default 1)
@@ -73,8 +73,8 @@ __all__ = ["SPIN_TOP_KEYS", "LUBRICANT_KEYS", "DRAG_KEYS", "read_lubricant", "re
 
 #: Top-level tables this module reads (besides [lubricant]).
 SPIN_TOP_KEYS = {"pump", "housing", "seal", "churning", "windage"}
-LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100", "density", "temperature",
-                  "expansion", "specific_heat"}
+LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100", "viscosity_table", "density",
+                  "temperature", "expansion", "specific_heat"}
 DRAG_KEYS = {"gaps", "inner_radius", "outer_radius", "clearance", "supply", "groove_factor"}
 _PUMP_KEYS = {"displacement", "pressure", "efficiency", "shaft"}
 _HOUSING_KEYS = {"area", "ambient", "heat_transfer", "height", "emissivity", "cooler", "coolant"}
@@ -119,6 +119,12 @@ def read_lubricant(reader, data: Mapping[str, Any]) -> tuple[Lubricant | None, O
     reader.check_keys(table, LUBRICANT_KEYS, where)
     factor = _number(reader, table, "lubricant_factor", where, 1.0, unit="X_L", positive=True)
     has_40, has_100 = "viscosity_40" in table, "viscosity_100" in table
+    has_table = "viscosity_table" in table
+    if has_table and (has_40 or has_100):
+        raise reader.error(at_key(where, "viscosity_table"), "give the table or 'viscosity_40' and 'viscosity_100', "
+                                                             "not both.")
+    if has_table:
+        has_40 = has_100 = True
     if has_40 != has_100:
         raise reader.error(where, "give both 'viscosity_40' and 'viscosity_100' (mm^2/s at 40 and 100 degC, from the "
                                   "oil's data sheet), or 'viscosity' (mPa*s at the operating temperature).")
@@ -146,13 +152,26 @@ def read_lubricant(reader, data: Mapping[str, Any]) -> tuple[Lubricant | None, O
     if temperature is None:
         raise reader.error(where, "missing key 'temperature': the oil temperature in degC, or \"thermal\" for the "
                                   "heat balance of [housing].")
+    data_sheet = dict(density=_number(reader, table, "density", where, 860.0, unit="kg/m^3", positive=True),
+                      expansion=_number(reader, table, "expansion", where, 6.5e-4, unit="1/K", minimum=0.0),
+                      specific_heat=_number(reader, table, "specific_heat", where, 2000.0, unit="J/(kg K)",
+                                            positive=True), lubricant_factor=factor)
     try:
-        oil = Oil(_number(reader, table, "viscosity_40", where, unit="mm^2/s", positive=True),
-                  _number(reader, table, "viscosity_100", where, unit="mm^2/s", positive=True),
-                  _number(reader, table, "density", where, 860.0, unit="kg/m^3", positive=True),
-                  _number(reader, table, "expansion", where, 6.5e-4, unit="1/K", minimum=0.0),
-                  _number(reader, table, "specific_heat", where, 2000.0, unit="J/(kg K)", positive=True), factor)
+        if has_table:
+            rows = table["viscosity_table"]
+            key = at_key(where, "viscosity_table")
+            if not isinstance(rows, list) or not all(isinstance(r, list) and len(r) == 2 for r in rows):
+                raise reader.error(key, f"expected pairs [temperature degC, mm^2/s] such as [[40.0, 29.5], [100.0, "
+                                        f"6.0]], got {short(rows)}.")
+            points = [(reader.number(t, f"viscosity_table[{k}][0]", where),
+                       reader.number(v, f"viscosity_table[{k}][1]", where)) for k, (t, v) in enumerate(rows)]
+            oil = Oil.from_table(points, **data_sheet)
+        else:
+            oil = Oil(_number(reader, table, "viscosity_40", where, unit="mm^2/s", positive=True),
+                      _number(reader, table, "viscosity_100", where, unit="mm^2/s", positive=True), **data_sheet)
     except EpicyclicError as exc:
+        if hasattr(exc, "source") and hasattr(exc, "where"):
+            raise
         raise reader.wrap(where, exc) from None
     reference = 80.0 if temperature == "thermal" else temperature  # Schlenk's η: replaced per point when solved
     return oil.lubricant(reference), oil, temperature

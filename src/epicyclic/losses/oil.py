@@ -1,5 +1,8 @@
 """The oil: kinematic viscosity at any temperature (ASTM D341, Walther), density and thermal data.
 
+Given by ν at 40 and 100 °C (:class:`Oil`) or by a table of measured viscosities
+(:meth:`Oil.from_table`, the least-squares Walther line).
+
 Walther's equation, standardised in ASTM D341, is a straight line through two
 measured viscosities on the doubly logarithmic chart:
 
@@ -123,6 +126,62 @@ class Oil:
                             ("specific_heat", positive(self.specific_heat, "specific_heat (J/(kg K))", owner)),
                             ("lubricant_factor", positive(self.lubricant_factor, "lubricant_factor (X_L)", owner))):
             object.__setattr__(self, name, value)
+
+    @classmethod
+    def from_table(cls, table, **kwargs) -> Oil:
+        """The oil whose Walther line fits a table of measured viscosities (least squares, ASTM D341).
+
+        Parameters
+        ----------
+        table : sequence of (temperature °C, ν mm²/s)
+            At least two points at different temperatures, ν ≥ 2 mm²/s.
+        **kwargs
+            ``density``, ``expansion``, ``specific_heat``, ``lubricant_factor`` as for :class:`Oil`.
+
+        Returns
+        -------
+        Oil
+            With ``viscosity_40`` and ``viscosity_100`` on the fitted line (through both points of a
+            two-point table).
+
+        Raises
+        ------
+        LossModelError
+            Fewer than two temperatures, a viscosity below 2 mm²/s, or one that rises with temperature.
+
+        References
+        ----------
+        ASTM D341-20 (the line log log(ν + 0.7) = A − B log T through measured points).
+
+        Examples
+        --------
+        >>> oil = Oil.from_table([(0.0, 580.0), (40.0, 46.0), (100.0, 6.8)])
+        >>> round(oil.viscosity_40, 2), round(oil.viscosity_100, 3)  # Tellus S2 M 46's three points
+        (46.05, 6.798)
+        """
+        try:
+            points = [(float(t), float(v)) for t, v in table]
+        except (TypeError, ValueError):
+            raise LossModelError(f"Oil: the viscosity table must be pairs [temperature degC, mm^2/s], got "
+                                 f"{table!r}.") from None
+        if len({t for t, _ in points}) < 2:
+            raise LossModelError("Oil: the viscosity table needs at least two different temperatures.")
+        for t, v in points:
+            if not (math.isfinite(t) and TEMPERATURE_RANGE[0] <= t <= TEMPERATURE_RANGE[1]):
+                raise LossModelError(f"Oil: a table temperature must lie in {TEMPERATURE_RANGE[0]:g} ... "
+                                     f"{TEMPERATURE_RANGE[1]:g} degC, got {t!r}.")
+            if not (math.isfinite(v) and v >= 2.0):
+                raise LossModelError(f"Oil: a table viscosity must be >= 2 mm^2/s (ASTM D341's range), got {v!r}.")
+        x = np.array([math.log10(t + KELVIN) for t, _ in points])
+        z = np.array([math.log10(math.log10(v + _WALTHER_SHIFT)) for _, v in points])
+        slope, intercept = np.polyfit(x, z, 1)
+        if slope >= 0:
+            raise LossModelError("Oil: the table's viscosity must fall with temperature.")
+
+        def at(celsius: float) -> float:
+            return 10.0 ** (10.0 ** (intercept + slope * math.log10(celsius + KELVIN))) - _WALTHER_SHIFT
+
+        return cls(at(40.0), at(100.0), **kwargs)
 
     def _temperature(self, temperature) -> np.ndarray:
         t = np.asarray(temperature, dtype=float)

@@ -38,6 +38,9 @@ class Scheduled(Protocol):
 
 __all__ = ["GearResult", "TransmissionAnalysis", "gear_result"]
 
+#: Loss sources in report order (as :data:`epicyclic.losses.spin.ALL_SOURCES`).
+_SOURCE_ORDER = ("mesh", "bearing", "drag", "clutch_drag", "pump", "churning", "windage", "seals")
+
 #: Ratios closer than this (relative) count as equal (duplicates, direct drive).
 RATIO_TOLERANCE = 1e-9
 
@@ -125,7 +128,19 @@ class GearResult:
             "circulating_power_per_input_power": self.circulating_power_ratio,
             "largest_element_power_per_input_power": self.largest_element_ratio,
             "indeterminate": list(self.indeterminate),
+            "loss_sources_per_input_power": self.loss_sources,
+            "oil_temperature": self.drive.oil_temperature,
         }
+
+    @property
+    def loss_sources(self) -> dict[str, float]:
+        """The drive loss by source (mesh, bearing, drag, clutch drag, pump, churning, windage, seals) per input power."""
+        p_in = self.drive.input_power
+        if not p_in:
+            return {}
+        parts = self.drive.loss_sources
+        ordered = [k for k in _SOURCE_ORDER if k in parts] + sorted(set(parts) - set(_SOURCE_ORDER))
+        return {k: parts[k] / p_in for k in ordered if parts[k]}
 
     def table(self) -> str:
         """Text table: shift elements and sets of this gear."""
@@ -309,7 +324,20 @@ class TransmissionAnalysis:
             if k == 0:
                 lines.append("  ".join("-" * w for w in widths))
         lines.append(self._footer())
+        split = self.loss_split_lines()
+        if split:
+            lines += ["", *split]
         return "\n".join(lines)
+
+    def loss_split_lines(self) -> list[str]:
+        """Per gear its drive loss by source per input power, when loss models give more than mesh losses."""
+        if not any(set(g.loss_sources) - {"mesh"} for g in self.gears):
+            return []
+        oil = next((g.drive.oil_temperature for g in self.gears if g.drive.oil_temperature is not None), None)
+        lines = ["drive losses by source, × P_in" + (f" (oil at {oil:.1f} degC)" if oil is not None else "") + ":"]
+        for g in self.gears:
+            lines.append(f"  {g.gear}: " + (", ".join(f"{k} {v:.4f}" for k, v in g.loss_sources.items()) or "none"))
+        return lines
 
     def _footer(self) -> str:
         at = f"; analysed at {self.point.describe()}" if self.point is not None else ""

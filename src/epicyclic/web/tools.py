@@ -365,7 +365,7 @@ def _map(context: Context, v: Mapping[str, Any]) -> str:
     figure = emap.plot()
     svg = figure_svg(figure)
     figure.clf()
-    note = "" if context.train_file.losses else (
+    note = "" if context.train_file.losses or context.train_file.spin is not None else (
         "<p class=\"hint\">The file has no loss tables: η is the stationary efficiency typed in, the same at every "
         "point. Add [planetary.losses] and [lubricant] to compute it from the geometry (docs/losses.md).</p>")
     return (note + _downloads("map", ("csv", "json", "png")) + f"<pre>{html.escape(emap.table())}</pre>"
