@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from .io.tables import fmt
-from .model import Brake, Clutch
+from .model import Clutch
 from .model.elements import HOUSING
 
 __all__ = ["loss_step", "LOSS_TEXT", "model_efficiency"]
@@ -66,6 +66,7 @@ LOSS_TEXT = {
                    "= P_V at ϑ = {t} °C",
         "sum": "P_V = {terms} = {total} W (solver: {solver} W)",
         "none": "no loss model: every loss is the typed-in η0's",
+        "defaults": "defaults used (docs/file-format.md; refuse with defaults = \"refuse\"): ",
     },
     "de": {
         "title": "6. Verluste nach Quellen (die Verlustmodelle in diesem Betriebspunkt)",
@@ -96,6 +97,7 @@ LOSS_TEXT = {
                    "= P_V bei ϑ = {t} °C",
         "sum": "P_V = {terms} = {total} W (Löser: {solver} W)",
         "none": "kein Verlustmodell: alle Verluste stammen aus dem vorgegebenen η0",
+        "defaults": "verwendete Vorgabewerte (docs/file-format.md; ablehnen mit defaults = \"refuse\"): ",
     },
 }
 
@@ -222,6 +224,8 @@ def _spin_lines(solution, spin, t, temperature, gear, input) -> list[str]:
         n = speed[seal.shaft]
         lines.append(t["seal"].format(shaft=seal.shaft, count=seal.count, d=fmt(seal.diameter, 4), speed=fmt(n, 6),
                                       loss=fmt(float(seal.loss(n)), 5)))
+    if spin.defaults:
+        lines.append(t["defaults"] + "; ".join(spin.defaults))
     if spin.thermal and temperature is not None:
         lines.append(t["thermal"].format(q=fmt(float(spin.housing.dissipated(temperature)), 5),
                                          t=fmt(temperature, 4)))

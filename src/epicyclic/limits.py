@@ -65,6 +65,9 @@ __all__ = [
     "MAX_SYNTHESIS_GEARS",
     "MAX_MAP_POINTS",
     "MAX_MAP_VALUES",
+    "OIL_TEMPERATURE_RANGE",
+    "MAX_PLATE_GAPS",
+    "SEAL_DIAMETER_RANGE",
     "check_range",
     "check_count",
 ]
@@ -141,6 +144,15 @@ MAX_TOOTH_HEIGHT_FACTOR = 5.0
 MAX_MAP_POINTS = 1_000_000
 #: Most values along one axis of an efficiency map (``A..B:N``).
 MAX_MAP_VALUES = 10_000
+
+# ---------------------------------------------------------------- spin losses and the oil
+#: Oil temperatures a viscosity or a spin loss is evaluated at, and the hottest sump the heat balance
+#: searches, °C (ASTM D341's line is used from the cloud point to the onset of decomposition).
+OIL_TEMPERATURE_RANGE = (-40.0, 200.0)
+#: Most oil films (friction surfaces) of one clutch or brake (automatic transmissions: 4 … 20).
+MAX_PLATE_GAPS = 100
+#: Shaft diameters of a radial lip seal, mm.
+SEAL_DIAMETER_RANGE = (5.0, 1000.0)
 
 # ---------------------------------------------------------------- synthesis
 #: Most planetary sets of a synthesis (five sets have ~10^7 tie patterns before any placement).

@@ -218,3 +218,33 @@ def test_walther_line_from_a_table():
         Oil.from_table([(40.0, 46.0)])
     with pytest.raises(LossModelError, match="fall with temperature"):
         Oil.from_table([(40.0, 6.0), (100.0, 46.0)])
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None)
+@given(gaps=st.integers(1, 30), inner=st.floats(20.0, 150.0), width=st.floats(2.0, 60.0),
+       clearance=st.floats(0.05, 0.5), supply=st.one_of(st.none(), st.floats(0.0, 20.0)),
+       slip=st.floats(-9000.0, 9000.0), viscosity=st.floats(1.0, 500.0), density=st.floats(700.0, 1000.0))
+def test_drag_is_finite_non_negative_and_at_most_the_full_film(gaps, inner, width, clearance, supply, slip, viscosity,
+                                                                density):
+    outer = inner + width
+    drag = ClutchDrag("C", gaps, inner, outer, min(clearance, 0.04 * outer), supply)
+    full = ClutchDrag("C", gaps, inner, outer, min(clearance, 0.04 * outer))
+    t = float(drag.torque(slip, viscosity, density))
+    assert math.isfinite(t) and 0.0 <= t <= float(full.torque(slip, viscosity, density)) * (1 + 1e-12)
+    assert float(drag.loss(slip, viscosity, density)) >= 0.0
+    r_e = float(drag.film_radius(slip, viscosity, density))
+    assert inner <= r_e <= outer
+
+
+@settings(max_examples=40, deadline=None)
+@given(speed=st.floats(-8000.0, 8000.0), nu=st.floats(2.0, 1000.0), radius=st.floats(20.0, 200.0),
+       immersion=st.floats(0.01, 1.0))
+def test_churning_windage_seals_pump_never_gain_power(speed, nu, radius, immersion):
+    gear = ChurningGear("s", radius, 20.0, immersion * 2 * radius, 3.0)
+    for loss in (gear.loss(speed, nu, 860.0), WindageGear("s", radius, 20.0).loss(speed),
+                 ShaftSeal("s", 40.0).loss(speed), OilPump(15.0, 8.0).loss(speed)):
+        assert math.isfinite(float(loss)) and float(loss) >= 0.0

@@ -240,3 +240,30 @@ def test_viscosity_table_in_the_file():
     assert f.spin.oil.kinematic_viscosity(40.0) == pytest.approx(46.0, rel=0.005)
     with pytest.raises((InputFileError, LossModelError), match="viscosity_table"):
         loads_train_file("[lubricant]\nviscosity_table = [40.0, 46.0]\ntemperature = 70.0\n" + HEAD.format(drag=""))
+
+
+def test_defaults_are_stated_and_can_be_refused():
+    spin_tables = ("[lubricant]\nviscosity_40 = 30.0\nviscosity_100 = 6.0\ntemperature = 60.0\n"
+                   "[pump]\ndisplacement = 10.0\npressure = 5.0\n")
+    f = loads_train_file(spin_tables + HEAD.format(drag=""))
+    stated = " ".join(f.spin.defaults)
+    assert "[pump] efficiency = 0.85" in stated and "[lubricant] density = 860 kg/m^3" in stated
+    assert "shaft = the transmission's input" in stated
+    with pytest.raises(InputFileError, match="missing key 'lubricant_factor': the file refuses defaults"):
+        loads_train_file('defaults = "refuse"\n' + spin_tables + HEAD.format(drag=""))
+    with pytest.raises(InputFileError, match="key 'defaults'"):
+        loads_train_file('defaults = "maybe"\n' + spin_tables + HEAD.format(drag=""))
+
+
+def test_explain_states_the_heat_balance_of_a_thermal_file():
+    from epicyclic.explain import explain
+
+    text = EXAMPLE.read_text(encoding="utf-8").replace("temperature = 80.0", 'temperature = "thermal"')
+    text += "\n[housing]\narea = 1.0\ncooler = 150.0\n"
+    f = loads_train_file(text)
+    solution = f.solve()
+    assert 20.0 < solution.oil_temperature < 200.0
+    lines = explain(solution, f.units, losses=f.losses, spin=f.spin, gear=f.gear, input="in").text()
+    assert "heat balance (ISO/TR 14179-1)" in lines
+    shed = float(f.spin.housing.dissipated(solution.oil_temperature))
+    assert shed == pytest.approx(solution.loss, rel=1e-6)

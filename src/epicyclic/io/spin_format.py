@@ -55,8 +55,10 @@
     cooler = 80.0                        # W/K of an oil cooler (default 0)
     coolant = 90.0                       # °C of the coolant (default: ambient)
 
-Every default is stated in ``docs/file-format.md`` and can be replaced by
-giving the key; every problem names the file, the table and the key.
+Every default is stated in ``docs/file-format.md`` and in the model's
+``defaults`` (shown by ``explain``), can be replaced by giving the key, and is
+refused — a missing key is then an error naming it — with the top-level key
+``defaults = "refuse"``; every problem names the file, the table and the key.
 """
 
 from __future__ import annotations
@@ -94,9 +96,23 @@ def has_spin(data: Mapping[str, Any]) -> bool:
                for t in (data.get(kind) if isinstance(data.get(kind), list) else []))
 
 
+def _default(reader, table, key: str, where: str, default, meaning: str) -> None:
+    """Record (or, with top-level ``defaults = "refuse"``, refuse) the default of a missing ``key``."""
+    if key in table:
+        return
+    if getattr(reader, "refuse_defaults", False):
+        raise reader.error(where, f"missing key {key!r}: the file refuses defaults (top level defaults = \"refuse\"); "
+                                  f"give it (the default would be {meaning}).")
+    stated = getattr(reader, "spin_defaults", None)
+    if stated is not None:
+        stated.append(f"{where} {key} = {meaning}")
+
+
 def _number(reader, table, key: str, where: str, default=None, *, unit: str = "", minimum=None, maximum=None,
-            positive: bool = False):
+            positive: bool = False, meaning: str | None = None):
     if key not in table:
+        if default is not None or meaning is not None:
+            _default(reader, table, key, where, default, meaning or f"{default:g} {unit}".strip())
         return default
     value = reader.number(table[key], key, where)
     low_bad = (positive and not value > 0) or (minimum is not None and value < minimum)
@@ -194,7 +210,8 @@ def _drag(reader, name: str, value, where: str) -> ClutchDrag:
     for key, number in numbers.items():
         if number is None:
             raise reader.error(d_where, f"missing key {key!r} (mm).")
-    supply = _number(reader, table, "supply", d_where, None, unit="l/min", minimum=0.0)
+    supply = _number(reader, table, "supply", d_where, None, unit="l/min", minimum=0.0,
+                     meaning="none: the gaps stay full, no aeration (an upper bound)")
     groove = _number(reader, table, "groove_factor", d_where, 1.0, unit="share of the plate", positive=True,
                      maximum=1.0)
     return _checked(reader, d_where, ClutchDrag, name, gaps, numbers["inner_radius"], numbers["outer_radius"],
@@ -227,6 +244,7 @@ def _pump(reader, value) -> OilPump:
         pressure = _number(reader, table, "pressure", where, unit="bar", minimum=0.0)
     efficiency = _number(reader, table, "efficiency", where, 0.85, unit="eta_hm in (0, 1]", positive=True,
                          maximum=1.0)
+    _default(reader, table, "shaft", where, None, "the transmission's input")
     shaft = reader.shaft(table, "shaft", where) if "shaft" in table else None
     return _checked(reader, where, OilPump, displacement, pressure, efficiency, shaft, default)
 
@@ -240,11 +258,13 @@ def _housing(reader, value) -> Housing:
         raise reader.error(where, "missing key 'area' (outer surface of the housing, m^2).")
     return _checked(reader, where, Housing, area,
                     _number(reader, table, "ambient", where, 20.0, unit="degC", minimum=-40.0, maximum=80.0),
-                    _number(reader, table, "heat_transfer", where, None, unit="W/(m^2 K)", positive=True),
+                    _number(reader, table, "heat_transfer", where, None, unit="W/(m^2 K)", positive=True,
+                            meaning="natural convection 1.32 (dT/L)^0.25 W/(m^2 K)"),
                     _number(reader, table, "height", where, 0.3, unit="m", positive=True),
                     _number(reader, table, "emissivity", where, 0.9, unit="in (0, 1]", positive=True, maximum=1.0),
                     _number(reader, table, "cooler", where, 0.0, unit="W/K", minimum=0.0),
-                    _number(reader, table, "coolant", where, None, unit="degC", minimum=-40.0, maximum=150.0))
+                    _number(reader, table, "coolant", where, None, unit="degC", minimum=-40.0, maximum=150.0,
+                            meaning="the ambient temperature"))
 
 
 def _gears(reader, data, kind: str, keys: set[str], build, numbers: dict[str, tuple[str, Any]]):
@@ -261,8 +281,12 @@ def _gears(reader, data, kind: str, keys: set[str], build, numbers: dict[str, tu
             values[key] = value
         if "element" in table:
             values["element"] = reader.name(table, "element", where)
+        elif "element" in keys:
+            _default(reader, table, "element", where, None, "housing (the loss is reported under it)")
         if "count" in table:
             values["count"] = reader.integer(table["count"], "count", where)
+        elif "count" in keys:
+            _default(reader, table, "count", where, 1, "1")
         out.append(_checked(reader, where, build, shaft, **values))
     return tuple(out)
 
@@ -317,6 +341,7 @@ def read_spin(reader, data: Mapping[str, Any], oil: Oil | None, temperature, tra
     if not (drags or pump or churning or windage or seals or oil is not None):
         return None
     spin = _checked(reader, "top level", SpinLosses, oil, None if temperature == "thermal" else temperature,
-                    housing, tuple(drags), pump, churning, windage, seals)
+                    housing, tuple(drags), pump, churning, windage, seals,
+                    tuple(getattr(reader, "spin_defaults", ()) or ()))
     _checked(reader, "top level", spin.check, train, input)
     return spin

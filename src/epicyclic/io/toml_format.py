@@ -60,7 +60,8 @@ from .source import InputFileError, parse_toml, read_source
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file"]
 
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant", "pump", "housing", "seal", "churning", "windage"}
+             "operating_point", "transmission", "lubricant", "pump", "housing", "seal", "churning", "windage",
+             "defaults"}
 #: Top-level tables of the spin losses (read by :mod:`epicyclic.io.spin_format`).
 _SPIN_TABLES = ("pump", "housing", "seal", "churning", "windage")
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
@@ -348,6 +349,7 @@ class _Reader(TableReader):
                                                      for t in g if isinstance(t, dict)):
             from . import geometry_format as extras
         lubricant = oil = temperature = None
+        self.refuse_defaults, self.spin_defaults = self.read_defaults(data), []
         if extras:
             from .spin_format import read_lubricant
 
@@ -384,6 +386,14 @@ class _Reader(TableReader):
             spin = read_spin(self, data, oil, temperature, train, None if transmission is None else transmission.input)
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
                          MappingProxyType(geometry), MappingProxyType(losses), spin)
+
+    def read_defaults(self, data: Mapping[str, Any]) -> bool:
+        """Whether the file refuses the loss models' defaults (top-level ``defaults = "refuse"``)."""
+        value = data.get("defaults", "use")
+        if value not in ("use", "refuse"):
+            raise self.error("top level, key 'defaults'", f"expected \"use\" (the stated defaults of the loss "
+                                                          f"tables) or \"refuse\" (every key given), got {short(value)}.")
+        return value == "refuse"
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")

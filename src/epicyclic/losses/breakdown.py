@@ -22,7 +22,6 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
-from ..model.elements import HOUSING
 from .spin import ALL_SOURCES
 
 __all__ = ["LossBreakdown", "loss_breakdown", "gear_loss_breakdown"]

@@ -49,6 +49,10 @@ GRAVITY = 9.80665
 #: Re_c up to which the low-Reynolds fit holds, and from which the high-Reynolds fit does.
 LAMINAR_LIMIT, TURBULENT_LIMIT = 6000.0, 9000.0
 
+#: Angular speeds below this (rad/s) are evaluated at it: the coefficients diverge at standstill while
+#: the torque, ∝ ω², vanishes (no 0·∞).
+_SLOWEST = 1e-6
+
 
 @dataclass(frozen=True)
 class ChurningGear:
@@ -127,7 +131,7 @@ class ChurningGear:
         omega = np.abs(np.asarray(speed, dtype=float)) * RPM_TO_RAD_S
         nu = np.asarray(kinematic_viscosity, dtype=float) * 1e-6
         moving = omega > 0
-        w = np.where(moving, omega, 1.0)
+        w = np.maximum(omega, _SLOWEST)  # the fits diverge at standstill, where the torque (∝ ω²) vanishes
         froude = w ** 2 * r / GRAVITY
         reynolds = w * r ** 2 / nu
         reynolds_c = w * r * b / nu

@@ -54,6 +54,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import lambertw
 
+from ..limits import MAX_PLATE_GAPS
 from ..results.solution import RPM_TO_RAD_S
 from ._checks import positive
 from .errors import LossModelError
@@ -100,8 +101,9 @@ class ClutchDrag:
 
     def __post_init__(self) -> None:
         owner = f"clutch drag of {self.element!r}"
-        if isinstance(self.gaps, bool) or not isinstance(self.gaps, int) or not 1 <= self.gaps <= 100:
-            raise LossModelError(f"{owner}: gaps must be a whole number of oil films in 1 ... 100, got {self.gaps!r}.")
+        if isinstance(self.gaps, bool) or not isinstance(self.gaps, int) or not 1 <= self.gaps <= MAX_PLATE_GAPS:
+            raise LossModelError(f"{owner}: gaps must be a whole number of oil films in 1 ... {MAX_PLATE_GAPS} "
+                                 f"(see docs/limits.md), got {self.gaps!r}.")
         r_i = positive(self.inner_radius, "inner_radius (mm)", owner)
         r_o = positive(self.outer_radius, "outer_radius (mm)", owner)
         if not r_o > r_i:
@@ -198,21 +200,6 @@ class ClutchDrag:
         u = -np.real(lambertw(-np.exp(-1.0 / kk) / kk, -1)) - 1.0 / kk
         edge[film] = np.minimum(self.inner_radius * np.exp(0.5 * u), self.outer_radius)
         full[short] = edge
-        return full
-        per_gap = self.supply / self.gaps
-        need = self.film_flow(slip, viscosity, density)
-        short = need > per_gap
-        if not np.any(short):
-            return full
-        low = np.full(short.sum(), self.inner_radius)
-        high = np.full(short.sum(), self.outer_radius)
-        args = slip[short], viscosity[short], density[short]
-        for _ in range(BISECTIONS):
-            middle = 0.5 * (low + high)
-            too_much = self.film_flow(*args, film_radius=middle) > per_gap
-            high = np.where(too_much, middle, high)
-            low = np.where(too_much, low, middle)
-        full[short] = 0.5 * (low + high)
         return full
 
     def torque(self, slip, viscosity, density):

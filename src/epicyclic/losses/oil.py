@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..limits import OIL_TEMPERATURE_RANGE
 from ._checks import positive
 from .errors import LossModelError
 from .friction import Lubricant
@@ -45,7 +46,7 @@ KELVIN = 273.15
 #: Walther's constant for ν ≥ 2 mm²/s (ASTM D341).
 _WALTHER_SHIFT = 0.7
 #: Temperatures (°C) the viscosity may be asked at: the equation's useful range for gear oils.
-TEMPERATURE_RANGE = (-40.0, 200.0)
+TEMPERATURE_RANGE = OIL_TEMPERATURE_RANGE
 
 
 def walther_constants(viscosity_40: float, viscosity_100: float) -> tuple[float, float]:

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..limits import SEAL_DIAMETER_RANGE
 from ..results.solution import RPM_TO_RAD_S
 from ._checks import positive
 from .errors import LossModelError
@@ -66,8 +67,10 @@ class ShaftSeal:
         if not isinstance(self.shaft, str) or not self.shaft:
             raise LossModelError(f"shaft seal: shaft must be a shaft name, got {self.shaft!r}.")
         d = positive(self.diameter, "diameter (mm)", owner)
-        if not 5.0 <= d <= 1000.0:
-            raise LossModelError(f"{owner}: diameter must lie in 5 ... 1000 mm, got {d!r}.")
+        low, high = SEAL_DIAMETER_RANGE
+        if not low <= d <= high:
+            raise LossModelError(f"{owner}: diameter must lie in {low:g} ... {high:g} mm (see docs/limits.md), "
+                                 f"got {d!r}.")
         if isinstance(self.count, bool) or not isinstance(self.count, int) or not 1 <= self.count <= 100:
             raise LossModelError(f"{owner}: count must be a whole number in 1 ... 100, got {self.count!r}.")
         object.__setattr__(self, "diameter", d)

@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from ..limits import OIL_TEMPERATURE_RANGE
 from ..model.elements import HOUSING, Brake, Clutch
 from ..model.train import GearTrain
 from ..results.solution import RPM_TO_RAD_S
@@ -105,6 +106,8 @@ class SpinLosses:
     churning : tuple of ChurningGear
     windage : tuple of WindageGear
     seals : tuple of ShaftSeal
+    defaults : tuple of str
+        The defaults the models' inputs took (stated by the file reader, shown by ``explain``).
 
     Examples
     --------
@@ -122,6 +125,7 @@ class SpinLosses:
     churning: tuple[ChurningGear, ...] = ()
     windage: tuple[WindageGear, ...] = ()
     seals: tuple[ShaftSeal, ...] = ()
+    defaults: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         owner = "spin losses"
@@ -140,9 +144,10 @@ class SpinLosses:
             raise LossModelError(f"{owner}: pump must be an OilPump, got {self.pump!r}.")
         if self.temperature is not None:
             t = self.temperature
-            if isinstance(t, bool) or not isinstance(t, (int, float)) or not -40.0 <= t <= 200.0:
-                raise LossModelError(f"{owner}: temperature must be an oil temperature in -40 ... 200 degC, "
-                                     f"got {t!r}.")
+            low, high = OIL_TEMPERATURE_RANGE
+            if isinstance(t, bool) or not isinstance(t, (int, float)) or not low <= t <= high:
+                raise LossModelError(f"{owner}: temperature must be an oil temperature in {low:g} ... {high:g} degC "
+                                     f"(see docs/limits.md), got {t!r}.")
             object.__setattr__(self, "temperature", float(t))
         if (self.clutch_drag or self.churning) and self.oil is None:
             raise LossModelError(f"{owner}: clutch drag and churning need the oil: give viscosity_40 and "
@@ -304,4 +309,5 @@ class SpinLosses:
             "churning": [plain(g) for g in self.churning],
             "windage": [plain(g) for g in self.windage],
             "seals": [plain(s) for s in self.seals],
+            "defaults": list(self.defaults),
         }

@@ -39,6 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..limits import OIL_TEMPERATURE_RANGE
 from ._checks import fraction, positive
 from .errors import LossModelError
 from .oil import KELVIN
@@ -48,7 +49,7 @@ __all__ = ["Housing", "steady_temperature", "STEFAN_BOLTZMANN", "MAX_SUMP_TEMPER
 #: σ, W/(m² K⁴).
 STEFAN_BOLTZMANN = 5.670374419e-8
 #: Highest sump temperature searched, °C: hotter than any oil survives.
-MAX_SUMP_TEMPERATURE = 200.0
+MAX_SUMP_TEMPERATURE = OIL_TEMPERATURE_RANGE[1]
 #: Most steps of the temperature search (regula falsi, Illinois rule; each step at least halves the
 #: bracket's stale side, so 100 steps are far more than the tolerance needs).
 ITERATIONS = 100

@@ -43,6 +43,10 @@ TRANSITION_REYNOLDS = 3e5
 #: Air at 20 °C: kg/m³ and mm²/s.
 AIR_DENSITY, AIR_VISCOSITY = 1.204, 15.1
 
+#: Angular speeds below this (rad/s) are evaluated at it: the coefficients diverge at standstill while
+#: the torque, ∝ ω², vanishes (no 0·∞).
+_SLOWEST = 1e-6
+
 
 @dataclass(frozen=True)
 class WindageGear:
@@ -99,7 +103,7 @@ class WindageGear:
         """
         omega = np.abs(np.asarray(speed, dtype=float)) * RPM_TO_RAD_S
         moving = omega > 0
-        re = np.where(moving, omega, 1.0) * (self.radius * 1e-3) ** 2 / (self.kinematic_viscosity * 1e-6)
+        re = np.maximum(omega, _SLOWEST) * (self.radius * 1e-3) ** 2 / (self.kinematic_viscosity * 1e-6)
         return np.where(moving, np.where(re < TRANSITION_REYNOLDS, 3.87 * re ** -0.5, 0.146 * re ** -0.2), 0.0)
 
     def torque(self, speed):
