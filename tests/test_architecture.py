@@ -45,6 +45,10 @@ REACHING_UP = {
         "EfficiencyMap.plot() draws itself",
     ("epicyclic.losses.efficiency_map", "epicyclic.plotting._common"):
         "EfficiencyMap._repr_html_ and .save() render its figure",
+    ("epicyclic.transmission.shift_map", "epicyclic.plotting.shift_map"):
+        "ShiftMap.plot() draws itself",
+    ("epicyclic.transmission.shift_map", "epicyclic.plotting._common"):
+        "ShiftMap._repr_html_ and .save() render its figure",
     ("epicyclic.losses.breakdown", "epicyclic.plotting.loss_bars"):
         "LossBreakdown.plot() draws itself (stacked bars by source)",
 }

@@ -1,4 +1,4 @@
-"""Regenerate the pictures of docs/plotting.md and the efficiency-map how-to:
+"""Regenerate the pictures of docs/plotting.md, the efficiency-map how-to and the shift map:
 ``.venv/bin/python docs/figures/make_figures.py``.
 
 Brandenberger 1952, Bild 10 example (the Bild 8 situation: system I drives
@@ -34,6 +34,21 @@ def efficiency_map_figure() -> Path:
     return path
 
 
+def shift_map_figure() -> Path:
+    """docs/shift-map.md: the ZF 8HP 70 with spin losses, 8 gears, 90 × 70 output points, the bundled schedule."""
+    import numpy as np
+
+    from epicyclic.io.shift_schedule_csv import read_shift_schedule
+    from epicyclic.transmission import CarryLimits, Transmission, shift_map
+
+    smap = shift_map(Transmission.from_file(ROOT / "examples" / "zf_8hp70_spin_losses.toml"),
+                     np.linspace(50, 9000, 90), np.linspace(10, 2100, 70), limits=CarryLimits((800, 6000), 450.0),
+                     schedule=read_shift_schedule(ROOT / "examples" / "schedules" / "zf_8hp70_upshift.csv"))
+    path = HERE / "shift-map-8hp.png"
+    smap.plot().savefig(path, dpi=70)
+    return path
+
+
 def main() -> None:
     cases = {name: figure_subject(load_train_file(ROOT / "examples" / f"{stem}.toml"))
              for name, stem in (("brandenberger", "brandenberger_1952"), ("simple", "simple_set_ring_held_sun_drives"))}
@@ -48,6 +63,7 @@ def main() -> None:
     print(planetary_animation(brandenberger.solution, frames=32, fps=12, size=300, context=brandenberger.context)
           .gif(HERE / "brandenberger_animation.gif", dpi=60))
     print(efficiency_map_figure())
+    print(shift_map_figure())
     from stamp import record  # beside this script
 
     record("figures")  # the pictures are as new as the code that drew them (tests/docs/test_gallery.py)

@@ -3,7 +3,10 @@
 ``gears`` prints the per-gear table of a file with a ``[transmission]`` table
 (ratio, step, efficiency in drive and coast, circulating power, the most
 loaded shift element, rolling sets; then spread and mean step), with
-``--detail`` also every shift element's torque and slip per gear.
+``--detail`` also every shift element's torque and slip per gear.  Every gear
+is analysed at one input point, stated in every output: ``--speed``/``--torque``
+(with units), else the file's ``[operating_point]``, else 1000 1/min and
+100 N·m (:mod:`epicyclic.transmission.input_point`).
 ``explore`` lists every combination of the file's clutches and brakes that
 gives a one-degree-of-freedom drive between input and output.
 """
@@ -12,7 +15,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated
+from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
@@ -37,11 +40,11 @@ def _render(result, format: OutputFormat, detail_text: str = "") -> str:
     return result.table() + (("\n\n" + detail_text) if detail_text else "")
 
 
-def _failing_gear(transmission: Transmission) -> str:
+def _failing_gear(transmission: Transmission, point) -> str:
     """The first gear whose analysis fails (called only after analyze_all failed)."""
     for gear in transmission.gears:
         try:
-            transmission.analyze(gear)
+            transmission.analyze(gear, input_speed=point.speed, input_torque=point.torque)
         except EpicyclicError:
             return gear
     return "?"
@@ -53,21 +56,32 @@ def gears(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     detail: Annotated[bool, typer.Option("--detail", help="Also list every shift element and set per gear.")] = False,
+    speed: Annotated[Optional[str], typer.Option(
+        "--speed", help="Input speed of every gear, in the file's \\[units] or with a unit ('2000 U/min'). "
+                        "Default: the \\[operating_point]'s, else 1000 1/min.")] = None,
+    torque: Annotated[Optional[str], typer.Option(
+        "--torque", help="Input torque in drive (coast: at the output, x |ratio|), in the file's \\[units] or "
+                         "with a unit ('15 kp*m'). Default: the \\[operating_point]'s, else 100 N*m.")] = None,
     set_: SetOption = None,
 ) -> None:
     """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread.
 
-    With ``-f html``: one self-contained page styled like ``analyze -f html``, with every gear's detail,
-    its lever diagram and the speed chart across gears.
+    Every gear is analysed at one input point, stated in the output: --speed/--torque, else the file's
+    [operating_point], else 1000 1/min and 100 N*m.  With ``-f html``: one self-contained page styled like
+    ``analyze -f html``, with every gear's detail, its lever diagram and the speed chart across gears.
     """
+    from ..io import load_train_file
     from ..transmission import Transmission  # imported here: other commands start faster without it
+    from ..transmission.input_point import input_point
 
+    spec = load_train_file(file, overrides=set_ or ())
     transmission = Transmission.from_file(file, overrides=set_ or ())
     note_rexs(file)
+    point = input_point(transmission.input, spec.operating_point, speed=speed, torque=torque, units=spec.units)
     try:
-        analysis = transmission.analyze_all()
-    except EpicyclicError as exc:  # name the gear: the file has no [operating_point] to blame
-        raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission)}'!r}") from None
+        analysis = transmission.analyze_all(point=point)
+    except EpicyclicError as exc:  # name the gear
+        raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission, point)}'!r}") from None
     check_finite(analysis.to_dict(), file)
     if format is OutputFormat.html:
         emit(_gears_html(file, transmission, analysis, set_), out)

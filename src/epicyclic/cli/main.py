@@ -64,6 +64,14 @@ from . import efficiency_map as _efficiency_map  # noqa: E402
 
 app.command("map")(_efficiency_map.efficiency_map)
 
+from . import shift_map as _shift_map  # noqa: E402
+
+app.command("shiftmap")(_shift_map.shift_map)
+
+from . import cycle as _cycle  # noqa: E402
+
+app.command("cycle")(_cycle.cycle)
+
 from . import synthesize as _synthesize  # noqa: E402
 
 app.command("synthesize")(_synthesize.synthesize)

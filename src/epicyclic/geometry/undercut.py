@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 from typing import Literal
 
+from ..limits import MAX_TOOTH_HEIGHT_FACTOR
 from .checks import UndercutCheck
 from .errors import GeometryError
 from .set_geometry import SetGeometry
@@ -40,6 +41,11 @@ def undercut_limit(pressure_angle: float = 20.0, addendum: float = 1.0, helix_an
     float
         z_g (not rounded).
 
+    Raises
+    ------
+    GeometryError
+        A pressure angle outside (0, 45)°, a helix angle outside (−45, 45)° or an addendum outside (0, 5].
+
     Examples
     --------
     >>> round(undercut_limit(20.0), 3), round(undercut_limit(14.5), 2)
@@ -50,6 +56,15 @@ def undercut_limit(pressure_angle: float = 20.0, addendum: float = 1.0, helix_an
     Queitsch, Grenzzähnezahl z_g; DIN 3960 / ISO 21771; z_min = 2/sin²α ≈ 17.097 for 20°
     (machinecalcs.com profile-shift calculator; easyengcalc.com: 17 at 20°, 32 at 14.5°).
     """
+    for name, value, low, high in (("pressure_angle", pressure_angle, 0.0, 45.0),
+                                   ("helix_angle", helix_angle, -45.0, 45.0)):
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not low < value < high:
+            raise GeometryError(f"undercut_limit: {name} must lie in ({low:g}, {high:g}) degrees, got {value!r} "
+                                "(20 and 0 for the ISO 53 rack and a spur gear).")
+    if isinstance(addendum, bool) or not isinstance(addendum, (int, float)) or not 0 < addendum <= MAX_TOOTH_HEIGHT_FACTOR:
+        raise GeometryError(f"undercut_limit: addendum must lie in (0, {MAX_TOOTH_HEIGHT_FACTOR:g}] × the module, "
+                            f"got {addendum!r} "
+                            "(ISO 53: 1).")
     alpha_n, beta = math.radians(pressure_angle), math.radians(helix_angle)
     alpha_t = math.atan(math.tan(alpha_n) / math.cos(beta))
     return 2.0 * addendum * math.cos(beta) / math.sin(alpha_t) ** 2

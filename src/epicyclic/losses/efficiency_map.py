@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ModelError
+from ..limits import MAX_MAP_POINTS, check_count
 from ..model.train import GearTrain
 from ..units import Units, to_core_array, unit_factor
 from .element import ElementLosses
@@ -316,6 +317,14 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     -------
     EfficiencyMap
 
+    Raises
+    ------
+    ModelError
+        A bad train, gear, shaft, direction or axis.
+    LimitError
+        More than :data:`~epicyclic.limits.MAX_MAP_POINTS` grid points (the limit the command line and the
+        page share).
+
     Examples
     --------
     >>> from epicyclic.io import load_train_file
@@ -372,6 +381,7 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     _check_one_freedom(base, input, output)
     n = _axis(speeds, "speeds", "speed")
     t = _axis(torques, "torques", "torque")
+    check_count(n.size * t.size, "efficiency_map: speeds × torques", MAX_MAP_POINTS, "grid points")
     speed_grid, torque_grid = np.meshgrid(n, t)
     models = dict(losses or {})
     if spin is None and file is not None:

@@ -51,6 +51,24 @@ def _positive(value: object, name: str, owner: str, allow_zero: bool = False) ->
     return float(value)
 
 
+def _positive_array(value: object, name: str, allow_negative: bool = False) -> np.ndarray:
+    """``value`` (a number or an array) as floats, each finite and > 0 (any number with ``allow_negative``)."""
+    if isinstance(value, (bool, str, bytes)):
+        raise LossModelError(f"schlenk_friction: {name} must be a number, got {value!r}.")
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise LossModelError(f"schlenk_friction: {name} must be a number or an array of numbers, "
+                             f"got {value!r:.80}.") from None
+    if allow_negative:
+        return array
+    ok = np.isfinite(array) & (array > 0)
+    if not np.all(ok):
+        raise LossModelError(f"schlenk_friction: {name} must be a positive finite number, "
+                             f"got {float(array[~ok].ravel()[0])!r}.")
+    return array
+
+
 @dataclass(frozen=True)
 class Lubricant:
     """The oil at its operating temperature.
@@ -106,10 +124,21 @@ def schlenk_friction(load_per_width, sum_velocity, radius, viscosity: float, rou
     >>> round(schlenk_friction(6370.3 / 40, 5.2666, 8.382, 49.85, 0.355, 0.65), 4)
     0.0256
 
+    Raises
+    ------
+    LossModelError
+        ``radius``, ``viscosity``, ``roughness`` or ``lubricant_factor`` not a positive finite number
+        (the correlation divides by ρ_C and raises η_oil to −0.05), or a load or speed that is not a number.
+
     References
     ----------
     Schlenk 1994; ISO/TR 14179-2:2001 (μ_mZ).
     """
+    for name, value in (("radius", radius), ("viscosity", viscosity), ("roughness", roughness),
+                        ("lubricant_factor", lubricant_factor)):
+        _positive_array(value, name)
+    for name, value in (("load_per_width", load_per_width), ("sum_velocity", sum_velocity)):
+        _positive_array(value, name, allow_negative=True)  # numbers (a NaN gives a NaN μ, refused by the mesh)
     v = np.maximum(np.asarray(sum_velocity, dtype=float), MINIMUM_SUM_VELOCITY)
     w = np.maximum(np.asarray(load_per_width, dtype=float), 0.0)
     mu = 0.048 * (w / (v * radius)) ** 0.2 * viscosity ** -0.05 * roughness ** 0.25 * lubricant_factor

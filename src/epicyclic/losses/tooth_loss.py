@@ -257,6 +257,11 @@ def mesh_efficiency(friction, loss_factor):
     float or numpy.ndarray
         The mesh efficiency.
 
+    Raises
+    ------
+    LossModelError
+        μ or H_V negative, not finite or not a number, μ ≥ 1, or μ H_V ≥ 1 (no efficiency left).
+
     References
     ----------
     Ohlendorf 1958; Fernandes et al. 2015, Mech. Sci. 6, eq. (1).
@@ -266,4 +271,30 @@ def mesh_efficiency(friction, loss_factor):
     >>> round(mesh_efficiency(0.0256, 0.1986), 5)
     0.99492
     """
-    return 1.0 - np.asarray(friction) * loss_factor if isinstance(friction, np.ndarray) else 1.0 - friction * loss_factor
+    mu = _checked_array(friction, "friction (mu)", "mesh_efficiency")
+    h_v = _checked_array(loss_factor, "loss_factor (H_V)", "mesh_efficiency")
+    if np.any(mu >= 1.0):
+        raise LossModelError(f"mesh_efficiency: friction (mu) must be below 1 (gear meshes run at 0.02…0.1), got "
+                             f"{float(np.max(mu))!r}.")
+    loss = mu * h_v
+    if np.any(loss >= 1.0):
+        raise LossModelError(
+            f"mesh_efficiency: friction (mu) × loss_factor (H_V) = {float(np.max(loss))!r} leaves no efficiency "
+            "(mu·H_V >= 1); H_V of real meshes lies within 0.05…0.5 — check both arguments."
+        )
+    return 1.0 - loss if isinstance(friction, np.ndarray) or isinstance(loss_factor, np.ndarray) \
+        else float(1.0 - loss)
+
+
+def _checked_array(value, name: str, owner: str) -> np.ndarray:
+    """``value`` as a float array of finite numbers ≥ 0, else LossModelError naming ``name``."""
+    if isinstance(value, (bool, str, bytes)):
+        raise LossModelError(f"{owner}: {name} must be a number, got {value!r}.")
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise LossModelError(f"{owner}: {name} must be a number or an array of numbers, got {value!r:.80}.") from None
+    if not np.all(np.isfinite(array)) or np.any(array < 0):
+        bad = array[~(np.isfinite(array) & (array >= 0))].ravel()[0]
+        raise LossModelError(f"{owner}: {name} must be finite and >= 0, got {float(bad)!r}.")
+    return array

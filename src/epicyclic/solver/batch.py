@@ -120,7 +120,12 @@ def _broadcast(groups: Sequence[Mapping[str, object]]) -> tuple[list[dict[str, n
     the field and index: :func:`~epicyclic.units.to_core_array`), flattened in one broadcast shape."""
     groups = [{k: to_core_array(v, quantity, field=f"solve_batch: {name}[{k!r}]") for k, v in g.items()}
               for name, quantity, g in zip(("speeds", "torques", "powers"), ("speed", "torque", "power"), groups)]
-    shape = np.broadcast_shapes(*(v.shape for g in groups for v in g.values()))
+    named = {f"{n}[{k!r}]": v.shape for n, g in zip(("speeds", "torques", "powers"), groups) for k, v in g.items()}
+    try:
+        shape = np.broadcast_shapes(*named.values())
+    except ValueError:  # name the arrays, not numpy's argument numbers
+        shapes = ", ".join(f"{n} has shape {s}" for n, s in named.items())
+        raise OperatingPointError(f"solve_batch: the given arrays do not broadcast to one shape ({shapes}).") from None
     return [{k: np.broadcast_to(v, shape).ravel() for k, v in g.items()} for g in groups], shape
 
 

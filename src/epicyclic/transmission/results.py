@@ -25,6 +25,7 @@ from ..model.planetary import PlanetarySet
 from ..results.solution import Solution
 from ..text import markdown_text
 from .errors import UnknownGearError
+from .input_point import InputPoint
 
 
 class Scheduled(Protocol):
@@ -236,6 +237,9 @@ class TransmissionAnalysis:
     name, input, output : str
     gears : tuple of GearResult
         In schedule order.
+    point : InputPoint, optional
+        The input speed and torque every gear was analysed at, and where they came from; stated in
+        every rendering (the losses of loss models depend on it).
 
     References
     ----------
@@ -247,6 +251,7 @@ class TransmissionAnalysis:
     input: str
     output: str
     gears: tuple[GearResult, ...]
+    point: InputPoint | None = None
 
     def __getitem__(self, gear: str) -> GearResult:
         for g in self.gears:
@@ -335,9 +340,11 @@ class TransmissionAnalysis:
         return lines
 
     def _footer(self) -> str:
+        at = f"; analysed at {self.point.describe()}" if self.point is not None else ""
         if self.spread is None:
-            return "spread: — (fewer than two forward gears)"
-        return f"spread {self.spread:.3f}, mean step {self.mean_step:.3f}, {len(self.forward)} forward, {len(self.reverse)} reverse"
+            return "spread: — (fewer than two forward gears)" + at
+        return (f"spread {self.spread:.3f}, mean step {self.mean_step:.3f}, {len(self.forward)} forward, "
+                f"{len(self.reverse)} reverse{at}")
 
     def markdown(self) -> str:
         """GitHub-flavoured Markdown table."""
@@ -360,12 +367,13 @@ class TransmissionAnalysis:
         Returns
         -------
         dict
-            ``name``, ``input``, ``output``, ``gears`` (each gear's ``to_dict()``: ratio,
-            efficiencies in drive and coast, element torques, ...), ``steps`` (φ = i_k/i_(k+1),
-            keyed ``"k→k+1"``), ``spread`` and ``mean_step``.
+            ``name``, ``input``, ``output``, ``operating_point`` (:meth:`InputPoint.to_dict`, or None),
+            ``gears`` (each gear's ``to_dict()``: ratio, efficiencies in drive and coast, element
+            torques, ...), ``steps`` (φ = i_k/i_(k+1), keyed ``"k→k+1"``), ``spread`` and ``mean_step``.
         """
         return {
             "name": self.name, "input": self.input, "output": self.output,
+            "operating_point": self.point.to_dict() if self.point is not None else None,
             "gears": [g.to_dict() for g in self.gears],
             "steps": self.steps, "spread": self.spread, "mean_step": self.mean_step,
         }

@@ -38,6 +38,7 @@ from ..solver.kinematics import degrees_of_freedom, free_speed_shafts, solve_spe
 from ..units import to_core
 from .errors import GearFreedomError, ShiftScheduleError, UnknownGearError
 from .explore import Exploration, explore
+from .input_point import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE, InputPoint
 from .results import GearResult, TransmissionAnalysis, gear_result
 
 __all__ = ["Transmission", "ShiftScheduleError", "GearFreedomError"]
@@ -260,8 +261,8 @@ class Transmission:
                             self.input, self.output, self.name)
 
     # ------------------------------------------------------------------ analysis
-    def analyze(self, gear: str, *, input_speed: float | str = 1000.0, input_torque: float | str = 100.0
-                ) -> GearResult:
+    def analyze(self, gear: str, *, input_speed: float | str = DEFAULT_INPUT_SPEED,
+                input_torque: float | str = DEFAULT_INPUT_TORQUE) -> GearResult:
         """Analyse one gear in drive and coast.
 
         Parameters
@@ -308,9 +309,10 @@ class Transmission:
         coast = run(train, coast_op)
         return gear_result(self, gear, ratio, drive, coast)
 
-    def analyze_all(self, *, input_speed: float | str = 1000.0, input_torque: float | str = 100.0
-                    ) -> TransmissionAnalysis:
-        """:meth:`analyze` every gear of the schedule, in schedule order.
+    def analyze_all(self, *, input_speed: float | str = DEFAULT_INPUT_SPEED,
+                    input_torque: float | str = DEFAULT_INPUT_TORQUE,
+                    point: InputPoint | None = None) -> TransmissionAnalysis:
+        """:meth:`analyze` every gear of the schedule, in schedule order, at one stated input point.
 
         Parameters
         ----------
@@ -318,6 +320,10 @@ class Transmission:
             1/min, or with a unit (``"2000 U/min"``), as in :meth:`analyze`.
         input_torque : float, str or pint.Quantity, default 100
             N·m at the input in drive, or with a unit, as in :meth:`analyze`.
+        point : InputPoint, optional
+            The point with where it came from (:func:`~epicyclic.transmission.input_point.input_point`:
+            ``--speed``/``--torque``, the file's ``[operating_point]`` or the defaults); replaces
+            ``input_speed`` and ``input_torque``.  The analysis states it in every rendering.
 
         Returns
         -------
@@ -338,8 +344,13 @@ class Transmission:
         >>> [round(g.ratio, 2) for g in analysis.gears]
         [2.46, 1.46, 1.0, -2.18]
         """
-        results = tuple(self.analyze(g, input_speed=input_speed, input_torque=input_torque) for g in self.schedule)
-        return TransmissionAnalysis(self.name, self.input, self.output, results)
+        if point is None:
+            speed = to_core(input_speed, "speed", field="input_speed")
+            torque = to_core(input_torque, "torque", field="input_torque")
+            default = speed == DEFAULT_INPUT_SPEED and torque == DEFAULT_INPUT_TORQUE
+            point = InputPoint(speed, torque, *(("default",) * 2 if default else ("given",) * 2))
+        results = tuple(self.analyze(g, input_speed=point.speed, input_torque=point.torque) for g in self.schedule)
+        return TransmissionAnalysis(self.name, self.input, self.output, results, point)
 
     def explore(self, **kwargs) -> Exploration:
         """Every one-DOF combination of this train's shift elements (see :func:`explore`)."""

@@ -179,12 +179,17 @@ def other_warnings(solution: Solution) -> list[str]:
     return [w for w in solution.warnings if not any(part in w for part in _SHOWN_ELSEWHERE)]
 
 
-def gear_table(transmission: Any, current: str | None, source: str) -> dict[str, Any]:
+def gear_table(transmission: Any, current: str | None, source: str, operating_point: Any = None) -> dict[str, Any]:
     """The gear table of a transmission (its own header and rows), or its error located in the file.
 
     ``transmission`` is a :class:`~epicyclic.transmission.Transmission` or a function that makes one
     (whose errors, e.g. a gear that leaves the train free, are located at their schedule key too).
+    Every gear is analysed at the input point ``epicyclic gears`` uses: the speed and torque of the
+    transmission's input in ``operating_point`` (the file's), else 1000 1/min and 100 N·m; the footer
+    states it (:func:`~epicyclic.transmission.input_point.input_point`).
     """
+    from ..transmission.input_point import input_point
+
     from ..io.located import locate_error
     from ..transmission import TransmissionAnalysis
 
@@ -196,13 +201,18 @@ def gear_table(transmission: Any, current: str | None, source: str) -> dict[str,
             transmission = transmission()
         except EpicyclicError as exc:
             return failed(exc, "[transmission]")
+    try:
+        point = input_point(transmission.input, operating_point)
+    except EpicyclicError as exc:
+        return failed(exc, "[operating_point]")
     results = []
     for gear in transmission.gears:
         try:
-            results.append(transmission.analyze(gear))
+            results.append(transmission.analyze(gear, input_speed=point.speed, input_torque=point.torque))
         except EpicyclicError as exc:  # name the gear, as ``epicyclic gears`` does
             return failed(exc, f"[transmission], key {f'schedule.{gear}'!r}")
-    analysis = TransmissionAnalysis(transmission.name, transmission.input, transmission.output, tuple(results))
+    analysis = TransmissionAnalysis(transmission.name, transmission.input, transmission.output, tuple(results),
+                                    point)
     rows = [(g.gear, cells) for g, cells in zip(analysis.gears, analysis._rows())]
     return {"error": None, "transmission": transmission, "analysis": analysis, "header": analysis.HEADER,
             "rows": rows, "footer": analysis._footer(), "current_name": current,

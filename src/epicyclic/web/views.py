@@ -144,7 +144,6 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
     solution = subject.solution if subject is not None else None
     if subject is not None and train_file.operating_point is None:
         notices.append(_unit_input(train_file, subject.gear))
-    transmission = subject.transmission if subject is not None else None
     gear = subject.gear if subject is not None else train_file.gear
     result: dict[str, Any] = {
         "title": train_file.title, "description": train_file.description, "units": units,
@@ -153,7 +152,8 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
         "form_rows": form_rows, "figures": [], "lang": state.lang, "explanation": None, "loss_split": None,
     }
     if train_file.transmission is not None:
-        gears = gear_table(transmission or (lambda: _transmission(train_file)), gear, state.source)
+        # with the file's loss models and at its operating point, as ``epicyclic gears`` computes it
+        gears = gear_table(lambda: _transmission(train_file), gear, state.source, train_file.operating_point)
         gears["problem"] = problem(state.text, gears["error"]) if gears["error"] else None
         same = solve_problem is not None and gears["error"] == solve_problem.message  # said once, above
         result["gears"] = None if same else gears
@@ -382,7 +382,7 @@ def _gears_report(train_file: TrainFile, state: PageState) -> str:
 
     if train_file.transmission is None:
         raise EpicyclicError(f"{state.source}: the gears report needs a [transmission] table with a schedule.")
-    table = gear_table(lambda: _transmission(train_file), None, state.source)
+    table = gear_table(lambda: _transmission(train_file), None, state.source, train_file.operating_point)
     if table["error"]:
         raise _Bad(problem(state.text, table["error"]), state.text)
     return gears_html(table["transmission"], table["analysis"], _units(train_file, state),
