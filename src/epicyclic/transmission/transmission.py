@@ -36,6 +36,7 @@ from ..solver import solve
 from ..solver.assembly import matrices
 from ..solver.kinematics import degrees_of_freedom, free_speed_shafts, solve_speeds
 from ..units import to_core
+from .default_point import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE, default_operating_point
 from .errors import GearFreedomError, ShiftScheduleError, UnknownGearError
 from .explore import Exploration, explore
 from .results import GearResult, TransmissionAnalysis, gear_result
@@ -257,8 +258,8 @@ class Transmission:
                             self.input, self.output, self.name)
 
     # ------------------------------------------------------------------ analysis
-    def analyze(self, gear: str, *, input_speed: float | str = 1000.0, input_torque: float | str = 100.0
-                ) -> GearResult:
+    def analyze(self, gear: str, *, input_speed: float | str = DEFAULT_INPUT_SPEED,
+                input_torque: float | str = DEFAULT_INPUT_TORQUE) -> GearResult:
         """Analyse one gear in drive and coast.
 
         Parameters
@@ -288,8 +289,7 @@ class Transmission:
         if not (np.isfinite(input_torque) and input_torque > 0):
             raise ModelError(f"transmission: input_torque must be a positive N·m value, got {input_torque!r}.")
         train = self.gear_train(gear)
-        drive_op = OperatingPoint(speeds={self.input: input_speed}, torques={self.input: input_torque},
-                                  drives=[self.input], loads=[self.output])
+        drive_op = default_operating_point(self.input, self.output, speed=input_speed, torque=input_torque)
         run = solve
         if self.losses:
             from ..losses import solve_with_losses
@@ -305,8 +305,8 @@ class Transmission:
         coast = run(train, coast_op)
         return gear_result(self, gear, ratio, drive, coast)
 
-    def analyze_all(self, *, input_speed: float | str = 1000.0, input_torque: float | str = 100.0
-                    ) -> TransmissionAnalysis:
+    def analyze_all(self, *, input_speed: float | str = DEFAULT_INPUT_SPEED,
+                    input_torque: float | str = DEFAULT_INPUT_TORQUE) -> TransmissionAnalysis:
         """:meth:`analyze` every gear of the schedule, in schedule order.
 
         Parameters
@@ -370,12 +370,39 @@ class Transmission:
         """
         from ..io import load_train_file  # the file format lives in epicyclic.io
 
-        data = load_train_file(path, overrides=overrides)
+        return cls.from_train_file(load_train_file(path, overrides=overrides))
+
+    @classmethod
+    def from_train_file(cls, data: Any) -> Transmission:
+        """The transmission of a train file already read (:class:`epicyclic.io.TrainFile`), with its loss models.
+
+        Every front end makes its transmission here (``epicyclic gears``, ``plot``, the page), so that they
+        all solve the gears with the file's loss models (``[planetary.losses]``, ``[lubricant]``).
+
+        Parameters
+        ----------
+        data : epicyclic.io.TrainFile
+            A file with a ``[transmission]`` table.
+
+        Returns
+        -------
+        Transmission
+            Named by the file's title; its loss models come along.
+
+        Raises
+        ------
+        ShiftScheduleError
+            The file has no ``[transmission]`` table.
+
+        References
+        ----------
+        Brandenberger 1952, eqs. 1–10; ISO/TR 14179-2:2001 (loss models).
+        """
         spec = getattr(data, "transmission", None)
         if spec is None:
             raise ShiftScheduleError(
-                f"{path}: the file describes a train but no [transmission] table (input, output, "
-                "schedule); add one to analyse gears."
+                f"{getattr(data, 'source', 'the file')}: the file describes a train but no [transmission] table "
+                "(input, output, schedule); add one to analyse gears."
             )
         return cls(data.train, dict(spec.schedule), spec.input, spec.output,
                    name=getattr(data, "title", "") or data.train.name, losses=dict(getattr(data, "losses", {})))

@@ -212,10 +212,14 @@ def operating_rows(data: Mapping[str, Any], shafts: Sequence[str]) -> tuple[Shaf
 
 
 def default_operating_rows(shafts: Sequence[str], input: str, output: str) -> tuple[ShaftRow, ...]:
-    """The operating point of a transmission without one: unit input (1 of the file's speed and torque unit
-    at the input, the output loaded), as :func:`epicyclic.plotting.figure_subject` solves it."""
+    """The operating point of a transmission without one: the default point of
+    :func:`epicyclic.transmission.default_operating_point` (written with its units, 1/min and N·m, so that it
+    holds in any file's ``[units]``), as :func:`epicyclic.plotting.figure_subject` solves it."""
+    from ..transmission import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE
+
+    speed, torque = f"{DEFAULT_INPUT_SPEED:g} 1/min", f"{DEFAULT_INPUT_TORQUE:g} N*m"
     return tuple(
-        ShaftRow(s, "drive", "1", "torque", "1") if s == input
+        ShaftRow(s, "drive", speed, "torque", torque) if s == input
         else ShaftRow(s, "load") if s == output else ShaftRow(s)
         for s in shafts
     )

@@ -30,7 +30,7 @@ from ..errors import EpicyclicError
 from ..io import TrainFile, loads_train_file
 from ..units import Units
 from .editor import Problem, problem
-from .render import Reply, Verbatim, render
+from .render import Reply, Verbatim, fmt, render
 from .state import PageState, default_operating_rows, operating_rows, write_operating_point
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -108,20 +108,25 @@ def _table(train_file: TrainFile) -> str:
 
 
 def _transmission(train_file: TrainFile) -> Any:
+    """The file's transmission with its loss models, as ``epicyclic gears`` reads it."""
     from ..transmission import Transmission
 
-    spec = train_file.transmission
-    return Transmission(train_file.train, dict(spec.schedule), spec.input, spec.output,
-                        name=train_file.title or train_file.train.name)
+    return Transmission.from_train_file(train_file)
 
 
-def _unit_input(train_file: TrainFile, gear: str) -> str:
+def _default_point(train_file: TrainFile, gear: str) -> str:
     """What the page says about a transmission without operating point."""
+    from ..transmission import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE
+
     spec, units = train_file.transmission, train_file.units
-    return (f"The file has no [operating_point]: the page shows gear {gear} at unit input, as `epicyclic plot` "
-            f"draws it: {spec.input!r} driven at 1 {units.speed} with 1 {units.torque}, {spec.output!r} loaded. "
-            "Ratios, efficiencies and multiples of the input do not depend on it; give an operating point in the "
-            "form to see real speeds, torques and powers.")
+    level = (f"{DEFAULT_INPUT_SPEED:g} 1/min with {DEFAULT_INPUT_TORQUE:g} N·m" if units == Units() else
+             f"{DEFAULT_INPUT_SPEED:g} 1/min ({fmt(units.speed_from_core(DEFAULT_INPUT_SPEED))} {units.speed}) with "
+             f"{DEFAULT_INPUT_TORQUE:g} N·m ({fmt(units.torque_from_core(DEFAULT_INPUT_TORQUE))} {units.torque})")
+    losses = (" The efficiencies come from the file's loss models and depend on this level." if train_file.losses
+              else " Ratios, efficiencies and multiples of the input do not depend on it.")
+    return (f"The file has no [operating_point]: the page shows gear {gear} at the default operating point, as "
+            f"`epicyclic gears` and `epicyclic plot` use it: {spec.input!r} driven at {level}, {spec.output!r} "
+            f"loaded.{losses} Give an operating point in the form to see your own speeds, torques and powers.")
 
 
 # ---------------------------------------------------------------------- the results section
@@ -142,7 +147,7 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
             solve_problem = problem(state.text, str(exc), fallback=_table(train_file))
     solution = subject.solution if subject is not None else None
     if subject is not None and train_file.operating_point is None:
-        notices.append(_unit_input(train_file, subject.gear))
+        notices.append(_default_point(train_file, subject.gear))
     transmission = subject.transmission if subject is not None else None
     gear = subject.gear if subject is not None else train_file.gear
     result: dict[str, Any] = {
