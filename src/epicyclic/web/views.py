@@ -194,6 +194,8 @@ def _guard(action):
             return Reply(render("problem.html", problem=bad.problem, text=bad.text, oob=True), 422)
         except EpicyclicError as exc:
             return Reply(render("problem.html", problem=Problem(str(exc)), text=None, oob=True), 422)
+        except MemoryError:
+            raise  # the worker's memory limit: the pool says so (epicyclic.web.jobs)
         except Exception as exc:  # a bug: say so, keep serving
             traceback.print_exc(file=sys.stderr)
             message = (f"internal error: {type(exc).__name__}: {exc}. This is a bug in epicyclic; please report "

@@ -5,6 +5,13 @@
 (function () {
   function editor() { return document.getElementById("toml"); }
 
+  // ---- this tab's id: the server caps the jobs per client (address and this id), so one tab cannot fill
+  // the queue for the others
+  var clientId = (window.crypto && crypto.randomUUID) ? crypto.randomUUID() : String(Math.random()).slice(2);
+  document.addEventListener("htmx:configRequest", function (event) {
+    event.detail.headers["X-Epicyclic-Client"] = clientId;
+  });
+
   // ---- line numbers and the error line
   function errorLine() {
     var status = document.getElementById("editor-status");
@@ -80,7 +87,8 @@
     var status = document.getElementById("download-status");
     var what = path.split("/").pop();
     status.textContent = "preparing " + what + "…";
-    fetch(path, { method: "POST", body: new FormData(document.getElementById("ws")) })
+    fetch(path, { method: "POST", body: new FormData(document.getElementById("ws")),
+                  headers: { "X-Epicyclic-Client": clientId } })
       .then(function (response) {
         if (!response.ok) {
           return response.text().then(function (html) {
