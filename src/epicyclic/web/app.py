@@ -33,7 +33,7 @@ Examples
 from __future__ import annotations
 
 import contextlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from starlette.applications import Starlette
@@ -45,14 +45,20 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from ..limits import MAX_FILE_BYTES
+from .cache import FigureCache, figure_key
 from .examples import DEFAULT_EXAMPLE, bundled_examples
 from .guards import BodyLimit, BodyTooLarge, BodyTooSlow, SameOrigin, SecurityHeaders
 from .jobs import Jobs, failure
 from .render import Reply, render
-from .state import FormError, PageState, clean_text
+from .state import FormError, PageState, clean_text, restored_state
 from .views import apply, download, figure, open_file, open_text, save_figure, tool, tool_fields
 
-__all__ = ["Limits", "create_app", "LOOPBACK_HOSTS"]
+__all__ = ["Limits", "create_app", "LOOPBACK_HOSTS", "UNIT_LABELS"]
+
+#: The units selector: value → label (the file's ``[units]`` and the presets of ``web.state.UNIT_PRESETS``).
+UNIT_LABELS = (("file", "the file's units"), ("si", "SI (1/min, N·m, W)"), ("kw", "1/min, N·m, kW"),
+               ("rpm-kw", "rpm, N·m, kW"), ("rpm-hp", "rpm, lbf·ft, hp"), ("rads-kw", "rad/s, N·m, kW"),
+               ("mw", "1/min, kN·m, MW"))
 
 #: Host names a loopback server answers to.
 LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1", "[::1]", "testserver")
@@ -80,6 +86,8 @@ class Limits:
         Bytes each worker's address space may grow after its start (``RLIMIT_AS``; 507 past it).
     body_timeout : float, default 30
         Seconds a request body may send nothing before it is refused (408).
+    picture_cache : int, default 64 MiB
+        Bytes of pictures kept in the server process (:mod:`epicyclic.web.cache`; 0: none kept).
     allowed_hosts : tuple of str
         Host headers accepted (loopback names by default; ``("*",)`` for any).
     """
@@ -92,6 +100,7 @@ class Limits:
     max_client_jobs: int = 16
     worker_memory: int | None = 2 << 30
     body_timeout: float = 30.0
+    picture_cache: int = 64 << 20
     allowed_hosts: tuple[str, ...] = LOOPBACK_HOSTS
 
 
@@ -131,34 +140,49 @@ def create_app(limits: Limits | None = None) -> Starlette:
         address = request.client.host if request.client else ""
         return f"{address} {request.headers.get('x-epicyclic-client', '')[:64]}"
 
-    async def work(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Response:
+    async def run(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Reply:
         async def gone() -> None:  # returns when the client has closed the connection
             while (await request.receive())["type"] != "http.disconnect":
                 pass
 
         jobs: Jobs = app.state.jobs
-        return _reply(await jobs.run(function, *args, timeout=timeout or limits.solve_timeout,
-                                     client=client_of(request), gone=gone))
+        return await jobs.run(function, *args, timeout=timeout or limits.solve_timeout, client=client_of(request),
+                              gone=gone)
+
+    async def work(request: Request, function: Any, *args: Any, timeout: float | None = None,
+                   ahead: PageState | None = None) -> Response:
+        """``function(*args)`` in a worker; with ``ahead`` (the state shown), the pictures of the gears the
+        page shows next are drawn ahead while the server is idle."""
+        reply = await run(request, function, *args, timeout=timeout)
+        if ahead is not None and reply.status == 200 and reply.next_texts:
+            app.state.cache.draw_ahead(client_of(request), ahead, reply.next_texts, app.state.jobs, figure,
+                                       limits.solve_timeout)
+        return _reply(reply)
 
     async def page(request: Request) -> Response:
         from .. import __version__
 
-        chosen = request.query_params.get("example", DEFAULT_EXAMPLE)
+        query = request.query_params
+        chosen = query.get("example", DEFAULT_EXAMPLE)
+        restore = restored_state(query)
         body = render("page.html", examples=[(e.key, e.title) for e in examples.values()],
-                            initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__)
+                      initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__,
+                      unit_choices=UNIT_LABELS, **restore)
         return HTMLResponse(body, headers={"Cache-Control": "no-store"})
 
     async def open_example(request: Request) -> Response:
+        """An example; with the operating point and gear of a shared link or a reload (the URL holds them)."""
         try:
             form = await form_of(request)
             key = clean_text(form.get("example"), "example", 200) or DEFAULT_EXAMPLE
-            state = PageState("", units=form.get("units", "file"), lang=form.get("lang", "en"))
+            state = PageState.from_form(form, max_text=limits.max_body)
         except FormError as exc:
             return bad(exc)
         if key not in examples:
             return _reply(failure(f"no bundled example {key!r}; choose one from the list.", 404))
         example = examples[key]
-        return await work(request, open_text, example.text, example.file_name, state.units, state.lang)
+        return await work(request, open_text, example.text, example.file_name, state.units, state.lang,
+                          state.rows, state.gear, ahead=replace(state, source=example.file_name))
 
     async def upload(request: Request) -> Response:
         try:
@@ -171,7 +195,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
             state = PageState("", units=form.get("units", "file"), lang=form.get("lang", "en"))
         except FormError as exc:
             return bad(exc)
-        return await work(request, open_file, data, name, state.units, state.lang)
+        return await work(request, open_file, data, name, state.units, state.lang, ahead=replace(state, source=name))
 
     async def with_state(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Response:
         """Read the page's form and run ``function(state, *args)`` in a worker."""
@@ -185,10 +209,20 @@ def create_app(limits: Limits | None = None) -> Starlette:
         origin = request.path_params["origin"]
         if origin not in ("text", "form"):
             return _reply(failure(f"no such action {origin!r}.", 404))
-        return await with_state(request, apply, origin)
+        try:
+            state = await state_of(request)
+        except FormError as exc:
+            return bad(exc)
+        return await work(request, apply, state, origin, ahead=state)
 
     async def picture(request: Request) -> Response:
-        return await with_state(request, figure, request.path_params["kind"])
+        """A picture: kept from before or drawn ahead where it can be (epicyclic.web.cache)."""
+        try:
+            state = await state_of(request)
+        except FormError as exc:
+            return bad(exc)
+        name = request.path_params["kind"]
+        return _reply(await app.state.cache.answer(figure_key(state, name), lambda: run(request, figure, state, name)))
 
     async def save_picture(request: Request) -> Response:
         return await with_state(request, save_figure, request.path_params["kind"], timeout=limits.report_timeout)
@@ -209,9 +243,11 @@ def create_app(limits: Limits | None = None) -> Starlette:
     async def lifespan(app: Starlette):
         app.state.jobs = Jobs(limits.workers, limits.max_queue, max_client_jobs=limits.max_client_jobs,
                               worker_memory=limits.worker_memory)
+        app.state.cache = FigureCache(limits.picture_cache)
         try:
             yield
         finally:
+            app.state.cache.close()
             app.state.jobs.close()
 
     routes = [

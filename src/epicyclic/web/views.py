@@ -68,7 +68,9 @@ def _rewritten(state: PageState) -> str:
 
 
 def _units(train_file: TrainFile, state: PageState) -> Units:
-    return train_file.units if state.units == "file" else Units()
+    from .state import units_of
+
+    return units_of(state.units, train_file.units)
 
 
 def _subject(train_file: TrainFile, state: PageState) -> Subject:
@@ -129,6 +131,13 @@ def _default_point(train_file: TrainFile, gear: str) -> str:
             f"loaded.{losses} Give an operating point in the form to see your own speeds, torques and powers.")
 
 
+def _gear_level() -> str:
+    """The input level the gear table is analysed at, in words (as ``epicyclic gears``)."""
+    from ..transmission import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE
+
+    return f"{DEFAULT_INPUT_SPEED:g} 1/min, {DEFAULT_INPUT_TORQUE:g} N·m at the input"
+
+
 # ---------------------------------------------------------------------- the results section
 def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
     from ..explain import explain
@@ -155,6 +164,9 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
         "notices": notices, "solution": solution, "solve_problem": solve_problem,
         "gears": None, "tools": list(TOOLS.values()), "tool_context": Context(train_file, solution, gear),
         "form_rows": form_rows, "figures": [], "lang": state.lang, "explanation": None, "loss_split": None,
+        "gear_name": gear if train_file.transmission is not None else None,
+        "has_transmission": train_file.transmission is not None, "has_losses": bool(train_file.losses),
+        "gear_level": _gear_level(),
     }
     if train_file.transmission is not None:
         gears = gear_table(transmission or (lambda: _transmission(train_file)), gear, state.source)
@@ -217,6 +229,17 @@ def _form(train_file: TrainFile, text: str) -> dict[str, Any]:
     return {"rows": rows, "gear_names": spec.gears if spec else (), "gear": gear, "file_units": train_file.units}
 
 
+def _next_texts(text: str, form: dict[str, Any], results: dict[str, Any]) -> tuple[str, ...]:
+    """The texts the page shows after a click on another gear (the form's rows, that gear), nearest gear
+    first: the server draws their pictures ahead while it is idle."""
+    gears, current = list(form["gear_names"]), form["gear"]
+    if not gears or results["problem"] is not None or current not in gears:
+        return ()
+    here = gears.index(current)
+    order = sorted((g for g in gears if g != current), key=lambda g: (abs(gears.index(g) - here), gears.index(g)))
+    return tuple(write_operating_point(text, form["rows"], gear) for gear in order)
+
+
 @_guard
 def open_file(data: bytes, source: str, units: str = "file", lang: str = "en") -> Reply:
     """:func:`open_text` of an uploaded file, read as the command line reads one (size, NUL bytes, UTF-8)."""
@@ -225,18 +248,36 @@ def open_file(data: bytes, source: str, units: str = "file", lang: str = "en") -
     return open_text(decode_source(data, source), source, units, lang)
 
 
+def _line_ending(text: str) -> str:
+    """``"crlf"`` for a text written with Windows line endings, else ``"lf"`` (the editor shows LF)."""
+    return "crlf" if "\r\n" in text else "lf"
+
+
 @_guard
-def open_text(text: str, source: str, units: str = "file", lang: str = "en") -> Reply:
-    """The whole workspace (editor, operating-point form, results) for a newly opened text."""
-    state = PageState(text, source, units=units, lang=lang)
+def open_text(text: str, source: str, units: str = "file", lang: str = "en", rows: tuple = (),
+              gear: str = "") -> Reply:
+    """The whole workspace (editor, operating-point form, results) for a newly opened text.
+
+    ``rows`` and ``gear`` (from a shared link or a reload: the URL holds them) are written into the
+    text's ``[operating_point]`` as the form would write them.
+    """
+    eol = _line_ending(text)
+    text = text.replace("\r\n", "\n")
+    if rows or gear:
+        try:
+            text = write_operating_point(text, rows, gear)
+        except (tomllib.TOMLDecodeError, RecursionError):
+            pass  # the text's own error is shown below
+    state = PageState(text, source, units=units, lang=lang, eol=eol)
     try:
         train_file = _load(text, source)
     except _Bad as bad:
         return Reply(render("workspace.html", text=Verbatim(text), source=source, rows=(), gear_names=(), gear="",
-                            file_units=Units(), problem=bad.problem, results=None), 422)
+                            file_units=Units(), problem=bad.problem, results=None, eol=eol), 422)
     results = _results(train_file, state)
+    form = _form(train_file, text)
     return Reply(render("workspace.html", text=Verbatim(text), source=source, problem=None, results=results,
-                        **_form(train_file, text)), _status(results))
+                        eol=eol, **form), _status(results), next_texts=_next_texts(text, form, results))
 
 
 @_guard
@@ -256,8 +297,11 @@ def apply(state: PageState, origin: str) -> Reply:
         return Reply(render("apply.html", problem=bad.problem, results=None, text=Verbatim(text),
                             swap_text=swap_text, swap_form=False), 422)
     results = _results(train_file, state)
+    form = _form(train_file, text)
+    rows = state.rows if origin == "form" else form["rows"]
     return Reply(render("apply.html", problem=None, results=results, text=Verbatim(text), swap_text=swap_text,
-                        swap_form=origin == "text", **_form(train_file, text)), _status(results))
+                        swap_form=origin == "text", **form), _status(results),
+                 next_texts=_next_texts(text, {**form, "rows": rows}, results))
 
 
 def _picture(state: PageState, name: str):
@@ -404,7 +448,8 @@ def download(state: PageState, kind: str) -> Reply:
             title = tomllib.loads(state.text).get("title", title)
         except (tomllib.TOMLDecodeError, RecursionError):
             pass
-        return Reply(state.text, media_type=_DOWNLOADS[kind],
+        text = state.text.replace("\r\n", "\n")  # the user's line endings, as the file was opened
+        return Reply(text.replace("\n", "\r\n") if state.eol == "crlf" else text, media_type=_DOWNLOADS[kind],
                      filename=_file_name(str(title), state.source, ".toml"))
     train_file = _load(state.text, state.source)
     name = _file_name(train_file.title, state.source, ".gears.html" if kind == "gears" else f".{kind}")
