@@ -131,8 +131,8 @@ class Jobs:
         self.worker_memory = worker_memory
         self.pending = 0
         self.per_client: dict[str, int] = {}
-        #: Jobs cancelled because their client left (for the tests and the load benchmark).
-        self.cancelled = 0
+        #: Jobs started and jobs cancelled because their client left (for the tests and the benchmarks).
+        self.started = self.cancelled = 0
 
     async def run(self, function: Callable[..., Reply], *args: Any, timeout: float, client: str = "",
                   gone: Callable[[], Awaitable[Any]] | None = None) -> Reply:
@@ -148,6 +148,7 @@ class Jobs:
             return failure(f"too many requests at once from this page ({self.max_client_jobs} are waiting or "
                            "running); wait for them to finish.", 429)
         self.pending += 1
+        self.started += 1
         self.per_client[client] = self.per_client.get(client, 0) + 1
         watch = asyncio.ensure_future(gone()) if gone is not None else None
         future = None

@@ -253,6 +253,17 @@ def _line_ending(text: str) -> str:
     return "crlf" if "\r\n" in text else "lf"
 
 
+def _restored(text: str, source: str, rows: tuple, gear: str) -> str:
+    """``text`` with the operating point of the address written in, unchanged where it is the text's own."""
+    try:
+        own = _form(_load(text, source), text)
+    except (_Bad, tomllib.TOMLDecodeError, RecursionError):
+        return text  # the text's own error is shown
+    if (rows or own["rows"]) == own["rows"] and (gear or own["gear"]) == own["gear"]:
+        return text
+    return write_operating_point(text, rows or own["rows"], gear or own["gear"])
+
+
 @_guard
 def open_text(text: str, source: str, units: str = "file", lang: str = "en", rows: tuple = (),
               gear: str = "") -> Reply:
@@ -264,10 +275,7 @@ def open_text(text: str, source: str, units: str = "file", lang: str = "en", row
     eol = _line_ending(text)
     text = text.replace("\r\n", "\n")
     if rows or gear:
-        try:
-            text = write_operating_point(text, rows, gear)
-        except (tomllib.TOMLDecodeError, RecursionError):
-            pass  # the text's own error is shown below
+        text = _restored(text, source, tuple(rows), gear)
     state = PageState(text, source, units=units, lang=lang, eol=eol)
     try:
         train_file = _load(text, source)

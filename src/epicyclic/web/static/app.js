@@ -127,7 +127,7 @@
     if (draft && typeof draft.text === "string" && draft.text !== pristine) {
       editor().value = draft.text;
       renderGutter();
-      var note = byId("draft-status");
+      var note = byId("draft-restored");
       note.replaceChildren(document.createTextNode("your edits of " + String(draft.saved).replace("T", " ").slice(0, 19)
         + " UTC were restored "));
       var discard = document.createElement("button");
@@ -337,7 +337,7 @@
     if (target.id === "discard-draft") {
       localStorage.removeItem(draftKey(sourceName()));
       editor().value = pristine;
-      byId("draft-status").textContent = "edits discarded";
+      byId("draft-restored").textContent = "edits discarded";
       renderGutter();
       byId("solve").click();
       return;
