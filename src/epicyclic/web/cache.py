@@ -70,7 +70,9 @@ class FigureCache:
         self.drawing: dict[str, asyncio.Future] = {}  # drawn ahead right now
         self.plans: dict[str, asyncio.Task] = {}  # page → its plan of drawing ahead
         self.generation: dict[str, int] = {}  # page → number of its newest plan (an older one stops)
+        self.tasks: set[asyncio.Task] = set()  # drawings ahead under way
         self.hits = self.misses = self.drawn_ahead = 0
+        self.ahead_running = 0  # jobs drawing ahead now (at most one per worker, and none while a client waits)
 
     def get(self, key: str) -> Reply | None:
         """The answer kept for ``key``, if any (it becomes the most recently used)."""
@@ -133,24 +135,17 @@ class FigureCache:
                     key = figure_key(ahead, name)
                     if key is None or key in self.answers or key in self.drawing:
                         continue
-                    while jobs.pending and not stale():  # a client waits (or another drawing ahead runs)
-                        await asyncio.sleep(0.05)
+                    while not stale() and (jobs.pending > self.ahead_running  # a client waits
+                                           or self.ahead_running >= jobs.workers):  # every worker draws ahead
+                        await asyncio.sleep(0.02)
                     if stale():  # the page shows something else now: its newer plan draws
                         return
                     future = asyncio.get_running_loop().create_future()
                     self.drawing[key] = future
-                    try:
-                        reply = await jobs.run(figure, ahead, name, timeout=timeout, client="ahead")
-                    except BaseException:  # the server stops
-                        future.cancel()
-                        raise
-                    finally:
-                        self.drawing.pop(key, None)
-                    future.set_result(reply)
-                    if reply.status != 200:
-                        break  # this text cannot be drawn: the next gear
-                    self.put(key, reply)
-                    self.drawn_ahead += 1
+                    self.ahead_running += 1
+                    task = asyncio.ensure_future(self._draw(key, future, jobs, figure, ahead, name, timeout))
+                    self.tasks.add(task)
+                    task.add_done_callback(self.tasks.discard)
         except asyncio.CancelledError:
             pass
         finally:
@@ -158,7 +153,22 @@ class FigureCache:
                 del self.plans[page]
                 del self.generation[page]
 
+    async def _draw(self, key: str, future: asyncio.Future, jobs: Any, figure: Callable, state: PageState,
+                    name: str, timeout: float) -> None:
+        try:
+            reply = await jobs.run(figure, state, name, timeout=timeout, client="ahead")
+        except BaseException:  # the server stops
+            future.cancel()
+            raise
+        finally:
+            self.drawing.pop(key, None)
+            self.ahead_running -= 1
+        future.set_result(reply)
+        if reply.status == 200:
+            self.put(key, reply)
+            self.drawn_ahead += 1
+
     def close(self) -> None:
         """Stop drawing ahead (the server stops)."""
-        for task in self.plans.values():
+        for task in (*self.plans.values(), *self.tasks):
             task.cancel()

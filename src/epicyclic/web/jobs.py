@@ -128,6 +128,7 @@ class Jobs:
         self.pool = ProcessPool(max_workers=max(1, int(workers)), initializer=_start_worker,
                                 initargs=(worker_memory,), context=context)
         self.max_queue, self.queue_wait, self.max_client_jobs = max_queue, queue_wait, max_client_jobs
+        self.workers = max(1, int(workers))
         self.worker_memory = worker_memory
         self.pending = 0
         self.per_client: dict[str, int] = {}
@@ -151,7 +152,7 @@ class Jobs:
         self.started += 1
         self.per_client[client] = self.per_client.get(client, 0) + 1
         watch = asyncio.ensure_future(gone()) if gone is not None else None
-        future = None
+        future = work = None
         try:
             future = self.pool.schedule(function, args=args, timeout=timeout)
             work = asyncio.ensure_future(asyncio.wait_for(asyncio.wrap_future(future), timeout + self.queue_wait))
@@ -177,8 +178,9 @@ class Jobs:
             return failure(f"internal error: the worker stopped ({type(exc).__name__}: {exc}). This is a bug in "
                            "epicyclic or the input exhausted the worker; please report it.", 500)
         finally:
-            if watch is not None:
-                watch.cancel()
+            for task in (watch, work):
+                if task is not None and not task.done():
+                    task.cancel()
             self.pending -= 1
             self.per_client[client] -= 1
             if not self.per_client[client]:
