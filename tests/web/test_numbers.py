@@ -82,3 +82,26 @@ def test_circulating_power_below_the_threshold_is_none(client, page_form, exampl
     answer = client.post("/apply/text", data=page_form(text)).text
     assert re.search(r'id="circulating">none<', answer)
     assert "loads the teeth" not in answer
+
+
+def test_a_map_with_one_speed_says_the_speed_not_one_values(client, page_form, examples):
+    text = examples["geometry_simple_set"].text
+    answer = client.post("/tool/map", data=page_form(text, tool_map_speed="1000..1000:1", tool_map_torque="10..50:5"))
+    assert answer.status_code == 200, answer.text[:300]
+    assert "(1 values)" not in answer.text and "input speed 1000 1/min, input torque 10..50 N*m (5 values)" in answer.text
+
+
+def test_a_slow_set_is_shown_sped_up_not_slowed_down_below_one():
+    """A set turning slower than the animation's loop is sped up: "sped up 15×", not "slowed down 0.0667×"."""
+    from epicyclic import solve
+    from epicyclic.demo import brandenberger_1952
+    from epicyclic.plotting import planetary_animation
+
+    from dataclasses import replace
+
+    train, point = brandenberger_1952()
+    slow = replace(point, speeds={k: v / 1e4 for k, v in point.speeds.items()})
+    animation = planetary_animation(solve(train, slow), frames=48, fps=16)
+    assert animation.slowdown < 1 and "sped up" in animation.pace and "slowed down" not in repr(animation)
+    fast = planetary_animation(solve(train, point), frames=48, fps=16)
+    assert fast.slowdown > 1 and fast.pace.startswith("slowed down")

@@ -365,9 +365,12 @@ def _map(context: Context, v: Mapping[str, Any]) -> str:
     from ..plotting import figure_svg
 
     emap = map_of(context, v)
-    figure = emap.plot()
-    svg = figure_svg(figure)
-    figure.clf()
+    if min(len(emap.speeds), len(emap.torques)) < 2:  # a line of points has no contours to draw
+        svg = "<p class=\"hint\">No contour picture: it needs at least two speeds and two torques.</p>"
+    else:
+        figure = emap.plot()
+        svg = figure_svg(figure)
+        figure.clf()
     note = "" if context.train_file.losses else (
         "<p class=\"hint\">The file has no loss tables: η is the stationary efficiency typed in, the same at every "
         "point. Add [planetary.losses] and [lubricant] to compute it from the geometry (docs/losses.md).</p>")
