@@ -540,6 +540,12 @@ class PlanetarySet:
         )
 
     # ------------------------------------------------------------------ properties
+    def _repr_html_(self) -> str:
+        """Jupyter: a front view of the set and its key figures (:mod:`epicyclic.model.html`)."""
+        from .html import planetary_set_html
+
+        return planetary_set_html(self)
+
     @property
     def shafts(self) -> tuple[str, str, str]:
         """The joined shafts in port order (sun, ring, carrier)."""

@@ -113,6 +113,12 @@ class GearTrain:
         object.__setattr__(self, "shafts", tuple(ordered))
 
     # ------------------------------------------------------------------ look-ups
+    def _repr_html_(self) -> str:
+        """Jupyter: the elements and shafts of the train (:mod:`epicyclic.model.html`)."""
+        from .html import train_html
+
+        return train_html(self)
+
     def element(self, name: str) -> Element:
         """The element called ``name``."""
         for element in self.elements:

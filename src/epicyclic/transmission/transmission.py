@@ -412,6 +412,29 @@ class Transmission:
         return (f"<Transmission {self.name!r}: {len(self.schedule)} gears "
                 f"({', '.join(self.schedule)}), input {self.input!r}, output {self.output!r}>")
 
+    def _repr_html_(self) -> str:
+        """Jupyter: the shift schedule (x = engaged) with each gear's ratio and step, the spread and the train.
+
+        References
+        ----------
+        Queitsch part 1, eq. 12 (each gear's ratio from Willis).
+        """
+        import html
+
+        names = [e.name for e in self.train.shift_elements]
+        ratios = self.ratios
+        forward = [g for g in self.schedule if ratios[g] > 0]
+        steps = {b: ratios[a] / ratios[b] for a, b in zip(forward, forward[1:])}
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in ("gear", *names, "ratio", "step"))
+        rows = "".join(
+            f"<tr><td>{html.escape(g)}</td>" + "".join(f"<td>{'x' if n in engaged else '·'}</td>" for n in names)
+            + f"<td>{ratios[g]:.4f}</td><td>{f'{steps[g]:.3f}' if g in steps else '—'}</td></tr>"
+            for g, engaged in self.schedule.items())
+        spread = (f"spread {ratios[forward[0]] / ratios[forward[-1]]:.3f}" if len(forward) > 1 else "one forward gear")
+        return (f"<div><b>{html.escape(self.name)}</b>: input {html.escape(self.input)!s}, output "
+                f"{html.escape(self.output)}, {len(self.schedule)} gears, {spread}"
+                f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>{self.train._repr_html_()}</div>")
+
     def shift_table(self) -> str:
         """The shift schedule as a text table (x = engaged)."""
         names = [e.name for e in self.train.shift_elements]
