@@ -47,7 +47,8 @@ from ..limits import MAX_SHAFTS
 from ..text import terminal_text
 
 __all__ = ["FormError", "PageState", "ShaftRow", "UNIT_CHOICES", "UNIT_PRESETS", "LANGUAGES", "MOMENTS", "ROLES",
-           "EOLS", "clean_text", "operating_rows", "default_operating_rows", "write_operating_point", "units_of"]
+           "EOLS", "clean_text", "operating_rows", "default_operating_rows", "write_operating_point",
+           "write_operating_points", "units_of"]
 
 #: The units selector beside the file's ``[units]``: (speed, torque, power) of each choice, any unit that
 #: :class:`epicyclic.units.Units` reads (rpm, hp and SI prefixes included).
@@ -304,6 +305,17 @@ def write_operating_point(text: str, rows: Sequence[ShaftRow], gear: str) -> str
     tomllib.TOMLDecodeError
         ``text`` is not valid TOML (the caller reports it like the loader).
     """
+    return write_operating_points(text, rows, (gear,))[0]
+
+
+def write_operating_points(text: str, rows: Sequence[ShaftRow], gears: Sequence[str]) -> tuple[str, ...]:
+    """:func:`write_operating_point` for each of ``gears``, the text parsed once (tomlkit is the slow part).
+
+    Raises
+    ------
+    tomllib.TOMLDecodeError
+        ``text`` is not valid TOML.
+    """
     import tomlkit
 
     tomllib.loads(text)  # the same parser as the loader decides what is valid
@@ -321,11 +333,14 @@ def write_operating_point(text: str, rows: Sequence[ShaftRow], gear: str) -> str
         names = [row.shaft for row in rows if row.role == role]
         if names:
             table[key] = names
-    if gear:
-        table["gear"] = gear
-    if "operating_point" in document:
-        document["operating_point"] = table
-    else:
+    if "operating_point" not in document:
         document.add(tomlkit.nl())
-        document.add("operating_point", table)
-    return tomlkit.dumps(document)
+        document.add("operating_point", tomlkit.table())
+    texts = []
+    for gear in gears:
+        written = table.copy()
+        if gear:
+            written["gear"] = gear
+        document["operating_point"] = written
+        texts.append(tomlkit.dumps(document))
+    return tuple(texts)

@@ -31,7 +31,7 @@ from ..io import TrainFile, loads_train_file
 from ..units import Units
 from .editor import Problem, problem
 from .render import Reply, Verbatim, fmt, render
-from .state import PageState, default_operating_rows, operating_rows, write_operating_point
+from .state import PageState, default_operating_rows, operating_rows, write_operating_point, write_operating_points
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..plotting import Subject
@@ -237,7 +237,7 @@ def _next_texts(text: str, form: dict[str, Any], results: dict[str, Any]) -> tup
         return ()
     here = gears.index(current)
     order = sorted((g for g in gears if g != current), key=lambda g: (abs(gears.index(g) - here), gears.index(g)))
-    return tuple(write_operating_point(text, form["rows"], gear) for gear in order)
+    return write_operating_points(text, form["rows"], order)
 
 
 @_guard
