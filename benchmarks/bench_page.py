@@ -17,6 +17,10 @@ Run:  .venv/bin/python benchmarks/bench_page.py [rounds] [example]
 * opening the example: from the address typed to the results shown (Results tab), and to every
   picture drawn (Pictures tab, nothing kept yet), each 3 times on a fresh server.
 
+Every gear change also reports the CPU seconds it cost (the worker processes of the server and
+the browser's processes, from ``psutil``): on a shared machine the times above grow with the load,
+the CPU seconds do not.  The load average is printed with the figures.
+
 Bounded: every wait has a deadline (60 s); only loopback addresses are used.
 """
 
@@ -80,21 +84,44 @@ def browser():
     return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
 
 
+def cpu_seconds() -> tuple[float, float]:
+    """CPU seconds used so far by this process's descendants: (the server's workers, the browser)."""
+    import psutil
+
+    workers = browser = 0.0
+    for child in psutil.Process().children(recursive=True):
+        try:
+            times, name = child.cpu_times(), child.name()
+        except psutil.Error:
+            continue
+        if "chrom" in name:
+            browser += times.user + times.system
+        else:
+            workers += times.user + times.system
+    return workers, browser
+
+
+CPU: dict[str, list[tuple[float, float]]] = {}
+
+
 def gear_changes(driver, url: str, app, example: str, rounds: int, ahead: bool) -> list[float]:
     from selenium.webdriver.common.by import By
 
     driver.get(f"{url}/?example={example}&tab=pictures")
     until(lambda: driver.execute_script(DONE))
     gears = [b.get_attribute("data-gear") for b in driver.find_elements(By.CSS_SELECTOR, ".gear-strip button")]
-    times = []
+    times, cpu = [], CPU.setdefault("ahead" if ahead else "baseline", [])
     for _ in range(rounds):
         for gear in gears[1:] + gears[:1]:
             time.sleep(PAUSE)  # the user looks at the pictures (the server may draw ahead meanwhile)
             driver.execute_script("document.querySelectorAll('.fig-body').forEach(b => b.setAttribute('data-old', ''))")
+            used = cpu_seconds()
             start = time.perf_counter()
             driver.find_element(By.CSS_SELECTOR, f'.gear-strip button[data-gear="{gear}"]').click()
             until(lambda: driver.execute_script(DONE))
             times.append(time.perf_counter() - start)
+            now = cpu_seconds()
+            cpu.append((now[0] - used[0], now[1] - used[1]))  # drawing ahead during the pause is not counted
             title = driver.find_element(By.CSS_SELECTOR, "#results .title").text
             assert f"gear {gear}" in title, (gear, title)
     return times
@@ -150,9 +177,13 @@ def main() -> int:
     finally:
         driver.quit()
     print(f"epicyclic page benchmark — Python {platform.python_version()}, {os.cpu_count()} cores, 2 workers, "
-          f"headless Chromium 1400 px wide, example {example}, {rounds} rounds through its gears")
+          f"headless Chromium 1400 px wide, example {example}, {rounds} rounds through its gears, "
+          f"load average {os.getloadavg()[0]:.1f}")
     for name, values in results.items():
         print(line(name, values))
+    for name, values in CPU.items():
+        print(f"CPU seconds per gear change ({name}): workers median {statistics.median(v[0] for v in values):.2f} s, "
+              f"browser median {statistics.median(v[1] for v in values):.2f} s")
     base = percentile(results["gear change, baseline: nothing kept, nothing drawn ahead"], 95)
     page = percentile(results["gear change, page: kept and drawn ahead"], 95)
     print(f"gear change p95: {base / page:.1f}x faster than the baseline")

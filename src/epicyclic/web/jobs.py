@@ -179,8 +179,12 @@ class Jobs:
                            "epicyclic or the input exhausted the worker; please report it.", 500)
         finally:
             for task in (watch, work):
-                if task is not None and not task.done():
+                if task is None:
+                    continue
+                if not task.done():
                     task.cancel()
+                elif not task.cancelled():
+                    task.exception()  # retrieved: a pool stopped under a job is no unhandled error
             self.pending -= 1
             self.per_client[client] -= 1
             if not self.per_client[client]:

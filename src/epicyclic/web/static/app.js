@@ -20,15 +20,16 @@
   // ---- tabs: results, gears, pictures, geometry and rating, tools (the panels are in the results)
   var TABS = ["results", "gears", "pictures", "geometry", "tools"];
   function currentTab() { var ws = byId("ws"); return ws ? ws.getAttribute("data-tab") || "results" : "results"; }
-  function showTab(tab) {
+  function showTab(tab, resize) {
     if (TABS.indexOf(tab) < 0) { tab = "results"; }
+    var changed = byId("ws").getAttribute("data-tab") !== tab;
     byId("ws").setAttribute("data-tab", tab);
     document.querySelectorAll("[data-tab-button]").forEach(function (button) {
       var on = button.getAttribute("data-tab-button") === tab;
       button.setAttribute("aria-selected", on ? "true" : "false");
       button.classList.toggle("active", on);
     });
-    if (tab === "pictures") { sizePictures(); }
+    if (tab === "pictures" && (changed || resize)) { sizePictures(); }  // each new picture is sized as it comes
     remember();
   }
 
@@ -218,7 +219,7 @@
   });
   document.addEventListener("DOMContentLoaded", function () {
     var params = new URLSearchParams(location.search);
-    showTab(params.get("tab") || currentTab());
+    showTab(params.get("tab") || currentTab(), true);
     var file = params.get("file");
     if (!(file && !params.get("example") && openKept(file))) {
       htmx.trigger(byId("initial-load"), "epicyclic:open");
@@ -329,7 +330,7 @@
     var target = event.target;
     if (!target.closest) { return; }
     var tab = target.closest("[data-tab-button]");
-    if (tab) { showTab(tab.getAttribute("data-tab-button")); return; }
+    if (tab) { showTab(tab.getAttribute("data-tab-button"), true); return; }
     var row = target.closest("[data-gear]");
     if (row) { chooseGear(row.getAttribute("data-gear")); return; }
     var link = target.closest("a.goto");
