@@ -75,7 +75,7 @@ def serve(
     if not loopback:
         typer.echo(f"warning: serving on {host}, reachable from other computers; the page has no login.", err=True)
     limits = Limits(max_body=max_body * 1024, solve_timeout=timeout, workers=workers,
-                    worker_memory=worker_memory * 2**20 or None, allowed_hosts=Limits.allowed_hosts if loopback else ("*",))
+                    worker_memory=worker_memory * 2**20 or None, draw_examples=True, allowed_hosts=Limits.allowed_hosts if loopback else ("*",))
     shown = f"[{host}]" if ":" in host else host
     typer.echo(f"epicyclic serve: open http://{shown}:{port}/ (Ctrl+C stops)")
     uvicorn.run(create_app(limits), host=host, port=port, log_level="warning")

@@ -88,6 +88,9 @@ class Limits:
         Seconds a request body may send nothing before it is refused (408).
     picture_cache : int, default 64 MiB
         Bytes of pictures kept in the server process (:mod:`epicyclic.web.cache`; 0: none kept).
+    draw_examples : bool, default False
+        Draw the pictures of every bundled example ahead once the server has started, while it is idle
+        (``epicyclic serve`` does; the default example first), so that opening an example shows them at once.
     allowed_hosts : tuple of str
         Host headers accepted (loopback names by default; ``("*",)`` for any).
     """
@@ -101,6 +104,7 @@ class Limits:
     worker_memory: int | None = 2 << 30
     body_timeout: float = 30.0
     picture_cache: int = 64 << 20
+    draw_examples: bool = False
     allowed_hosts: tuple[str, ...] = LOOPBACK_HOSTS
 
 
@@ -244,6 +248,10 @@ def create_app(limits: Limits | None = None) -> Starlette:
         app.state.jobs = Jobs(limits.workers, limits.max_queue, max_client_jobs=limits.max_client_jobs,
                               worker_memory=limits.worker_memory)
         app.state.cache = FigureCache(limits.picture_cache)
+        if limits.draw_examples and limits.picture_cache:
+            ordered = sorted(examples.values(), key=lambda e: e.key != DEFAULT_EXAMPLE)
+            states = [PageState(e.text, e.file_name) for e in ordered]  # as the page opens them
+            app.state.cache.draw_states_ahead("examples", states, app.state.jobs, figure, limits.solve_timeout)
         try:
             yield
         finally:

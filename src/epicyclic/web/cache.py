@@ -118,26 +118,31 @@ class FigureCache:
     def draw_ahead(self, page: str, state: PageState, texts: Sequence[str], jobs: Any, figure: Callable,
                    timeout: float) -> None:
         """Draw the pictures of ``texts`` (as ``state`` with that text) while the server is idle."""
-        self.generation[page] = generation = self.generation.get(page, 0) + 1
-        if texts:
-            self.plans[page] = asyncio.ensure_future(
-                self._plan(page, generation, state, texts, jobs, figure, timeout))
+        self.draw_states_ahead(page, [replace(state, text=text, rows=(), extra={}) for text in texts], jobs, figure,
+                               timeout)
 
-    async def _plan(self, page: str, generation: int, state: PageState, texts: Sequence[str], jobs: Any,
+    def draw_states_ahead(self, page: str, states: Sequence[PageState], jobs: Any, figure: Callable,
+                          timeout: float) -> None:
+        """Draw the pictures of each of ``states`` (in this order) while the server is idle; a newer plan of
+        the same ``page`` replaces this one."""
+        self.generation[page] = generation = self.generation.get(page, 0) + 1
+        if states:
+            self.plans[page] = asyncio.ensure_future(self._plan(page, generation, states, jobs, figure, timeout))
+
+    async def _plan(self, page: str, generation: int, states: Sequence[PageState], jobs: Any,
                     figure: Callable, timeout: float) -> None:
         def stale() -> bool:
             return self.generation.get(page) != generation
 
         try:
-            for text in texts:
-                ahead = replace(state, text=text, rows=(), extra={})
+            for ahead in states:
                 for name in AHEAD_KINDS:
                     key = figure_key(ahead, name)
                     if key is None or key in self.answers or key in self.drawing:
                         continue
                     while not stale() and (jobs.pending > self.ahead_running  # a client waits
                                            or self.ahead_running >= jobs.workers):  # every worker draws ahead
-                        await asyncio.sleep(0.02)
+                        await asyncio.sleep(0.05)
                     if stale():  # the page shows something else now: its newer plan draws
                         return
                     future = asyncio.get_running_loop().create_future()
