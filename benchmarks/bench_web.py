@@ -5,7 +5,8 @@ Run:  .venv/bin/python benchmarks/bench_web.py [requests] [workers]
 * starts ``epicyclic serve`` on a free port of 127.0.0.1 (its default limits, ``--workers``
   worker processes) and waits for ``/healthz``;
 * baseline: the same solve requests sent one after another (concurrency 1), 20 of them;
-* load: ``requests`` (default 200) solve requests sent at once (one connection each), each the
+* load: ``requests`` (default 200, at most the server's queue of 256) solve requests sent at once
+  (one connection and one page id each), each the
   page's "Solve" of the Brandenberger 1952 example (``POST /apply/text``: read the TOML, solve,
   render tables, summary, worked solution);
 * bounded: exactly that many requests, one overall deadline (120 s); the server is stopped at
@@ -57,11 +58,12 @@ async def wait_ready(client: httpx.AsyncClient, url: str) -> None:
     raise SystemExit("the server did not start within 60 s")
 
 
-async def solve(client: httpx.AsyncClient, url: str, form: dict) -> tuple[float, str | None]:
-    """(latency in s, error or None) of one solve request."""
+async def solve(client: httpx.AsyncClient, url: str, form: dict, who: str = "bench") -> tuple[float, str | None]:
+    """(latency in s, error or None) of one solve request from the page (tab) ``who``: the server caps the
+    jobs per client (16), so each concurrent request is a page of its own, as many users would be."""
     start = time.perf_counter()
     try:
-        answer = await client.post(url + "/apply/text", data=form)
+        answer = await client.post(url + "/apply/text", data=form, headers={"X-Epicyclic-Client": who})
     except httpx.HTTPError as exc:
         return time.perf_counter() - start, f"{type(exc).__name__}: {exc}"
     latency = time.perf_counter() - start
@@ -90,7 +92,7 @@ async def run(requests: int, workers: int) -> int:
             sequential = [await solve(client, url, form) for _ in range(20)]
             start = time.perf_counter()
             results = await asyncio.wait_for(
-                asyncio.gather(*(solve(client, url, form) for _ in range(requests))), DEADLINE)
+                asyncio.gather(*(solve(client, url, form, f"tab{k}") for k in range(requests))), DEADLINE)
             wall = time.perf_counter() - start
     finally:
         server.terminate()

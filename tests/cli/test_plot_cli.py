@@ -38,13 +38,13 @@ def test_plot_png_and_pdf(suffix, magic, tmp_path):
 
 
 def test_lever_of_a_transmission_without_operating_point(tmp_path):
-    # A transmission file plots as it is: unit input speed and torque, said on the figure.
+    # A transmission file plots as it is: the default operating point, said on the figure.
     out = tmp_path / "lever.svg"
     result = run("plot", str(EXAMPLES / "simpson_c4_3speed.toml"), "-k", "lever", "--gear", "1", "-o", str(out))
     assert result.exit_code == 0, result.output
     text = out.read_text()
     assert "compound lever" in text and "gear 1: forward + low_reverse engaged" in text
-    assert "unit input n_in = 1 1/min, T_in = 1 N·m" in text
+    assert "the default n_in = 1000 1/min, T_in = 100 N·m" in text
 
 
 @pytest.mark.parametrize("kind", ["speed", "torque", "power", "lever", "flow", "chart"])

@@ -28,7 +28,7 @@ def run(*args: str):
 @pytest.mark.parametrize("gear", ["1", "3", "R"])
 def test_analyze_a_transmission_without_operating_point_in_a_gear(gear):
     """`epicyclic analyze examples/zf_8hp70_8speed.toml --gear 3` was an error ("no
-    [operating_point]") although `plot ... --gear 3` draws that gear: both now solve at unit input
+    [operating_point]") although `plot ... --gear 3` draws that gear: both now solve at the default operating point
     (1 1/min, 1 N·m), say so, and name the gear.  The ratio is the library's (published 2.1039 in 3rd)."""
     result = run("analyze", ZF8, "--gear", gear, "--format", "json")
     assert result.exit_code == 0, result.output
@@ -36,15 +36,15 @@ def test_analyze_a_transmission_without_operating_point_in_a_gear(gear):
     assert report["title"].endswith(f", gear {gear}")
     solution = report["solution"]
     assert solution["ratio"] == pytest.approx(build("zf_8hp70").ratio(gear), rel=1e-12)
-    assert solution["shafts"]["in"]["speed"] == 1.0 and solution["shafts"]["in"]["torque"] == 1.0
-    assert any("unit input" in w for w in solution["warnings"])
+    assert solution["shafts"]["in"]["speed"] == 1000.0 and solution["shafts"]["in"]["torque"] == 100.0  # default_point
+    assert any("the default n_in" in w for w in solution["warnings"])
 
 
 def test_analyze_a_transmission_without_operating_point_takes_its_first_gear():
     result = run("analyze", C4)
     assert result.exit_code == 0, result.output
     assert "Ford C4 three-speed automatic (Simpson gearset), gear 1" in result.stdout
-    assert "unit input n_in = 1 1/min, T_in = 1 N·m" in result.stdout
+    assert "the default n_in = 1000 1/min, T_in = 100 N·m" in result.stdout
     assert "2.45833" in result.stdout  # n_drive/n_load in 1st: (1 + 72/33)(...) = 2.4583, published 2.46
 
 
@@ -54,7 +54,7 @@ def test_explain_takes_a_gear_like_analyze_and_plot():
     assert result.exit_code == 0, result.output
     assert result.stdout.startswith("Worked solution: Ford C4 three-speed automatic (Simpson gearset), gear 2")
     assert "brake 'intermediate': 'sun' – housing, engaged" in result.stdout
-    assert "unit input" in result.stdout
+    assert "the default n_in = 1000 1/min" in result.stdout
     bad = run("explain", C4, "-g", "9")
     assert bad.exit_code == 2 and "no gear '9'" in bad.output
 

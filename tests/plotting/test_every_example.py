@@ -9,7 +9,7 @@ Checked from the rendered figure (matplotlib's renderer extents,
   against the figure's largest number, or ``-0``);
 * stroke widths are a small fraction of the drawing.
 
-A transmission file without operating point is drawn at unit input in its
+A transmission file without operating point is drawn at the default operating point in its
 first gear, as ``epicyclic plot`` does; the speed chart where the file has a
 transmission.
 """

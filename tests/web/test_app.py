@@ -67,13 +67,13 @@ def test_every_bundled_example_opens(client, examples, key):
     assert f'value="{example.file_name}"' in answer.text  # the source shown and sent back
     for shaft in train_file.train.moving_shafts:
         assert f'data-shaft="{shaft}"' in answer.text  # one form row per shaft
-    # the state `epicyclic plot` draws: the file's operating point, or a transmission's first gear at unit input
+    # the state `epicyclic plot` draws: the file's operating point, or a transmission's first gear at the default
     solution = figure_subject(train_file).solution
     expected = "— (self-locking)" if solution.self_locking else fmt(solution.efficiency, 4)
     assert kpi(answer.text, "efficiency") == expected
     assert textarea(answer.text) == example.text  # opening never changes the text
     if train_file.operating_point is None:
-        assert "at unit input" in answer.text
+        assert "at the default operating point" in answer.text
 
 
 def test_unknown_example_is_not_a_path(client):

@@ -35,7 +35,7 @@ def test_the_gear_and_shift_state_are_in_the_title(client, examples, page_form):
     assert "gear 2: " in lever and " engaged" in lever
 
 
-def test_a_transmission_without_operating_point_is_drawn_at_unit_input(client, examples, page_form):
+def test_a_transmission_without_operating_point_is_drawn_at_the_default_point(client, examples, page_form):
     text = examples["zf_8hp70_8speed"].text
     assert "[operating_point]" not in text
     opened = client.post("/example", data={"example": "zf_8hp70_8speed"})
@@ -43,7 +43,7 @@ def test_a_transmission_without_operating_point_is_drawn_at_unit_input(client, e
     for kind in ("torque", "animation"):
         picture = client.post(f"/figure/{kind}", data=page_form(text))
         assert picture.status_code == 200
-        assert "unit input n_in = 1 1/min, T_in = 1 N·m" in picture.text  # epicyclic.plotting.UNIT_INPUT_NOTE
+        assert "the default n_in = 1000 1/min, T_in = 100 N·m" in picture.text  # transmission.default_point_note
     chart = client.post("/figure/chart", data=page_form(text))  # speeds per unit input speed by its nature
     assert chart.status_code == 200 and "gear 1 highlighted" in chart.text
 

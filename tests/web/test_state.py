@@ -91,3 +91,17 @@ def test_clean_text_drops_control_characters():
     assert clean_text("a\x00b\u202ec\n", "f", 10) == "abc"
     assert clean_text("a\nb", "f", 10, single_line=False) == "a\nb"
     assert clean_text(None, "f", 1) == ""
+
+
+@pytest.mark.parametrize("key", ["zf_8hp70_8speed", "zf_8hp70_geometry", "simpson_c4_3speed"])
+def test_texts_for_every_gear_at_once_are_the_texts_of_each_gear(key):
+    """The texts drawn ahead (one parse) are exactly what the form writes for each gear (one parse each)."""
+    from epicyclic.web.state import default_operating_rows, write_operating_points
+
+    text = bundled_examples()[key].text
+    train_file = loads_train_file(text)
+    spec = train_file.transmission
+    rows = (operating_rows(tomllib.loads(text), train_file.train.moving_shafts) if train_file.operating_point
+            else default_operating_rows(train_file.train.moving_shafts, spec.input, spec.output))
+    gears = list(spec.gears)[::-1]
+    assert write_operating_points(text, rows, gears) == tuple(write_operating_point(text, rows, g) for g in gears)

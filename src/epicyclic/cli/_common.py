@@ -200,7 +200,7 @@ def solved(train_file, file: Path):
     """The solution of ``train_file``, its numbers (and the ideal ones) checked to be finite.
 
     A transmission without an ``[operating_point]`` is solved as ``plot`` draws it
-    (:func:`epicyclic.plotting.figure_subject`): at unit input speed and torque in its gear
+    (:func:`epicyclic.plotting.figure_subject`): at the default operating point in its gear
     (``--gear``, else the first), and the report says so among the warnings.
     """
     from ..io.json_report import report_data

@@ -4,7 +4,7 @@
 .png or .pdf by the suffix of ``--out``); ``animate`` writes the animation of
 a planetary set as a self-contained HTML/SVG page (plays offline) or a GIF.
 Files plot as they are (:func:`epicyclic.plotting.figure_subject`): a
-transmission without operating point at unit input speed and torque in the
+transmission without operating point at the default operating point (1000 1/min, 100 N·m) in the
 gear of ``--gear`` (default: its first gear), said on the figure; figures use
 the file's ``[units]``.  Exit codes: 0 success, 2 bad input (one paragraph,
 no traceback), 1 bug.
@@ -39,7 +39,7 @@ class PlotKind(str, Enum):
 
 
 def _subject(file: Path, gear: str | None, overrides: list[str] | None = None):
-    """The solved state a figure of ``file`` shows (``--gear`` applied, unit input if no operating point).
+    """The solved state a figure of ``file`` shows (``--gear`` applied, the default point if no operating point).
 
     Errors name the file and the table; the numbers are checked to be finite.
     """

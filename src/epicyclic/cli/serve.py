@@ -53,6 +53,8 @@ def serve(
     timeout: Annotated[float, typer.Option(help="Seconds a solve or picture may take.", min=0.1, max=3600)] = 10.0,
     max_body: Annotated[int, typer.Option(help="Largest request in KiB (a train description).", min=1,
                                           max=65536)] = 4096,
+    worker_memory: Annotated[int, typer.Option(help="MiB each worker's memory may grow after its start "
+                                               "(0: no limit).", min=0, max=1 << 20)] = 2048,
 ) -> None:
     """Open a page to work in: examples, an editor, the operating point, results, pictures, reports."""
     try:
@@ -73,7 +75,7 @@ def serve(
     if not loopback:
         typer.echo(f"warning: serving on {host}, reachable from other computers; the page has no login.", err=True)
     limits = Limits(max_body=max_body * 1024, solve_timeout=timeout, workers=workers,
-                    allowed_hosts=Limits.allowed_hosts if loopback else ("*",))
+                    worker_memory=worker_memory * 2**20 or None, draw_examples=True, allowed_hosts=Limits.allowed_hosts if loopback else ("*",))
     shown = f"[{host}]" if ":" in host else host
     typer.echo(f"epicyclic serve: open http://{shown}:{port}/ (Ctrl+C stops)")
     uvicorn.run(create_app(limits), host=host, port=port, log_level="warning")

@@ -152,8 +152,7 @@ class EfficiencyMap:
         (n, n_unit), (t, t_unit) = self.shown("speed"), self.shown("torque")
         lines = [
             f"efficiency map of {self.title()}",
-            f"input speed {n.min():g}..{n.max():g} {n_unit} ({n.size} values), "
-            f"input torque {t.min():g}..{t.max():g} {t_unit} ({t.size} values)",
+            f"input speed {_axis_words(n, n_unit)}, input torque {_axis_words(t, t_unit)}",
         ]
         if s["efficiency_min"] is not None:
             lines.append(f"efficiency {s['efficiency_min']:.4f} .. {s['efficiency_max']:.4f} "
@@ -250,6 +249,13 @@ class EfficiencyMap:
 
             save_figure(self.plot(), path)
         return path
+
+
+def _axis_words(values: np.ndarray, unit: str) -> str:
+    """An axis of the map in words: ``"100..600 rad/s (6 values)"``, one value as ``"1000 1/min"``."""
+    if values.size == 1:
+        return f"{values.min():g} {unit}"
+    return f"{values.min():g}..{values.max():g} {unit} ({values.size} values)"
 
 
 def _read_only(values) -> np.ndarray:

@@ -156,17 +156,11 @@ class PlanetaryAnimation:
         planets = [f"{m.replace('planet2', 'planet 2')}: {fmt(ctx.convert(n, 'speed'), 5)} {unit}{made_up}"
                    for m, n in self.speeds.items() if m.startswith("planet")]
         moving = any(self.speeds.values())
-        motion = f"shown {self.pace()}" if moving else "the set stands still in this state"
+        motion = f"shown {self.pace}" if moving else "the set stands still in this state"
         lines = [", ".join(central), ", ".join(planets) + f"; {self.planets} planets; {motion}"]
         if self.schematic:
             lines.append(self.schematic)
         return lines
-
-    def pace(self) -> str:
-        """How the shown motion relates to the real one: "slowed down 135×" or, for a slow set, "sped up 15×"."""
-        if self.slowdown >= 1.0:
-            return f"slowed down {fmt(self.slowdown, 3)}×"
-        return f"sped up {fmt(1.0 / self.slowdown, 3)}×"
 
     # ------------------------------------------------------------- output
     def to_dict(self) -> dict[str, Any]:
@@ -186,9 +180,17 @@ class PlanetaryAnimation:
     def _repr_html_(self) -> str:
         return self.svg()
 
+    @property
+    def pace(self) -> str:
+        """How the animation's time relates to the real one: ``"slowed down 705×"`` or, for a set slower than
+        one turn per loop, ``"sped up 15×"`` (never "slowed down 0.0667×")."""
+        if self.slowdown >= 1:
+            return f"slowed down {fmt(self.slowdown, 3)}×"
+        return f"sped up {fmt(1 / self.slowdown, 3)}×"
+
     def __repr__(self) -> str:
         speeds = ", ".join(f"{m} {fmt(n, 5)}" for m, n in self.speeds.items())
-        return (f"<PlanetaryAnimation {self.set_name!r}: {speeds} 1/min, {self.pace()}"
+        return (f"<PlanetaryAnimation {self.set_name!r}: {speeds} 1/min, {self.pace}"
                 f"{', Willis phases' if self.willis else ''}{', schematic' if self.schematic else ''}>")
 
     def svg(self) -> str:

@@ -7,10 +7,11 @@ file's title and units.  Files plot as they are:
 
 * with an ``[operating_point]`` the train is solved there (in ``gear`` if one
   is named, with ``--gear`` or in the file);
-* a transmission without an operating point is drawn at **unit input speed
-  and unit input torque** (1 of the file's speed and torque unit at the
-  input, the output as load), in the gear asked for or else its first gear,
-  and the figure says so;
+* a transmission without an operating point is drawn at **the default
+  operating point** of :mod:`epicyclic.transmission.default_point` (the
+  input driven at 1000 1/min with 100 N·m, the output as load, as
+  ``epicyclic gears`` analyses it), in the gear asked for or else its first
+  gear, with the file's loss models, and the figure says so;
 * a train with neither cannot be solved: a clear error asks for an
   operating point.
 """
@@ -23,10 +24,7 @@ from typing import Any
 from ..errors import ModelError
 from .context import FigureContext
 
-__all__ = ["Subject", "figure_subject", "UNIT_INPUT_NOTE"]
-
-#: The note a figure at unit input carries (formatted with the units).
-UNIT_INPUT_NOTE = "no operating point in the file: unit input n_in = 1 {speed}, T_in = 1 {torque}"
+__all__ = ["Subject", "figure_subject"]
 
 
 @dataclass(frozen=True)
@@ -45,8 +43,7 @@ def _transmission(train_file: Any) -> Any:
         return None
     from ..transmission import Transmission
 
-    return Transmission(train_file.train, dict(spec.schedule), spec.input, spec.output,
-                        name=train_file.title or train_file.train.name)
+    return Transmission.from_train_file(train_file)
 
 
 def figure_subject(train_file: Any, gear: str | None = None) -> Subject:
@@ -69,11 +66,10 @@ def figure_subject(train_file: Any, gear: str | None = None) -> Subject:
     >>> from epicyclic.io import load_train_file
     >>> s = figure_subject(load_train_file("examples/simpson_c4_3speed.toml"), "2")
     >>> round(s.solution.ratio, 4), s.context.notes
-    (1.4583, ('no operating point in the file: unit input n_in = 1 1/min, T_in = 1 N·m',))
+    (1.4583, ('no operating point in the file: the default n_in = 1000 1/min, T_in = 100 N·m at the input',))
     """
-    from ..model.operating_point import OperatingPoint
     from ..solver import solve
-    from ..units import to_core
+    from ..transmission import default_operating_point, default_point_note
 
     units = train_file.units
     sets = {name: g for name, g in (getattr(train_file, "geometry", None) or {}).items() if hasattr(g, "sun_mesh")}
@@ -95,11 +91,14 @@ def figure_subject(train_file: Any, gear: str | None = None) -> Subject:
             "solve; add an [operating_point] with speeds, torques or powers, drives and loads."
         )
     gear = gear if gear is not None else transmission.gears[0]
-    speed, torque = to_core(1.0, "speed", default_unit=units.speed), to_core(1.0, "torque", default_unit=units.torque)
-    op = OperatingPoint(speeds={transmission.input: speed}, torques={transmission.input: torque},
-                        drives=[transmission.input], loads=[transmission.output])
-    solution = solve(transmission.gear_train(gear), op)
-    note = UNIT_INPUT_NOTE.format(speed=context.unit("speed"), torque=context.unit("torque"))
+    op = default_operating_point(transmission.input, transmission.output)
+    if transmission.losses:  # the file's loss models, as `epicyclic gears` solves each gear
+        from ..losses import solve_with_losses
+
+        solution = solve_with_losses(transmission.gear_train(gear), op, transmission.losses)
+    else:
+        solution = solve(transmission.gear_train(gear), op)
+    note = default_point_note(units)
     return Subject(solution, _with_gear(context, gear).with_note(note), transmission, gear)
 
 

@@ -40,11 +40,17 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["PowerLoop", "Circulation", "circulation", "indeterminate_circulation", "CIRCULATION_FLOOR"]
+__all__ = ["PowerLoop", "Circulation", "circulation", "indeterminate_circulation", "CIRCULATION_FLOOR",
+           "CIRCULATION_THRESHOLD"]
 
 #: Loops carrying less than this fraction of the largest element power are not reported: the zero
 #: rule (1e-12 of the neighbouring torques) can leave flows of that order, which are no circulation.
 CIRCULATION_FLOOR = 1e-9
+#: Loops carrying less than this fraction of the input power are reported as none: with load-dependent
+#: losses a set that idles in a gear still passes its own small loss power around a loop (4 W of 41.9 kW
+#: in the 8th gear of the ZF 8HP70 example), which loads nothing; every output (tables, warnings, reports,
+#: the page) reads the circulation from here, so all of them say "none" alike.
+CIRCULATION_THRESHOLD = 1e-3
 
 
 @dataclass(frozen=True)
@@ -192,6 +198,12 @@ def circulation(port_powers: Sequence[tuple[str, str, float]], input_power: floa
     ...                  ("stage", "III", 500.0), ("stage", "I", -500.0)], 1000.0, ["I", "II", "III"])
     >>> c.power, c.ratio, c.loops[0].describe()
     (500.0, 0.5, 'I → set → III → stage → I')
+
+    A loop below :data:`CIRCULATION_THRESHOLD` of the input power is none:
+
+    >>> circulation([("set", "I", 1000.5), ("set", "II", -1000.0), ("set", "III", -0.5),
+    ...              ("stage", "III", 0.5), ("stage", "I", -0.5)], 1000.0, ["I", "II", "III"]).loops
+    ()
     """
     largest = max((abs(p) for _, _, p in port_powers), default=0.0)
     ratio_of = (lambda p: p / input_power) if input_power > 0 else (lambda p: None)
@@ -215,8 +227,9 @@ def circulation(port_powers: Sequence[tuple[str, str, float]], input_power: floa
             flow[u][v] -= amount
         path = _rotated(best, shaft_order)
         loops[path] = loops.get(path, 0.0) + amount
+    threshold = CIRCULATION_THRESHOLD * abs(input_power)
     ordered = tuple(PowerLoop(path, power, ratio_of(power)) for path, power in
-                    sorted(loops.items(), key=lambda item: -item[1]))
+                    sorted(loops.items(), key=lambda item: -item[1]) if power >= threshold)
     total = sum(loop.power for loop in ordered)
     return Circulation(ordered, total, ratio_of(total), largest, ratio_of(largest))
 

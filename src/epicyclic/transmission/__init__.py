@@ -6,6 +6,7 @@ from .explore import Combination, Exploration, explore
 from .gear_points import CarryLimits, GearPoints, solve_gear_points
 from .input_point import InputPoint, input_point
 from .results import GearResult, TransmissionAnalysis
+from .default_point import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE, default_operating_point, default_point_note
 from .errors import UnknownGearError
 from .shift_map import ShiftMap, shift_map
 from .shift_schedule import ShiftSchedule
@@ -17,6 +18,8 @@ __all__ = [
     "Combination",
     "CycleResult",
     "DriveCycle",
+    "DEFAULT_INPUT_SPEED",
+    "DEFAULT_INPUT_TORQUE",
     "Exploration",
     "GearFreedomError",
     "GearPoints",
@@ -30,6 +33,8 @@ __all__ = [
     "TransmissionAnalysis",
     "UnknownGearError",
     "Vehicle",
+    "default_operating_point",
+    "default_point_note",
     "explore",
     "input_point",
     "run_cycle",

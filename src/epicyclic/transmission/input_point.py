@@ -28,13 +28,10 @@ from typing import Any
 from ..errors import ModelError
 from ..results.solution import RPM_TO_RAD_S
 from ..units import Units, to_core
+from .default_point import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE  # one default point (docs: default_point)
 
 __all__ = ["InputPoint", "input_point", "DEFAULT_INPUT_SPEED", "DEFAULT_INPUT_TORQUE"]
 
-#: Input speed (1/min) of a gear analysis when neither the command line nor the file gives one.
-DEFAULT_INPUT_SPEED = 1000.0
-#: Input torque (N·m) of a gear analysis when neither the command line nor the file gives one.
-DEFAULT_INPUT_TORQUE = 100.0
 
 
 @dataclass(frozen=True)

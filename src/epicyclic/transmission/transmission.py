@@ -36,9 +36,10 @@ from ..solver import solve
 from ..solver.assembly import matrices
 from ..solver.kinematics import degrees_of_freedom, free_speed_shafts, solve_speeds
 from ..units import to_core
+from .default_point import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE, default_operating_point
 from .errors import GearFreedomError, ShiftScheduleError, UnknownGearError
 from .explore import Exploration, explore
-from .input_point import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE, InputPoint
+from .input_point import InputPoint
 from .results import GearResult, TransmissionAnalysis, gear_result
 
 __all__ = ["Transmission", "ShiftScheduleError", "GearFreedomError"]
@@ -292,8 +293,7 @@ class Transmission:
         if not (np.isfinite(input_torque) and input_torque > 0):
             raise ModelError(f"transmission: input_torque must be a positive N·m value, got {input_torque!r}.")
         train = self.gear_train(gear)
-        drive_op = OperatingPoint(speeds={self.input: input_speed}, torques={self.input: input_torque},
-                                  drives=[self.input], loads=[self.output])
+        drive_op = default_operating_point(self.input, self.output, speed=input_speed, torque=input_torque)
         run = solve
         if self.losses or self.spin is not None:
             from ..losses import solve_with_losses
@@ -384,15 +384,43 @@ class Transmission:
         """
         from ..io import load_train_file  # the file format lives in epicyclic.io
 
-        data = load_train_file(path, overrides=overrides)
+        return cls.from_train_file(load_train_file(path, overrides=overrides))
+
+    @classmethod
+    def from_train_file(cls, data: Any) -> Transmission:
+        """The transmission of a train file already read (:class:`epicyclic.io.TrainFile`), with its loss models.
+
+        Every front end makes its transmission here (``epicyclic gears``, ``plot``, the page), so that they
+        all solve the gears with the file's loss models (``[planetary.losses]``, ``[lubricant]``).
+
+        Parameters
+        ----------
+        data : epicyclic.io.TrainFile
+            A file with a ``[transmission]`` table.
+
+        Returns
+        -------
+        Transmission
+            Named by the file's title; its loss models come along.
+
+        Raises
+        ------
+        ShiftScheduleError
+            The file has no ``[transmission]`` table.
+
+        References
+        ----------
+        Brandenberger 1952, eqs. 1–10; ISO/TR 14179-2:2001 (loss models).
+        """
         spec = getattr(data, "transmission", None)
         if spec is None:
             raise ShiftScheduleError(
-                f"{path}: the file describes a train but no [transmission] table (input, output, "
-                "schedule); add one to analyse gears."
+                f"{getattr(data, 'source', 'the file')}: the file describes a train but no [transmission] table "
+                "(input, output, schedule); add one to analyse gears."
             )
         return cls(data.train, dict(spec.schedule), spec.input, spec.output,
-                   name=getattr(data, "title", "") or data.train.name, losses=dict(getattr(data, "losses", {})), spin=getattr(data, "spin", None))
+                   name=getattr(data, "title", "") or data.train.name, losses=dict(getattr(data, "losses", {})),
+                   spin=getattr(data, "spin", None))
 
     # ------------------------------------------------------------------ rendering
     def __repr__(self) -> str:

@@ -7,8 +7,14 @@ rendered from templates (:mod:`epicyclic.web.views`).  Safe by default:
 * binds to loopback (``epicyclic serve`` defaults to 127.0.0.1) and accepts
   only requests addressed to this host (no DNS rebinding);
 * request bodies larger than ``Limits.max_body`` are refused with 413, forms
-  with too many fields or files with 400;
-* every computation has a time limit (504 after it, the worker is replaced);
+  with too many fields or files with 400, bodies that stop arriving for
+  ``Limits.body_timeout`` seconds with 408;
+* POSTs from a page of another origin are refused with 403 (every POST
+  computes; :class:`~epicyclic.web.guards.SameOrigin`);
+* every computation has a time limit (504 after it, the worker is replaced),
+  a memory limit per worker (507), is cancelled when its client leaves, and
+  the jobs per client (429) and in all (503) are bounded
+  (:mod:`epicyclic.web.jobs`);
 * nothing the client sends becomes a path: examples are looked up by key in a
   table read at start, uploads are read in memory;
 * every user text is escaped by the templates, and the Content-Security-Policy
@@ -27,7 +33,7 @@ Examples
 from __future__ import annotations
 
 import contextlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from starlette.applications import Starlette
@@ -39,20 +45,23 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from ..limits import MAX_FILE_BYTES
+from .cache import FigureCache, figure_key
 from .examples import DEFAULT_EXAMPLE, bundled_examples
+from .guards import BodyLimit, BodyTooLarge, BodyTooSlow, SameOrigin, SecurityHeaders
 from .jobs import Jobs, failure
 from .render import Reply, render
-from .state import FormError, PageState, clean_text
+from .state import FormError, PageState, clean_text, restored_state
 from .views import apply, download, figure, open_file, open_text, save_figure, tool, tool_fields
 
-__all__ = ["Limits", "create_app", "LOOPBACK_HOSTS"]
+__all__ = ["Limits", "create_app", "LOOPBACK_HOSTS", "UNIT_LABELS"]
+
+#: The units selector: value → label (the file's ``[units]`` and the presets of ``web.state.UNIT_PRESETS``).
+UNIT_LABELS = (("file", "the file's units"), ("si", "SI (1/min, N·m, W)"), ("kw", "1/min, N·m, kW"),
+               ("rpm-kw", "rpm, N·m, kW"), ("rpm-hp", "rpm, lbf·ft, hp"), ("rads-kw", "rad/s, N·m, kW"),
+               ("mw", "1/min, kN·m, MW"))
 
 #: Host names a loopback server answers to.
 LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1", "[::1]", "testserver")
-
-_CSP = ("default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; "
-        "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
-
 
 @dataclass(frozen=True)
 class Limits:
@@ -69,8 +78,19 @@ class Limits:
         Seconds of work for a download (the HTML report draws every picture).
     workers : int, default 2
         Worker processes.
-    max_queue : int, default 1000
-        Requests waiting for a worker at most (more get 503).
+    max_queue : int, default 256
+        Requests waiting for a worker or running at most (more get 503).
+    max_client_jobs : int, default 16
+        Requests of one client (its address and the page's client id) waiting or running at most (429).
+    worker_memory : int or None, default 2 GiB
+        Bytes each worker's address space may grow after its start (``RLIMIT_AS``; 507 past it).
+    body_timeout : float, default 30
+        Seconds a request body may send nothing before it is refused (408).
+    picture_cache : int, default 64 MiB
+        Bytes of pictures kept in the server process (:mod:`epicyclic.web.cache`; 0: none kept).
+    draw_examples : bool, default False
+        Draw the pictures of every bundled example ahead once the server has started, while it is idle
+        (``epicyclic serve`` does; the default example first), so that opening an example shows them at once.
     allowed_hosts : tuple of str
         Host headers accepted (loopback names by default; ``("*",)`` for any).
     """
@@ -79,72 +99,13 @@ class Limits:
     solve_timeout: float = 10.0
     report_timeout: float = 60.0
     workers: int = 2
-    max_queue: int = 1000
+    max_queue: int = 256
+    max_client_jobs: int = 16
+    worker_memory: int | None = 2 << 30
+    body_timeout: float = 30.0
+    picture_cache: int = 64 << 20
+    draw_examples: bool = False
     allowed_hosts: tuple[str, ...] = LOOPBACK_HOSTS
-
-
-class _TooLarge(Exception):
-    pass
-
-
-class BodyLimit:
-    """ASGI middleware: refuse request bodies over ``limit`` bytes with 413 (declared or streamed)."""
-
-    def __init__(self, app: Any, limit: int):
-        self.app, self.limit = app, limit
-
-    async def __call__(self, scope: dict, receive: Any, send: Any) -> None:
-        if scope["type"] != "http":
-            return await self.app(scope, receive, send)
-        declared = dict(scope.get("headers", [])).get(b"content-length")
-        if declared is not None and (not declared.isdigit() or int(declared) > self.limit):
-            return await self._refuse(scope, receive, send)
-        seen = 0
-        started = False
-
-        async def counting_receive() -> dict:
-            nonlocal seen
-            message = await receive()
-            seen += len(message.get("body", b""))
-            if seen > self.limit:
-                raise _TooLarge
-            return message
-
-        async def tracking_send(message: dict) -> None:
-            nonlocal started
-            started = started or message["type"] == "http.response.start"
-            await send(message)
-
-        try:
-            await self.app(scope, counting_receive, tracking_send)
-        except _TooLarge:
-            if started:
-                raise
-            await self._refuse(scope, receive, send)
-
-    async def _refuse(self, scope: dict, receive: Any, send: Any) -> None:
-        reply = failure(f"the request is larger than {self.limit // 1024} KiB, the limit of this server; a train "
-                        "description is a few KiB (start the server with a larger --max-body if needed).", 413)
-        await HTMLResponse(reply.body, reply.status, headers={"Connection": "close"})(scope, receive, send)
-
-
-class SecurityHeaders:
-    """ASGI middleware: CSP and the usual hardening headers on every response."""
-
-    HEADERS = [(b"content-security-policy", _CSP.encode()), (b"x-content-type-options", b"nosniff"),
-               (b"referrer-policy", b"no-referrer"), (b"x-frame-options", b"DENY"),
-               (b"cross-origin-opener-policy", b"same-origin")]
-
-    def __init__(self, app: Any):
-        self.app = app
-
-    async def __call__(self, scope: dict, receive: Any, send: Any) -> None:
-        async def add_headers(message: dict) -> None:
-            if message["type"] == "http.response.start":
-                message["headers"] = list(message.get("headers", [])) + self.HEADERS
-            await send(message)
-
-        await self.app(scope, receive, add_headers if scope["type"] == "http" else send)
 
 
 def _reply(reply: Reply) -> Response:
@@ -167,7 +128,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
     async def form_of(request: Request) -> Any:
         try:
             return await request.form(max_files=1, max_fields=3000, max_part_size=limits.max_body)
-        except _TooLarge:
+        except (BodyTooLarge, BodyTooSlow):  # answered by the BodyLimit middleware
             raise
         except Exception as exc:  # starlette's multipart errors: too many fields, malformed body
             raise FormError(f"the request's form cannot be read ({getattr(exc, 'detail', exc)}).") from None
@@ -178,29 +139,54 @@ def create_app(limits: Limits | None = None) -> Starlette:
     def bad(exc: Exception) -> Response:
         return _reply(failure(str(exc), 400))
 
-    async def work(function: Any, *args: Any, timeout: float | None = None) -> Response:
+    def client_of(request: Request) -> str:
+        """The client a job counts for: its address and the page's id (every tab of the page has its own)."""
+        address = request.client.host if request.client else ""
+        return f"{address} {request.headers.get('x-epicyclic-client', '')[:64]}"
+
+    async def run(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Reply:
+        async def gone() -> None:  # returns when the client has closed the connection
+            while (await request.receive())["type"] != "http.disconnect":
+                pass
+
         jobs: Jobs = app.state.jobs
-        return _reply(await jobs.run(function, *args, timeout=timeout or limits.solve_timeout))
+        return await jobs.run(function, *args, timeout=timeout or limits.solve_timeout, client=client_of(request),
+                              gone=gone)
+
+    async def work(request: Request, function: Any, *args: Any, timeout: float | None = None,
+                   ahead: PageState | None = None) -> Response:
+        """``function(*args)`` in a worker; with ``ahead`` (the state shown), the pictures of the gears the
+        page shows next are drawn ahead while the server is idle."""
+        reply = await run(request, function, *args, timeout=timeout)
+        if ahead is not None and reply.status == 200 and reply.next_texts:
+            app.state.cache.draw_ahead(client_of(request), ahead, reply.next_texts, app.state.jobs, figure,
+                                       limits.solve_timeout)
+        return _reply(reply)
 
     async def page(request: Request) -> Response:
         from .. import __version__
 
-        chosen = request.query_params.get("example", DEFAULT_EXAMPLE)
+        query = request.query_params
+        chosen = query.get("example", DEFAULT_EXAMPLE)
+        restore = restored_state(query)
         body = render("page.html", examples=[(e.key, e.title) for e in examples.values()],
-                            initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__)
+                      initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__,
+                      unit_choices=UNIT_LABELS, **restore)
         return HTMLResponse(body, headers={"Cache-Control": "no-store"})
 
     async def open_example(request: Request) -> Response:
+        """An example; with the operating point and gear of a shared link or a reload (the URL holds them)."""
         try:
             form = await form_of(request)
             key = clean_text(form.get("example"), "example", 200) or DEFAULT_EXAMPLE
-            state = PageState("", units=form.get("units", "file"), lang=form.get("lang", "en"))
+            state = PageState.from_form(form, max_text=limits.max_body)
         except FormError as exc:
             return bad(exc)
         if key not in examples:
             return _reply(failure(f"no bundled example {key!r}; choose one from the list.", 404))
         example = examples[key]
-        return await work(open_text, example.text, example.file_name, state.units, state.lang)
+        return await work(request, open_text, example.text, example.file_name, state.units, state.lang,
+                          state.rows, state.gear, ahead=replace(state, source=example.file_name))
 
     async def upload(request: Request) -> Response:
         try:
@@ -213,7 +199,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
             state = PageState("", units=form.get("units", "file"), lang=form.get("lang", "en"))
         except FormError as exc:
             return bad(exc)
-        return await work(open_file, data, name, state.units, state.lang)
+        return await work(request, open_file, data, name, state.units, state.lang, ahead=replace(state, source=name))
 
     async def with_state(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Response:
         """Read the page's form and run ``function(state, *args)`` in a worker."""
@@ -221,16 +207,26 @@ def create_app(limits: Limits | None = None) -> Starlette:
             state = await state_of(request)
         except FormError as exc:
             return bad(exc)
-        return await work(function, state, *args, timeout=timeout)
+        return await work(request, function, state, *args, timeout=timeout)
 
     async def change(request: Request) -> Response:
         origin = request.path_params["origin"]
         if origin not in ("text", "form"):
             return _reply(failure(f"no such action {origin!r}.", 404))
-        return await with_state(request, apply, origin)
+        try:
+            state = await state_of(request)
+        except FormError as exc:
+            return bad(exc)
+        return await work(request, apply, state, origin, ahead=state)
 
     async def picture(request: Request) -> Response:
-        return await with_state(request, figure, request.path_params["kind"])
+        """A picture: kept from before or drawn ahead where it can be (epicyclic.web.cache)."""
+        try:
+            state = await state_of(request)
+        except FormError as exc:
+            return bad(exc)
+        name = request.path_params["kind"]
+        return _reply(await app.state.cache.answer(figure_key(state, name), lambda: run(request, figure, state, name)))
 
     async def save_picture(request: Request) -> Response:
         return await with_state(request, save_figure, request.path_params["kind"], timeout=limits.report_timeout)
@@ -249,10 +245,17 @@ def create_app(limits: Limits | None = None) -> Starlette:
 
     @contextlib.asynccontextmanager
     async def lifespan(app: Starlette):
-        app.state.jobs = Jobs(limits.workers, limits.max_queue)
+        app.state.jobs = Jobs(limits.workers, limits.max_queue, max_client_jobs=limits.max_client_jobs,
+                              worker_memory=limits.worker_memory)
+        app.state.cache = FigureCache(limits.picture_cache)
+        if limits.draw_examples and limits.picture_cache:
+            ordered = sorted(examples.values(), key=lambda e: e.key != DEFAULT_EXAMPLE)
+            states = [PageState(e.text, e.file_name) for e in ordered]  # as the page opens them
+            app.state.cache.draw_states_ahead("examples", states, app.state.jobs, figure, limits.solve_timeout)
         try:
             yield
         finally:
+            app.state.cache.close()
             app.state.jobs.close()
 
     routes = [
@@ -271,7 +274,8 @@ def create_app(limits: Limits | None = None) -> Starlette:
     middleware = [
         Middleware(SecurityHeaders),
         Middleware(TrustedHostMiddleware, allowed_hosts=list(limits.allowed_hosts)),
-        Middleware(BodyLimit, limit=limits.max_body),
+        Middleware(SameOrigin),
+        Middleware(BodyLimit, limit=limits.max_body, timeout=limits.body_timeout),
     ]
     app = Starlette(routes=routes, middleware=middleware, lifespan=lifespan)
     app.state.limits = limits

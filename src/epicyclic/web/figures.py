@@ -5,7 +5,7 @@ title, a test whether it applies to what the page shows, and a function that
 makes the picture.  Every picture is made from the file as ``plot`` and
 ``animate`` make it (:func:`epicyclic.plotting.figure_subject`): in the units
 the page shows (the file's or SI), with the gear and the shift state in the
-title, a transmission without operating point at unit input.  The page asks
+title, a transmission without operating point at the default operating point.  The page asks
 for each picture separately (so a slow picture does not hold up the tables),
 in a worker process; it shows inline SVG and saves SVG, PNG or PDF (the
 animation as HTML, SVG or GIF) with the command line's options and limits

@@ -29,12 +29,17 @@ HTML = "text/html; charset=utf-8"
 
 @dataclass(frozen=True)
 class Reply:
-    """An answer for the browser: body, HTTP status, media type and, for downloads, a file name."""
+    """An answer for the browser: body, HTTP status, media type and, for downloads, a file name.
+
+    ``next_texts`` are the texts the page will most likely show next (the other gears of a transmission,
+    nearest first), whose pictures the server may draw ahead while it is idle (:mod:`epicyclic.web.cache`).
+    """
 
     body: str | bytes
     status: int = 200
     media_type: str = HTML
     filename: str | None = None
+    next_texts: tuple[str, ...] = ()
 
 
 class Verbatim(str):

@@ -46,11 +46,24 @@ from ..errors import EpicyclicError
 from ..limits import MAX_SHAFTS
 from ..text import terminal_text
 
-__all__ = ["FormError", "PageState", "ShaftRow", "UNIT_CHOICES", "LANGUAGES", "MOMENTS", "ROLES",
-           "clean_text", "operating_rows", "default_operating_rows", "write_operating_point"]
+__all__ = ["FormError", "PageState", "ShaftRow", "UNIT_CHOICES", "UNIT_PRESETS", "LANGUAGES", "MOMENTS", "ROLES",
+           "EOLS", "clean_text", "operating_rows", "default_operating_rows", "write_operating_point",
+           "write_operating_points", "units_of"]
 
-#: Choices of the units selector: the file's ``[units]`` or SI core units.
-UNIT_CHOICES = ("file", "si")
+#: The units selector beside the file's ``[units]``: (speed, torque, power) of each choice, any unit that
+#: :class:`epicyclic.units.Units` reads (rpm, hp and SI prefixes included).
+UNIT_PRESETS: dict[str, tuple[str, str, str]] = {
+    "si": ("1/min", "N*m", "W"),
+    "kw": ("1/min", "N*m", "kW"),
+    "rpm-kw": ("rpm", "N*m", "kW"),
+    "rpm-hp": ("rpm", "lbf*ft", "hp"),
+    "rads-kw": ("rad/s", "N*m", "kW"),
+    "mw": ("1/min", "kN*m", "MW"),
+}
+#: Choices of the units selector: the file's ``[units]`` or one of :data:`UNIT_PRESETS`.
+UNIT_CHOICES = ("file", *UNIT_PRESETS)
+#: Line endings of the file that is open (the TOML download is written with them).
+EOLS = ("lf", "crlf")
 #: Languages of ``explain``.
 LANGUAGES = ("en", "de")
 #: Roles a shaft can have in the form ("" = neither drive nor load).
@@ -123,8 +136,11 @@ class PageState:
         The operating-point form (used when the form was changed).
     gear : str
         The gear of a transmission ("" for none).
-    units : {"file", "si"}
+    units : {"file", "si", "kw", "rpm-kw", "rpm-hp", "rads-kw", "mw"}
+        The file's ``[units]`` or a preset of :data:`UNIT_PRESETS`.
     lang : {"en", "de"}
+    eol : {"lf", "crlf"}
+        The line endings of the file as opened, kept in the TOML download.
     extra : mapping of str to str
         The fields of the geometry forms (``tool_<tool>_<field>``) and of the
         pictures (``fig_<kind>_<setting>``).
@@ -137,8 +153,11 @@ class PageState:
     units: str = "file"
     lang: str = "en"
     extra: Mapping[str, str] = field(default_factory=dict)
+    eol: str = "lf"
 
     def __post_init__(self) -> None:
+        if self.eol not in EOLS:
+            raise FormError(f"line endings must be one of {', '.join(EOLS)}, got {self.eol!r}.")
         if self.units not in UNIT_CHOICES:
             raise FormError(f"units must be one of {', '.join(UNIT_CHOICES)}, got {self.units!r}.")
         if self.lang not in LANGUAGES:
@@ -174,7 +193,44 @@ class PageState:
             units=one("units", "file"),
             lang=one("lang", "en"),
             extra=extra,
+            eol=one("eol", "lf"),
         )
+
+
+def units_of(choice: str, file_units: Any) -> Any:
+    """The :class:`~epicyclic.units.Units` the page shows for the selector's ``choice``."""
+    from ..units import Units
+
+    return file_units if choice == "file" else Units(*UNIT_PRESETS[choice])
+
+
+def restored_state(query: Mapping[str, str]) -> dict[str, Any]:
+    """What the page's address holds (a reload or a shared link): gear, operating-point rows, tab, units and
+    language, read as form values are (too long, unknown or malformed parts are left out, never an error).
+
+    ``op`` is JSON: a list of ``[shaft, role, speed, moment, value]`` rows.
+    """
+    import json
+
+    def text(name: str, limit: int = MAX_VALUE) -> str:
+        try:
+            return clean_text(query.get(name, ""), name, limit)
+        except FormError:
+            return ""
+
+    rows: list[ShaftRow] = []
+    try:
+        given = json.loads(query.get("op", "") or "[]")
+        if isinstance(given, list) and len(given) <= MAX_ROWS:
+            for row in given:
+                if isinstance(row, list) and len(row) == 5 and all(isinstance(v, str) for v in row):
+                    rows.append(ShaftRow(*(clean_text(v, "op", MAX_VALUE) for v in row)))
+    except (ValueError, FormError):
+        rows = []
+    units, lang = text("units"), text("lang")
+    return {"restore_rows": tuple(rows), "restore_gear": text("gear"),
+            "restore_tab": text("tab", 40), "restore_units": units if units in UNIT_CHOICES else "file",
+            "restore_lang": lang if lang in LANGUAGES else "en"}
 
 
 # ---------------------------------------------------------------------- reading the form from a file
@@ -212,10 +268,14 @@ def operating_rows(data: Mapping[str, Any], shafts: Sequence[str]) -> tuple[Shaf
 
 
 def default_operating_rows(shafts: Sequence[str], input: str, output: str) -> tuple[ShaftRow, ...]:
-    """The operating point of a transmission without one: unit input (1 of the file's speed and torque unit
-    at the input, the output loaded), as :func:`epicyclic.plotting.figure_subject` solves it."""
+    """The operating point of a transmission without one: the default point of
+    :func:`epicyclic.transmission.default_operating_point` (written with its units, 1/min and N·m, so that it
+    holds in any file's ``[units]``), as :func:`epicyclic.plotting.figure_subject` solves it."""
+    from ..transmission import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE
+
+    speed, torque = f"{DEFAULT_INPUT_SPEED:g} 1/min", f"{DEFAULT_INPUT_TORQUE:g} N*m"
     return tuple(
-        ShaftRow(s, "drive", "1", "torque", "1") if s == input
+        ShaftRow(s, "drive", speed, "torque", torque) if s == input
         else ShaftRow(s, "load") if s == output else ShaftRow(s)
         for s in shafts
     )
@@ -245,6 +305,17 @@ def write_operating_point(text: str, rows: Sequence[ShaftRow], gear: str) -> str
     tomllib.TOMLDecodeError
         ``text`` is not valid TOML (the caller reports it like the loader).
     """
+    return write_operating_points(text, rows, (gear,))[0]
+
+
+def write_operating_points(text: str, rows: Sequence[ShaftRow], gears: Sequence[str]) -> tuple[str, ...]:
+    """:func:`write_operating_point` for each of ``gears``, the text parsed once (tomlkit is the slow part).
+
+    Raises
+    ------
+    tomllib.TOMLDecodeError
+        ``text`` is not valid TOML.
+    """
     import tomlkit
 
     tomllib.loads(text)  # the same parser as the loader decides what is valid
@@ -262,11 +333,14 @@ def write_operating_point(text: str, rows: Sequence[ShaftRow], gear: str) -> str
         names = [row.shaft for row in rows if row.role == role]
         if names:
             table[key] = names
-    if gear:
-        table["gear"] = gear
-    if "operating_point" in document:
-        document["operating_point"] = table
-    else:
+    if "operating_point" not in document:
         document.add(tomlkit.nl())
-        document.add("operating_point", table)
-    return tomlkit.dumps(document)
+        document.add("operating_point", tomlkit.table())
+    texts = []
+    for gear in gears:
+        written = table.copy()
+        if gear:
+            written["gear"] = gear
+        document["operating_point"] = written
+        texts.append(tomlkit.dumps(document))
+    return tuple(texts)

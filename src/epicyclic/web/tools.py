@@ -81,6 +81,9 @@ class Tool:
     run: Callable[[Context, Mapping[str, Any]], str]
     needs_solution: bool = False
     help: str = ""
+    #: The tab of the page it is in: ``"geometry"`` (geometry and rating) or ``"tools"``.  A new form (the
+    #: load-capacity rating, the shift map) is one more :data:`TOOLS` entry with its panel.
+    panel: str = "tools"
 
 
 @dataclass(frozen=True)
@@ -364,9 +367,12 @@ def _map(context: Context, v: Mapping[str, Any]) -> str:
     from ..plotting import figure_svg
 
     emap = map_of(context, v)
-    figure = emap.plot()
-    svg = figure_svg(figure)
-    figure.clf()
+    if min(len(emap.speeds), len(emap.torques)) < 2:  # a line of points has no contours to draw
+        svg = "<p class=\"hint\">No contour picture: it needs at least two speeds and two torques.</p>"
+    else:
+        figure = emap.plot()
+        svg = figure_svg(figure)
+        figure.clf()
     note = "" if context.train_file.losses or context.train_file.spin is not None else (
         "<p class=\"hint\">The file has no loss tables: η is the stationary efficiency typed in, the same at every "
         "point. Add [planetary.losses] and [lubricant] to compute it from the geometry (docs/losses.md).</p>")
@@ -419,12 +425,12 @@ TOOLS: dict[str, Tool] = {t.name: t for t in (
         Field("unequal", "accept unequal spacing", "no", kind="choice", choices=_YES_NO),
         Field("min_clearance", "least tip clearance [mm]", "0", low=0, high=1000),
         Field("undercut", "undercut limit", "theoretical", kind="choice", choices=_UNDERCUT),
-    ), _fit, help="Coaxiality, assembly and phasing, neighbours, undercut and interference, each with its fix "
+    ), _fit, panel="geometry", help="Coaxiality, assembly and phasing, neighbours, undercut and interference, each with its fix "
                   "(ISO 21771), as epicyclic fit."),
     Tool("forces", "Tooth and bearing forces", _GEOMETRY + (
         Field("load_sharing", "load sharing K_γ (default by planets)", kind="number", low=1, high=3, optional=True,
               per_set=True),),
-        _forces, needs_solution=True,
+        _forces, needs_solution=True, panel="geometry",
         help="Tangential, radial and axial tooth forces, planet bearing and pin loads (× K_γ) at the operating "
              "point, as epicyclic forces."),
     Tool("search", "Tooth-count search", (

@@ -30,8 +30,8 @@ from ..errors import EpicyclicError
 from ..io import TrainFile, loads_train_file
 from ..units import Units
 from .editor import Problem, problem
-from .render import Reply, Verbatim, render
-from .state import PageState, default_operating_rows, operating_rows, write_operating_point
+from .render import Reply, Verbatim, fmt, render
+from .state import PageState, default_operating_rows, operating_rows, write_operating_point, write_operating_points
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..plotting import Subject
@@ -68,7 +68,9 @@ def _rewritten(state: PageState) -> str:
 
 
 def _units(train_file: TrainFile, state: PageState) -> Units:
-    return train_file.units if state.units == "file" else Units()
+    from .state import units_of
+
+    return units_of(state.units, train_file.units)
 
 
 def _subject(train_file: TrainFile, state: PageState) -> Subject:
@@ -108,21 +110,38 @@ def _table(train_file: TrainFile) -> str:
 
 
 def _transmission(train_file: TrainFile) -> Any:
+    """The file's transmission with its loss models, as ``epicyclic gears`` reads it."""
     from ..transmission import Transmission
 
-    spec = train_file.transmission
-    return Transmission(train_file.train, dict(spec.schedule), spec.input, spec.output,
-                        name=train_file.title or train_file.train.name, losses=dict(train_file.losses),
-                        spin=train_file.spin)
+    return Transmission.from_train_file(train_file)
 
 
-def _unit_input(train_file: TrainFile, gear: str) -> str:
+def _default_point(train_file: TrainFile, gear: str) -> str:
     """What the page says about a transmission without operating point."""
+    from ..transmission import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE
+
     spec, units = train_file.transmission, train_file.units
-    return (f"The file has no [operating_point]: the page shows gear {gear} at unit input, as `epicyclic plot` "
-            f"draws it: {spec.input!r} driven at 1 {units.speed} with 1 {units.torque}, {spec.output!r} loaded. "
-            "Ratios, efficiencies and multiples of the input do not depend on it; give an operating point in the "
-            "form to see real speeds, torques and powers.")
+    level = (f"{DEFAULT_INPUT_SPEED:g} 1/min with {DEFAULT_INPUT_TORQUE:g} N·m" if units == Units() else
+             f"{DEFAULT_INPUT_SPEED:g} 1/min ({fmt(units.speed_from_core(DEFAULT_INPUT_SPEED))} {units.speed}) with "
+             f"{DEFAULT_INPUT_TORQUE:g} N·m ({fmt(units.torque_from_core(DEFAULT_INPUT_TORQUE))} {units.torque})")
+    losses = (" The efficiencies come from the file's loss models and depend on this level." if train_file.losses
+              else " Ratios, efficiencies and multiples of the input do not depend on it.")
+    return (f"The file has no [operating_point]: the page shows gear {gear} at the default operating point, as "
+            f"`epicyclic gears` and `epicyclic plot` use it: {spec.input!r} driven at {level}, {spec.output!r} "
+            f"loaded.{losses} Give an operating point in the form to see your own speeds, torques and powers.")
+
+
+def _gear_level(train_file: TrainFile) -> str:
+    """The input point the gear table is analysed at, in words (as ``epicyclic gears`` states it)."""
+    from ..errors import EpicyclicError
+    from ..transmission.input_point import input_point
+
+    if train_file.transmission is None:
+        return ""
+    try:
+        return input_point(train_file.transmission.input, train_file.operating_point, units=train_file.units).describe()
+    except EpicyclicError:  # the gear table reports the error itself
+        return ""
 
 
 # ---------------------------------------------------------------------- the results section
@@ -143,17 +162,22 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
             solve_problem = problem(state.text, str(exc), fallback=_table(train_file))
     solution = subject.solution if subject is not None else None
     if subject is not None and train_file.operating_point is None:
-        notices.append(_unit_input(train_file, subject.gear))
+        notices.append(_default_point(train_file, subject.gear))
+    transmission = subject.transmission if subject is not None else None
     gear = subject.gear if subject is not None else train_file.gear
     result: dict[str, Any] = {
         "title": train_file.title, "description": train_file.description, "units": units,
         "notices": notices, "solution": solution, "solve_problem": solve_problem,
         "gears": None, "tools": list(TOOLS.values()), "tool_context": Context(train_file, solution, gear),
         "form_rows": form_rows, "figures": [], "lang": state.lang, "explanation": None, "loss_split": None,
+        "gear_name": gear if train_file.transmission is not None else None,
+        "has_transmission": train_file.transmission is not None, "has_losses": bool(train_file.losses),
+        "gear_level": _gear_level(train_file),
     }
     if train_file.transmission is not None:
         # with the file's loss models and at its operating point, as ``epicyclic gears`` computes it
-        gears = gear_table(lambda: _transmission(train_file), gear, state.source, train_file.operating_point)
+        gears = gear_table(transmission or (lambda: _transmission(train_file)), gear, state.source,
+                           train_file.operating_point)
         gears["problem"] = problem(state.text, gears["error"]) if gears["error"] else None
         same = solve_problem is not None and gears["error"] == solve_problem.message  # said once, above
         result["gears"] = None if same else gears
@@ -193,6 +217,8 @@ def _guard(action):
             return Reply(render("problem.html", problem=bad.problem, text=bad.text, oob=True), 422)
         except EpicyclicError as exc:
             return Reply(render("problem.html", problem=Problem(str(exc)), text=None, oob=True), 422)
+        except MemoryError:
+            raise  # the worker's memory limit: the pool says so (epicyclic.web.jobs)
         except Exception as exc:  # a bug: say so, keep serving
             traceback.print_exc(file=sys.stderr)
             message = (f"internal error: {type(exc).__name__}: {exc}. This is a bug in epicyclic; please report "
@@ -214,6 +240,17 @@ def _form(train_file: TrainFile, text: str) -> dict[str, Any]:
     return {"rows": rows, "gear_names": spec.gears if spec else (), "gear": gear, "file_units": train_file.units}
 
 
+def _next_texts(text: str, form: dict[str, Any], results: dict[str, Any]) -> tuple[str, ...]:
+    """The texts the page shows after a click on another gear (the form's rows, that gear), nearest gear
+    first: the server draws their pictures ahead while it is idle."""
+    gears, current = list(form["gear_names"]), form["gear"]
+    if not gears or results["problem"] is not None or current not in gears:
+        return ()
+    here = gears.index(current)
+    order = sorted((g for g in gears if g != current), key=lambda g: (abs(gears.index(g) - here), gears.index(g)))
+    return write_operating_points(text, form["rows"], order)
+
+
 @_guard
 def open_file(data: bytes, source: str, units: str = "file", lang: str = "en") -> Reply:
     """:func:`open_text` of an uploaded file, read as the command line reads one (size, NUL bytes, UTF-8).
@@ -231,18 +268,44 @@ def open_file(data: bytes, source: str, units: str = "file", lang: str = "en") -
     return open_text(decode_source(data, source), source, units, lang)
 
 
+def _line_ending(text: str) -> str:
+    """``"crlf"`` for a text written with Windows line endings, else ``"lf"`` (the editor shows LF)."""
+    return "crlf" if "\r\n" in text else "lf"
+
+
+def _restored(text: str, source: str, rows: tuple, gear: str) -> str:
+    """``text`` with the operating point of the address written in, unchanged where it is the text's own."""
+    try:
+        own = _form(_load(text, source), text)
+    except (_Bad, tomllib.TOMLDecodeError, RecursionError):
+        return text  # the text's own error is shown
+    if (rows or own["rows"]) == own["rows"] and (gear or own["gear"]) == own["gear"]:
+        return text
+    return write_operating_point(text, rows or own["rows"], gear or own["gear"])
+
+
 @_guard
-def open_text(text: str, source: str, units: str = "file", lang: str = "en") -> Reply:
-    """The whole workspace (editor, operating-point form, results) for a newly opened text."""
-    state = PageState(text, source, units=units, lang=lang)
+def open_text(text: str, source: str, units: str = "file", lang: str = "en", rows: tuple = (),
+              gear: str = "") -> Reply:
+    """The whole workspace (editor, operating-point form, results) for a newly opened text.
+
+    ``rows`` and ``gear`` (from a shared link or a reload: the URL holds them) are written into the
+    text's ``[operating_point]`` as the form would write them.
+    """
+    eol = _line_ending(text)
+    text = text.replace("\r\n", "\n")
+    if rows or gear:
+        text = _restored(text, source, tuple(rows), gear)
+    state = PageState(text, source, units=units, lang=lang, eol=eol)
     try:
         train_file = _load(text, source)
     except _Bad as bad:
         return Reply(render("workspace.html", text=Verbatim(text), source=source, rows=(), gear_names=(), gear="",
-                            file_units=Units(), problem=bad.problem, results=None), 422)
+                            file_units=Units(), problem=bad.problem, results=None, eol=eol), 422)
     results = _results(train_file, state)
+    form = _form(train_file, text)
     return Reply(render("workspace.html", text=Verbatim(text), source=source, problem=None, results=results,
-                        **_form(train_file, text)), _status(results))
+                        eol=eol, **form), _status(results), next_texts=_next_texts(text, form, results))
 
 
 @_guard
@@ -262,8 +325,11 @@ def apply(state: PageState, origin: str) -> Reply:
         return Reply(render("apply.html", problem=bad.problem, results=None, text=Verbatim(text),
                             swap_text=swap_text, swap_form=False), 422)
     results = _results(train_file, state)
+    form = _form(train_file, text)
+    rows = state.rows if origin == "form" else form["rows"]
     return Reply(render("apply.html", problem=None, results=results, text=Verbatim(text), swap_text=swap_text,
-                        swap_form=origin == "text", **_form(train_file, text)), _status(results))
+                        swap_form=origin == "text", **form), _status(results),
+                 next_texts=_next_texts(text, {**form, "rows": rows}, results))
 
 
 def _picture(state: PageState, name: str):
@@ -410,7 +476,8 @@ def download(state: PageState, kind: str) -> Reply:
             title = tomllib.loads(state.text).get("title", title)
         except (tomllib.TOMLDecodeError, RecursionError):
             pass
-        return Reply(state.text, media_type=_DOWNLOADS[kind],
+        text = state.text.replace("\r\n", "\n")  # the user's line endings, as the file was opened
+        return Reply(text.replace("\n", "\r\n") if state.eol == "crlf" else text, media_type=_DOWNLOADS[kind],
                      filename=_file_name(str(title), state.source, ".toml"))
     train_file = _load(state.text, state.source)
     name = _file_name(train_file.title, state.source, ".gears.html" if kind == "gears" else f".{kind}")
