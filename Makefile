@@ -33,6 +33,7 @@ docs-serve: docs
 gallery: $(STAMP)
 	$(PY) docs/gallery/make_gallery.py
 	$(PY) docs/figures/make_figures.py
+	$(PY) docs/figures/make_screenshots.py
 
 # The browser tests (tests/web/test_browser.py) drive Debian's chromium through chromium-driver:
 # install both when missing (CI runs on a fresh Debian machine as root); nothing to do when present.

@@ -20,6 +20,8 @@ SOURCES: dict[str, tuple[str, ...]] = {
     "figures": ("src/epicyclic/plotting/**/*.py", "examples/brandenberger_1952.toml",
                 "examples/simple_set_ring_held_sun_drives.toml", "examples/zf_8hp70_geometry.toml",
                 "docs/figures/make_figures.py"),
+    "web_page": ("src/epicyclic/web/templates/*", "src/epicyclic/web/static/*.js", "src/epicyclic/web/static/*.css",
+                 "examples/simpson_c4_3speed.toml", "docs/figures/make_screenshots.py"),
 }
 
 

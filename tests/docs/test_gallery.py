@@ -32,7 +32,7 @@ def test_the_gallery_holds_no_example_that_is_gone():
     assert folders <= stems, f"gallery folders without an example: {sorted(folders - stems)}"
 
 
-@pytest.mark.parametrize("name", ["gallery", "figures"])
+@pytest.mark.parametrize("name", ["gallery", "figures", "web_page"])
 def test_shipped_pictures_are_not_older_than_the_code_that_draws_them(name):
     """docs/figures/pictures.sha256 holds the digest of the drawing code (src/epicyclic/plotting, the
     examples, the scripts) as it was when the pictures were drawn: changed code means stale pictures."""
