@@ -301,3 +301,14 @@ def test_the_map_form_speaks_the_files_units(client, page_form, tmp_path):
     assert summary + "\n" == command("map", path, "--speed", "100..600:6", "--torque", "2..20:4")
     assert command("map", path, "--speed", "954.93..5729.58:6 rpm", "--torque", "2..20:4").splitlines()[1] == \
         "input speed 100..600 rad/s (6 values), input torque 2..20 kp*m (4 values)"
+
+
+def test_the_rating_panel_is_the_rate_command(client, page_form):
+    """The Geometry and rating tab's load-capacity form shows the rating `epicyclic rate -f html` writes
+    (ISO 6336 method B, every factor), below-minimum meshes marked as there."""
+    path = EXAMPLES / "rating" / "simple_set.toml"
+    page = body(client.post("/tool/rating", data=page_form(path.read_text(encoding="utf-8"))))
+    assert page.startswith("<section class='rating'>") and "ISO 6336:2019" in page
+    assert page in command("rate", path, "-f", "html")
+    plain = client.post("/tool/rating", data=page_form(example("geometry_simple_set")[0]))
+    assert "no [rating] table" in message(plain)

@@ -293,6 +293,24 @@ def _forces(context: Context, v: Mapping[str, Any]) -> str:
     return geometry_html(results, heading="Forces", show_geometry=False)
 
 
+def _rating(context: Context, v: Mapping[str, Any]) -> str:
+    """The ISO 6336 rating of every mesh at the page's operating point and gear, as ``epicyclic rate -f html``."""
+    from ..rating.report import html_section
+    from ..rating.train import rate_solution
+
+    f = context.train_file
+    if f.rating is None:
+        raise ToolError(f"{f.source}: the file has no [rating] table; add one with material, flank_roughness, "
+                        "root_roughness and the lubricant's viscosity_40 (see docs/rating.md).")
+    if not f.geometry:
+        raise ToolError(f"{f.source}: no element has a geometry table; the rating needs module, face width and "
+                        "tooth counts (see docs/file-format.md).")
+    if context.solution is None:
+        raise ToolError(f"{f.source}: [operating_point]: the rating needs the torques of an operating point; give "
+                        "one in the form.")
+    return html_section(rate_solution(context.solution, f.geometry, f.rating, gear=context.gear))
+
+
 # ---------------------------------------------------------------------- search
 def _ratio(text: str, name: str) -> float:
     try:
@@ -433,6 +451,10 @@ TOOLS: dict[str, Tool] = {t.name: t for t in (
         _forces, needs_solution=True, panel="geometry",
         help="Tangential, radial and axial tooth forces, planet bearing and pin loads (× K_γ) at the operating "
              "point, as epicyclic forces."),
+    Tool("rating", "Load capacity (ISO 6336)", (), _rating, needs_solution=True, panel="geometry",
+         help="Pitting and tooth-root safety of every mesh (ISO 6336 method B) with every factor and its clause, "
+              "at the operating point and gear shown; a mesh below its minimum safety is marked red, as "
+              "epicyclic rate -f html."),
     Tool("search", "Tooth-count search", (
         Field("ratio", "target ratio n_driver/n_driven", "4", kind="text", parse=_ratio),
         Field("tolerance", "tolerance (3% or 0.03)", "1%", kind="text", parse=_tolerance),
