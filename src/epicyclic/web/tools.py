@@ -19,7 +19,7 @@ addendum factors, is kept), a changed field gives a variant.  The choice
 Examples
 --------
 >>> [tool.name for tool in TOOLS.values()]
-['fit', 'forces', 'search', 'map']
+['fit', 'forces', 'rating', 'search', 'map']
 >>> read_number("2.5", Field("module", "module [mm]", "2", low=0.05, high=100), "fit")
 2.5
 """
