@@ -283,6 +283,38 @@ def _passes_rows(masks: np.ndarray, full: int, gears: int) -> np.ndarray:
     return (union == full) & (useful >= gears)
 
 
+def _matched(masks: np.ndarray, gears: int) -> np.ndarray:
+    """Rows of ``masks`` (N, C) whose combinations can take the targets one each (a matching of all targets).
+
+    A schedule gives every gear its own combination (:func:`~epicyclic.synthesis.fitting.assign`
+    picks distinct ones), so an architecture can reach the targets in a box only if the bipartite
+    graph target – combination (edge: the combination's range over the box reaches the target)
+    has a matching that covers every target.  Each mask is an interval of the sorted targets
+    (:func:`_masks`), so the graph is convex and Glover's greedy rule is exact: targets in
+    ascending order, each takes the free combination covering it whose interval ends first.
+
+    References
+    ----------
+    Glover, F. (1967), "Maximum matching in a convex bipartite graph", Naval Res. Logist. Q. 14(3), 313–316.
+    """
+    masks = masks.astype(np.int64)
+    empty = masks == 0
+    lowest = masks & -masks
+    with np.errstate(divide="ignore"):
+        first = np.where(empty, gears, np.log2(np.where(empty, 1, lowest).astype(float)).astype(np.int64))
+        last = np.where(empty, -1, np.log2(np.where(empty, 1, masks + lowest).astype(float)).astype(np.int64) - 1)
+    used = empty.copy()
+    ok = np.ones(len(masks), dtype=bool)
+    rows = np.arange(len(masks))
+    for j in range(gears):
+        key = np.where(~used & (first <= j) & (last >= j), last, gears)
+        pick = key.argmin(axis=1)
+        has = key[rows, pick] < gears
+        ok &= has
+        used[rows, pick] |= has
+    return ok
+
+
 def _holding(lay: Layout, combos: np.ndarray) -> np.ndarray:
     """Element sets (sorted numbers) that hold at least one of these combinations (:attr:`Layout.containing`)."""
     indptr, indices = lay.containing
@@ -317,7 +349,10 @@ def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list,
         rarest = int(np.argmin(bits.astype(np.int64) @ sizes))
         held = _holding(lay, np.flatnonzero(bits[rarest]))
         held = held[allowed[held]]
-        ok = held[_passes(masks[lay.set_combos[held]], full, gears)]
+        gathered = masks[lay.set_combos[held]]
+        keep = _passes(gathered, full, gears)
+        keep[keep] = _matched(gathered[keep], gears)
+        ok = held[keep]
         found += [(a, b, int(j)) for j in ok]
         order.append(np.stack([np.searchsorted(lay.block_starts, ok, side="right"), np.full(ok.size, d), ok]))
     if not found:
@@ -461,10 +496,15 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                 valid, lo, hi = ratio_ranges(det[:, cols, a][idx], det[:, cols, b][idx])  # (boxes, cols)
             mask = _masks(valid, lo, hi, targets, tolerance)
             owner = np.repeat(np.arange(len(members)), counts)
-            ok = _passes(mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]],
-                         full, gears)
+            gathered = mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]]
+            ok = _passes(gathered, full, gears)
+            matched = ok.copy()
+            if prune:  # an architecture none of whose boxes admits one combination per target is dropped
+                matched[ok] = _matched(gathered[ok], gears)
+            alive = np.zeros(len(members), dtype=bool)
+            np.logical_or.at(alive, owner, matched)
             for m, (j, keep) in enumerate(zip(sets_j, np.split(ok, np.cumsum(counts)[:-1]))):
-                if keep.any():
+                if alive[m]:  # its boxes stay those of the range test: the fit starts where it did
                     nxt[(a, b, int(j))] = members[m][1][keep]
         boxes = nxt
     return [Placement(a, b, tuple(int(e) for e in lay.element_sets[j]), tuple(bx))
