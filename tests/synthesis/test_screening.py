@@ -19,10 +19,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from epicyclic.synthesis import SynthesisSpec, enumerate_mechanisms
-from epicyclic.synthesis.kinematics import combination_determinants, element_rows
-from epicyclic.synthesis import screening
+from epicyclic.synthesis import SynthesisSpec, enumerate_mechanisms, screening
 from epicyclic.synthesis.fitting import combinations_of_elements, fit_ratios
+from epicyclic.synthesis.kinematics import combination_determinants, element_rows
 from epicyclic.synthesis.screening import _grid, layout, multilinear, screen
 from epicyclic.synthesis.search import _mechanisms, bounds
 
