@@ -328,14 +328,15 @@ def _holding(lay: Layout, combos: np.ndarray) -> np.ndarray:
 
 
 def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list, full: int,
-                   gears: int) -> list[tuple[int, int, int]]:
+                   gears: int) -> list[tuple[tuple[int, int, int], bool]]:
     """First-level survivors of one input/output pair, found from the rarest target (exact).
 
     An element set passes only if some combination of it reaches each target, so it holds one of
     the combinations that reach target j, for every j.  Only the element sets holding a
     combination that reaches the target fewest element sets can reach (counted with
     :attr:`Layout.containing`) are examined; the rest cannot pass.  The survivors come in the
-    order of the full scan: by block of brakes, then direction, then element set.
+    order of the full scan: by block of brakes, then direction, then element set, each with whether
+    it admits one combination per target (:func:`_matched`).
     """
     indptr, _ = lay.containing
     sizes = np.diff(indptr)
@@ -351,9 +352,8 @@ def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list,
         held = held[allowed[held]]
         gathered = masks[lay.set_combos[held]]
         keep = _passes(gathered, full, gears)
-        keep[keep] = _matched(gathered[keep], gears)
         ok = held[keep]
-        found += [(a, b, int(j)) for j in ok]
+        found += [((a, b, int(j)), bool(m)) for j, m in zip(ok, _matched(gathered[keep], gears))]
         order.append(np.stack([np.searchsorted(lay.block_starts, ok, side="right"), np.full(ok.size, d), ok]))
     if not found:
         return []
@@ -424,7 +424,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
              or not mech.free_input and role_ok(x, output_members) and role_ok(y, input_members)]
     if not pairs:
         return [], 0
-    survivors: list[tuple[int, int, int]] = []  # (input, output, element set)
+    survivors: list[tuple[tuple[int, int, int], bool]] = []  # (input, output, element set), matched
     examined = 0
     if gears > 62:
         raise ValueError("screening handles at most 62 target ratios")
@@ -461,7 +461,14 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                 if reach[p] != full:
                     continue
                 ok = _passes_rows(rows[p][lay.columns[:, start:stop]], full, gears) & covered
-                survivors += [(a, b, start + int(j)) for j in np.flatnonzero(ok)]
+                survivors += [((a, b, start + int(j)), True) for j in np.flatnonzero(ok)]
+    # the reference's order after bisection: groups (input, output) by first appearance among the
+    # first level's survivors (pruned or not), then the first level's order
+    group_rank: dict[tuple[int, int], int] = {}
+    for (a, b, _), _ok in survivors:
+        group_rank.setdefault((a, b), len(group_rank))
+    first_rank = {s: r for r, (s, _ok) in enumerate(survivors)}
+    survivors = [s for s, matched in survivors if matched]
     # bisection: every survivor keeps the boxes (at the current level) in which it may reach the targets
     boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors}
     for level in range(1, levels + 1):
@@ -507,5 +514,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                 if alive[m]:  # its boxes stay those of the range test: the fit starts where it did
                     nxt[(a, b, int(j))] = members[m][1][keep]
         boxes = nxt
+    if levels:
+        boxes = dict(sorted(boxes.items(), key=lambda item: (group_rank[item[0][:2]], first_rank[item[0]])))
     return [Placement(a, b, tuple(int(e) for e in lay.element_sets[j]), tuple(bx))
             for (a, b, j), bx in boxes.items()], examined
