@@ -438,6 +438,15 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     narrow = np.int32 if gears <= 31 else np.int64  # half the bytes to gather per architecture
     fwd_rows = np.ascontiguousarray(fwd_mask.T, dtype=narrow)  # (pairs, T)
     rev_rows = np.ascontiguousarray(rev_mask.T, dtype=narrow)
+    # combinations that reach no target in any sub-box of an input/output: valid over the whole box
+    # with no target in range (a sub-box's range lies inside it), or a determinant zero at every corner
+    # (multilinear, so zero throughout: no sub-box is valid)
+    zero = np.all(det[..., xs] == 0, axis=0) | np.all(det[..., ys] == 0, axis=0)  # (T, pairs)
+    dead_fwd = (valid & (fwd_mask & full == 0)) | zero
+    dead_rev = (valid & (rev_mask & full == 0)) | zero
+    dead = {}
+    for p, (x, y) in enumerate(pairs):
+        dead[(x, y)], dead[(y, x)] = dead_fwd[:, p], dead_rev[:, p]
     for p, (x, y) in enumerate(pairs):
         if reach_fwd[p] != full and (mech.free_input or reach_rev[p] != full):
             continue  # some target is out of reach of every combination, in both directions
@@ -491,17 +500,20 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
             if interpolate:  # exact (multilinear in i0): only this group's combinations, points and two shafts
                 member_cols = lay.set_combos[sets_j]
                 cols = np.unique(member_cols)
+                live = cols[~dead[(a, b)][cols]] if prune else cols  # the others' masks are 0 in every box
                 here = np.unique(corners[needed])
-                pair = clean_array(multilinear(whole_box[:, cols][:, :, [a, b]], here, level, sets),
-                                   hadamard_bound(mech, points[here], lay.combos[cols])[:, :, None])
+                pair = clean_array(multilinear(whole_box[:, live][:, :, [a, b]], here, level, sets),
+                                   hadamard_bound(mech, points[here], lay.combos[live])[:, :, None])
                 idx = np.searchsorted(here, corners[needed].T)  # (2^S, boxes) rows of pair
-                valid, lo, hi = ratio_ranges(pair[:, :, 0][idx], pair[:, :, 1][idx])  # (boxes, cols)
+                valid, lo, hi = ratio_ranges(pair[:, :, 0][idx], pair[:, :, 1][idx])  # (boxes, live)
+                mask = np.zeros((len(needed), len(cols)), dtype=np.int64)
+                mask[:, np.searchsorted(cols, live)] = _masks(valid, lo, hi, targets, tolerance)
             else:
                 member_cols = np.searchsorted(used, lay.set_combos[sets_j])  # (M, C) columns of det
                 cols = np.unique(member_cols)
                 idx = np.searchsorted(at, corners[needed].T)  # (2^S, boxes) rows of det
                 valid, lo, hi = ratio_ranges(det[:, cols, a][idx], det[:, cols, b][idx])  # (boxes, cols)
-            mask = _masks(valid, lo, hi, targets, tolerance)
+                mask = _masks(valid, lo, hi, targets, tolerance)
             owner = np.repeat(np.arange(len(members)), counts)
             gathered = mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]]
             ok = _passes(gathered, full, gears)
