@@ -43,8 +43,17 @@ import numpy as np
 from ..results.zero import clean_array
 from .mechanisms import Mechanism
 
-__all__ = ["element_count", "element_shafts", "element_rows", "willis_matrices", "combination_determinants",
-           "hadamard_bound", "corner_points", "ratio_ranges", "gear_ratios"]
+__all__ = [
+    "combination_determinants",
+    "corner_points",
+    "element_count",
+    "element_rows",
+    "element_shafts",
+    "gear_ratios",
+    "hadamard_bound",
+    "ratio_ranges",
+    "willis_matrices",
+]
 
 
 def element_count(shafts: int) -> int:
@@ -176,6 +185,21 @@ def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:
         for i in range(4):
             p, q, r = [j for j in range(4) if j != i]
             det = m[(p, q)] * c[..., r] - m[(p, r)] * c[..., q] + m[(q, r)] * c[..., p]
+            out[..., i] = det if (i + k) % 2 == 0 else -det
+        return out
+    if k == 4 and d == 5:  # four engaged: Laplace expansion along the first two rows (2×2 minors, no LU)
+        a, b, c, e = (funcs[:, combos[:, j], :] for j in range(4))  # (P, T, 5) each
+        pairs = list(itertools.combinations(range(5), 2))
+        top = {(i, j): a[..., i] * b[..., j] - a[..., j] * b[..., i] for i, j in pairs}
+        bottom = {(i, j): c[..., i] * e[..., j] - c[..., j] * e[..., i] for i, j in pairs}
+        out = np.empty(a.shape)
+        for i in range(5):
+            cols = [j for j in range(5) if j != i]
+            det = np.zeros(a.shape[:2])
+            for p, q in itertools.combinations(range(4), 2):
+                r, t = (x for x in range(4) if x not in (p, q))
+                term = top[(cols[p], cols[q])] * bottom[(cols[r], cols[t])]
+                det += term if (p + q) % 2 else -term  # sign (-1)^(p + q + 1) of the Laplace expansion
             out[..., i] = det if (i + k) % 2 == 0 else -det
         return out
     picked = funcs[:, combos, :]  # (P, T, k, d)
