@@ -188,14 +188,18 @@ def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:
             out[..., i] = det if (i + k) % 2 == 0 else -det
         return out
     if k == 4 and d == 5:  # four engaged: Laplace expansion along the first two rows (2×2 minors, no LU)
-        a, b, c, e = (funcs[:, combos[:, j], :] for j in range(4))  # (P, T, 5) each
         pairs = list(itertools.combinations(range(5), 2))
-        top = {(i, j): a[..., i] * b[..., j] - a[..., j] * b[..., i] for i, j in pairs}
-        bottom = {(i, j): c[..., i] * e[..., j] - c[..., j] * e[..., i] for i, j in pairs}
-        out = np.empty(a.shape)
+        first, second = [i for i, _ in pairs], [j for _, j in pairs]
+        # 2×2 minors of every pair of element rows once (P, E, E, 10), then gathered per combination
+        minors = funcs[:, :, None, first] * funcs[:, None, :, second] - funcs[:, :, None, second] * funcs[:, None, :, first]
+        upper = minors[:, combos[:, 0], combos[:, 1], :]  # (P, T, 10)
+        lower = minors[:, combos[:, 2], combos[:, 3], :]
+        top = {pair: upper[..., n] for n, pair in enumerate(pairs)}
+        bottom = {pair: lower[..., n] for n, pair in enumerate(pairs)}
+        out = np.empty(upper.shape[:2] + (5,))
         for i in range(5):
             cols = [j for j in range(5) if j != i]
-            det = np.zeros(a.shape[:2])
+            det = np.zeros(upper.shape[:2])
             for p, q in itertools.combinations(range(4), 2):
                 r, t = (x for x in range(4) if x not in (p, q))
                 term = top[(cols[p], cols[q])] * bottom[(cols[r], cols[t])]
