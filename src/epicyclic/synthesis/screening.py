@@ -19,6 +19,13 @@ vectorised over all architectures of the mechanism:
    input nor output must carry a shift element, or that set idles in every
    gear and the transmission needs one set fewer.
 
+Exact pruning (``prune=True``): the first level examines only the element sets
+holding a combination that reaches the rarest target (:func:`_pruned_level0`);
+an architecture none of whose boxes admits one combination per target is dropped
+(:func:`_matched`: the fit gives every gear its own combination), its survivors
+keeping every box of the range test; and combinations that reach no target in any
+sub-box are skipped in the bisection.
+
 Survivors go to :mod:`~epicyclic.synthesis.fitting`.  Nothing here fits a
 ratio, so screening never drops an architecture that can reach the targets
 (up to the tolerance widening of the ranges).
@@ -27,7 +34,8 @@ References
 ----------
 Kahraman et al. 2004, J. Mech. Des. 126(6), section 3 (search that eliminates
 kinematic configurations before the tooth counts); Moore, R. E. (1966),
-*Interval Analysis* (bounds over boxes, bisection).
+*Interval Analysis* (bounds over boxes, bisection); Glover, F. (1967), Naval Res.
+Logist. Q. 14(3), 313–316 (matching in convex bipartite graphs).
 """
 
 from __future__ import annotations
