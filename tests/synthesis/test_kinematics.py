@@ -70,3 +70,17 @@ def test_determinants_are_multilinear_in_the_stationary_ratios():
         lo[k], hi[k] = -1.5, -4.0
         d = combination_determinants(c.mechanism, np.stack([lo, (lo + hi) / 2, hi]), combos)
         assert d[1] == pytest.approx((d[0] + d[2]) / 2, rel=1e-9, abs=1e-9)
+
+
+def test_four_engaged_cofactors_by_laplace_expansion_equal_lu_determinants():
+    """The k = 4 cofactors (Laplace expansion along two rows) equal numpy's LU determinants of each minor."""
+    import itertools
+
+    from epicyclic.synthesis.kinematics import _cofactors
+
+    funcs = np.random.default_rng(0).normal(size=(3, 12, 5))
+    combos = np.array(list(itertools.combinations(range(12), 4)))
+    picked = funcs[:, combos, :]
+    expected = np.stack([(-1) ** (i + 4) * np.linalg.det(picked[..., [j for j in range(5) if j != i]])
+                         for i in range(5)], axis=-1)
+    assert np.allclose(_cofactors(funcs, combos), expected, rtol=0, atol=1e-12 * np.abs(expected).max())

@@ -43,8 +43,17 @@ import numpy as np
 from ..results.zero import clean_array
 from .mechanisms import Mechanism
 
-__all__ = ["element_count", "element_shafts", "element_rows", "willis_matrices", "combination_determinants",
-           "hadamard_bound", "corner_points", "ratio_ranges", "gear_ratios"]
+__all__ = [
+    "combination_determinants",
+    "corner_points",
+    "element_count",
+    "element_rows",
+    "element_shafts",
+    "gear_ratios",
+    "hadamard_bound",
+    "ratio_ranges",
+    "willis_matrices",
+]
 
 
 def element_count(shafts: int) -> int:
@@ -176,6 +185,25 @@ def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:
         for i in range(4):
             p, q, r = [j for j in range(4) if j != i]
             det = m[(p, q)] * c[..., r] - m[(p, r)] * c[..., q] + m[(q, r)] * c[..., p]
+            out[..., i] = det if (i + k) % 2 == 0 else -det
+        return out
+    if k == 4 and d == 5:  # four engaged: Laplace expansion along the first two rows (2×2 minors, no LU)
+        pairs = list(itertools.combinations(range(5), 2))
+        first, second = [i for i, _ in pairs], [j for _, j in pairs]
+        # 2×2 minors of every pair of element rows once (P, E, E, 10), then gathered per combination
+        minors = funcs[:, :, None, first] * funcs[:, None, :, second] - funcs[:, :, None, second] * funcs[:, None, :, first]
+        upper = minors[:, combos[:, 0], combos[:, 1], :]  # (P, T, 10)
+        lower = minors[:, combos[:, 2], combos[:, 3], :]
+        top = {pair: upper[..., n] for n, pair in enumerate(pairs)}
+        bottom = {pair: lower[..., n] for n, pair in enumerate(pairs)}
+        out = np.empty(upper.shape[:2] + (5,))
+        for i in range(5):
+            cols = [j for j in range(5) if j != i]
+            det = np.zeros(upper.shape[:2])
+            for p, q in itertools.combinations(range(4), 2):
+                r, t = (x for x in range(4) if x not in (p, q))
+                term = top[(cols[p], cols[q])] * bottom[(cols[r], cols[t])]
+                det += term if (p + q) % 2 else -term  # sign (-1)^(p + q + 1) of the Laplace expansion
             out[..., i] = det if (i + k) % 2 == 0 else -det
         return out
     picked = funcs[:, combos, :]  # (P, T, k, d)

@@ -19,6 +19,13 @@ vectorised over all architectures of the mechanism:
    input nor output must carry a shift element, or that set idles in every
    gear and the transmission needs one set fewer.
 
+Exact pruning (``prune=True``): the first level examines only the element sets
+holding a combination that reaches the rarest target (:func:`_pruned_level0`);
+an architecture none of whose boxes admits one combination per target is dropped
+(:func:`_matched`: the fit gives every gear its own combination), its survivors
+keeping every box of the range test; and combinations that reach no target in any
+sub-box are skipped in the bisection.
+
 Survivors go to :mod:`~epicyclic.synthesis.fitting`.  Nothing here fits a
 ratio, so screening never drops an architecture that can reach the targets
 (up to the tolerance widening of the ranges).
@@ -27,7 +34,8 @@ References
 ----------
 Kahraman et al. 2004, J. Mech. Des. 126(6), section 3 (search that eliminates
 kinematic configurations before the tooth counts); Moore, R. E. (1966),
-*Interval Analysis* (bounds over boxes, bisection).
+*Interval Analysis* (bounds over boxes, bisection); Glover, F. (1967), Naval Res.
+Logist. Q. 14(3), 313–316 (matching in convex bipartite graphs).
 """
 
 from __future__ import annotations
@@ -39,10 +47,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..results.zero import clean_array
-from .kinematics import combination_determinants, element_rows, element_shafts, hadamard_bound, ratio_ranges
+from .kinematics import (
+    combination_determinants,
+    element_rows,
+    element_shafts,
+    hadamard_bound,
+    ratio_ranges,
+)
 from .mechanisms import PORTS, Mechanism
 
-__all__ = ["Placement", "Layout", "layout", "multilinear", "screen"]
+__all__ = ["Layout", "Placement", "layout", "multilinear", "screen"]
 
 
 @dataclass(frozen=True)
@@ -102,17 +116,29 @@ class Layout:
         return [(int(self.brake_shafts[a]), int(a), int(b)) for a, b in zip(starts, stops)]
 
     @functools.cached_property
-    def block_combos(self) -> list[np.ndarray]:
-        """Per block of :attr:`blocks`: the combinations its element sets can engage (brakes among its own).
+    def block_starts(self) -> np.ndarray:
+        """First element set of each block of :attr:`blocks`."""
+        return np.array([start for _, start, _ in self.blocks], dtype=np.int64)
 
-        Every combination of an element set engages only that set's brakes, so a block
-        whose combinations together miss a target cannot hold an architecture that
-        reaches it: the exact block-level bound of the screening.
+    @functools.cached_property
+    def containing(self) -> tuple[np.ndarray, np.ndarray]:
+        """Inverse of ``set_combos`` (CSR): element sets ``indices[indptr[t]:indptr[t + 1]]`` hold combination t.
+
+        Built in passes over ranges of combinations (at most 2^23 entries sorted at a time), so
+        the ten-speed table (6 · 10^7 entries) needs no (A·C,) int64 sort order at once.
         """
-        shafts_of = element_shafts(self.shafts)
-        brake_bits = np.array([sum(1 << shafts_of[e][0] for e in row if len(shafts_of[e]) == 1)
-                               for row in self.combos], dtype=np.int64)
-        return [np.flatnonzero((brake_bits & ~bits) == 0) for bits, _, _ in self.blocks]
+        width = self.set_combos.shape[1]
+        flat = self.set_combos.ravel()
+        indptr = np.concatenate([[0], np.cumsum(np.bincount(flat, minlength=len(self.combos)))]).astype(np.int64)
+        indices = np.empty(flat.size, dtype=np.int32)
+        first = 0
+        while first < len(self.combos):
+            stop = max(int(np.searchsorted(indptr, indptr[first] + (1 << 23), side="right")) - 1, first + 1)
+            where = np.flatnonzero((flat >= first) & (flat < stop))
+            order = np.argsort(flat[where], kind="stable")
+            indices[indptr[first]:indptr[stop]] = where[order] // width
+            first = stop
+        return indptr, indices
 
     @functools.cached_property
     def columns(self) -> np.ndarray:
@@ -265,6 +291,84 @@ def _passes_rows(masks: np.ndarray, full: int, gears: int) -> np.ndarray:
     return (union == full) & (useful >= gears)
 
 
+def _matched(masks: np.ndarray, gears: int) -> np.ndarray:
+    """Rows of ``masks`` (N, C) whose combinations can take the targets one each (a matching of all targets).
+
+    A schedule gives every gear its own combination (:func:`~epicyclic.synthesis.fitting.assign`
+    picks distinct ones), so an architecture can reach the targets in a box only if the bipartite
+    graph target – combination (edge: the combination's range over the box reaches the target)
+    has a matching that covers every target.  Each mask is an interval of the sorted targets
+    (:func:`_masks`), so the graph is convex and Glover's greedy rule is exact: targets in
+    ascending order, each takes the free combination covering it whose interval ends first.
+
+    References
+    ----------
+    Glover, F. (1967), "Maximum matching in a convex bipartite graph", Naval Res. Logist. Q. 14(3), 313–316.
+    """
+    masks = masks.astype(np.int64)
+    empty = masks == 0
+    lowest = masks & -masks
+    with np.errstate(divide="ignore"):
+        first = np.where(empty, gears, np.log2(np.where(empty, 1, lowest).astype(float)).astype(np.int64))
+        last = np.where(empty, -1, np.log2(np.where(empty, 1, masks + lowest).astype(float)).astype(np.int64) - 1)
+    used = empty.copy()
+    ok = np.ones(len(masks), dtype=bool)
+    rows = np.arange(len(masks))
+    for j in range(gears):
+        key = np.where(~used & (first <= j) & (last >= j), last, gears)
+        pick = key.argmin(axis=1)
+        has = key[rows, pick] < gears
+        ok &= has
+        used[rows, pick] |= has
+    return ok
+
+
+def _holding(lay: Layout, combos: np.ndarray) -> np.ndarray:
+    """Element sets (sorted numbers) that hold at least one of these combinations (:attr:`Layout.containing`)."""
+    indptr, indices = lay.containing
+    starts = indptr[combos]
+    lengths = indptr[combos + 1] - starts
+    total = int(lengths.sum())
+    mark = np.zeros(len(lay.element_sets), dtype=bool)
+    if total:
+        mark[indices[np.repeat(starts - np.cumsum(lengths) + lengths, lengths) + np.arange(total)]] = True
+    return np.flatnonzero(mark)
+
+
+def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list, full: int,
+                   gears: int) -> list[tuple[tuple[int, int, int], bool]]:
+    """First-level survivors of one input/output pair, found from the rarest target (exact).
+
+    An element set passes only if some combination of it reaches each target, so it holds one of
+    the combinations that reach target j, for every j.  Only the element sets holding a
+    combination that reaches the target fewest element sets can reach (counted with
+    :attr:`Layout.containing`) are examined; the rest cannot pass.  The survivors come in the
+    order of the full scan: by block of brakes, then direction, then element set, each with whether
+    it admits one combination per target (:func:`_matched`).
+    """
+    indptr, _ = lay.containing
+    sizes = np.diff(indptr)
+    allowed = ((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need)
+    found, order = [], []
+    for d, (a, b, rows, _reach) in enumerate(directions):
+        masks = rows[pair] & full
+        bits = (masks[None, :] >> np.arange(gears, dtype=masks.dtype)[:, None]) & 1  # (gears, T)
+        if not bits.any(axis=1).all():
+            continue  # some target out of reach of every combination
+        rarest = int(np.argmin(bits.astype(np.int64) @ sizes))
+        held = _holding(lay, np.flatnonzero(bits[rarest]))
+        held = held[allowed[held]]
+        gathered = masks[lay.set_combos[held]]
+        keep = _passes(gathered, full, gears)
+        ok = held[keep]
+        found += [((a, b, int(j)), bool(m)) for j, m in zip(ok, _matched(gathered[keep], gears))]
+        order.append(np.stack([np.searchsorted(lay.block_starts, ok, side="right"), np.full(ok.size, d), ok]))
+    if not found:
+        return []
+    keys = np.concatenate(order, axis=1)
+    return [found[i] for i in np.lexsort(keys[::-1])]
+
+
 def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray, forward: np.ndarray,
            reverse: np.ndarray, tolerance: float, levels: int = 2,
            input_members: tuple[str, ...] = PORTS, output_members: tuple[str, ...] = PORTS,
@@ -293,9 +397,9 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         at its corners (:func:`multilinear`; exact, as they are multilinear in
         i0), instead of solving every grid point again (False: the reference).
     prune : bool, default True
-        Skip a block of element sets with the same brakes when the combinations
-        its sets can engage together miss a target or are fewer than the gears
-        (exact: no architecture in it could pass; False: the reference).
+        Examine at the first level only the element sets that hold a combination
+        reaching the rarest target (:func:`_pruned_level0`; exact: every other set
+        misses that target; False: the reference, every element set scanned).
 
     Returns
     -------
@@ -328,7 +432,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
              or not mech.free_input and role_ok(x, output_members) and role_ok(y, input_members)]
     if not pairs:
         return [], 0
-    survivors: list[tuple[int, int, int]] = []  # (input, output, element set)
+    survivors: list[tuple[tuple[int, int, int], bool]] = []  # (input, output, element set), matched
     examined = 0
     if gears > 62:
         raise ValueError("screening handles at most 62 target ratios")
@@ -342,6 +446,15 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     narrow = np.int32 if gears <= 31 else np.int64  # half the bytes to gather per architecture
     fwd_rows = np.ascontiguousarray(fwd_mask.T, dtype=narrow)  # (pairs, T)
     rev_rows = np.ascontiguousarray(rev_mask.T, dtype=narrow)
+    # combinations that reach no target in any sub-box of an input/output: valid over the whole box
+    # with no target in range (a sub-box's range lies inside it), or a determinant zero at every corner
+    # (multilinear, so zero throughout: no sub-box is valid)
+    zero = np.all(det[..., xs] == 0, axis=0) | np.all(det[..., ys] == 0, axis=0)  # (T, pairs)
+    dead_fwd = (valid & (fwd_mask & full == 0)) | zero
+    dead_rev = (valid & (rev_mask & full == 0)) | zero
+    dead = {}
+    for p, (x, y) in enumerate(pairs):
+        dead[(x, y)], dead[(y, x)] = dead_fwd[:, p], dead_rev[:, p]
     for p, (x, y) in enumerate(pairs):
         if reach_fwd[p] != full and (mech.free_input or reach_rev[p] != full):
             continue  # some target is out of reach of every combination, in both directions
@@ -353,18 +466,26 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         directions = [d for d in ([(x, y, fwd_rows, reach_fwd)] if mech.free_input else
                                   [(x, y, fwd_rows, reach_fwd), (y, x, rev_rows, reach_rev)])
                       if (mech.free_input or role_ok(d[0], input_members)) and role_ok(d[1], output_members)]
+        if prune:
+            survivors += _pruned_level0(lay, p, io, need, directions, full, gears)
+            examined += int(np.count_nonzero(((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need))) \
+                * len(directions)
+            continue
         for start, stop, block in blocks:
             covered = (lay.touched[start:stop] & need) == need
             examined += int(covered.sum()) * len(directions)
             for a, b, rows, reach in directions:
                 if reach[p] != full:
                     continue
-                if prune:  # the block's combinations together must reach every target, with enough of them
-                    reachable = rows[p][lay.block_combos[block]] & full
-                    if np.bitwise_or.reduce(reachable) != full or np.count_nonzero(reachable) < gears:
-                        continue
                 ok = _passes_rows(rows[p][lay.columns[:, start:stop]], full, gears) & covered
-                survivors += [(a, b, start + int(j)) for j in np.flatnonzero(ok)]
+                survivors += [((a, b, start + int(j)), True) for j in np.flatnonzero(ok)]
+    # the reference's order after bisection: groups (input, output) by first appearance among the
+    # first level's survivors (pruned or not), then the first level's order
+    group_rank: dict[tuple[int, int], int] = {}
+    for (a, b, _), _ok in survivors:
+        group_rank.setdefault((a, b), len(group_rank))
+    first_rank = {s: r for r, (s, _ok) in enumerate(survivors)}
+    survivors = [s for s, matched in survivors if matched]
     # bisection: every survivor keeps the boxes (at the current level) in which it may reach the targets
     boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors}
     for level in range(1, levels + 1):
@@ -376,10 +497,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         for (a, b, j), parents in boxes.items():
             groups.setdefault((a, b), []).append((j, _children(parents, level - 1, sets).ravel()))
         at = np.unique(corners[np.unique(np.concatenate([c for m in groups.values() for _, c in m]))])
-        if interpolate:  # exact: every determinant is multilinear in i0, so its corner values give it anywhere
-            det = clean_array(multilinear(whole_box[:, used, :], at, level, sets),
-                              hadamard_bound(mech, points[at], lay.combos[used])[:, :, None])
-        else:
+        if not interpolate:  # the reference: every grid point solved again, for every shaft
             det = combination_determinants(mech, points[at], lay.combos[used], element_rows(mech.shafts))
         nxt = {}
         for (a, b), members in groups.items():
@@ -387,17 +505,36 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
             counts = np.array([c.size for _, c in members])
             flat = np.concatenate([c for _, c in members])
             needed = np.unique(flat)
-            member_cols = np.searchsorted(used, lay.set_combos[sets_j])  # (M, C) columns of det
-            cols = np.unique(member_cols)
-            idx = np.searchsorted(at, corners[needed].T)  # (2^S, boxes) rows of det
-            valid, lo, hi = ratio_ranges(det[:, cols, a][idx], det[:, cols, b][idx])  # (boxes, cols)
-            mask = _masks(valid, lo, hi, targets, tolerance)
+            if interpolate:  # exact (multilinear in i0): only this group's combinations, points and two shafts
+                member_cols = lay.set_combos[sets_j]
+                cols = np.unique(member_cols)
+                live = cols[~dead[(a, b)][cols]] if prune else cols  # the others' masks are 0 in every box
+                here = np.unique(corners[needed])
+                pair = clean_array(multilinear(whole_box[:, live][:, :, [a, b]], here, level, sets),
+                                   hadamard_bound(mech, points[here], lay.combos[live])[:, :, None])
+                idx = np.searchsorted(here, corners[needed].T)  # (2^S, boxes) rows of pair
+                valid, lo, hi = ratio_ranges(pair[:, :, 0][idx], pair[:, :, 1][idx])  # (boxes, live)
+                mask = np.zeros((len(needed), len(cols)), dtype=np.int64)
+                mask[:, np.searchsorted(cols, live)] = _masks(valid, lo, hi, targets, tolerance)
+            else:
+                member_cols = np.searchsorted(used, lay.set_combos[sets_j])  # (M, C) columns of det
+                cols = np.unique(member_cols)
+                idx = np.searchsorted(at, corners[needed].T)  # (2^S, boxes) rows of det
+                valid, lo, hi = ratio_ranges(det[:, cols, a][idx], det[:, cols, b][idx])  # (boxes, cols)
+                mask = _masks(valid, lo, hi, targets, tolerance)
             owner = np.repeat(np.arange(len(members)), counts)
-            ok = _passes(mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]],
-                         full, gears)
+            gathered = mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]]
+            ok = _passes(gathered, full, gears)
+            matched = ok.copy()
+            if prune:  # an architecture none of whose boxes admits one combination per target is dropped
+                matched[ok] = _matched(gathered[ok], gears)
+            alive = np.zeros(len(members), dtype=bool)
+            np.logical_or.at(alive, owner, matched)
             for m, (j, keep) in enumerate(zip(sets_j, np.split(ok, np.cumsum(counts)[:-1]))):
-                if keep.any():
+                if alive[m]:  # its boxes stay those of the range test: the fit starts where it did
                     nxt[(a, b, int(j))] = members[m][1][keep]
         boxes = nxt
+    if levels:
+        boxes = dict(sorted(boxes.items(), key=lambda item: (group_rank[item[0][:2]], first_rank[item[0]])))
     return [Placement(a, b, tuple(int(e) for e in lay.element_sets[j]), tuple(bx))
             for (a, b, j), bx in boxes.items()], examined
