@@ -92,11 +92,13 @@ def test_the_site_opens_from_the_file_system(site):
     assert (site / "search" / "search_index.js").is_file()
 
 
-def test_theory_is_typeset_math_and_no_navigation_file_is_a_page(site):
+def test_theory_and_losses_are_typeset_math_and_no_navigation_file_is_a_page(site):
     theory = page(site, "theory")
     assert theory.count('class="arithmatex"') >= 15
     assert r"\eta_0" in theory
     assert not (site / "reference" / "api" / "SUMMARY.html").exists()
+    losses = page(site, "losses")
+    assert losses.count('class="arithmatex"') >= 9 and r"H_V = \frac" in losses  # Ohlendorf's H_V and the rest
 
 
 def test_tutorials_show_the_output_of_their_commands(site):
