@@ -10,6 +10,7 @@ from .default_point import DEFAULT_INPUT_SPEED, DEFAULT_INPUT_TORQUE, default_op
 from .errors import UnknownGearError
 from .shift_map import ShiftMap, shift_map
 from .shift_schedule import ShiftSchedule
+from .train_in_gear import TrainInGear, train_in_gear
 from .transmission import GearFreedomError, ShiftScheduleError, Transmission
 from .vehicle import Vehicle
 
@@ -29,6 +30,7 @@ __all__ = [
     "ShiftMap",
     "ShiftSchedule",
     "ShiftScheduleError",
+    "TrainInGear",
     "Transmission",
     "TransmissionAnalysis",
     "UnknownGearError",
@@ -40,4 +42,5 @@ __all__ = [
     "run_cycle",
     "shift_map",
     "solve_gear_points",
+    "train_in_gear",
 ]

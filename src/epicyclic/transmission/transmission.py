@@ -32,6 +32,7 @@ from ..errors import ModelError
 from ..model.operating_point import OperatingPoint
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
+from ..results.solution import Solution
 from ..solver import solve
 from ..solver.assembly import matrices
 from ..solver.kinematics import degrees_of_freedom, free_speed_shafts, solve_speeds
@@ -292,22 +293,40 @@ class Transmission:
             raise ModelError(f"transmission: input_speed must be a finite, non-zero 1/min value, got {input_speed!r}.")
         if not (np.isfinite(input_torque) and input_torque > 0):
             raise ModelError(f"transmission: input_torque must be a positive N·m value, got {input_torque!r}.")
-        train = self.gear_train(gear)
-        drive_op = default_operating_point(self.input, self.output, speed=input_speed, torque=input_torque)
-        run = solve
-        if self.losses or self.spin is not None:
-            from ..losses import solve_with_losses
-
-            def run(train, op):
-                return solve_with_losses(train, op, self.losses, spin=self.spin, gear=gear, input=self.input)
-
-        drive = run(train, drive_op)
+        drive = self.solve(gear, default_operating_point(self.input, self.output, speed=input_speed,
+                                                         torque=input_torque))
         ratio = self.ratio(gear)
         coast_op = OperatingPoint(speeds={self.input: input_speed},
                                   torques={self.output: input_torque * abs(ratio)},
                                   drives=[self.output], loads=[self.input])
-        coast = run(train, coast_op)
-        return gear_result(self, gear, ratio, drive, coast)
+        return gear_result(self, gear, ratio, drive, self.solve(gear, coast_op))
+
+    def solve(self, gear: str, operating_point: OperatingPoint) -> Solution:
+        """The train in ``gear`` solved at ``operating_point``, with the transmission's loss models.
+
+        The one place a gear is solved with the file's losses (mesh friction, bearings, drag, spin
+        losses): :meth:`analyze`, the pictures and the page all come here.
+
+        Parameters
+        ----------
+        gear : str
+            A gear of the schedule.
+        operating_point : OperatingPoint
+
+        Returns
+        -------
+        Solution
+
+        References
+        ----------
+        Brandenberger 1952, eq. 7 (the loss in the direction of the rolling power).
+        """
+        train = self.gear_train(gear)
+        if self.losses or self.spin is not None:
+            from ..losses import solve_with_losses
+
+            return solve_with_losses(train, operating_point, self.losses, spin=self.spin, gear=gear, input=self.input)
+        return solve(train, operating_point)
 
     def analyze_all(self, *, input_speed: float | str = DEFAULT_INPUT_SPEED,
                     input_torque: float | str = DEFAULT_INPUT_TORQUE,
