@@ -1,5 +1,7 @@
 """Lever diagrams: node heights reproduce i0 and the gear ratios; speeds lie on one line."""
 
+from pathlib import Path
+
 import pytest
 
 from epicyclic import Brake, Clutch, GearTrain, OperatingPoint, PlanetarySet, solve
@@ -265,3 +267,34 @@ def test_lever_names_stand_clear_of_the_nodes_and_inside_the_frame(gear):
                     assert not (inside_x and inside_y), f"{text.get_text()!r} covers a node marker"
     finally:
         plt.close(fig)
+
+
+def test_a_mesh_below_its_minimum_safety_is_drawn_red():
+    """ISO 6336 (docs/rating.md): at 3000 N·m the rating example's meshes fall below S_Hmin/S_Fmin, and the
+    lever diagram draws the set red and says which mesh and safety; at the file's 600 N·m it is drawn black."""
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import to_hex
+
+    from epicyclic.io import load_train_file
+    from epicyclic.plotting import figure_subject
+    from epicyclic.plotting._lever_draw import UNSAFE
+    from epicyclic.rating.train import rate_solution
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "rating" / "simple_set.toml"
+    for torque, red in (("600 N*m", False), ("3000 N*m", True)):
+        f = load_train_file(path, overrides=[f'operating_point.torques.in="{torque}"'])
+        subject = figure_subject(f)
+        rating = rate_solution(subject.solution, f.geometry, f.rating)
+        assert (not rating.ok) == red and bool(subject.context.warnings) == red
+        fig = lever_diagram(subject.solution, context=subject.context).plot()
+        try:
+            ax = fig.axes[0]
+            lever = max(ax.lines, key=lambda line: line.get_linewidth())  # the set's lever, 3.5 pt
+            assert (to_hex(lever.get_color()) == UNSAFE.lower()) == red
+            names = [t for t in ax.texts if t.get_text().startswith("P: i0")]
+            assert len(names) == 1 and ("below minimum safety" in names[0].get_text()) == red
+            if red:
+                assert "S_F 0.477 < 1.4" in names[0].get_text()  # the ring's root: the printed safety
+                assert subject.context.warnings["P"] == rating.below_minimum()["P"]
+        finally:
+            plt.close(fig)

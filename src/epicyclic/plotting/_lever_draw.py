@@ -167,10 +167,13 @@ def _draw_free(ax: Any, diagram: Any, colours: dict[str, str], texts: list[Any])
                 solid_capstyle="round", zorder=4)
         texts.append(ax.annotate(shaft + _role(diagram, shaft), (x, max(ys) + 0.04), xytext=(0, 5),
                                  textcoords="offset points", ha="center", fontsize=8, weight="bold"))
+    failing = diagram.context.warnings  # elements with a mesh below its minimum safety: drawn red
     for k, lever in enumerate(diagram.free):
         x = SPACING * k
         ys = list(lever.positions.values())
-        ax.plot([x, x], [min(ys), max(ys)], color="black", lw=3.5, solid_capstyle="round", zorder=4)
+        red = any(e in failing for e in lever.elements)
+        ax.plot([x, x], [min(ys), max(ys)], color=UNSAFE if red else "black", lw=3.5, solid_capstyle="round",
+                zorder=4)
         for y, shafts in lever.groups():
             colour = colours.get(shafts[0], "black")
             ax.plot([x], [y], "o", ms=8, color=colour, mec="black", zorder=6)
@@ -178,8 +181,11 @@ def _draw_free(ax: Any, diagram: Any, colours: dict[str, str], texts: list[Any])
             marked = any(_role(diagram, s) for s in shafts)
             texts.append(ax.annotate(text, (x, y), xytext=(7, 4), textcoords="offset points", va="bottom",
                                      fontsize=8, weight="bold" if marked else "normal", bbox=BOX))
-        texts.append(ax.annotate("\n".join(_element_label(diagram, e) for e in lever.elements), (x, 0.0),
-                                 xytext=(0, -16), textcoords="offset points", ha="center", va="top", fontsize=8))
+        label = "\n".join(_element_label(diagram, e) + (f"\nbelow minimum safety:\n{failing[e]}" if e in failing else "")
+                          for e in lever.elements)
+        texts.append(ax.annotate(label, (x, 0.0), xytext=(0, -16), textcoords="offset points", ha="center",
+                                 va="top", fontsize=8, color=UNSAFE if red else "black",
+                                 weight="bold" if red else "normal"))
     for shaft, places in spots.items():
         if shaft == HOUSING:
             continue
@@ -191,7 +197,9 @@ def _draw_free(ax: Any, diagram: Any, colours: dict[str, str], texts: list[Any])
         ax.plot([], [], color="grey", lw=1.3, ls="--", label="same shaft")
     left = min([*rail_x.values(), -0.25 * bracket, 0.0]) - 0.8
     ax.set_xlim(left, SPACING * (len(diagram.free) - 1) + 1.2)
-    ax.set_ylim(-0.22, 1.1)  # room under the nodes for the levers' names, clear of the markers and the frame
+    extra = max((sum(failing[e].count("\n") + 2 for e in lever.elements if e in failing)
+                 for lever in diagram.free), default=0)  # lines a below-minimum note adds under its lever
+    ax.set_ylim(-0.22 - 0.06 * extra, 1.1)  # room under the nodes for the names, clear of markers and frame
     ax.set_yticks([0.0, 0.2, 0.4, 0.6, 0.8, 1.0])
     ax.set_xticks([])
     ax.set_ylabel("node height on the lever (from the ratios)")
@@ -199,6 +207,10 @@ def _draw_free(ax: Any, diagram: Any, colours: dict[str, str], texts: list[Any])
     if ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, frameon=False)
     ax.grid(True, axis="y", alpha=0.25)
+
+
+#: The colour of an element below its minimum safety (as the rating's HTML tables mark it).
+UNSAFE = "#C0392B"
 
 
 def _element_label(diagram: Any, name: str) -> str:

@@ -70,6 +70,8 @@ class FigureContext:
     gear: str | None = None
     notes: tuple[str, ...] = ()
     geometry: Mapping[str, Any] = field(default_factory=dict, compare=False)
+    #: Element → what it fails (a mesh below its minimum safety, ISO 6336): drawn red where the element is.
+    warnings: Mapping[str, str] = field(default_factory=dict, compare=False)
 
     def with_note(self, note: str) -> FigureContext:
         """A copy with one more note (notes already present are not repeated)."""

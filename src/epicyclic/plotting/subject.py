@@ -59,6 +59,14 @@ def figure_subject(train_file: Any, gear: str | None = None) -> Subject:
     context = _with_gear(context, state.gear)
     for note in state.notes:
         context = context.with_note(note)
+    rating = getattr(train_file, "rating", None)
+    if rating is not None and train_file.geometry:  # meshes below their minimum safety are drawn red
+        from dataclasses import replace
+
+        from ..rating.train import rate_solution
+
+        failing = rate_solution(state.solution, train_file.geometry, rating, gear=state.gear).below_minimum()
+        context = replace(context, warnings=failing)
     return Subject(state.solution, context, state.transmission, state.gear)
 
 

@@ -310,6 +310,27 @@ class TrainRating:
         """Whether every mesh meets its minimum safeties."""
         return all(m.ok for m in self.meshes)
 
+    def below_minimum(self) -> dict[str, str]:
+        """Element → what falls short, for every element with a mesh below its minimum safety.
+
+        Returns
+        -------
+        dict
+            One line per failing mesh with the lowest safety of its two gears, e.g.
+            ``{"P": "planet-ring: S_F 1.14 < 1.4"}`` (the lowest case where a rating holds several);
+            empty where every mesh meets its minimums.
+        """
+        out: dict[str, list[str]] = {}
+        for mesh in self.meshes:
+            short = []
+            for kind in ("S_H", "S_F"):
+                value, minimum = min((float(np.min(getattr(g, kind))), getattr(g, kind + "min")) for g in mesh.gears)
+                if any(float(np.min(getattr(g, kind))) < getattr(g, kind + "min") for g in mesh.gears):
+                    short.append(f"{kind} {value:.3g} < {minimum:g}")
+            if short:
+                out.setdefault(mesh.element, []).append(f"{mesh.mesh}: {', '.join(short)}")
+        return {element: "\n".join(items) for element, items in out.items()}
+
     def mesh(self, element: str, mesh: str | None = None) -> MeshRating:
         """The rating of ``mesh`` of ``element`` (its first mesh if ``mesh`` is None).
 
