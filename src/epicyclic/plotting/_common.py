@@ -265,3 +265,39 @@ def planetary_set(solution: Solution, name: str | None) -> PlanetarySet:
         f"train {solution.train.name!r}: no planetary set named {name!r}; planetary sets are "
         f"{', '.join(repr(s.name) for s in sets)}."
     )
+
+
+def result_html(result: Any) -> str:
+    """A map-like result in a notebook: its text table above its figure (``result.table()``, ``.plot()``).
+
+    Parameters
+    ----------
+    result : EfficiencyMap or ShiftMap
+        Anything with ``table()`` and ``plot()``.
+    """
+    import html
+
+    fig = result.plot()
+    svg = figure_svg(fig)
+    fig.clf()
+    return f"<div><pre>{html.escape(result.table())}</pre>{svg}</div>"
+
+
+def save_result(result: Any, path: Path) -> Path:
+    """Write a map-like result by the suffix: ``.csv`` (``to_csv()``), ``.json`` (``to_json()``) or its
+    figure (``.png``/``.svg``/``.pdf``); the caller has checked the suffix.
+
+    Parameters
+    ----------
+    result : EfficiencyMap or ShiftMap
+    path : Path
+    """
+    path.parent.mkdir(parents=True, exist_ok=True)
+    suffix = path.suffix.lower()
+    if suffix == ".csv":
+        path.write_text(result.to_csv(), encoding="utf-8")
+    elif suffix == ".json":
+        path.write_text(result.to_json(), encoding="utf-8")
+    else:
+        save_figure(result.plot(), path)
+    return path

@@ -306,14 +306,9 @@ class ShiftMap:
         return shift_map_figure(self, figsize=figsize)
 
     def _repr_html_(self) -> str:
-        import html
+        from ..plotting._common import result_html
 
-        from ..plotting._common import figure_svg
-
-        fig = self.plot()
-        svg = figure_svg(fig)
-        fig.clf()
-        return f"<div><pre>{html.escape(self.table())}</pre>{svg}</div>"
+        return result_html(self)
 
     def save(self, path: str | Path) -> Path:
         """Write the map: ``.png``/``.svg``/``.pdf`` (figure), ``.csv`` or ``.json`` by the suffix."""
@@ -322,16 +317,9 @@ class ShiftMap:
         if suffix not in SHIFT_MAP_SUFFIXES:
             raise ModelError(f"shift map: cannot write {path.name!r}; give a file ending in "
                              f"{', '.join(SHIFT_MAP_SUFFIXES)}.")
-        path.parent.mkdir(parents=True, exist_ok=True)
-        if suffix == ".csv":
-            path.write_text(self.to_csv(), encoding="utf-8")
-        elif suffix == ".json":
-            path.write_text(self.to_json(), encoding="utf-8")
-        else:
-            from ..plotting._common import save_figure
+        from ..plotting._common import save_result
 
-            save_figure(self.plot(), path)
-        return path
+        return save_result(self, path)
 
 
 def _axis(values, name: str, quantity: str) -> np.ndarray:
