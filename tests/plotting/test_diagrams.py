@@ -135,9 +135,12 @@ def test_report_svg_is_self_contained(brandenberger):
 
 @settings(max_examples=30, deadline=None)
 @given(i0=st.floats(-6, 6).filter(lambda v: abs(v) > 0.05 and abs(v - 1) > 0.05), eta0=st.floats(0.5, 1.0),
-       n_sun=st.floats(-4000, 4000), n_carrier=st.floats(-4000, 4000), torque=st.floats(1, 500))
+       n_sun=st.floats(-4000, 4000).map(lambda v: 0.0 if abs(v) < 1e-6 else v),
+       n_carrier=st.floats(-4000, 4000).map(lambda v: 0.0 if abs(v) < 1e-6 else v), torque=st.floats(1, 500))
 def test_loss_rectangle_equals_loss_for_random_sets(i0, eta0, n_sun, n_carrier, torque):
-    # Invariant: for any set, speeds and torque, the loss rectangle's area is the solver's loss.
+    # Invariant: for any set, speeds and torque, the loss rectangle's area is the solver's loss. Speeds are 0
+    # or at least 1e-6 1/min: at 1e-307 1/min the powers underflow and the solver refuses them with a
+    # NonFiniteResultError by design (tests/solver/test_conditioning.py), no picture to compare.
     assume(abs(n_sun - n_carrier) > 1.0)
     train = GearTrain([PlanetarySet("P", "a", "b", "c", i0, stationary_efficiency=eta0)])
     op = OperatingPoint(speeds={"a": n_sun, "c": n_carrier}, torques={"a": torque}, connected=["a", "b", "c"])
