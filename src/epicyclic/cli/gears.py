@@ -74,8 +74,8 @@ def gears(
     from ..transmission import Transmission  # imported here: other commands start faster without it
     from ..transmission.input_point import input_point
 
-    spec = load_train_file(file, overrides=set_ or ())
-    transmission = Transmission.from_file(file, overrides=set_ or ())
+    spec = load_train_file(file, overrides=set_ or ())  # read once: the transmission and the report share it
+    transmission = Transmission.from_train_file(spec)
     note_rexs(file)
     point = input_point(transmission.input, spec.operating_point, speed=speed, torque=torque, units=spec.units)
     try:
@@ -84,20 +84,18 @@ def gears(
         raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission, point)}'!r}") from None
     check_finite(analysis.to_dict(), file)
     if format is OutputFormat.html:
-        emit(_gears_html(file, transmission, analysis, set_), out)
+        emit(_gears_html(file, spec, transmission, analysis), out)
         return
     detail_text = "\n\n".join(g.table() for g in analysis.gears) if detail else ""
     emit(_render(analysis, format, detail_text), out)
 
 
-def _gears_html(file: Path, transmission, analysis, overrides: list[str] | None = None) -> str:
+def _gears_html(file: Path, spec, transmission, analysis) -> str:
     import matplotlib
 
-    from ..io import load_train_file
     from ..io.gears_report import gears_html
 
     matplotlib.use("Agg")  # files only: no display needed
-    spec = load_train_file(file, overrides=overrides or ())
     return gears_html(transmission, analysis, spec.units, title=spec.title or None, source=str(file))
 
 
