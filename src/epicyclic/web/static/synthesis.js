@@ -49,6 +49,13 @@
     }
   });
 
+  // a progress answer that arrives after the search's own answer is dropped (the search is over)
+  document.addEventListener("htmx:beforeSwap", function (event) {
+    if (event.detail.target && event.detail.target.id === "synthesis-progress" && polling === null) {
+      event.detail.shouldSwap = false;
+    }
+  });
+
   // the spec from the form or from a pasted file: the pasted text starts as the form's spec
   document.addEventListener("change", function (event) {
     if (event.target.name !== "synth_mode") { return; }
