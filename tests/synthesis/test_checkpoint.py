@@ -69,3 +69,38 @@ def test_results_stream_as_tasks_finish(full):
     result = synthesize_spec(SPEC, workers=1, announce=False, on_candidates=batches.append)
     assert len(batches) == result.stats["tasks"]
     assert {c.key for b in batches for c in b} == {c.key for c in full.candidates}
+
+
+def test_the_task_log_keeps_every_finished_task_and_a_stopped_search_ranks_them(tmp_path, full):
+    """Every task is logged as it finishes (log_task); a record cut short (a writer stopped while writing) is left
+    out; the finished tasks, assembled, are the search's candidates with the reason it stopped."""
+    from epicyclic.synthesis.checkpoint import log_task, logged_tasks
+    from epicyclic.synthesis.estimate import count, estimate
+    from epicyclic.synthesis.search import assemble, plan
+
+    log = tmp_path / "tasks.log"
+    result = synthesize_spec(SPEC, workers=1, announce=False, on_task=lambda k, r: log_task(log, k, r))
+    done = logged_tasks(log)
+    assert sorted(done) == list(range(result.stats["tasks"]))
+    whole = log.read_bytes()
+    log.write_bytes(whole[:-7])  # the last record cut short
+    assert sorted(logged_tasks(log)) == list(range(result.stats["tasks"] - 1))
+    assert logged_tasks(tmp_path / "none.log") == {}
+    tasks = plan(SPEC)
+    bound = count(SPEC, (m for t in tasks for m in t.mechanisms))
+    again = assemble(SPEC, [done[k] for k in range(len(tasks))], estimate(SPEC), bound)
+    assert [c.key for c in again.candidates] == [c.key for c in full.candidates]
+    assert again.stats["complete"] and "stopped" not in again.stats
+    half = assemble(SPEC, [done.get(k) if k < 2 else None for k in range(len(tasks))], estimate(SPEC), bound,
+                    stopped="cancelled")
+    assert half.stats["tasks_done"] == 2 and not half.stats["complete"]
+    assert {c.key for c in half.candidates} == {c.key for k in (0, 1) for c in done[k].candidates}
+    assert f"INCOMPLETE: cancelled after 2 of {len(tasks)} tasks" in half.table()
+
+
+def test_the_task_log_is_read_with_the_restricted_unpickler(tmp_path):
+    from epicyclic.synthesis.checkpoint import logged_tasks
+
+    log = tmp_path / "tasks.log"
+    log.write_bytes(pickle.dumps((0, os.system)))  # no callable from the file is ever built
+    assert logged_tasks(log) == {}

@@ -43,3 +43,26 @@ def test_lever_plot_and_errors(result):
         result.plot(gear="X")
     with pytest.raises(SynthesisError, match="kind must be"):
         result.plot(kind="pie")
+
+
+def test_candidate_files_are_the_ones_written_and_the_table_takes_an_action(result, tmp_path):
+    paths = result.write_toml(tmp_path)
+    assert [p.read_text(encoding="utf-8") for p in paths] == [result.candidate_toml(k) for k in (1, 2, 3)]
+    with pytest.raises(SynthesisError, match="rank must lie in"):
+        result.candidate_toml(0)
+    table = result.html(lambda rank: f"<button>{rank}</button>", "open")
+    assert table.count("<button>") == 3 and "<th>open</th>" in table and result._repr_html_() == result.html()
+
+
+@pytest.mark.parametrize("title", ['a "quoted" title', "two\nlines [x]", "control \x7f\x1b and \\ ü"])
+def test_a_candidate_file_holds_any_title(title):
+    """The title is a TOML string (escaped), on one line in the comment: the file always reads back."""
+    import tomllib
+
+    from epicyclic.io import loads_train_file
+
+    found = synthesize([2.46, 1.46, 1.0, -2.18], sets=2, elements={"brakes": 2, "clutches": 2, "engaged": 2},
+                       constraints={"top": 1, "title": title}, workers=1, announce=False)
+    text = found.candidate_toml(1)
+    assert tomllib.loads(text)["title"] == f"{title}, candidate 1"
+    assert loads_train_file(text).title.endswith("candidate 1")  # it reads (control characters dropped from the title)

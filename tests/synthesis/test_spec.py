@@ -170,3 +170,14 @@ def test_from_file_and_its_errors(tmp_path):
         with pytest.raises(SynthesisError, match=messages[name]) as info:
             SynthesisSpec.from_file(path)
         assert name in str(info.value)
+
+
+def test_from_text_names_the_source_it_is_given(tmp_path):
+    text = '[targets]\nforward = [2.46, 1.46, 1.0]\n[sets]\nsimple = 2\n[elements]\nbrakes = 2\nclutches = 2\n'
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    assert SynthesisSpec.from_text(text, "pasted spec") == SynthesisSpec.from_file(path)
+    with pytest.raises(SynthesisError, match=r"^pasted spec: \[bounds\], key 'sun'"):
+        SynthesisSpec.from_text(text + "[bounds]\nsun = [17]\n", "pasted spec")
+    with pytest.raises(SynthesisError, match="^pasted spec: not valid TOML"):
+        SynthesisSpec.from_text("[targets", "pasted spec")

@@ -287,10 +287,13 @@ class Candidate:
 
     def toml(self, title: str = "synthesised transmission") -> str:
         """A train file (TOML) with a ``[transmission]`` table; ``epicyclic gears`` reads it."""
-        lines = [f"# {title}", f"# Architecture: {self.describe()}",
+        import json
+
+        # the title as a TOML basic string (JSON's escapes are TOML's), on one line in the comment
+        lines = [f"# {''.join(c if c.isprintable() else ' ' for c in title)}", f"# Architecture: {self.describe()}",
                  "# Ratios: " + ", ".join(f"{g}: {r:.4f} (target {t:.4f})"
                                           for g, r, t in zip(self.gears, self.ratios, self.targets)),
-                 "# Written by epicyclic synthesize.", "", f'title = "{title}"']
+                 "# Written by epicyclic synthesize.", "", "title = " + json.dumps(title, ensure_ascii=False).replace("\x7f", "\\u007f")]
         for k, t in enumerate(self.teeth):
             s, r, c = (self.shaft_name(x) for x in self.mechanism.set_shafts(k))
             lines += ["", "[[planetary]]", f'name = "P{k + 1}"', f'sun = "{s}"', f'ring = "{r}"', f'carrier = "{c}"']

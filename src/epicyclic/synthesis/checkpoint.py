@@ -33,7 +33,7 @@ from typing import Any
 
 from .spec import SynthesisError, SynthesisSpec
 
-__all__ = ["Checkpoint", "fingerprint"]
+__all__ = ["Checkpoint", "fingerprint", "log_task", "logged_tasks"]
 
 _FORMAT = "epicyclic synthesis checkpoint"
 #: Spec fields that do not change what the tasks return (only what is shown, or when the search stops).
@@ -140,3 +140,44 @@ class Checkpoint:
                                protocol=pickle.HIGHEST_PROTOCOL)
         write_atomic(self.path, payload)
         self._written = now
+
+
+def log_task(path: str | Path, index: int, result: Any) -> None:
+    """Append one finished task to a task log: a record per task, each written at once, none rewritten.
+
+    Unlike a :class:`Checkpoint` (the whole file rewritten at most once a second), every task is on
+    disk as soon as it finishes: a search whose process is stopped (the page's Cancel) keeps every
+    task it finished.
+
+    Parameters
+    ----------
+    path : str or Path
+    index : int
+        The task's position in the plan.
+    result : TaskResult
+    """
+    record = pickle.dumps((int(index), result), protocol=pickle.HIGHEST_PROTOCOL)
+    with open(path, "ab") as file:
+        file.write(record)
+        file.flush()
+
+
+def logged_tasks(path: str | Path) -> dict[int, Any]:
+    """The tasks of a task log (:func:`log_task`): index → TaskResult; a record cut short is left out.
+
+    Read with the restricted unpickler of the checkpoints (epicyclic's own value objects only).
+
+    Parameters
+    ----------
+    path : str or Path
+    """
+    path = Path(path)
+    data = path.read_bytes() if path.exists() else b""
+    stream, done = io.BytesIO(data), {}
+    while stream.tell() < len(data):
+        try:
+            index, result = _Restricted(stream).load()
+        except (pickle.UnpicklingError, EOFError, AttributeError, ImportError, ValueError, TypeError):
+            break  # the last record, cut short by a stopped writer
+        done[int(index)] = result
+    return done

@@ -37,7 +37,7 @@ from dataclasses import dataclass
 
 from .spec import SynthesisError, SynthesisSpec
 
-__all__ = ["SCREENING_RATE", "SearchEstimate", "labelled_patterns", "architectures_per_mechanism", "estimate",
+__all__ = ["SCREENING_RATE", "SearchEstimate", "duration", "labelled_patterns", "architectures_per_mechanism", "estimate",
            "count", "check"]
 
 #: Architectures screened per second per worker, measured (docs/performance.md, bench_synthesis.py).
@@ -80,10 +80,10 @@ class SearchEstimate:
         """
         what = "at most" if self.exact else "about"
         text = (f"{what} {self.architectures:.3g} architectures on {self.mechanisms:,} mechanisms"
-                f"{'' if self.exact else ' (estimated)'}, {what} {_duration(self.worker_seconds)} of screening on "
+                f"{'' if self.exact else ' (estimated)'}, {what} {duration(self.worker_seconds)} of screening on "
                 "one worker")
         if workers and workers > 1:
-            text += f", {_duration(self.worker_seconds / workers)} on {workers}"
+            text += f", {duration(self.worker_seconds / workers)} on {workers}"
         return text
 
     def to_dict(self) -> dict:
@@ -92,7 +92,13 @@ class SearchEstimate:
                 "rate_per_worker_per_second": self.rate, "worker_seconds": self.worker_seconds}
 
 
-def _duration(seconds: float) -> str:
+def duration(seconds: float) -> str:
+    """A time in words for estimates and progress: ``under 1 s``, ``42 s``, ``12 min``, ``3.5 h``.
+
+    Parameters
+    ----------
+    seconds : float
+    """
     if seconds < 1:
         return "under 1 s"
     if seconds < 90:

@@ -6,6 +6,7 @@ import csv
 import html
 import io
 import json
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
@@ -144,7 +145,10 @@ class SynthesisResult:
         text = (f"{s['candidates']} candidates from {s['architectures']:,} architectures on {s['mechanisms']:,} "
                 f"mechanisms ({s['screened']:,} passed screening, {s['fitted']:,} fitted); {s['tasks']} tasks "
                 f"on {s['workers']} worker(s), {s['seconds']:.1f} s")
-        if not s.get("complete", True):
+        if not s.get("complete", True) and s.get("stopped"):
+            text += (f". INCOMPLETE: {s['stopped']} after {s['tasks_done']} of {s['tasks']} tasks; the candidates are "
+                     "those of the finished tasks")
+        elif not s.get("complete", True):
             text += (f". INCOMPLETE: stopped at the time limit ({self.spec.time_limit:g} s) after "
                      f"{s['tasks_done']} of {s['tasks']} tasks; raise [search] time_limit for the whole space")
         return text
@@ -184,9 +188,49 @@ class SynthesisResult:
         return "\n".join(lines + ["", self._footer()])
 
     def _repr_html_(self) -> str:
-        head = "".join(f"<th>{html.escape(h)}</th>" for h in self.HEADER)
-        body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in self._rows())
+        return self.html()
+
+    def html(self, action: Callable[[int], str] | None = None, action_header: str = "") -> str:
+        """The ranked table as HTML (every value escaped), with the search statistics below.
+
+        Parameters
+        ----------
+        action : callable (rank) → HTML, optional
+            A first cell per row (the page's "Open in editor" button); its HTML is inserted as it is.
+        action_header : str, default ""
+            That column's heading.
+
+        Returns
+        -------
+        str
+        """
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in ((action_header,) if action else ()) + self.HEADER)
+        body = "".join("<tr>" + (f"<td>{action(k)}</td>" if action else "")
+                       + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>"
+                       for k, r in enumerate(self._rows(), 1))
         return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table><p>{html.escape(self._footer())}</p>"
+
+    def candidate_toml(self, rank: int) -> str:
+        """The train file of candidate ``rank`` (1: the best), as :meth:`write_toml` writes it.
+
+        Parameters
+        ----------
+        rank : int
+
+        Returns
+        -------
+        str
+
+        Raises
+        ------
+        SynthesisError
+            A rank out of range.
+        """
+        from .spec import SynthesisError
+
+        if not 1 <= rank <= len(self.candidates):
+            raise SynthesisError(f"candidate: rank must lie in 1…{len(self.candidates)}, got {rank!r}.")
+        return self.candidates[rank - 1].toml(f"{self.spec.title}, candidate {rank}")
 
     def __str__(self) -> str:
         return self.table()
@@ -247,8 +291,8 @@ class SynthesisResult:
         from ..io.output import write_atomic
 
         directory = Path(directory)
-        return [write_atomic(directory / f"candidate_{k:02d}.toml", c.toml(f"{self.spec.title}, candidate {k}"))
-                for k, c in enumerate(self.top[:count], 1)]
+        return [write_atomic(directory / f"candidate_{k:02d}.toml", self.candidate_toml(k))
+                for k in range(1, len(self.top[:count]) + 1)]
 
     def plot(self, rank: int = 1, gear: str | None = None, kind: str = "chart") -> Any:
         """Figure of candidate ``rank``: its speed chart across all gears or its lever diagram in one gear.

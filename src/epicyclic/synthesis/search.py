@@ -29,7 +29,7 @@ from .screening import _grid, layout, screen
 from .spec import SynthesisError, SynthesisSpec
 from .teeth import choose_teeth, tooth_options
 
-__all__ = ["Task", "TaskResult", "plan", "search_task", "synthesize", "synthesize_spec", "bounds"]
+__all__ = ["Task", "TaskResult", "plan", "search_task", "synthesize", "synthesize_spec", "assemble", "bounds"]
 
 
 @dataclass(frozen=True)
@@ -151,7 +151,8 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
                     workers: int | None = None, processes: bool | None = None,
                     progress: Callable[[int, int], None] | None = None, chunk: int | None = None,
                     announce: Callable[[str], None] | bool = True, checkpoint: str | None = None,
-                    on_candidates: Callable[[tuple[Candidate, ...]], None] | None = None):
+                    on_candidates: Callable[[tuple[Candidate, ...]], None] | None = None,
+                    on_task: Callable[[int, TaskResult], None] | None = None):
     """Run a validated :class:`SynthesisSpec` and rank the candidates (see :func:`synthesize`).
 
     Before anything is enumerated the size of the search is estimated from counting
@@ -187,6 +188,9 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
         atomically as tasks finish; a search started again with it runs only the missing tasks.
     on_candidates : callable (tuple of Candidate), optional
         Called with each finished task's candidates as the task finishes (results stream back).
+    on_task : callable (task index, TaskResult), optional
+        Called with each finished task's index in the plan and its whole result, as it finishes
+        (what :func:`assemble` ranks; the page keeps them, so that a stopped search keeps its candidates).
 
     Returns
     -------
@@ -206,8 +210,6 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
 
     from .distributed import check_workers, run_tasks, use_processes
     from .estimate import check, count, estimate
-    from .ranking import rank
-    from .results import SynthesisResult
 
     say = (lambda text: print(text, file=sys.stderr)) if announce is True else (announce or (lambda text: None))
     workers = check_workers(workers)
@@ -242,6 +244,8 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
             saved.add(index, result)
         if on_candidates is not None:
             on_candidates(result.candidates)
+        if on_task is not None:
+            on_task(index, result)
 
     try:
         results, used = run_tasks(search_task, tasks, client=client, scheduler=scheduler, workers=n,
@@ -250,6 +254,45 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
     finally:
         if saved is not None:  # also when interrupted: what finished is kept
             saved.save(force=True)
+    return assemble(spec, results, first, size, workers=used, processes=with_processes, resumed=before,
+                    seconds=time.perf_counter() - start)
+
+
+def assemble(spec: SynthesisSpec, results: Sequence[TaskResult | None], estimated: Any, bound: Any, *,
+             workers: int = 1, processes: bool = False, resumed: int = 0, seconds: float = 0.0,
+             stopped: str | None = None):
+    """The ranked result of a search's task results (None: a task not finished), with its statistics.
+
+    Candidates found by several tasks are kept once and ranked (:func:`~epicyclic.synthesis.ranking.rank`);
+    the statistics count what the finished tasks did.
+
+    Parameters
+    ----------
+    spec : SynthesisSpec
+    results : sequence of TaskResult or None
+        One per task of the plan, in plan order.
+    estimated, bound : SearchEstimate
+        The estimate from counting formulas and the bound over the enumerated mechanisms.
+    workers : int, default 1
+    processes : bool, default False
+    resumed : int, default 0
+        Tasks taken from a checkpoint.
+    seconds : float, default 0
+        Wall time of the search.
+    stopped : str, optional
+        Why an unfinished search stopped when not at ``spec.time_limit`` ("cancelled", ...): the result says so.
+
+    Returns
+    -------
+    SynthesisResult
+
+    References
+    ----------
+    Kahraman et al. 2004, J. Mech. Des. 126(6), 1071–1081.
+    """
+    from .ranking import rank
+    from .results import SynthesisResult
+
     finished = [r for r in results if r is not None]
     unique: dict[tuple, Candidate] = {}
     for r in finished:
@@ -257,8 +300,8 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
             unique.setdefault(c.key, c)
     ranked, standings = rank(list(unique.values()), dict(spec.weights), spec.module)
     stats = {
-        "tasks": len(tasks), "tasks_done": len(finished), "complete": len(finished) == len(tasks),
-        "workers": used, "processes": with_processes,
+        "tasks": len(results), "tasks_done": len(finished), "complete": len(finished) == len(results),
+        "workers": workers, "processes": processes,
         "mechanisms": sum(r.mechanisms for r in finished),
         "architectures": sum(r.architectures for r in finished),
         "screened": sum(r.screened for r in finished),
@@ -268,9 +311,11 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
         "candidates": len(ranked),
         "task_seconds": sum(r.seconds for r in finished),
         "task_cpu_seconds": sum(r.cpu_seconds for r in finished),
-        "estimate": first.to_dict(), "bound": size.to_dict(), "resumed_tasks": before,
-        "seconds": time.perf_counter() - start,
+        "estimate": estimated.to_dict(), "bound": bound.to_dict(), "resumed_tasks": resumed,
+        "seconds": seconds,
     }
+    if stopped and not stats["complete"]:
+        stats["stopped"] = stopped
     return SynthesisResult(spec, ranked, stats, standings)
 
 

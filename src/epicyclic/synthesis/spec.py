@@ -503,13 +503,38 @@ class SynthesisSpec:
             A bad file or value; the message names the file, the table and the key
             (``spec.toml: [bounds], key 'sun': ...``).
         """
-        from ..io.source import InputFileError, parse_toml, read_source
+        from ..io.source import InputFileError, read_source
 
         path = Path(path)
         try:
-            data = parse_toml(read_source(path), str(path))
+            text = read_source(path)
         except InputFileError as exc:
             raise SynthesisError(str(exc)) from None
+        return cls.from_text(text, str(path))
+
+    @classmethod
+    def from_text(cls, text: str, source: str = "spec.toml") -> SynthesisSpec:
+        """Read a TOML specification from its text (the keys of :meth:`from_file`; the page reads it so).
+
+        Parameters
+        ----------
+        text : str
+            The TOML text.
+        source : str, default "spec.toml"
+            What the messages call it, in place of a file name.
+
+        Raises
+        ------
+        SynthesisError
+            Bad TOML or a bad value, named by ``source``, table and key.
+        """
+        from ..io.source import InputFileError, parse_toml
+
+        try:
+            data = parse_toml(text, source)
+        except InputFileError as exc:
+            raise SynthesisError(str(exc)) from None
+        path = source
         tables_known = ("targets", "sets", "elements", "bounds", "search", "ranking", "sizing")
         unknown = set(data) - {"title", *tables_known}
         if unknown:

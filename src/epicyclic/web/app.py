@@ -51,6 +51,8 @@ from .guards import BodyLimit, BodyTooLarge, BodyTooSlow, SameOrigin, SecurityHe
 from .jobs import Jobs, failure
 from .render import Reply, render
 from .state import FormError, PageState, clean_text, restored_state
+from .synthesis_routes import Searches, synthesis_routes
+from .synthesis_tool import PAGE_ARCHITECTURES, PAGE_SECONDS
 from .views import apply, download, figure, open_file, open_text, save_figure, tool, tool_fields
 
 __all__ = ["Limits", "create_app", "LOOPBACK_HOSTS", "UNIT_LABELS"]
@@ -93,6 +95,11 @@ class Limits:
         (``epicyclic serve`` does; the default example first), so that opening an example shows them at once.
     allowed_hosts : tuple of str
         Host headers accepted (loopback names by default; ``("*",)`` for any).
+    synthesis_architectures : int, default 2e7
+        Largest synthesis the page runs (architectures; larger ones are refused before they start and left to
+        ``epicyclic synthesize``; :mod:`epicyclic.web.synthesis_tool`).
+    synthesis_seconds : float, default 60
+        Seconds after which the page stops a synthesis (keeping the candidates found by then).
     """
 
     max_body: int = 4 * MAX_FILE_BYTES
@@ -106,6 +113,8 @@ class Limits:
     picture_cache: int = 64 << 20
     draw_examples: bool = False
     allowed_hosts: tuple[str, ...] = LOOPBACK_HOSTS
+    synthesis_architectures: int = PAGE_ARCHITECTURES
+    synthesis_seconds: float = PAGE_SECONDS
 
 
 def _reply(reply: Reply) -> Response:
@@ -271,6 +280,8 @@ def create_app(limits: Limits | None = None) -> Starlette:
         Route("/download/{kind}", report, methods=["POST"]),
         Mount("/static", StaticFiles(packages=[("epicyclic.web", "static")]), name="static"),
     ]
+    searches = Searches(limits.workers - 1)  # the Synthesis tab (epicyclic.web.synthesis_routes)
+    routes[-1:-1] = synthesis_routes(searches, limits, form_of, client_of, run)
     middleware = [
         Middleware(SecurityHeaders),
         Middleware(TrustedHostMiddleware, allowed_hosts=list(limits.allowed_hosts)),
@@ -279,4 +290,5 @@ def create_app(limits: Limits | None = None) -> Starlette:
     ]
     app = Starlette(routes=routes, middleware=middleware, lifespan=lifespan)
     app.state.limits = limits
+    app.state.searches = searches
     return app

@@ -18,7 +18,7 @@
   });
 
   // ---- tabs: results, gears, pictures, geometry and rating, tools (the panels are in the results)
-  var TABS = ["results", "gears", "pictures", "geometry", "tools"];
+  var TABS = ["results", "gears", "pictures", "geometry", "tools", "synthesis"];
   function currentTab() { var ws = byId("ws"); return ws ? ws.getAttribute("data-tab") || "results" : "results"; }
   function showTab(tab, resize) {
     if (TABS.indexOf(tab) < 0) { tab = "results"; }
@@ -110,6 +110,9 @@
   }
   var saving = null;
   function saveSoon() { clearTimeout(saving); saving = setTimeout(saveDraft, 250); }
+
+  // for synthesis.js: a candidate opened in the editor asks first when the open file has unsaved edits
+  window.epicyclicPage = { isDirty: function () { return isDirty(); } };
 
   window.addEventListener("beforeunload", function (event) {
     if (isDirty()) { saveDraft(); event.preventDefault(); event.returnValue = ""; }
