@@ -87,8 +87,9 @@ def _mist_by_quadrature(drag, slip):
 
 
 @pytest.mark.parametrize("factor", [1.03, 1.1, 2.0, 10.0])
-def test_mist_torque_is_the_written_out_integral(factor):
-    drag = _drag()
+@pytest.mark.parametrize("plates", [(65.0, 80.0), (30.0, 120.0)])  # r_o/r_i = 1.23 and 4
+def test_mist_torque_is_the_written_out_integral(factor, plates):
+    drag = _drag(inner_radius=plates[0], outer_radius=plates[1])
     slip = factor * drag.peak_slip(ETA, RHO)
     assert float(drag.mist_torque(slip, ETA, RHO)) == pytest.approx(_mist_by_quadrature(drag, slip), rel=1e-9)
 
