@@ -398,7 +398,10 @@ class ClutchDrag:
         return self.torque(slip, viscosity, density) * np.abs(np.asarray(slip, dtype=float)) * RPM_TO_RAD_S
 
     def peak_slip(self, viscosity: float, density: float) -> float:
-        """Slip speed (1/min) of the largest drag: where the gap's pumped flow Q(r_o) equals the supply.
+        """Slip speed (1/min) where the film starts to aerate: the gap's pumped flow Q(r_o) equals the supply.
+
+        The film's drag is largest there; with the mist (``mist=True``) the maximum lies slightly
+        above it (a few per cent in slip and torque), and the drag falls gradually past it.
 
         Parameters
         ----------
