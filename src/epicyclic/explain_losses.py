@@ -52,7 +52,8 @@ LOSS_TEXT = {
         "clutch": "{name} open, slip Δn = {slip} 1/min (ω = {omega} rad/s): film flow Q(r_o) = π ρ ω² h³ (r_o² − "
                   "r_i²)/(40 η ln(r_o/r_i)) = {flow} l/min per gap, supply {supply} → film to r_e = {re} mm",
         "clutch_t": "    T = N·f_g·π·η·ω·(r_e⁴ − r_i⁴)/(2h) = {gaps}·{groove}·π·{eta}e-3·{omega}·({re}⁴ − {ri}⁴)e-12/"
-                    "(2·{h}e-3) = {torque} N·m → P = T·ω = {loss} W (Yuan et al. 2007)",
+                    "(2·{h}e-3) = {film} N·m film (Yuan et al. 2007) + {mist} N·m oil mist r_e … r_o (Iqbal et al. 2013) "
+                    "= {torque} N·m → P = T·ω = {loss} W",
         "engaged": "{name} engaged: no drag",
         "pump": "pump on {shaft}: T = V·Δp/(2π·η_hm) = {v}e-6·{p}e5/(2π·{eta}) = {torque} N·m at n = {speed} "
                 "1/min → P = {loss} W",
@@ -83,7 +84,8 @@ LOSS_TEXT = {
                   "π ρ ω² h³ (r_o² − r_i²)/(40 η ln(r_o/r_i)) = {flow} l/min je Spalt, Zufluss {supply} → Film bis "
                   "r_e = {re} mm",
         "clutch_t": "    T = N·f_g·π·η·ω·(r_e⁴ − r_i⁴)/(2h) = {gaps}·{groove}·π·{eta}e-3·{omega}·({re}⁴ − {ri}⁴)e-12/"
-                    "(2·{h}e-3) = {torque} N·m → P = T·ω = {loss} W (Yuan et al. 2007)",
+                    "(2·{h}e-3) = {film} N·m Film (Yuan et al. 2007) + {mist} N·m Ölnebel r_e … r_o (Iqbal et al. 2013) "
+                    "= {torque} N·m → P = T·ω = {loss} W",
         "engaged": "{name} geschlossen: kein Schleppmoment",
         "pump": "Pumpe an {shaft}: T = V·Δp/(2π·η_hm) = {v}e-6·{p}e5/(2π·{eta}) = {torque} N·m bei n = {speed} "
                 "1/min → P = {loss} W",
@@ -202,6 +204,8 @@ def _spin_lines(solution, spin, t, temperature, gear, input) -> list[str]:
         lines.append(t["clutch_t"].format(gaps=drag.gaps, groove=fmt(drag.groove_factor, 3), eta=fmt(float(eta), 5),
                                           omega=fmt(abs(slip) * RPM, 5), re=fmt(r_e, 5), ri=fmt(drag.inner_radius, 5),
                                           h=fmt(drag.clearance, 4), torque=fmt(torque, 5),
+                                          film=fmt(float(drag.film_torque(slip, eta, rho)), 5),
+                                          mist=fmt(float(drag.mist_torque(slip, eta, rho)), 5),
                                           loss=fmt(torque * abs(slip) * RPM, 5)))
     if spin.pump is not None:
         shaft = spin.pump.shaft or input

@@ -77,7 +77,7 @@ def test_film_flow_is_yuans_eq_9():
 
 
 def test_drag_rises_linearly_peaks_where_the_supply_runs_short_and_falls():
-    drag = _drag(supply=2.0)
+    drag = _drag(supply=2.0, mist=False)  # the film alone (Yuan et al. 2007); the mist: test_clutch_drag_mist.py
     peak = drag.peak_slip(10.0, 850.0)
     assert float(drag.film_flow(peak, 10.0, 850.0)) == pytest.approx(2.0 / 8, rel=1e-9)
     below = drag.torque(np.array([0.25, 0.5, 1.0]) * peak, 10.0, 850.0)

@@ -88,7 +88,7 @@ def cycle(
             raise ModelError(f"--out {str(out)!r}: give a file ending in .csv (every row), .json or .txt (summary).")
         refuse_input(out, [cycle_file, schedule])
     spec = load_train_file(file, overrides=set_ or ())
-    transmission = Transmission.from_file(file, overrides=set_ or ())
+    transmission = Transmission.from_train_file(spec)  # the file read once
     limits = limits_from_options(engine_speed, max_input_torque, capacity, spec.units)
     vehicle = None
     if wheel_radius is not None or axle_ratio is not None or mass is not None:

@@ -124,7 +124,7 @@ def shift_map(
     if out is not None and schedule is not None:
         refuse_input(out, [schedule])
     spec = load_train_file(file, overrides=set_ or ())
-    transmission = Transmission.from_file(file, overrides=set_ or ())
+    transmission = Transmission.from_train_file(spec)  # the file read once
     limits = limits_from_options(engine_speed, max_input_torque, capacity, spec.units)
     chosen = tuple(g.strip() for g in gears.split(",")) if gears else forward_gears(transmission)
     given = None

@@ -19,6 +19,7 @@
     clearance = 0.15                     # mm per gap
     supply = 3.0                         # l/min fed to the pack (omit: gaps full, no aeration)
     groove_factor = 1.0                  # share of the plate that shears oil (default 1)
+    mist = true                          # past the peak the oil mist shears too (Iqbal et al. 2013; default)
 
     [pump]                               # the oil pump
     displacement = 18.0                  # cm³/rev
@@ -78,7 +79,7 @@ __all__ = ["SPIN_TOP_KEYS", "LUBRICANT_KEYS", "DRAG_KEYS", "read_lubricant", "re
 SPIN_TOP_KEYS = {"pump", "housing", "seal", "churning", "windage"}
 LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100", "viscosity_table", "density",
                   "temperature", "expansion", "specific_heat"}
-DRAG_KEYS = {"gaps", "inner_radius", "outer_radius", "clearance", "supply", "groove_factor"}
+DRAG_KEYS = {"gaps", "inner_radius", "outer_radius", "clearance", "supply", "groove_factor", "mist"}
 _PUMP_KEYS = {"displacement", "pressure", "efficiency", "shaft"}
 _HOUSING_KEYS = {"area", "ambient", "heat_transfer", "height", "emissivity", "cooler", "coolant"}
 _CHURNING_KEYS = {"shaft", "element", "pitch_radius", "face_width", "immersion", "oil_volume"}
@@ -227,8 +228,11 @@ def _drag(reader, name: str, value, where: str) -> ClutchDrag:
                      meaning="none: the gaps stay full, no aeration (an upper bound)")
     groove = _number(reader, table, "groove_factor", d_where, 1.0, unit="share of the plate", positive=True,
                      maximum=1.0)
+    if supply is not None:  # the mist matters only where the film can aerate
+        _default(reader, table, "mist", d_where, True, "true (the oil mist past the film edge shears)")
+    mist = reader.boolean(table, "mist", d_where, True)
     return _checked(reader, d_where, ClutchDrag, name, gaps, numbers["inner_radius"], numbers["outer_radius"],
-                    numbers["clearance"], supply, groove)
+                    numbers["clearance"], supply, groove, mist)
 
 
 def _pump(reader, value) -> OilPump:

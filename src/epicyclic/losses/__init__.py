@@ -9,7 +9,8 @@
 * :mod:`~epicyclic.losses.bearing` — planet-bearing friction (SKF, M = 0.5 μ P d);
 * :mod:`~epicyclic.losses.drag` — load-independent drag torques, functions of speed (measured);
 * :mod:`~epicyclic.losses.oil` — viscosity at any temperature (ASTM D341), density, thermal data;
-* :mod:`~epicyclic.losses.clutch_drag` — open wet multi-plate clutch and brake drag (Yuan et al. 2007);
+* :mod:`~epicyclic.losses.clutch_drag` — open wet multi-plate clutch and brake drag: the film (Yuan et al.
+  2007) and, past the peak, the oil mist (Iqbal et al. 2013);
 * :mod:`~epicyclic.losses.pump` — the oil pump's drive power;
 * :mod:`~epicyclic.losses.churning` — churning of dipped gears (Changenet & Velex 2007);
 * :mod:`~epicyclic.losses.windage` — windage of fast gears (free disc, Dawson);
