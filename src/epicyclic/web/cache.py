@@ -32,7 +32,8 @@ from .state import PageState
 
 __all__ = ["FigureCache", "figure_key", "AHEAD_KINDS"]
 
-#: The pictures drawn ahead (the animation is cheap and depends on the set chosen in the page).
+#: The pictures drawn ahead by default (the animation is cheap and depends on the set chosen in the page; a page
+#: whose browser draws the charts has the server draw ahead only the others, :func:`epicyclic.web.charts.ahead_kinds`).
 AHEAD_KINDS = ("speed", "lever", "chart", "torque", "power", "flow")
 
 
@@ -61,10 +62,13 @@ class FigureCache:
     ----------
     max_bytes : int, default 64 MiB
         The answers kept at most (their bodies' bytes); the least recently used go first.
+    kinds : tuple of str, default AHEAD_KINDS
+        The pictures drawn ahead.
     """
 
-    def __init__(self, max_bytes: int = 64 << 20):
+    def __init__(self, max_bytes: int = 64 << 20, kinds: tuple[str, ...] = AHEAD_KINDS):
         self.max_bytes = max_bytes
+        self.kinds = kinds
         self.size = 0
         self.answers: OrderedDict[str, Reply] = OrderedDict()
         self.drawing: dict[str, asyncio.Future] = {}  # drawn ahead right now
@@ -136,7 +140,7 @@ class FigureCache:
 
         try:
             for ahead in states:
-                for name in AHEAD_KINDS:
+                for name in self.kinds:
                     key = figure_key(ahead, name)
                     if key is None or key in self.answers or key in self.drawing:
                         continue

@@ -314,6 +314,10 @@
   // ---- a picture at the full width of the window (a copy of its SVG in a dialog)
   function enlarge(figureId) {
     var dialog = byId("zoom"), svg = document.querySelector("#" + figureId + " .fig-body svg");
+    if (dialog && window.epicyclicCharts && epicyclicCharts.enlarge(byId(figureId), dialog.querySelector(".zoom-body"))) {
+      dialog.showModal();  // a chart the browser draws (charts.js): drawn again at the window's width
+      return;
+    }
     if (!dialog || !svg) { return; }
     var copy = svg.cloneNode(true);
     copy.style.width = "";
