@@ -130,7 +130,7 @@ class FigureCache:
         """Draw the pictures of each of ``states`` (in this order) while the server is idle; a newer plan of
         the same ``page`` replaces this one."""
         self.generation[page] = generation = self.generation.get(page, 0) + 1
-        if states:
+        if states and self.max_bytes:  # a cache that keeps nothing draws nothing ahead
             self.plans[page] = asyncio.ensure_future(self._plan(page, generation, states, jobs, figure, timeout))
 
     async def _plan(self, page: str, generation: int, states: Sequence[PageState], jobs: Any,

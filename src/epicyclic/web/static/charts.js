@@ -49,8 +49,8 @@
   function zoomHome(chart) {
     var home = chart.$home || {};
     ["x", "y"].forEach(function (id) {
-      chart.options.scales[id].min = home[id] ? home[id][0] : undefined;
-      chart.options.scales[id].max = home[id] ? home[id][1] : undefined;
+      if (home[id]) { chart.options.scales[id].min = home[id][0]; chart.options.scales[id].max = home[id][1]; }
+      else { delete chart.options.scales[id].min; delete chart.options.scales[id].max; }
     });
     chart.update("none");
   }
@@ -58,6 +58,7 @@
     id: "boxzoom",
     afterEvent: function (chart, args) {
       var e = args.event, box = chart.$box;
+      if (args.replay) { return; }  // Chart.js replays the last event after an update: not a new click
       if (e.type === "mousedown") { chart.$box = { x0: e.x, y0: e.y, x1: e.x, y1: e.y }; }
       else if (e.type === "mousemove" && box) { box.x1 = e.x; box.y1 = e.y; args.changed = true; }
       else if (e.type === "mouseup" && box) { chart.$box = null; zoomTo(chart, box); args.changed = true; }
