@@ -12,9 +12,10 @@ example opened in another tab) is answered without a worker.
 After an answer for a transmission the worker names the texts the page shows
 after a click on another gear (:attr:`epicyclic.web.render.Reply.next_texts`,
 nearest gear first); :meth:`FigureCache.draw_ahead` draws their pictures one
-at a time, and only while no request of a client waits, so drawing ahead
-never slows down what a user asked for.  A newer plan of the same page
-replaces an older one.
+at a time, only while no request of a client waits and on all workers but one
+(a picture drawn ahead takes up to a second; the page's own requests that come
+right after an answer find a worker free), so drawing ahead never slows down
+what a user asked for.  A newer plan of the same page replaces an older one.
 """
 
 from __future__ import annotations
@@ -76,7 +77,7 @@ class FigureCache:
         self.generation: dict[str, int] = {}  # page → number of its newest plan (an older one stops)
         self.tasks: set[asyncio.Task] = set()  # drawings ahead under way
         self.hits = self.misses = self.drawn_ahead = 0
-        self.ahead_running = 0  # jobs drawing ahead now (at most one per worker, and none while a client waits)
+        self.ahead_running = 0  # jobs drawing ahead now (none while a client waits; one worker kept for clients)
 
     def get(self, key: str) -> Reply | None:
         """The answer kept for ``key``, if any (it becomes the most recently used)."""
@@ -145,7 +146,7 @@ class FigureCache:
                     if key is None or key in self.answers or key in self.drawing:
                         continue
                     while not stale() and (jobs.pending > self.ahead_running  # a client waits
-                                           or self.ahead_running >= jobs.workers):  # every worker draws ahead
+                                           or self.ahead_running >= max(1, jobs.workers - 1)):  # one kept free
                         await asyncio.sleep(0.05)
                     if stale():  # the page shows something else now: its newer plan draws
                         return
