@@ -77,10 +77,12 @@ def test_charts_are_drawn_when_shown_with_values_under_the_pointer(browser, serv
     before = browser.execute_script(CHART + "return [chart.scales.y.min, chart.scales.y.max];", "torque", 0)
     ActionChains(browser).move_to_element_with_offset(canvas, -40, -60).click_and_hold().move_by_offset(80, 60) \
         .release().perform()
-    after = browser.execute_script(CHART + "return [chart.scales.y.min, chart.scales.y.max];", "torque", 0)
-    assert after[1] - after[0] < 0.7 * (before[1] - before[0]), (before, after)
+    def y_range(b):
+        return b.execute_script(CHART + "return [chart.scales.y.min, chart.scales.y.max];", "torque", 0)
+
+    wait(browser, lambda b: y_range(b)[1] - y_range(b)[0] < 0.7 * (before[1] - before[0]))  # (events: next frame)
     ActionChains(browser).double_click(canvas).perform()
-    assert browser.execute_script(CHART + "return [chart.scales.y.min, chart.scales.y.max];", "torque", 0) == before
+    wait(browser, lambda b: y_range(b) == before)
     # a gear change: the charts of gear 2 (the gear highlighted, its torques)
     torques = browser.execute_script(CHART + "return chart.data.datasets.at(-1).data;", "torque", 0)
     click(browser, '.gear-strip button[data-gear="2"]')

@@ -263,7 +263,7 @@
         }) },
         options: {
           interaction: { mode: "nearest", intersect: false },
-          scales: { x: axis(panel.x, { type: "linear", grace: "6%" }), y: axis(panel.y, { type: "linear", grace: "6%" }) },
+          scales: { x: axis(panel.x, { type: "linear", grace: "12%" }), y: axis(panel.y, { type: "linear", grace: "6%" }) },
           plugins: {
             legend: { labels: { filter: function (item, data) { return !data.datasets[item.datasetIndex].legendHidden; } } },
             tooltip: tooltip({ callbacks: { label: function (item) {
