@@ -36,7 +36,7 @@ Examples
 >>> charts = chart_specs(figure_subject(load_train_file("examples/simpson_c4_3speed.toml"), "2"))
 >>> sorted(charts)
 ['chart', 'power', 'speed', 'torque']
->>> '"highlight": 1' in charts["chart"] and "NaN" not in charts["chart"]
+>>> '"highlight":1' in charts["chart"] and "NaN" not in charts["chart"]
 True
 """
 
