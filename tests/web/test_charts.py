@@ -168,3 +168,16 @@ def test_downloads_are_the_files_of_epicyclic_plot(client, examples, page_form, 
     assert saved.status_code == 200
     written = _cli_plot(path, kind, tmp_path / f"cli.{format}", "--dpi", "40")
     assert _undated(saved.content) == _undated(written)
+
+
+def test_a_hostile_name_is_text_in_the_charts(client, page_form):
+    """A set named with markup reaches the browser's charts as the same text (drawn on a canvas or set as
+    textContent, never parsed as HTML), and the page around it stays inert (test_hostile)."""
+    from .test_hostile import assert_inert, hostile
+
+    payload = '"><img src=x onerror=alert(1)>'
+    answer = client.post("/apply/text", data=page_form(hostile(set_name=payload)))
+    assert answer.status_code == 200
+    assert_inert(answer.text)
+    titles = [p["title"] for p in charts_of(answer.text)["torque"]["panels"]]
+    assert f"torques on {payload}" in titles
