@@ -207,6 +207,23 @@
   }, true);
   window.addEventListener("resize", function () { syncGutter(); sizePictures(); });
 
+  // ---- while the results are being replaced (a gear change), the animation they hold stands still: it is
+  // replaced with them, and in a browser that draws in software its frames take half a core
+  document.addEventListener("htmx:beforeRequest", function (event) {
+    if (event.detail.target && event.detail.target.id === "results") {
+      document.querySelectorAll("#results .fig-body svg").forEach(function (svg) {
+        if (svg.pauseAnimations) { svg.pauseAnimations(); }
+      });
+    }
+  });
+  document.addEventListener("htmx:afterRequest", function (event) {  // no new results: it turns again
+    if (event.detail.target && event.detail.target.id === "results" && !event.detail.successful) {
+      document.querySelectorAll("#results .fig-body svg").forEach(function (svg) {
+        if (svg.unpauseAnimations) { svg.unpauseAnimations(); }
+      });
+    }
+  });
+
   // ---- after every answer
   document.addEventListener("htmx:afterSettle", function (event) {
     var target = event.detail.target;
