@@ -115,7 +115,7 @@ def _speed_chart(subject: Subject) -> dict[str, Any] | None:
     chart = speed_chart(subject.transmission, gear=subject.gear, context=subject.context)
     data, colours = chart.to_dict(), _colours()
     gears = data["gears"]
-    labels = [[g, "+".join(data["engaged"][g])] for g in gears]
+    labels = [[g, *data["engaged"][g]] for g in gears]  # one engaged element a line: no tick runs into the next
     highlight = gears.index(chart.gear) if chart.gear in gears else None
 
     def panel(table: dict[str, dict[str, float]], title: str, axis: str, bold: set[str]) -> dict[str, Any]:

@@ -210,7 +210,11 @@
               filter: function (item) { return item.parsed.y !== null && !isNaN(item.parsed.y); },
               itemSort: function (a, b) { return b.parsed.y - a.parsed.y; },
               callbacks: {
-                title: function (items) { return items.length ? "gear " + panel.x.labels[items[0].dataIndex].join(": ") : ""; },
+                title: function (items) {
+                  if (!items.length) { return ""; }
+                  var label = panel.x.labels[items[0].dataIndex];
+                  return "gear " + label[0] + (label.length > 1 ? " (" + label.slice(1).join(" + ") + " engaged)" : "");
+                },
                 label: function (item) { return item.dataset.label + ": " + fmt(item.parsed.y) + " " + panel.y.unit; }
               } })
           }
