@@ -127,11 +127,14 @@ def _speed_chart(subject: Subject) -> dict[str, Any] | None:
         return {"type": "line", "title": title, "x": {"title": "gear (engaged clutches and brakes)", "labels": labels},
                 "y": {"title": axis, "unit": "× n_in"}, "series": series, "highlight": highlight}
 
-    state = f"; gear {chart.gear} highlighted ({shift_state_words(data['engaged'][chart.gear])})" if highlight is not None else ""
+    state = "" if highlight is None else \
+        f"; gear {chart.gear} highlighted ({shift_state_words(data['engaged'][chart.gear])})"
     return {"title": f"{data['title']}: speed chart across gears (Willis kinematics at n_in = 1){state}",
             "notes": [], "panels": [
-                panel(data["speeds"], "shaft speeds", "speed per input speed n / n_in", {data["input"], data["output"]}),
-                panel(data["slips"], "slip of open clutches and brakes", "slip speed per input speed Δn / n_in", set())]}
+                panel(data["speeds"], "shaft speeds", "speed per input speed n / n_in",
+                      {data["input"], data["output"]}),
+                panel(data["slips"], "slip of open clutches and brakes", "slip speed per input speed Δn / n_in",
+                      set())]}
 
 
 def _torques(subject: Subject) -> dict[str, Any]:
@@ -140,13 +143,13 @@ def _torques(subject: Subject) -> dict[str, Any]:
 
     diagram = torque_diagram(subject.solution, context=subject.context)
     context, data = subject.context, diagram.to_dict()
-    k = context.convert(1.0, "torque")
+    k, unit = context.convert(1.0, "torque"), context.unit("torque")
     panels = []
     for group in diagram.groups:
         bars = [{"label": bar["label"].split("\n"), "ideal": None if bar["ideal"] is None else k * bar["ideal"],
                  "actual": k * bar["actual"], "role": bar["role"]} for bar in data["bars"] if bar["group"] == group]
         panels.append({"type": "bar", "title": "external torques on shafts" if group == "external" else
-                       f"torques on {group}", "x": {"title": ""}, "y": {"title": f"torque M in {context.unit('torque')}", "unit": context.unit("torque")},
+                       f"torques on {group}", "x": {"title": ""}, "y": {"title": f"torque M in {unit}", "unit": unit},
                        "bars": bars})
     notes = [f"no torque on {', '.join(diagram.resting)} (idle in this state): not drawn"] if diagram.resting else []
     return {"title": context.heading(subject.solution.train, "torques with and without friction (housing: reaction)"),
@@ -189,7 +192,8 @@ def _powers(subject: Subject) -> dict[str, Any]:
         if diagram.resting else []
     if diagram.ideal:
         notes.append("filled: with friction; dashed outline: without friction")
-    return {"title": context.heading(subject.solution.train, "powers as areas (speed × torque), Brandenberger Bild 8/9"),
+    what = "powers as areas (speed × torque), Brandenberger Bild 8/9"
+    return {"title": context.heading(subject.solution.train, what),
             "notes": notes, "panels": panels, "roles": _roles()}
 
 
@@ -208,7 +212,8 @@ def _speed_plans(subject: Subject) -> dict[str, Any] | None:
     for pset in sets:
         plan = speed_plan(solution, pset.name, context=context)
         data = plan.to_dict()
-        names = {"sun": "sun", "ring": "ring" if plan.layout.central["ring"][1] else "2nd central", "carrier": "carrier"}
+        names = {"sun": "sun", "ring": "ring" if plan.layout.central["ring"][1] else "2nd central",
+                 "carrier": "carrier"}
         drawn = plan.layout.drawn
         if drawn is not None and not plan.layout.schematic and drawn.teeth.arrangement in ("two rings", "two suns"):
             names.update(sun="first", ring="second")
@@ -231,7 +236,8 @@ def _speed_plans(subject: Subject) -> dict[str, Any] | None:
         heading = f"Speed plan (Kutzbach) of set {pset.name!r}"
         panels.append({"type": "xy", "title": [heading, plan.assumptions()] if own else heading,
                        "x": {"title": f"peripheral speed v in {plan.velocity_unit}", "unit": plan.velocity_unit},
-                       "y": {"title": "radius r in mm" if own else f"radius r in mm ({plan.assumptions()})", "unit": "mm"},
+                       "y": {"title": "radius r in mm" if own else f"radius r in mm ({plan.assumptions()})",
+                             "unit": "mm"},
                        "series": series})
     return {"title": context.heading(solution.train, "speeds (speed plan of every set)"),
             "notes": ["the speed ranges 1–7 of every set (Brandenberger Bild 3/4) are in the picture"],
