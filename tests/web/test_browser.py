@@ -113,10 +113,12 @@ def wait(browser, condition, timeout: float = WAIT):
 
 
 #: True while the page is still changing: an htmx request in flight (htmx marks the requesting element or
-#: its indicator with ``htmx-request``), a swap settling, or a picture still being drawn.  Content below the
-#: pictures moves while they arrive, so a click is only sent to a settled page.
+#: its indicator with ``htmx-request``), a swap settling, or a picture on screen still being drawn (one
+#: below the window is drawn once it is scrolled to).  Content below the pictures moves while they arrive,
+#: so a click is only sent to a settled page.
 _BUSY = ("return !!document.querySelector('.htmx-request, .htmx-swapping, .htmx-settling, .htmx-added') || "
-         "Array.from(document.querySelectorAll('.fig-body .loading')).some(e => e.offsetParent !== null);")
+         "Array.from(document.querySelectorAll('.fig-body .loading')).some(e => e.offsetParent !== null && "
+         "e.getBoundingClientRect().top < innerHeight && e.getBoundingClientRect().bottom > 0);")
 
 
 def settled(browser) -> None:
@@ -183,9 +185,13 @@ def test_page_loads_with_an_example_and_its_pictures(browser, server):
                                                   bundled_examples()["plus_set_reduction"].title))
     assert not browser.find_elements(By.CSS_SELECTOR, ".fig-body svg")  # pictures are drawn when shown
     tab(browser, "pictures")
-    wait(browser, lambda b: b.find_elements(By.CSS_SELECTOR, "#fig-power svg"))
+    wait(browser, lambda b: b.find_elements(By.CSS_SELECTOR, "#fig-torque .chart-body[data-drawn] canvas"))
+    browser.execute_script("document.getElementById('fig-flow').scrollIntoView()")  # drawn once on screen
+    wait(browser, lambda b: b.find_elements(By.CSS_SELECTOR, "#fig-flow svg"))
+    browser.execute_script("document.getElementById('fig-power').scrollIntoView()")
+    wait(browser, lambda b: b.find_elements(By.CSS_SELECTOR, "#fig-power .chart-body[data-drawn] canvas"))
     settled(browser)
-    assert len(browser.find_elements(By.CSS_SELECTOR, ".fig-body svg")) >= 5
+    assert len(browser.find_elements(By.CSS_SELECTOR, ".fig-body svg, .chart-body[data-drawn]")) >= 5
     shot(browser, "1-plus-set")
     # every picture readable: its smallest text at least 11 px on the screen
     smallest = browser.execute_script("""return Math.min.apply(null, Array.from(document.querySelectorAll(

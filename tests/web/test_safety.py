@@ -170,13 +170,14 @@ def test_the_examples_pictures_are_drawn_ahead_at_start(examples):
     key = "brandenberger_1952"  # the default example is drawn first
     with TestClient(create_app(Limits(workers=1, draw_examples=True))) as client:
         cache = client.app.state.cache
-        wanted = figure_key(PageState(examples[key].text, examples[key].file_name), "speed")
+        # the lever: a picture the server draws (the charts are the browser's)
+        wanted = figure_key(PageState(examples[key].text, examples[key].file_name), "lever")
         start = time.perf_counter()
         while wanted not in cache.answers and time.perf_counter() - start < DEADLINE:
             time.sleep(0.05)
         assert wanted in cache.answers
         form = {"toml": examples[key].text, "source": examples[key].file_name, "units": "file", "lang": "en",
-                "gear": "", "fig_speed_format": "svg", "fig_speed_dpi": "150"}  # as the page sends it
+                "gear": "", "fig_lever_format": "svg", "fig_lever_dpi": "150"}  # as the page sends it
         hits = cache.hits
-        answer = client.post("/figure/speed", data=form)
+        answer = client.post("/figure/lever", data=form)
         assert answer.status_code == 200 and "<svg" in answer.text and cache.hits == hits + 1

@@ -46,6 +46,7 @@ from starlette.staticfiles import StaticFiles
 
 from ..limits import MAX_FILE_BYTES
 from .cache import FigureCache, figure_key
+from .charts import ahead_kinds
 from .examples import DEFAULT_EXAMPLE, bundled_examples
 from .guards import BodyLimit, BodyTooLarge, BodyTooSlow, SameOrigin, SecurityHeaders
 from .jobs import Jobs, failure
@@ -100,6 +101,10 @@ class Limits:
         ``epicyclic synthesize``; :mod:`epicyclic.web.synthesis_tool`).
     synthesis_seconds : float, default 60
         Seconds after which the page stops a synthesis (keeping the candidates found by then).
+    browser_charts : bool, default True
+        The browser draws the speed plan, the speed chart, the torques and the powers from their data
+        (:mod:`epicyclic.web.charts`); False: the server draws every picture (as before; the benchmark's
+        baseline).
     """
 
     max_body: int = 4 * MAX_FILE_BYTES
@@ -115,6 +120,7 @@ class Limits:
     allowed_hosts: tuple[str, ...] = LOOPBACK_HOSTS
     synthesis_architectures: int = PAGE_ARCHITECTURES
     synthesis_seconds: float = PAGE_SECONDS
+    browser_charts: bool = True
 
 
 def _reply(reply: Reply) -> Response:
@@ -195,7 +201,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
             return _reply(failure(f"no bundled example {key!r}; choose one from the list.", 404))
         example = examples[key]
         return await work(request, open_text, example.text, example.file_name, state.units, state.lang,
-                          state.rows, state.gear, ahead=replace(state, source=example.file_name))
+                          state.rows, state.gear, limits.browser_charts, ahead=replace(state, source=example.file_name))
 
     async def upload(request: Request) -> Response:
         try:
@@ -208,7 +214,8 @@ def create_app(limits: Limits | None = None) -> Starlette:
             state = PageState("", units=form.get("units", "file"), lang=form.get("lang", "en"))
         except FormError as exc:
             return bad(exc)
-        return await work(request, open_file, data, name, state.units, state.lang, ahead=replace(state, source=name))
+        return await work(request, open_file, data, name, state.units, state.lang, limits.browser_charts,
+                          ahead=replace(state, source=name))
 
     async def with_state(request: Request, function: Any, *args: Any, timeout: float | None = None) -> Response:
         """Read the page's form and run ``function(state, *args)`` in a worker."""
@@ -226,7 +233,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
             state = await state_of(request)
         except FormError as exc:
             return bad(exc)
-        return await work(request, apply, state, origin, ahead=state)
+        return await work(request, apply, state, origin, limits.browser_charts, ahead=state)
 
     async def picture(request: Request) -> Response:
         """A picture: kept from before or drawn ahead where it can be (epicyclic.web.cache)."""
@@ -256,7 +263,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
     async def lifespan(app: Starlette):
         app.state.jobs = Jobs(limits.workers, limits.max_queue, max_client_jobs=limits.max_client_jobs,
                               worker_memory=limits.worker_memory)
-        app.state.cache = FigureCache(limits.picture_cache)
+        app.state.cache = FigureCache(limits.picture_cache, ahead_kinds(limits.browser_charts))
         if limits.draw_examples and limits.picture_cache:
             ordered = sorted(examples.values(), key=lambda e: e.key != DEFAULT_EXAMPLE)
             states = [PageState(e.text, e.file_name) for e in ordered]  # as the page opens them

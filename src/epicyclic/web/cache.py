@@ -12,9 +12,10 @@ example opened in another tab) is answered without a worker.
 After an answer for a transmission the worker names the texts the page shows
 after a click on another gear (:attr:`epicyclic.web.render.Reply.next_texts`,
 nearest gear first); :meth:`FigureCache.draw_ahead` draws their pictures one
-at a time, and only while no request of a client waits, so drawing ahead
-never slows down what a user asked for.  A newer plan of the same page
-replaces an older one.
+at a time, only while no request of a client waits and on all workers but one
+(a picture drawn ahead takes up to a second; the page's own requests that come
+right after an answer find a worker free), so drawing ahead never slows down
+what a user asked for.  A newer plan of the same page replaces an older one.
 """
 
 from __future__ import annotations
@@ -32,7 +33,8 @@ from .state import PageState
 
 __all__ = ["FigureCache", "figure_key", "AHEAD_KINDS"]
 
-#: The pictures drawn ahead (the animation is cheap and depends on the set chosen in the page).
+#: The pictures drawn ahead by default (the animation is cheap and depends on the set chosen in the page; a page
+#: whose browser draws the charts has the server draw ahead only the others, :func:`epicyclic.web.charts.ahead_kinds`).
 AHEAD_KINDS = ("speed", "lever", "chart", "torque", "power", "flow")
 
 
@@ -61,10 +63,13 @@ class FigureCache:
     ----------
     max_bytes : int, default 64 MiB
         The answers kept at most (their bodies' bytes); the least recently used go first.
+    kinds : tuple of str, default AHEAD_KINDS
+        The pictures drawn ahead.
     """
 
-    def __init__(self, max_bytes: int = 64 << 20):
+    def __init__(self, max_bytes: int = 64 << 20, kinds: tuple[str, ...] = AHEAD_KINDS):
         self.max_bytes = max_bytes
+        self.kinds = kinds
         self.size = 0
         self.answers: OrderedDict[str, Reply] = OrderedDict()
         self.drawing: dict[str, asyncio.Future] = {}  # drawn ahead right now
@@ -72,7 +77,7 @@ class FigureCache:
         self.generation: dict[str, int] = {}  # page → number of its newest plan (an older one stops)
         self.tasks: set[asyncio.Task] = set()  # drawings ahead under way
         self.hits = self.misses = self.drawn_ahead = 0
-        self.ahead_running = 0  # jobs drawing ahead now (at most one per worker, and none while a client waits)
+        self.ahead_running = 0  # jobs drawing ahead now (none while a client waits; one worker kept for clients)
 
     def get(self, key: str) -> Reply | None:
         """The answer kept for ``key``, if any (it becomes the most recently used)."""
@@ -126,7 +131,7 @@ class FigureCache:
         """Draw the pictures of each of ``states`` (in this order) while the server is idle; a newer plan of
         the same ``page`` replaces this one."""
         self.generation[page] = generation = self.generation.get(page, 0) + 1
-        if states:
+        if states and self.max_bytes:  # a cache that keeps nothing draws nothing ahead
             self.plans[page] = asyncio.ensure_future(self._plan(page, generation, states, jobs, figure, timeout))
 
     async def _plan(self, page: str, generation: int, states: Sequence[PageState], jobs: Any,
@@ -136,12 +141,12 @@ class FigureCache:
 
         try:
             for ahead in states:
-                for name in AHEAD_KINDS:
+                for name in self.kinds:
                     key = figure_key(ahead, name)
                     if key is None or key in self.answers or key in self.drawing:
                         continue
                     while not stale() and (jobs.pending > self.ahead_running  # a client waits
-                                           or self.ahead_running >= jobs.workers):  # every worker draws ahead
+                                           or self.ahead_running >= max(1, jobs.workers - 1)):  # one kept free
                         await asyncio.sleep(0.05)
                     if stale():  # the page shows something else now: its newer plan draws
                         return

@@ -145,7 +145,9 @@ def _gear_level(train_file: TrainFile) -> str:
 
 
 # ---------------------------------------------------------------------- the results section
-def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
+def _results(train_file: TrainFile, state: PageState, charts: bool = True) -> dict[str, Any]:
+    """What the results section shows; with ``charts``, the pictures the browser draws as their data
+    (:mod:`epicyclic.web.charts`), else every picture is drawn by the server."""
     from ..explain import explain
     from ..io.tables import report_tables, summary_lines
     from .figures import applicable
@@ -169,7 +171,8 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
         "title": train_file.title, "description": train_file.description, "units": units,
         "notices": notices, "solution": solution, "solve_problem": solve_problem,
         "gears": None, "tools": list(TOOLS.values()), "tool_context": Context(train_file, solution, gear),
-        "form_rows": form_rows, "figures": [], "lang": state.lang, "explanation": None, "loss_split": None,
+        "form_rows": form_rows, "figures": [], "charts": {}, "lang": state.lang, "explanation": None,
+        "loss_split": None,
         "gear_name": gear if train_file.transmission is not None else None,
         "has_transmission": train_file.transmission is not None, "has_losses": bool(train_file.losses),
         "gear_level": _gear_level(train_file),
@@ -192,6 +195,7 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
             circulation=circulation_view(solution, units),
             warnings=other_warnings(solution),
             figures=[(k, k.options(subject)) for k in applicable(subject)],
+            charts=_charts(subject) if charts else {},
             explanation=explain(solution, units, lang=state.lang, title=train_file.title, losses=train_file.losses,
                                 spin=train_file.spin, gear=train_file.gear,
                                 input=None if train_file.transmission is None else train_file.transmission.input
@@ -199,6 +203,12 @@ def _results(train_file: TrainFile, state: PageState) -> dict[str, Any]:
             loss_split=loss_split(solution, units) if train_file.losses or train_file.spin else None,
         )
     return result
+
+
+def _charts(subject: Subject) -> dict[str, str]:
+    from .charts import chart_specs
+
+    return chart_specs(subject)
 
 
 def _status(results: dict[str, Any]) -> int:
@@ -252,7 +262,7 @@ def _next_texts(text: str, form: dict[str, Any], results: dict[str, Any]) -> tup
 
 
 @_guard
-def open_file(data: bytes, source: str, units: str = "file", lang: str = "en") -> Reply:
+def open_file(data: bytes, source: str, units: str = "file", lang: str = "en", charts: bool = True) -> Reply:
     """:func:`open_text` of an uploaded file, read as the command line reads one (size, NUL bytes, UTF-8).
 
     A REXS file (XML, JSON or zip, by content) opens as the commented TOML that ``epicyclic convert`` writes.
@@ -264,8 +274,9 @@ def open_file(data: bytes, source: str, units: str = "file", lang: str = "en") -
         from ..exchange.reading import loads_rexs_document
         from ..io.toml_format import read_document
 
-        return open_text(toml_text(read_document(loads_rexs_document(data, source))), source, units, lang)
-    return open_text(decode_source(data, source), source, units, lang)
+        return open_text(toml_text(read_document(loads_rexs_document(data, source))), source, units, lang,
+                         charts=charts)
+    return open_text(decode_source(data, source), source, units, lang, charts=charts)
 
 
 def _line_ending(text: str) -> str:
@@ -286,11 +297,12 @@ def _restored(text: str, source: str, rows: tuple, gear: str) -> str:
 
 @_guard
 def open_text(text: str, source: str, units: str = "file", lang: str = "en", rows: tuple = (),
-              gear: str = "") -> Reply:
+              gear: str = "", charts: bool = True) -> Reply:
     """The whole workspace (editor, operating-point form, results) for a newly opened text.
 
     ``rows`` and ``gear`` (from a shared link or a reload: the URL holds them) are written into the
-    text's ``[operating_point]`` as the form would write them.
+    text's ``[operating_point]`` as the form would write them; ``charts``: the browser draws the charts
+    (:mod:`epicyclic.web.charts`).
     """
     eol = _line_ending(text)
     text = text.replace("\r\n", "\n")
@@ -302,14 +314,14 @@ def open_text(text: str, source: str, units: str = "file", lang: str = "en", row
     except _Bad as bad:
         return Reply(render("workspace.html", text=Verbatim(text), source=source, rows=(), gear_names=(), gear="",
                             file_units=Units(), problem=bad.problem, results=None, eol=eol), 422)
-    results = _results(train_file, state)
+    results = _results(train_file, state, charts)
     form = _form(train_file, text)
     return Reply(render("workspace.html", text=Verbatim(text), source=source, problem=None, results=results,
                         eol=eol, **form), _status(results), next_texts=_next_texts(text, form, results))
 
 
 @_guard
-def apply(state: PageState, origin: str) -> Reply:
+def apply(state: PageState, origin: str, charts: bool = True) -> Reply:
     """Results after a change: of the text (``origin="text"``) or of the operating-point form (``"form"``).
 
     The answer is the results section; after a text change also the new form,
@@ -324,7 +336,7 @@ def apply(state: PageState, origin: str) -> Reply:
     except _Bad as bad:
         return Reply(render("apply.html", problem=bad.problem, results=None, text=Verbatim(text),
                             swap_text=swap_text, swap_form=False), 422)
-    results = _results(train_file, state)
+    results = _results(train_file, state, charts)
     form = _form(train_file, text)
     rows = state.rows if origin == "form" else form["rows"]
     return Reply(render("apply.html", problem=None, results=results, text=Verbatim(text), swap_text=swap_text,

@@ -210,6 +210,23 @@
   }, true);
   window.addEventListener("resize", function () { syncGutter(); sizePictures(); });
 
+  // ---- while the results are being replaced (a gear change), the animation they hold stands still: it is
+  // replaced with them, and in a browser that draws in software its frames take half a core
+  document.addEventListener("htmx:beforeRequest", function (event) {
+    if (event.detail.target && event.detail.target.id === "results") {
+      document.querySelectorAll("#results .fig-body svg").forEach(function (svg) {
+        if (svg.pauseAnimations) { svg.pauseAnimations(); }
+      });
+    }
+  });
+  document.addEventListener("htmx:afterRequest", function (event) {  // no new results: it turns again
+    if (event.detail.target && event.detail.target.id === "results" && !event.detail.successful) {
+      document.querySelectorAll("#results .fig-body svg").forEach(function (svg) {
+        if (svg.unpauseAnimations) { svg.unpauseAnimations(); }
+      });
+    }
+  });
+
   // ---- after every answer
   document.addEventListener("htmx:afterSettle", function (event) {
     var target = event.detail.target;
@@ -317,6 +334,10 @@
   // ---- a picture at the full width of the window (a copy of its SVG in a dialog)
   function enlarge(figureId) {
     var dialog = byId("zoom"), svg = document.querySelector("#" + figureId + " .fig-body svg");
+    if (dialog && window.epicyclicCharts && epicyclicCharts.enlarge(byId(figureId), dialog.querySelector(".zoom-body"))) {
+      dialog.showModal();  // a chart the browser draws (charts.js): drawn again at the window's width
+      return;
+    }
     if (!dialog || !svg) { return; }
     var copy = svg.cloneNode(true);
     copy.style.width = "";
