@@ -2,7 +2,8 @@
 
 Starts ``epicyclic serve``'s app on a free loopback port, opens the Ford C4 example on the Results and
 the Pictures tab, waits until the page has answered (and the pictures are drawn) and writes
-``docs/figures/web_page.png`` and ``docs/figures/web_pictures.png``; then records the digest of the
+``docs/figures/web_page.png`` and ``docs/figures/web_pictures.png``, and every tab of the ZF 8HP and the
+Brandenberger example into ``docs/figures/web/`` (``docs/web-tabs.md``); then records the digest of the
 page's code (``stamp.py``), so that tests/docs/test_gallery.py fails when the page changes and the
 screenshots do not.  ``make gallery`` runs it.  Needs Debian's chromium and chromium-driver.
 
@@ -28,6 +29,10 @@ FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-
 #: (file, address query, what must be on the page before the shot)
 SHOTS = (("web_page.png", "?example=simpson_c4_3speed", "#results table"),
          ("web_pictures.png", "?example=simpson_c4_3speed&tab=pictures", "#results svg"))
+#: every tab of the page for the ZF 8HP and the Brandenberger example (docs/web-tabs.md)
+TABS = ("results", "gears", "pictures", "geometry", "tools", "synthesis")
+TAB_SHOTS = tuple((f"web/{example}_{tab}.png", f"?example={example}&tab={tab}", "#results table")
+                  for example in ("zf_8hp70_8speed", "brandenberger_1952") for tab in TABS)
 WAIT = 120  # seconds: the first answer starts the worker processes
 
 
@@ -58,7 +63,8 @@ def main() -> int:
     driver = webdriver.Chrome(service=Service(str(CHROMEDRIVER)), options=options)
     try:
         WebDriverWait(None, WAIT, poll_frequency=0.05).until(lambda _: server.started)
-        for name, query, ready in SHOTS:
+        (HERE / "web").mkdir(exist_ok=True)
+        for name, query, ready in SHOTS + TAB_SHOTS:
             driver.get(f"http://127.0.0.1:{port}/{query}")
             WebDriverWait(driver, WAIT).until(lambda d: d.find_elements(By.CSS_SELECTOR, ready))
             time.sleep(3.0)  # the pictures of the tab arrive one by one

@@ -125,7 +125,7 @@ def test_without_browser_charts_the_server_draws_every_picture():
     assert ahead_kinds(True) == ("lever", "flow") and ahead_kinds(False) == AHEAD_KINDS
     with TestClient(create_app(Limits(workers=1, browser_charts=False))) as client:
         page = client.post("/example", data={"example": "zf_8hp70_8speed"}).text
-        assert "data-chart" not in page and page.count('hx-trigger="intersect once"') == 7
+        assert "data-chart" not in page and page.count('hx-trigger="intersect once" hx-include="#ws"') == 7
         assert client.app.state.cache.kinds == AHEAD_KINDS
 
 
