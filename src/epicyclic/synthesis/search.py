@@ -24,7 +24,7 @@ import numpy as np
 
 from ..rating.errors import RatingError
 from .candidate import Candidate, evaluate
-from .fitting import combinations_of_elements, fit_ratios
+from .fitting import combinations_of_elements, fit_ratios, single_swap_schedule
 from .mechanisms import Mechanism, enumerate_mechanisms
 from .screening import _grid, layout, screen
 from .spec import SynthesisError, SynthesisSpec
@@ -195,6 +195,9 @@ def search_task(task: Task) -> TaskResult:
                 rejected["ratios"] += 1
                 continue
             fitted += 1
+            # among combinations of identical ratio, those that shift by single swaps
+            probe = np.array([fit.stationary_ratios, 0.37 * low + 0.63 * high])
+            rows = single_swap_schedule(mech, p.input, p.output, combos, fit.schedule, forward.size, probe)
             options = []
             for kind, i0 in zip(spec.kinds, fit.stationary_ratios):
                 key = (kind, round(i0, 4))
@@ -202,11 +205,11 @@ def search_task(task: Task) -> TaskResult:
                     teeth_cache[key] = tooth_options(i0, kind, tolerance=spec.tolerance, sun=spec.sun,
                                                      planet=spec.planet, planets=spec.planets, hunting=spec.hunting)
                 options.append(teeth_cache[key])
-            chosen = choose_teeth(mech, p.input, p.output, combos, fit.schedule, targets, options, spec.tolerance)
+            chosen = choose_teeth(mech, p.input, p.output, combos, rows, targets, options, spec.tolerance)
             if chosen is None:
                 rejected["teeth"] += 1
                 continue
-            schedule = tuple(tuple(int(e) for e in combos[j]) for j in fit.schedule)
+            schedule = tuple(tuple(int(e) for e in combos[j]) for j in rows)
             try:
                 out.append(sized_candidate(spec, Arrangement(mech, p.input, p.output, p.elements, schedule),
                                             chosen, targets))
