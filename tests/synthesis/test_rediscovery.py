@@ -29,7 +29,9 @@ def zf8():
     published = entry("zf_8hp70").published_ratios
     result = synthesize(list(published.values()), sets=4, elements={"brakes": 2, "clutches": 3, "engaged": 3},
                         constraints={"tolerance": 0.01, "max_members_per_shaft": 2, "free_input": False,
-                                     "input_members": ["carrier"], "output_members": ["carrier"], "top": 10},
+                                     "input_members": ["carrier"], "output_members": ["carrier"], "top": 10,
+                                     # the published ratios to four decimals: the tooth choice by ratio error
+                                     "tooth_weights": {"ring_balance": 0.0}},
                         workers=2, processes=True)
     return published, result
 
@@ -49,14 +51,32 @@ def test_8hp_architecture_and_teeth_are_among_the_top_candidates(zf8):
     assert found.metrics["double_shifts"] == 0
 
 
-def test_8hp_candidate_file_reproduces_its_ratios(zf8, tmp_path):
+def test_8hp_candidate_files_pass_gears_fit_analyze_and_rate(zf8, tmp_path):
+    """Every written candidate file: the same ratios, its ISO 6336-sized geometry passes ``fit``, ``analyze``
+    solves it and ``rate --gear all`` finds every mesh of every gear at or above S_Hmin and S_Fmin."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from epicyclic.cli.main import app
     from epicyclic.transmission import Transmission
 
     published, result = zf8
-    paths = result.write_toml(tmp_path, count=3)
+    runner = CliRunner()
+    paths = result.write_toml(tmp_path, count=5)
+    assert len(paths) == 5
     for cand, path in zip(result.candidates, paths):
         t = Transmission.from_file(path)
         assert list(t.ratios.values()) == pytest.approx(list(cand.ratios), rel=1e-12)
+        fitted = runner.invoke(app, ["fit", str(path), "--format", "json"])
+        assert fitted.exit_code == 0, fitted.output
+        assert all(s["fitting"]["passed"] for s in json.loads(fitted.stdout)["fitting"].values()), path
+        analysed = runner.invoke(app, ["analyze", str(path), "--format", "json"])
+        assert analysed.exit_code == 0, analysed.output
+        rated = runner.invoke(app, ["rate", str(path), "--gear", "all", "--format", "json"])
+        assert rated.exit_code == 0, rated.output
+        ratings = json.loads(rated.stdout)["ratings"]
+        assert len(ratings) == 9 and all(r["ok"] for r in ratings), path
 
 
 def test_ravigneaux_aod_is_found_with_a_plus_set():
