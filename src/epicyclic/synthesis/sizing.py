@@ -40,7 +40,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
-__all__ = ["RATING_DEFAULTS", "RATING_KEYS", "SetSize", "rating_spec", "size_sets"]
+__all__ = ["RATING_DEFAULTS", "RATING_KEYS", "SetSize", "check_rating", "rating_spec", "size_sets"]
 
 #: The rating inputs of the sizing when the spec's ``[rating]`` table leaves them out.
 RATING_DEFAULTS: Mapping[str, Any] = MappingProxyType({
@@ -107,6 +107,42 @@ def rating_spec(values: Mapping[str, Any] | Sequence[tuple[str, Any]] = ()):
 
     merged = {**RATING_DEFAULTS, **dict(values)}
     return RatingSpec(**merged)
+
+
+def check_rating(given: Any, error: Any) -> tuple[tuple[str, Any], ...]:
+    """Validated rating inputs of the sizing: known keys, values the rating accepts (checked by building it).
+
+    Parameters
+    ----------
+    given : mapping
+        The spec's ``[rating]`` table.
+    error : callable (key, message) → Exception
+        Builds the error naming the key (the spec's place).
+
+    Returns
+    -------
+    tuple of (str, value)
+    """
+    import re
+
+    from ..errors import EpicyclicError
+    from ..text import short
+
+    if not isinstance(given, Mapping):
+        raise error("rating", f"expected a table of rating inputs, got {short(given)}.")
+    for key, value in given.items():
+        if key not in RATING_KEYS:
+            raise error(str(key), f"unknown rating input; use {', '.join(RATING_KEYS)}.")
+        if key == "material" and not isinstance(value, str):
+            raise error(key, f"expected a material name such as \"18CrNiMo7-6\", got {short(value)}.")
+        if key != "material" and (isinstance(value, bool) or not isinstance(value, (int, float))):
+            raise error(key, f"expected a number, got {short(value)}.")
+    try:
+        rating_spec(given)
+    except EpicyclicError as exc:
+        named = re.match(r"rating\.(\w+)", str(exc))  # the rating's messages start with the key
+        raise error(named.group(1) if named and named.group(1) in given else next(iter(given)), str(exc)) from None
+    return tuple((str(k), v if k == "material" else float(v)) for k, v in given.items())
 
 
 def _loaded(state, input_torque: float) -> bool:

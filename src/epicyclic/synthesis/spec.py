@@ -513,9 +513,10 @@ class SynthesisSpec:
                     raise bad(key, f"expected {low:g} … {high:g} {unit}, got {value!r}.")
                 kw[key] = value
         if "rating" in cons:
-            kw["rating"] = _rating(cons["rating"], lambda name, message: bad(
-                name if place.tables is not None and name != "rating" else
-                name if name == "rating" else f"rating.{name}", message))
+            from .sizing import check_rating
+
+            kw["rating"] = check_rating(cons["rating"], lambda name, message: bad(
+                name if place.tables is not None or name == "rating" else f"rating.{name}", message))
         if "tooth_weights" in cons:
             from .teeth import check_tooth_weights
 
@@ -580,30 +581,6 @@ class SynthesisSpec:
             cons["title"] = data["title"]
         return cls.create(data["targets"], data.get("sets", {"simple": 2}), data.get("elements"), cons,
                           where=_Place(str(path), tables))  # type: ignore[arg-type]
-
-
-def _rating(given: Any, bad: Any) -> tuple[tuple[str, Any], ...]:
-    """The rating inputs of the sizing: known keys, values the rating accepts (checked by building it)."""
-    from ..errors import EpicyclicError
-    from .sizing import RATING_KEYS, rating_spec
-
-    if not isinstance(given, Mapping):
-        raise bad("rating", f"expected a table of rating inputs, got {short(given)}.")
-    for key, value in given.items():
-        if key not in RATING_KEYS:
-            raise bad(str(key), f"unknown rating input; use {', '.join(RATING_KEYS)}.")
-        if key == "material" and not isinstance(value, str):
-            raise bad(key, f"expected a material name such as \"18CrNiMo7-6\", got {short(value)}.")
-        if key != "material" and (isinstance(value, bool) or not isinstance(value, (int, float))):
-            raise bad(key, f"expected a number, got {short(value)}.")
-    try:
-        rating_spec(given)
-    except EpicyclicError as exc:
-        import re
-
-        named = re.match(r"rating\.(\w+)", str(exc))  # the rating's messages start with the key
-        raise bad(named.group(1) if named and named.group(1) in given else next(iter(given)), str(exc)) from None
-    return tuple((str(k), v if k == "material" else float(v)) for k, v in given.items())
 
 
 def _list(value: Any, place: _Place, name: str) -> Sequence[Any]:
