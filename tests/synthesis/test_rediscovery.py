@@ -61,7 +61,7 @@ def test_8hp_candidate_files_pass_gears_fit_analyze_and_rate(zf8, tmp_path):
     from epicyclic.cli.main import app
     from epicyclic.transmission import Transmission
 
-    published, result = zf8
+    _, result = zf8
     runner = CliRunner()
     paths = result.write_toml(tmp_path, count=5)
     assert len(paths) == 5

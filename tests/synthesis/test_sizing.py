@@ -18,19 +18,8 @@ from epicyclic.synthesis.sizing import RATING_DEFAULTS, rating_spec, size_sets
 
 
 @pytest.fixture(scope="module")
-def simpson():
-    from epicyclic import Brake, Clutch, GearTrain, PlanetarySet
-    from epicyclic.transmission import Transmission
-
-    train = GearTrain([
-        PlanetarySet.simple("front", sun="sun", ring="front_ring", carrier="out", z_sun=39, z_planet=23, z_ring=85,
-                            planets=4),
-        PlanetarySet.simple("rear", sun="sun", ring="out", carrier="rear_carrier", z_sun=34, z_planet=20, z_ring=74,
-                            planets=3),
-        Clutch("forward", "in", "front_ring"), Clutch("high_reverse", "in", "sun"), Brake("intermediate", "sun"),
-        Brake("low_reverse", "rear_carrier")])
-    t = Transmission(train, {"1": ["forward", "low_reverse"], "2": ["forward", "intermediate"],
-                             "3": ["forward", "high_reverse"], "R": ["high_reverse", "low_reverse"]}, "in", "out")
+def simpson(simpson_with_teeth):
+    t = simpson_with_teeth
     analysis = t.analyze_all(input_torque=400.0)
     return t, {g.gear: g.drive for g in analysis.gears}
 

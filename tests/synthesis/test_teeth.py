@@ -26,20 +26,8 @@ TARGETS = [2.46, 1.46, 1.0, -2.18]
 
 
 @pytest.fixture(scope="module")
-def simpson():
-    from epicyclic import Brake, Clutch, GearTrain, PlanetarySet
-    from epicyclic.transmission import Transmission
-
-    train = GearTrain([
-        PlanetarySet.simple("front", sun="sun", ring="front_ring", carrier="out", z_sun=39, z_planet=23, z_ring=85,
-                            planets=4),
-        PlanetarySet.simple("rear", sun="sun", ring="out", carrier="rear_carrier", z_sun=34, z_planet=20, z_ring=74,
-                            planets=3),
-        Clutch("forward", "in", "front_ring"), Clutch("high_reverse", "in", "sun"), Brake("intermediate", "sun"),
-        Brake("low_reverse", "rear_carrier")])
-    t = Transmission(train, {"1": ["forward", "low_reverse"], "2": ["forward", "intermediate"],
-                             "3": ["forward", "high_reverse"], "R": ["high_reverse", "low_reverse"]}, "in", "out")
-    return Candidate.from_transmission(t)
+def simpson(simpson_with_teeth):
+    return Candidate.from_transmission(simpson_with_teeth)
 
 
 @pytest.fixture(scope="module")

@@ -28,7 +28,13 @@ from .fitting import combinations_of_elements, fit_ratios, single_swap_schedule
 from .mechanisms import Mechanism, enumerate_mechanisms
 from .screening import _grid, layout, screen
 from .spec import SynthesisError, SynthesisSpec
-from .teeth import TOOTH_WEIGHTS, choose_teeth, pick_teeth, tooth_objective, tooth_options
+from .teeth import (
+    TOOTH_WEIGHTS,
+    choose_teeth,
+    pick_teeth,
+    tooth_objective,
+    tooth_options,
+)
 
 __all__ = ["Arrangement", "Task", "TaskResult", "bounds", "plan", "search_task", "sized_candidate", "synthesize",
            "synthesize_spec"]
