@@ -1,5 +1,5 @@
 """``epicyclic synthesize``: the Simpson three-speed is rediscovered, and every printed candidate
-passes ``epicyclic gears`` on its own train file with the same ratios.
+passes ``epicyclic gears`` (same ratios), ``fit``, ``analyze`` and ``rate`` on its own train file.
 
 Targets: Ford C4 ratios 2.46, 1.46, 1.00, R −2.18 ('Ford C4 transmission', Wikipedia;
 reverse from ford-torino.de), 2 simple sets, 2 brakes, 2 clutches, ±1 % — the published
@@ -53,7 +53,10 @@ def test_simpson_arrangement_is_found(simpson_run):
     assert report["stats"]["mechanisms"] == 41  # every tie pattern of 2 sets with 2, 3 or 4 DOF
 
 
-def test_every_candidate_passes_gears_fit_and_analyze(simpson_run):
+def test_every_candidate_passes_gears_fit_analyze_and_rate(simpson_run):
+    """Every written candidate: same ratios in ``gears``, its geometry passes ``fit``, ``analyze`` solves it
+    and ``rate --gear all`` finds every mesh of every gear at or above S_Hmin and S_Fmin (ISO 6336, with the
+    [rating] inputs the synthesis sized it with: epicyclic.synthesis.sizing)."""
     out, report = simpson_run
     for cand, path in zip(report["candidates"], sorted((out / "files").glob("candidate_*.toml"))):
         result = runner.invoke(app, ["gears", str(path), "--format", "json"])
@@ -69,6 +72,10 @@ def test_every_candidate_passes_gears_fit_and_analyze(simpson_run):
         assert fitted.exit_code == 0, fitted.output
         sets = json.loads(fitted.stdout)["fitting"]
         assert len(sets) == 2 and all(s["fitting"]["passed"] for s in sets.values()), path
+        rated = runner.invoke(app, ["rate", str(path), "--gear", "all", "--format", "json"])
+        assert rated.exit_code == 0, rated.output
+        ratings = json.loads(rated.stdout)["ratings"]
+        assert {r["gear"] for r in ratings} == set(cand["ratios"]) and all(r["ok"] for r in ratings), path
         efficiency = json.loads(analysed.stdout)["solution"]["efficiency"]
         first = next(g for g in json.loads(result.stdout)["gears"] if g["gear"] == "1")
         assert efficiency == pytest.approx(first["efficiency_drive"], rel=1e-9)

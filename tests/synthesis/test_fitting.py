@@ -38,3 +38,37 @@ def test_fit_recovers_the_8hp_stationary_ratios_from_its_published_ratios():
     assert [tuple(combos[j]) for j in fit.schedule] == list(c.schedule)
     r = gear_ratios(c.mechanism, np.array([fit.stationary_ratios]), combos[list(fit.schedule)], c.input, c.output)
     assert r[0] == pytest.approx(fit.ratios, rel=1e-12)
+
+
+def test_single_swaps_are_preferred_among_combinations_of_identical_ratio():
+    """Ford 10R80 (examples/transmissions/ford_10r80_10speed.toml): first gear is 1 + 85/23 with A B C E,
+    A B D E or A B E F (set 4's sun at input speed, its ring held); only A B C E and A B E F shift to second
+    (A B C F) by one swap.  Given A B D E, the schedule takes an equivalent single-swap combination and keeps
+    every ratio (Naunheimer et al. 2011, section 12.3)."""
+    from pathlib import Path
+
+    from epicyclic.synthesis.fitting import single_swap_schedule
+    from epicyclic.transmission import Transmission
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "transmissions" / "ford_10r80_10speed.toml"
+    t = Transmission.from_file(path)
+    c = Candidate.from_transmission(t)
+    combos = combinations_of_elements(c.elements, 4)
+    rows = [int(np.flatnonzero((combos == np.array(s)).all(axis=1))[0]) for s in c.schedule]
+    # the file's names of the elements, by the gears each is engaged in
+    gears_of = {e: frozenset(k for k, s in enumerate(c.schedule) if e in s) for e in c.elements}
+    order = list(t.ratios)  # the candidate's gear order is the file's: 1 … 10, R
+    names = {n: next(e for e, g in gears_of.items() if g == frozenset(order.index(x) for x in order
+                                                                         if n in t.schedule[x]))
+             for n in "ABCDEF"}
+    label = {e: n for n, e in names.items()}
+    abde = tuple(sorted(names[n] for n in "ABDE"))
+    rows[0] = int(np.flatnonzero((combos == np.array(abde)).all(axis=1))[0])
+    i0 = np.array([[t.stationary_ratio for t in c.teeth], [-2.7, -1.9, -3.1, -2.2]])
+    before = gear_ratios(c.mechanism, i0[:1], combos[rows], c.input, c.output)
+    new = single_swap_schedule(c.mechanism, c.input, c.output, combos, tuple(rows), 10, i0)
+    after = gear_ratios(c.mechanism, i0[:1], combos[list(new)], c.input, c.output)
+    assert after == pytest.approx(before, rel=1e-12) and new[1:] == tuple(rows[1:])
+    sets = [set(combos[j]) for j in new[:10]]
+    assert all(len(a ^ b) == 2 for a, b in zip(sets, sets[1:]))  # one element out, one in, every shift
+    assert {label[e] for e in combos[new[0]]} in ({"A", "B", "C", "E"}, {"A", "B", "E", "F"})

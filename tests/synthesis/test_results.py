@@ -66,3 +66,14 @@ def test_a_candidate_file_holds_any_title(title):
     text = found.candidate_toml(1)
     assert tomllib.loads(text)["title"] == f"{title}, candidate 1"
     assert loads_train_file(text).title.endswith("candidate 1")  # it reads (control characters dropped from the title)
+
+
+def test_candidates_dropped_by_the_sizing_are_said():
+    from epicyclic.synthesis import SynthesisSpec
+    from epicyclic.synthesis.results import SynthesisResult
+
+    spec = SynthesisSpec.create([2.46, 1.46, 1.0, -2.18], 2, {"brakes": 2, "clutches": 2}, {"input_torque": 1e6})
+    stats = {"candidates": 0, "architectures": 10, "mechanisms": 2, "screened": 3, "fitted": 3, "tasks": 1,
+             "workers": 1, "seconds": 0.1, "rejected_sizing": 3}
+    text = SynthesisResult(spec, (), stats).table()
+    assert "3 dropped: a set no ISO 54 module up to 50 mm carries at 1e+06 N·m" in text

@@ -181,3 +181,31 @@ def test_from_text_names_the_source_it_is_given(tmp_path):
         SynthesisSpec.from_text(text + "[bounds]\nsun = [17]\n", "pasted spec")
     with pytest.raises(SynthesisError, match="^pasted spec: not valid TOML"):
         SynthesisSpec.from_text("[targets", "pasted spec")
+
+
+@pytest.mark.parametrize("text, where", [
+    ("[sizing]\nallowable_stress = 200\n", "[sizing], key 'allowable_stress': the Lewis pre-dimensioning was replaced"),
+    ("[sizing]\nface_width_ratio = 5\n", "[sizing], key 'face_width_ratio': expected 0.05"),
+    ("[rating]\nlife = -1\n", "[rating], key 'life'"),
+    ("[rating]\nmaterial = 3\n", "[rating], key 'material': expected a material name"),
+    ("[rating]\nmaterial = \"Unobtainium\"\n", "[rating], key 'material'"),
+    ("[rating]\nhardness = 60\n", "[rating], key 'hardness': unknown rating input"),
+    ("[teeth]\nring_balance = -1\n", "[teeth], key 'ring_balance': a weight is a finite number >= 0"),
+    ("[teeth]\nrings = 1\n", "[teeth], key 'rings': unknown"),
+])
+def test_sizing_rating_and_teeth_tables_name_their_keys(tmp_path, text, where):
+    path = tmp_path / "spec.toml"
+    path.write_text("[targets]\nforward = [2.46, 1.46, 1.0]\nreverse = [-2.18]\n" + text)
+    with pytest.raises(SynthesisError) as info:
+        SynthesisSpec.from_file(path)
+    assert str(info.value).startswith(f"{path}: ") and where in str(info.value)
+
+
+def test_sizing_rating_and_teeth_values_are_kept():
+    s = SynthesisSpec.create([2.46, 1.46, 1.0, -2.18], 2, {"brakes": 2, "clutches": 2},
+                             {"face_width_ratio": 0.7, "input_speed": 2000, "rating": {"life": 5000, "S_Fmin": 1.6},
+                              "tooth_weights": {"ring_balance": 2}})
+    assert (s.face_width_ratio, s.input_speed) == (0.7, 2000.0)
+    assert dict(s.rating) == {"life": 5000.0, "S_Fmin": 1.6} and dict(s.tooth_weights)["ring_balance"] == 2.0
+    with pytest.raises(SynthesisError, match="key 'constraints.rating.life'"):
+        SynthesisSpec.create([2.46, -2.18], 2, {"brakes": 2, "clutches": 2}, {"rating": {"life": 0}})

@@ -24,7 +24,7 @@ import numpy as np
 
 from .kinematics import element_shafts
 from .mechanisms import Mechanism
-from .sizing import SetSize, size_set
+from .sizing import RATING_DEFAULTS, SetSize, rating_spec, size_sets
 from .teeth import SetTeeth
 
 __all__ = ["Candidate", "evaluate", "gear_names"]
@@ -56,8 +56,11 @@ class Candidate:
         Filled by :func:`evaluate` (see :attr:`HEADER`).
     sizes : tuple of SetSize or None
         Module and face width per set from :func:`evaluate` (None: a plus set, no tooth geometry).
-    input_torque : float
-        N·m at the operating point of the train file (the torque the sets are sized for).
+    input_torque, input_speed : float
+        N·m and 1/min at the operating point of the train file (the point the sets are sized for).
+    rating : tuple of (str, value)
+        The rating inputs the sets were sized with (:data:`~epicyclic.synthesis.sizing.RATING_KEYS`);
+        the train file's ``[rating]`` table.
     """
 
     mechanism: Mechanism
@@ -73,6 +76,8 @@ class Candidate:
     metrics: dict[str, Any] = field(default_factory=dict, compare=False)
     sizes: tuple[SetSize | None, ...] = field(default=(), compare=False)
     input_torque: float = field(default=100.0, compare=False)
+    input_speed: float = field(default=1000.0, compare=False)
+    rating: tuple[tuple[str, Any], ...] = field(default=(), compare=False)
 
     # ------------------------------------------------------------------ names
     def shaft_name(self, shaft: int) -> str:
@@ -306,9 +311,10 @@ class Candidate:
             lines.append(f"stationary_efficiency = {self.stationary_efficiency}")
             size = self.sizes[k] if k < len(self.sizes) else None
             if size is not None:
-                lines += [f"# Lewis pre-dimensioning: largest sun torque {size.sun_torque:.1f} N·m, bending stress "
-                          f"{size.stress:.0f} MPa (epicyclic.synthesis.sizing)",
-                          "[planetary.geometry]", f"module = {size.module}", f"face_width = {size.face_width}"]
+                lines += [f"# ISO 6336 sizing: smallest ISO 54 module meeting S_Hmin and S_Fmin in every gear (set by "
+                          f"gear {size.gear}; lowest S_H {size.safety_pitting:.2f}, S_F {size.safety_bending:.2f}; "
+                          "epicyclic.synthesis.sizing)",
+                          "[planetary.geometry]", f"module = {size.module}", f"face_width = {size.face_width!r}"]
         shafts = element_shafts(self.mechanism.shafts)
         for e in sorted(self.elements, key=self.element_name):
             s = shafts[e]
@@ -318,9 +324,14 @@ class Candidate:
             else:
                 lines += ["", "[[brake]]", f'name = "{self.element_name(e)}"', f'shaft = "{self.shaft_name(s[0])}"',
                           "engaged = false"]
-        lines += ["", f"# first gear at 1000 1/min and {self.input_torque:g} N·m on the input (epicyclic analyze "
-                  "solves it)", "[operating_point]", f'gear = "{self.gears[0]}"', "speeds = { in = 1000.0 }",
-                  f"torques = {{ in = {float(self.input_torque)} }}", 'drives = ["in"]', 'loads = ["out"]']
+        if self.rating:
+            lines += ["", "# the rating inputs the sets were sized with (epicyclic rate reads them)", "[rating]"]
+            lines += [f"{k} = {_toml_value(v)}" for k, v in self.rating if k != "viscosity_40"]
+            lines += ["[rating.lubricant]", f"viscosity_40 = {_toml_value(dict(self.rating)['viscosity_40'])}"]
+        lines += ["", f"# first gear at {self.input_speed:g} 1/min and {self.input_torque:g} N·m on the input "
+                  "(epicyclic analyze solves it)", "[operating_point]", f'gear = "{self.gears[0]}"',
+                  f"speeds = {{ in = {float(self.input_speed)} }}", f"torques = {{ in = {float(self.input_torque)} }}",
+                  'drives = ["in"]', 'loads = ["out"]']
         lines += ["", "[transmission]", 'input = "in"', 'output = "out"', "", "[transmission.schedule]"]
         for gear, engaged in self.named_schedule.items():
             lines.append(f'"{gear}" = [' + ", ".join(f'"{n}"' for n in engaged) + "]")
@@ -334,8 +345,8 @@ class Candidate:
         dict
             ``architecture``, ``ties``, ``input``, ``output``, ``schedule`` (gear → element
             names), ``ratios`` and ``targets`` (gear → n_in/n_out), ``teeth`` and ``sizes`` (module,
-            face width in mm, sun torque in N·m, Lewis stress in MPa, per set), ``input_torque`` (N·m) and the
-            ranking metrics (errors, efficiencies, element torque, planet speed, double shifts).
+            face width in mm, sizing gear, sun torque in N·m, lowest S_H and S_F, per set), ``input_torque``
+            (N·m), ``rating`` (the inputs sized with) and the ranking metrics (errors, efficiencies, element torque, planet speed, double shifts).
         """
         return {"architecture": self.describe(), "ties": self.mechanism.describe(),
                 "input": self.shaft_name(self.input), "output": self.shaft_name(self.output),
@@ -343,7 +354,7 @@ class Candidate:
                 "ratios": dict(zip(self.gears, self.ratios)), "targets": dict(zip(self.gears, self.targets)),
                 "teeth": [t.to_dict() for t in self.teeth],
                 "sizes": [None if z is None else z.to_dict() for z in self.sizes], "input_torque": self.input_torque,
-                **self.metrics}
+                "rating": dict(self.rating), **self.metrics}
 
 
 def _members(mech: Mechanism, shaft: int) -> str:
@@ -351,8 +362,13 @@ def _members(mech: Mechanism, shaft: int) -> str:
     return "+".join(f"{p}{k + 1}" for k, p in members) or "separate shaft"
 
 
-def evaluate(candidate: Candidate, input_torque: float | None = None, allowable_stress: float = 200.0,
-             face_width_factor: float = 10.0) -> Candidate:
+def _toml_value(value: Any) -> str:
+    """A rating input as TOML: a quoted string or a number."""
+    return f'"{value}"' if isinstance(value, str) else repr(float(value))
+
+
+def evaluate(candidate: Candidate, input_torque: float | None = None, rating: Any = (),
+             face_width_ratio: float = 0.5, input_speed: float = 1000.0) -> Candidate:
     """Fill the figures of merit with the project's solver (drive and coast, losses by power flow).
 
     Metrics (all per input speed, torque or power):
@@ -369,26 +385,37 @@ def evaluate(candidate: Candidate, input_torque: float | None = None, allowable_
     * ``step_irregularity``: largest change of log step between neighbouring steps;
     * ``shafts``: number of shafts (fewer is simpler); ``ratio_error``: largest |r/target − 1|.
 
-    With ``input_torque`` (N·m) every simple set is also sized (:func:`~epicyclic.synthesis.sizing.size_set`,
-    Lewis) for its largest sun torque over the gears: the candidate's ``sizes``.
+    With ``input_torque`` (N·m) every simple set is also sized by ISO 6336 in every gear at
+    ``input_speed`` (:func:`~epicyclic.synthesis.sizing.size_sets`): the candidate's ``sizes``.
 
     Parameters
     ----------
     candidate : Candidate
     input_torque : float, optional
-        N·m; None leaves the sets unsized.
-    allowable_stress : float, default 200
-        MPa, Lewis bending stress allowed.
-    face_width_factor : float, default 10
-        b / m.
+        N·m at the sizing point; None leaves the sets unsized.
+    rating : mapping or sequence of (key, value), optional
+        Rating inputs over :data:`~epicyclic.synthesis.sizing.RATING_DEFAULTS`.
+    face_width_ratio : float, default 0.5
+        b / d_sun.
+    input_speed : float, default 1000
+        1/min at the sizing point.
 
     Returns
     -------
     Candidate
         With ``metrics`` (and ``sizes``) filled.
+
+    Raises
+    ------
+    RatingError
+        A set that no module up to 50 mm can carry.
+
+    References
+    ----------
+    ISO 6336-2:2019 and -3:2019 (via :func:`~epicyclic.rating.sizing.smallest_module`).
     """
     t = candidate.transmission()
-    analysis = t.analyze_all()
+    analysis = t.analyze_all(input_speed=input_speed, input_torque=input_torque or 100.0)
     eff = {g.gear: g.efficiency_drive for g in analysis.gears}
     torque = max((abs(v) for g in analysis.gears for v in g.element_torques.values()), default=0.0)
     capacity: dict[str, float] = {}  # each element's largest torque over the gears
@@ -433,16 +460,14 @@ def evaluate(candidate: Candidate, input_torque: float | None = None, allowable_
         "ratio_error": float(max(abs(r / g - 1) for r, g in zip(candidate.ratios, candidate.targets))),
     }
     sizes: tuple[SetSize | None, ...] = ()
+    values = tuple(dict(rating).items())
     if input_torque is not None:
-        sun_torque = [0.0] * len(candidate.teeth)  # largest |T_sun| / T_in over the gears
-        for g in analysis.gears:
-            t_in = abs(g.drive.torque("in")) or 1.0
-            for k in range(len(candidate.teeth)):
-                sun_torque[k] = max(sun_torque[k], abs(g.drive.elements[f"P{k + 1}"].torques["sun"]) / t_in)
-        sizes = tuple(None if tooth.z_planet is None else
-                      size_set(sun_torque[k] * input_torque, tooth.z_sun, tooth.z_planet, tooth.planets,
-                               allowable_stress, face_width_factor)
-                      for k, tooth in enumerate(candidate.teeth))
+        full = tuple({**RATING_DEFAULTS, **dict(values)}.items())
+        solutions = {g.gear: g.drive for g in analysis.gears}
+        names = [None if tooth.z_planet is None else f"P{k + 1}" for k, tooth in enumerate(candidate.teeth)]
+        sizes = size_sets(solutions, names, rating_spec(full), face_width_ratio, input_torque)
         metrics["modules"] = [None if z is None else z.module for z in sizes]
-    return replace(candidate, metrics=metrics, sizes=sizes,
-                   input_torque=candidate.input_torque if input_torque is None else float(input_torque))
+        values = full
+    return replace(candidate, metrics=metrics, sizes=sizes, rating=values if input_torque is not None else (),
+                   input_torque=candidate.input_torque if input_torque is None else float(input_torque),
+                   input_speed=float(input_speed))

@@ -28,7 +28,7 @@ import numpy as np
 from .kinematics import gear_ratios
 from .mechanisms import Mechanism
 
-__all__ = ["RatioFit", "assign", "fit_ratios", "combinations_of_elements"]
+__all__ = ["RatioFit", "assign", "fit_ratios", "combinations_of_elements", "single_swap_schedule"]
 
 
 @dataclass(frozen=True)
@@ -177,3 +177,67 @@ def fit_ratios(mechanism: Mechanism, input: int, output: int, combos: np.ndarray
         if error <= tolerance * (1 + 1e-9) and (best is None or error < best.error):
             best = RatioFit(tuple(float(v) for v in x), tuple(picks), tuple(float(v) for v in r[picks]), error)
     return best
+
+
+def single_swap_schedule(mechanism: Mechanism, input: int, output: int, combos: np.ndarray,
+                         schedule: tuple[int, ...], forward: int, points: np.ndarray) -> tuple[int, ...]:
+    """The schedule with the fewest multi-element shifts among combinations of identical ratio.
+
+    Two combinations whose ratios agree (relative 1e-9) at every one of ``points`` (the fitted
+    stationary ratios and a second, unrelated point: multilinear fractions that agree at two generic
+    points are the same function there, and a coincidence at both is not met in practice) are the same
+    gear; of them the forward gears take, by dynamic programming over the gear sequence, those that make
+    the fewest consecutive shifts swap more than one element (Naunheimer et al. 2011, section 12.3:
+    single-swap, clutch-to-clutch shifts).  Ties keep the fitted choice; reverse gears are kept.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+    input, output : int
+        Shaft numbers.
+    combos : ndarray (C, k)
+        The architecture's element combinations.
+    schedule : tuple of int
+        Row of ``combos`` per target (forward gears first).
+    forward : int
+        Number of forward gears.
+    points : ndarray (P, S)
+        Stationary ratios at which ratios must agree.
+
+    Returns
+    -------
+    tuple of int
+        Same length as ``schedule``.
+
+    Examples
+    --------
+    >>> from epicyclic.synthesis.mechanisms import Mechanism
+    >>> m = Mechanism(("simple",), (0, 1, 2))        # one set: brake sun, ring or carrier
+    >>> single_swap_schedule(m, 0, 2, np.array([[1]]), (0,), 1, np.array([[-2.0], [-3.0]]))
+    (0,)
+    """
+    ratios = gear_ratios(mechanism, np.asarray(points, float), combos, input, output)  # (P, C)
+    sets = [set(map(int, row)) for row in combos]
+    choices = []
+    for g, row in enumerate(schedule[:forward]):
+        same = np.all(np.isclose(ratios, ratios[:, [row]], rtol=1e-9, atol=0.0), axis=0)
+        others = [j for j in np.flatnonzero(same) if j != row]
+        choices.append([row] + [int(j) for j in others])
+    cost = [[0] * len(choices[0])]
+    back: list[list[int]] = []
+    for g in range(1, len(choices)):
+        row_cost, row_back = [], []
+        for j in choices[g]:
+            steps = [cost[-1][i] + (len(sets[p] ^ sets[j]) > 2) for i, p in enumerate(choices[g - 1])]
+            best = int(np.argmin(steps))  # first minimum: the fitted choice on ties
+            row_cost.append(steps[best])
+            row_back.append(best)
+        cost.append(row_cost)
+        back.append(row_back)
+    if not choices:
+        return tuple(schedule)
+    pick = [int(np.argmin(cost[-1]))]
+    for g in range(len(choices) - 1, 0, -1):
+        pick.append(back[g - 1][pick[-1]])
+    pick.reverse()
+    return tuple(choices[g][i] for g, i in enumerate(pick)) + tuple(schedule[forward:])

@@ -145,6 +145,9 @@ class SynthesisResult:
         text = (f"{s['candidates']} candidates from {s['architectures']:,} architectures on {s['mechanisms']:,} "
                 f"mechanisms ({s['screened']:,} passed screening, {s['fitted']:,} fitted); {s['tasks']} tasks "
                 f"on {s['workers']} worker(s), {s['seconds']:.1f} s")
+        if s.get("rejected_sizing"):
+            text += (f"; {s['rejected_sizing']:,} dropped: a set no ISO 54 module up to 50 mm carries at "
+                     f"{self.spec.input_torque:g} N·m (ISO 6336; lower [sizing] input_torque or a stronger [rating])")
         if not s.get("complete", True) and s.get("stopped"):
             text += (f". INCOMPLETE: {s['stopped']} after {s['tasks_done']} of {s['tasks']} tasks; the candidates are "
                      "those of the finished tasks")

@@ -22,14 +22,22 @@ from typing import Any
 
 import numpy as np
 
+from ..rating.errors import RatingError
 from .candidate import Candidate, evaluate
-from .fitting import combinations_of_elements, fit_ratios
+from .fitting import combinations_of_elements, fit_ratios, single_swap_schedule
 from .mechanisms import Mechanism, enumerate_mechanisms
 from .screening import _grid, layout, screen
 from .spec import SynthesisError, SynthesisSpec
-from .teeth import choose_teeth, tooth_options
+from .teeth import (
+    TOOTH_WEIGHTS,
+    choose_teeth,
+    pick_teeth,
+    tooth_objective,
+    tooth_options,
+)
 
-__all__ = ["Task", "TaskResult", "plan", "search_task", "synthesize", "synthesize_spec", "assemble", "bounds"]
+__all__ = ["Arrangement", "Task", "TaskResult", "assemble", "bounds", "plan", "search_task", "sized_candidate",
+           "synthesize", "synthesize_spec"]
 
 
 @dataclass(frozen=True)
@@ -97,6 +105,73 @@ def plan(spec: SynthesisSpec, chunk: int | None = None) -> list[Task]:
     return tasks
 
 
+@dataclass(frozen=True)
+class Arrangement:
+    """Where a candidate's teeth go: mechanism, input, output, elements and schedule."""
+
+    mechanism: Mechanism
+    input: int
+    output: int
+    elements: tuple[int, ...]
+    schedule: tuple[tuple[int, ...], ...]
+
+
+def sized_candidate(spec: SynthesisSpec, where: Arrangement, chosen: tuple, targets: np.ndarray) -> Candidate:
+    """The evaluated candidate of the admissible tooth combinations of least objective (:mod:`.teeth`).
+
+    The smallest-error combination is sized (ISO 6336); with a ring-balance weight, the option of least
+    estimated objective (:func:`~epicyclic.synthesis.teeth.pick_teeth`) is sized too and the lower true
+    objective of the two is kept.
+
+    Parameters
+    ----------
+    spec : SynthesisSpec
+        Tolerance, tooth weights, sizing and rating inputs.
+    where : Arrangement
+        Mechanism, input, output, elements and schedule.
+    chosen : tuple
+        The admissible combinations, their gear ratios and errors (:func:`~epicyclic.synthesis.teeth.choose_teeth`).
+    targets : ndarray
+        Forward then reverse targets.
+
+    Returns
+    -------
+    Candidate
+        Evaluated and sized.
+
+    Raises
+    ------
+    RatingError
+        A set no module up to 50 mm can carry.
+
+    References
+    ----------
+    ISO 6336-2:2019, ISO 6336-3:2019 (the sizing); Kahraman et al. 2004, section 3 (tooth counts for a ratio set).
+    """
+    admissible, gears, errors = chosen
+    weights = {**TOOTH_WEIGHTS, **dict(spec.tooth_weights)}
+
+    def sized(k: int) -> Candidate:
+        cand = Candidate(where.mechanism, where.input, where.output, where.elements, where.schedule, admissible[k],
+                         tuple(float(r) for r in gears[k]), tuple(float(t) for t in targets), len(spec.forward),
+                         spec.stationary_efficiency)
+        return evaluate(cand, spec.input_torque, spec.rating, spec.face_width_ratio, spec.input_speed)
+
+    def objective(cand: Candidate, k: int) -> float:
+        rings = [[np.nan if z is None else z.module * t.z_ring for t, z in zip(cand.teeth, cand.sizes)]]
+        return float(tooth_objective(errors[k:k + 1], np.array(rings), spec.tolerance, weights)[0])
+
+    best = sized(0)
+    if len(admissible) == 1 or weights["ring_balance"] == 0:
+        return best
+    rating = dict(best.rating)
+    k = pick_teeth(admissible, errors, best.sizes, spec.tolerance, weights, rating["S_Hmin"], rating["S_Fmin"])
+    if k == 0:
+        return best
+    other = sized(k)
+    return other if objective(other, k) < objective(best, 0) else best
+
+
 def search_task(task: Task) -> TaskResult:
     """Run one task: screen, fit, choose teeth and evaluate every surviving architecture."""
     start, cpu = time.perf_counter(), time.process_time()
@@ -107,7 +182,7 @@ def search_task(task: Task) -> TaskResult:
     low, high = bounds(spec)
     out: list[Candidate] = []
     examined = screened = fitted = 0
-    rejected = {"ratios": 0, "teeth": 0}
+    rejected = {"ratios": 0, "teeth": 0, "sizing": 0}
     teeth_cache: dict[tuple[str, float], list] = {}
     for mech in task.mechanisms:
         lay = layout(mech.shafts, spec.brakes, spec.clutches, task.engaged)
@@ -126,6 +201,9 @@ def search_task(task: Task) -> TaskResult:
                 rejected["ratios"] += 1
                 continue
             fitted += 1
+            # among combinations of identical ratio, those that shift by single swaps
+            probe = np.array([fit.stationary_ratios, 0.37 * low + 0.63 * high])
+            rows = single_swap_schedule(mech, p.input, p.output, combos, fit.schedule, forward.size, probe)
             options = []
             for kind, i0 in zip(spec.kinds, fit.stationary_ratios):
                 key = (kind, round(i0, 4))
@@ -133,16 +211,16 @@ def search_task(task: Task) -> TaskResult:
                     teeth_cache[key] = tooth_options(i0, kind, tolerance=spec.tolerance, sun=spec.sun,
                                                      planet=spec.planet, planets=spec.planets, hunting=spec.hunting)
                 options.append(teeth_cache[key])
-            chosen = choose_teeth(mech, p.input, p.output, combos, fit.schedule, targets, options, spec.tolerance)
+            chosen = choose_teeth(mech, p.input, p.output, combos, rows, targets, options, spec.tolerance)
             if chosen is None:
                 rejected["teeth"] += 1
                 continue
-            teeth, ratios, _ = chosen
-            cand = Candidate(mech, p.input, p.output, p.elements,
-                             tuple(tuple(int(e) for e in combos[j]) for j in fit.schedule), teeth,
-                             tuple(float(r) for r in ratios), tuple(float(t) for t in targets), forward.size,
-                             spec.stationary_efficiency)
-            out.append(evaluate(cand, spec.input_torque, spec.allowable_stress, spec.face_width_factor))
+            schedule = tuple(tuple(int(e) for e in combos[j]) for j in rows)
+            try:
+                out.append(sized_candidate(spec, Arrangement(mech, p.input, p.output, p.elements, schedule),
+                                            chosen, targets))
+            except RatingError:  # no module of the series carries a set: never written unsized
+                rejected["sizing"] += 1
     return TaskResult(tuple(out), len(task.mechanisms), examined, screened, fitted, time.perf_counter() - start,
                       rejected, time.process_time() - cpu)
 
@@ -308,6 +386,7 @@ def assemble(spec: SynthesisSpec, results: Sequence[TaskResult | None], estimate
         "fitted": sum(r.fitted for r in finished),
         "rejected_ratios": sum(r.rejected.get("ratios", 0) for r in finished),
         "rejected_teeth": sum(r.rejected.get("teeth", 0) for r in finished),
+        "rejected_sizing": sum(r.rejected.get("sizing", 0) for r in finished),
         "candidates": len(ranked),
         "task_seconds": sum(r.seconds for r in finished),
         "task_cpu_seconds": sum(r.cpu_seconds for r in finished),

@@ -1,172 +1,217 @@
-"""Module and face width of each set from the torque it carries: a Lewis pre-dimensioning.
+"""Module and face width of each set of a candidate: ISO 6336 pitting and root, in every gear.
 
-Until the load-capacity rating (ISO 6336) sizes the sets, every synthesised
-candidate gets a module and a face width from its own torques, so that its
-train file carries real geometry (``epicyclic fit`` checks it, ``analyze``
-solves it).  For each simple set:
+Every synthesised candidate gets real geometry, so that its train file passes
+``epicyclic fit``, ``analyze`` and ``rate``.  For each simple set the module is the
+smallest ISO 54 module (series I and II) at which every mesh of the set meets S_Hmin
+(pitting, ISO 6336-2) and S_Fmin (tooth root, ISO 6336-3) **in every gear** that
+loads it, found by the rating's own search :func:`~epicyclic.rating.sizing.smallest_module`:
 
-* the largest sun torque T_sun over all gears (drive, from the project's
-  solver, × the given input torque) is shared by the N planets, so the
-  tangential force at the sun mesh is F_t = 2·T_sun / (N·m·z_sun); the planet
-  passes the same force on to the ring;
-* the face width is b = k·m (k = ``face_width_factor``; Shigley's rule of thumb
-  3p ≤ b ≤ 5p is k = 9.4 … 15.7);
-* the Lewis bending stress σ = F_t / (b·m·Y) (Lewis 1892; Budynas & Nisbett,
-  *Shigley's Mechanical Engineering Design*, eq. 14-3) on the weaker of sun and
-  planet (the smaller form factor Y of Table 14-2, 20° full depth) must not
-  exceed the allowable stress, so m³ ≥ 2·T_sun / (N·k·Y·z_sun·σ_allow);
-* the module is the smallest of ISO 54 series I that meets it.
+* the gears are solved at the sizing point (``[sizing] input_torque``, default 300 N·m,
+  and ``input_speed``, default 1000 1/min: the operating point of the train file);
+* the gear with the largest sun torque is sized first; every other loaded gear is then
+  rated at that module and raises it where a mesh falls short (the search resumes at the
+  module reached, so each further gear costs one rating when the module holds);
+* a last pass rates every loaded gear at the final module and keeps the lowest S_H and
+  S_F over gears and meshes (what the candidate's ``rate --gear all`` reports);
+* the face width grows with the module, b = ``face_width_ratio`` · d_sun (b/d1, default
+  0.5), the gears are unshifted (x = 0) with the ISO 53 A basic rack;
+* the rating inputs are the spec's ``[rating]`` table (material, R_z of flank and root,
+  ν_40, life, minimum safeties, K_A), by default case-carburised 18CrNiMo7-6, R_z 3 / 10 µm,
+  ν_40 = 100 mm²/s, 20 000 h, S_Hmin 1.0, S_Fmin 1.4, K_A 1.0 (stated in
+  :data:`RATING_DEFAULTS`); the written train file carries the same table, so ``rate`` rates
+  with what sized it.
 
-It is a pre-dimensioning: no dynamic, load-distribution or life factors, no
-contact stress, internal teeth (stronger in bending) not checked.  The
-allowable stress stands for all of them; the default, 200 MPa, is about half
-the bending endurance of case-hardened gear steel.
+A set that no module of the series up to 50 mm can carry raises
+:class:`~epicyclic.rating.errors.RatingError` (the candidate is dropped, never written
+unsized).  A gear in which a set carries no torque (below 10⁻⁹ of the input torque) or
+whose members all turn together (locked: the teeth do not roll, no load cycles) does not
+size it.  Double-planet sets have no planet tooth counts yet, so no geometry.
 
 References
 ----------
-Lewis, W. (1892), "Investigation of the strength of gear teeth", Proc. Engineers Club of
-Philadelphia; Budynas, R. G.; Nisbett, J. K., *Shigley's Mechanical Engineering Design*,
-eq. (14-3), Table 14-2 (Lewis form factor, 20°, full depth) and Example 14-1; ISO 54:1996
-(modules, series I).
+ISO 54:1996 (modules); ISO 6336-1:2019, -2:2019 eq. (4) (S_H), -3:2019 eq. (5) (S_F);
+ISO 6336-5:2016 (materials); ISO 21771:2007 (d = m·z).
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any
 
-__all__ = ["LEWIS_FORM_FACTORS", "MODULES", "SetSize", "lewis_form_factor", "lewis_stress", "minimum_module",
-           "size_set"]
+__all__ = ["RATING_DEFAULTS", "RATING_KEYS", "SetSize", "check_rating", "rating_spec", "size_sets"]
 
-#: Lewis form factor Y by number of teeth, 20° pressure angle, full-depth teeth (Shigley Table 14-2).
-LEWIS_FORM_FACTORS: tuple[tuple[int, float], ...] = (
-    (12, 0.245), (13, 0.261), (14, 0.277), (15, 0.290), (16, 0.296), (17, 0.303), (18, 0.309), (19, 0.314),
-    (20, 0.322), (21, 0.328), (22, 0.331), (24, 0.337), (26, 0.346), (28, 0.353), (30, 0.359), (34, 0.371),
-    (38, 0.384), (43, 0.397), (50, 0.409), (60, 0.422), (75, 0.435), (100, 0.447), (150, 0.460), (300, 0.472),
-    (400, 0.480))
+#: The rating inputs of the sizing when the spec's ``[rating]`` table leaves them out.
+RATING_DEFAULTS: Mapping[str, Any] = MappingProxyType({
+    "material": "18CrNiMo7-6", "flank_roughness": 3.0, "root_roughness": 10.0, "viscosity_40": 100.0,
+    "life": 20000.0, "S_Hmin": 1.0, "S_Fmin": 1.4, "application_factor": 1.0})
+#: Keys a synthesis spec's ``[rating]`` table may give.
+RATING_KEYS = tuple(RATING_DEFAULTS)
 
-#: Modules of ISO 54 series I, mm.
-MODULES: tuple[float, ...] = (1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 16.0, 20.0, 25.0,
-                              32.0, 40.0, 50.0)
-
-
-def lewis_form_factor(teeth: int) -> float:
-    """Y of Table 14-2 (Shigley), linear between its rows; 0.480 past 400 teeth.
-
-    Parameters
-    ----------
-    teeth : int
-        At least 12 (the table's first row).
-
-    Raises
-    ------
-    ValueError
-        Fewer than 12 teeth.
-
-    >>> lewis_form_factor(16), round(lewis_form_factor(23), 4)
-    (0.296, 0.334)
-    """
-    if teeth < LEWIS_FORM_FACTORS[0][0]:
-        raise ValueError(f"the Lewis form factor table starts at 12 teeth, got {teeth}")
-    for (z0, y0), (z1, y1) in zip(LEWIS_FORM_FACTORS, LEWIS_FORM_FACTORS[1:]):
-        if z0 <= teeth <= z1:
-            return y0 + (y1 - y0) * (teeth - z0) / (z1 - z0)
-    return LEWIS_FORM_FACTORS[-1][1]
-
-
-def lewis_stress(force: float, face_width: float, module: float, form_factor: float) -> float:
-    """Lewis bending stress σ = F_t / (b·m·Y) (Shigley eq. 14-3 in modules), MPa for N and mm.
-
-    Parameters
-    ----------
-    force : float
-        Tangential force F_t, N.
-    face_width, module : float
-        b and m, mm.
-    form_factor : float
-        Lewis Y.
-    """
-    return force / (face_width * module * form_factor)
+#: Torque below which (× the input torque) a set is idle in a gear.
+_IDLE = 1e-9
 
 
 @dataclass(frozen=True)
 class SetSize:
-    """Module and face width of one set, and the figures they come from.
+    """Module and face width of one set, and the ratings they come from.
 
     Attributes
     ----------
     module, face_width : float
         mm.
+    gear : str
+        The gear whose load set the module (the last one to raise it).
     sun_torque : float
-        Largest sun torque over the gears, N·m.
-    stress : float
-        Lewis bending stress at this module, MPa (≤ the allowable stress).
+        Largest |T_sun| over the gears at the sizing point, N·m.
+    safety_pitting, safety_bending : float
+        Lowest S_H and S_F over the loaded gears and the set's meshes at this module.
     """
 
     module: float
     face_width: float
+    gear: str
     sun_torque: float
-    stress: float
+    safety_pitting: float
+    safety_bending: float
 
     def to_dict(self) -> dict:
-        """``module`` and ``face_width`` (mm), ``sun_torque`` (N·m), ``stress`` (MPa)."""
-        return {"module": self.module, "face_width": self.face_width, "sun_torque": self.sun_torque,
-                "stress": self.stress}
+        """``module`` and ``face_width`` (mm), ``gear``, ``sun_torque`` (N·m), ``safety_pitting``, ``safety_bending``."""
+        return {"module": self.module, "face_width": self.face_width, "gear": self.gear,
+                "sun_torque": self.sun_torque, "safety_pitting": self.safety_pitting,
+                "safety_bending": self.safety_bending}
 
 
-def size_set(sun_torque: float, z_sun: int, z_planet: int, planets: int, allowable_stress: float = 200.0,
-             face_width_factor: float = 10.0) -> SetSize:
-    """The smallest ISO 54 series I module whose Lewis stress stays within ``allowable_stress``.
+def rating_spec(values: Mapping[str, Any] | Sequence[tuple[str, Any]] = ()):
+    """The :class:`~epicyclic.rating.RatingSpec` of the sizing: ``values`` over :data:`RATING_DEFAULTS`.
 
     Parameters
     ----------
-    sun_torque : float
-        N·m (its magnitude is used).
-    z_sun, z_planet, planets : int
-        Teeth and number of planets.
-    allowable_stress : float, default 200
-        MPa.
-    face_width_factor : float, default 10
-        b / m.
+    values : mapping or sequence of (key, value)
+        Keys of :data:`RATING_KEYS` (the spec's ``[rating]`` table).
 
     Returns
     -------
-    SetSize
+    RatingSpec
 
     Raises
     ------
-    ValueError
-        No module of the series is large enough (a torque beyond this pre-dimensioning).
+    RatingError
+        A value out of range or an unknown material.
 
-    Examples
-    --------
-    >>> s = size_set(300.0, 40, 20, 3)   # F_t = 2·300 000 N·mm / (3·m·40)
-    >>> s.module, s.face_width, round(s.stress, 1)
-    (2.0, 20.0, 194.1)
+    >>> rating_spec({"life": 5000}).life, rating_spec().material.name
+    (5000.0, '18CrNiMo7-6')
     """
-    y = min(lewis_form_factor(z_sun), lewis_form_factor(z_planet))
-    torque = abs(sun_torque) * 1000.0  # N·mm
-    for m in MODULES:
-        force = 2.0 * torque / (planets * m * z_sun)
-        stress = lewis_stress(force, face_width_factor * m, m, y)
-        if stress <= allowable_stress * (1 + 1e-12):
-            return SetSize(m, face_width_factor * m, abs(sun_torque), stress)
-    raise ValueError(f"a sun torque of {abs(sun_torque):.4g} N·m needs a module above {MODULES[-1]:g} mm")
+    from ..rating import RatingSpec
+
+    merged = {**RATING_DEFAULTS, **dict(values)}
+    return RatingSpec(**merged)
 
 
-def minimum_module(sun_torque: float, z_sun: int, z_planet: int, planets: int, allowable_stress: float,
-                   face_width_factor: float) -> float:
-    """The exact (not rounded) module m = (2·T / (N·k·Y·z_sun·σ))^(1/3), mm.
+def check_rating(given: Any, error: Any) -> tuple[tuple[str, Any], ...]:
+    """Validated rating inputs of the sizing: known keys, values the rating accepts (checked by building it).
 
     Parameters
     ----------
-    sun_torque : float
-        N·m.
-    z_sun, z_planet, planets : int
-    allowable_stress : float
-        MPa.
-    face_width_factor : float
-        b / m.
-    """
-    y = min(lewis_form_factor(z_sun), lewis_form_factor(z_planet))
-    return (2.0 * abs(sun_torque) * 1000.0 / (planets * face_width_factor * y * z_sun * allowable_stress)) ** (1 / 3)
+    given : mapping
+        The spec's ``[rating]`` table.
+    error : callable (key, message) → Exception
+        Builds the error naming the key (the spec's place).
 
+    Returns
+    -------
+    tuple of (str, value)
+    """
+    import re
+
+    from ..errors import EpicyclicError
+    from ..text import short
+
+    if not isinstance(given, Mapping):
+        raise error("rating", f"expected a table of rating inputs, got {short(given)}.")
+    for key, value in given.items():
+        if key not in RATING_KEYS:
+            raise error(str(key), f"unknown rating input; use {', '.join(RATING_KEYS)}.")
+        if key == "material" and not isinstance(value, str):
+            raise error(key, f"expected a material name such as \"18CrNiMo7-6\", got {short(value)}.")
+        if key != "material" and (isinstance(value, bool) or not isinstance(value, (int, float))):
+            raise error(key, f"expected a number, got {short(value)}.")
+    try:
+        rating_spec(given)
+    except EpicyclicError as exc:
+        named = re.match(r"rating\.(\w+)", str(exc))  # the rating's messages start with the key
+        raise error(named.group(1) if named and named.group(1) in given else next(iter(given)), str(exc)) from None
+    return tuple((str(k), v if k == "material" else float(v)) for k, v in given.items())
+
+
+def _loaded(state, input_torque: float) -> bool:
+    """The set carries torque and its members do not all turn together."""
+    torques, speeds = state.torques, state.speeds
+    if abs(torques["sun"]) <= _IDLE * max(abs(input_torque), 1.0):
+        return False
+    spread = max(speeds.values()) - min(speeds.values())
+    return spread > 1e-9 * max(1.0, *(abs(v) for v in speeds.values()))
+
+
+def size_sets(solutions: Mapping[str, Any], set_names: Sequence[str | None], spec, face_width_ratio: float = 0.5,
+              input_torque: float = 1.0) -> tuple[SetSize | None, ...]:
+    """The smallest ISO 54 module of each set meeting S_Hmin and S_Fmin in every gear that loads it.
+
+    Parameters
+    ----------
+    solutions : mapping gear → Solution
+        Every gear solved at the sizing point (drive).
+    set_names : sequence of str or None
+        The planetary sets to size (None: a set without tooth counts, left unsized).
+    spec : RatingSpec
+        Materials, roughness, lubricant, life, minimum safeties (:func:`rating_spec`).
+    face_width_ratio : float, default 0.5
+        b / d_sun.
+    input_torque : float, default 1
+        N·m at the sizing point (the idle threshold is relative to it).
+
+    Returns
+    -------
+    tuple of SetSize or None
+        One per name.
+
+    Raises
+    ------
+    RatingError
+        A set that no module up to 50 mm can carry in some gear.
+
+    References
+    ----------
+    ISO 54:1996; ISO 6336-2:2019, eq. (4); ISO 6336-3:2019, eq. (5).
+    """
+    from ..rating import smallest_module
+
+    out: list[SetSize | None] = []
+    for name in set_names:
+        if name is None:
+            out.append(None)
+            continue
+        loaded = [(g, s) for g, s in solutions.items() if _loaded(s.elements[name], input_torque)]
+        if not loaded:
+            out.append(None)
+            continue
+        loaded.sort(key=lambda gs: -abs(gs[1].elements[name].torques["sun"]))
+        module, gear, result = 0.0, loaded[0][0], None
+        for _ in range(8):  # passes until no gear raises the module (stable after one, but bounded)
+            raised = False
+            lowest_h = lowest_f = float("inf")
+            for g, solution in loaded:
+                result = smallest_module(solution, name, spec, face_width_ratio=face_width_ratio,
+                                         min_module=module or 0.5)
+                if result.module > module:
+                    raised = raised or module > 0
+                    module, gear = result.module, g
+                    lowest_h = lowest_f = float("inf")  # restart the minima at the new module
+                _, s_h, s_f = result.tried[-1]
+                lowest_h, lowest_f = min(lowest_h, s_h), min(lowest_f, s_f)
+            if not raised:
+                break
+        sun_torque = max(abs(s.elements[name].torques["sun"]) for _, s in loaded)
+        out.append(SetSize(module, result.face_width, gear, sun_torque, lowest_h, lowest_f))
+    return tuple(out)

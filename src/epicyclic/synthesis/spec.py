@@ -35,10 +35,22 @@ or a TOML file (:meth:`SynthesisSpec.from_file`)::
     [ranking]                   # weights of the criteria (epicyclic.synthesis.ranking), 0 leaves one out
     circulating_power = 2.0
     double_shifts = 10.0
-    [sizing]                    # module and face width of every set (epicyclic.synthesis.sizing)
+    [sizing]                    # module and face width of every set, ISO 6336 (epicyclic.synthesis.sizing)
     input_torque = 300.0        # N·m
-    allowable_stress = 200.0    # MPa, Lewis bending
-    face_width_factor = 10.0    # b / m
+    input_speed = 1000.0        # 1/min
+    face_width_ratio = 0.5      # b / d_sun
+    [rating]                    # rating inputs of the sizing (defaults: epicyclic.synthesis.sizing.RATING_DEFAULTS)
+    material = "18CrNiMo7-6"
+    flank_roughness = 3.0       # R_z, µm
+    root_roughness = 10.0
+    viscosity_40 = 100.0        # mm²/s
+    life = 20000.0              # h
+    S_Hmin = 1.0
+    S_Fmin = 1.4
+    application_factor = 1.0
+    [teeth]                     # tooth choice per candidate (epicyclic.synthesis.teeth)
+    ratio_error = 1.0           # weight of the largest ratio error, per tolerance
+    ring_balance = 1.0          # weight of largest/smallest ring diameter − 1, per 0.25
 
 Every problem raises :class:`SynthesisError` naming the file (or ``synthesize``
 for the Python call), the key and the fix, as every file error does:
@@ -64,6 +76,7 @@ from ..errors import ModelError
 from ..text import short
 from ..limits import (MAX_PLANETS, MAX_SYNTHESIS_ARCHITECTURES, MAX_SYNTHESIS_ELEMENTS, MAX_SYNTHESIS_GEARS,
                       MAX_SYNTHESIS_SETS, MAX_SYNTHESIS_TOP, MAX_TEETH, MIN_TEETH)
+from .progression import progression_range, progressive_ratios  # re-exported: the spec's ratio series
 
 __all__ = ["SynthesisError", "SynthesisSpec", "progression_range", "progressive_ratios"]
 
@@ -131,43 +144,6 @@ def _pair(value: Any, place: _Place, name: str, integer: bool = False) -> tuple[
     return lo, hi
 
 
-def progressive_ratios(spread: float, gears: int, first: float, progression: float = 1.0) -> tuple[float, ...]:
-    """Forward ratios from spread, number of gears, first ratio and the progression factor φ2.
-
-    Steps φ_k = i_k / i_(k+1) = φ1 · φ2^(z − 1 − k) (k = 1 … z − 1); φ2 = 1 gives a
-    geometric series, φ2 > 1 larger steps in the low gears (Naunheimer et al. 2011, eq. 6.9).
-
-    >>> [round(r, 4) for r in progressive_ratios(4.0, 3, 4.0)]
-    [4.0, 2.0, 1.0]
-    """
-    z = gears
-    # product of steps = spread: φ1^(z-1) · φ2^((z-1)(z-2)/2) = spread; in logarithms, so that no power
-    # overflows or vanishes (φ2^3081 for 80 gears)
-    log_phi2 = math.log(progression)
-    log_phi1 = (math.log(spread) - log_phi2 * (z - 1) * (z - 2) / 2) / (z - 1)
-    out, log_ratio = [first], math.log(first)
-    for k in range(1, z):
-        log_ratio -= log_phi1 + log_phi2 * (z - 1 - k)
-        out.append(math.exp(log_ratio))
-    return tuple(out)
-
-
-def progression_range(spread: float, gears: int) -> tuple[float, float]:
-    """Open range of the progression φ2 whose every step φ_k exceeds 1 (falling ratios).
-
-    The smallest step is φ1 (φ2 ≥ 1) or φ1·φ2^(z−2) (φ2 < 1); both exceed 1 exactly when
-    |ln φ2| < 2 ln(spread) / ((z − 1)(z − 2)) (from eq. 6.9 of Naunheimer et al. 2011).
-    Two gears have a single step (the spread): any progression.
-
-    >>> [round(v, 4) for v in progression_range(4.0, 3)]
-    [0.25, 4.0]
-    """
-    if gears <= 2:
-        return 0.0, math.inf
-    limit = 2 * math.log(spread) / ((gears - 1) * (gears - 2))
-    return math.exp(-limit), math.exp(limit)
-
-
 @dataclass(frozen=True)
 class SynthesisSpec:
     """A validated synthesis problem.
@@ -207,8 +183,12 @@ class SynthesisSpec:
         Ranking weights given (the others keep the defaults of :data:`~epicyclic.synthesis.ranking.CRITERIA`).
     module : float
         Module of every set, mm, for the ring diameters of the ranking where no set is sized.
-    input_torque, allowable_stress, face_width_factor : float
-        N·m, MPa and b/m of the pre-dimensioning of every set (:mod:`~epicyclic.synthesis.sizing`).
+    input_torque, input_speed, face_width_ratio : float
+        N·m, 1/min and b/d_sun of the ISO 6336 sizing of every set (:mod:`~epicyclic.synthesis.sizing`).
+    rating : tuple of (str, value)
+        Rating inputs of the sizing given (the others: :data:`~epicyclic.synthesis.sizing.RATING_DEFAULTS`).
+    tooth_weights : tuple of (str, float)
+        Weights of the tooth choice given (the others: :data:`~epicyclic.synthesis.teeth.TOOTH_WEIGHTS`).
     title : str
     source : str
         The file read, or ``synthesize`` (the Python call): first in the messages of the search.
@@ -239,8 +219,10 @@ class SynthesisSpec:
     weights: tuple[tuple[str, float], ...] = ()
     module: float = 2.0
     input_torque: float = 300.0
-    allowable_stress: float = 200.0
-    face_width_factor: float = 10.0
+    input_speed: float = 1000.0
+    face_width_ratio: float = 0.5
+    rating: tuple[tuple[str, Any], ...] = ()
+    tooth_weights: tuple[tuple[str, float], ...] = ()
     title: str = "synthesis"
     source: str = field(default="synthesize", compare=False)
 
@@ -400,8 +382,13 @@ class SynthesisSpec:
     def _with_constraints(cls, kw: dict[str, Any], cons: dict[str, Any], place: _Place) -> SynthesisSpec:
         allowed = {"tolerance", "stationary_ratio", "sun", "planet", "planets", "hunting", "max_members_per_shaft",
                    "free_input", "input_members", "output_members", "levels", "stationary_efficiency", "top",
-                   "max_architectures", "time_limit", "weights", "module", "input_torque", "allowable_stress",
-                   "face_width_factor", "title"}
+                   "max_architectures", "time_limit", "weights", "module", "input_torque", "input_speed",
+                   "face_width_ratio", "rating", "tooth_weights", "title"}
+        for old in ("allowable_stress", "face_width_factor"):
+            if old in cons:
+                raise place.error("constraints", old, "the Lewis pre-dimensioning was replaced by the ISO 6336 sizing; "
+                                                      "give face_width_ratio (b/d_sun) and the rating inputs "
+                                                      "([rating] material, flank_roughness, ...) instead.")
         unknown = set(cons) - allowed
         if unknown:
             name = sorted(unknown)[0]
@@ -482,13 +469,27 @@ class SynthesisSpec:
             if not 0.1 <= module <= 50:
                 raise bad("module", f"expected a module in mm within [0.1, 50], got {module!r}.")
             kw["module"] = module
-        for key, low, high, unit in (("input_torque", 1e-3, 1e6, "N·m"), ("allowable_stress", 10.0, 3000.0, "MPa"),
-                                     ("face_width_factor", 2.0, 40.0, "(b/m)")):
+        for key, low, high, unit in (("input_torque", 1e-3, 1e6, "N·m"), ("input_speed", 1.0, 1e5, "1/min"),
+                                     ("face_width_ratio", 0.05, 2.0, "(b/d_sun)")):
             if key in cons:
                 value = _number(cons[key], place, "constraints", key)
                 if not low <= value <= high:
                     raise bad(key, f"expected {low:g} … {high:g} {unit}, got {value!r}.")
                 kw[key] = value
+        if "rating" in cons:
+            from .sizing import check_rating
+
+            kw["rating"] = check_rating(cons["rating"], lambda name, message: bad(
+                name if place.tables is not None or name == "rating" else f"rating.{name}", message))
+        if "tooth_weights" in cons:
+            from .teeth import check_tooth_weights
+
+            given = cons["tooth_weights"]
+            if not isinstance(given, Mapping):
+                raise bad("tooth_weights", f"expected a table of criterion = weight, got {short(given)}.")
+            kw["tooth_weights"] = tuple(check_tooth_weights(
+                given, lambda name, message: bad(name if place.tables is not None else f"tooth_weights.{name}",
+                                                 message)).items())
         if "title" in cons:
             kw["title"] = str(cons["title"])
         return cls(**kw, source=place.source)
@@ -535,11 +536,12 @@ class SynthesisSpec:
         except InputFileError as exc:
             raise SynthesisError(str(exc)) from None
         path = source
-        tables_known = ("targets", "sets", "elements", "bounds", "search", "ranking", "sizing")
+        tables_known = ("targets", "sets", "elements", "bounds", "search", "ranking", "sizing", "rating", "teeth")
         unknown = set(data) - {"title", *tables_known}
         if unknown:
             raise SynthesisError(f"{path}: unknown table(s)/key(s) {', '.join(sorted(map(short, unknown)))}; "
-                                 "use title, [targets], [sets], [elements], [bounds], [search], [ranking], [sizing].")
+                                 "use title, [targets], [sets], [elements], [bounds], [search], [ranking], [sizing], "
+                                 "[rating], [teeth].")
         for table in tables_known:
             if table in data and not isinstance(data[table], Mapping):
                 raise SynthesisError(f"{path}: key {table!r}: expected a table [{table}], got {short(data[table])}.")
@@ -555,11 +557,15 @@ class SynthesisSpec:
         tables.update({k: "ranking" for k in ("module", "weights", *ranking)})
         sizing = data.get("sizing", {})
         for key, value in sizing.items():
-            if key not in ("input_torque", "allowable_stress", "face_width_factor"):
-                raise SynthesisError(f"{path}: [sizing], key {key!r}: unknown; use input_torque, allowable_stress, "
-                                     "face_width_factor.")
+            if key not in ("input_torque", "input_speed", "face_width_ratio", "allowable_stress", "face_width_factor"):
+                raise SynthesisError(f"{path}: [sizing], key {key!r}: unknown; use input_torque, input_speed, "
+                                     "face_width_ratio.")
             cons[key] = value
             tables[key] = "sizing"
+        for table, key in (("rating", "rating"), ("teeth", "tooth_weights")):
+            if table in data:
+                cons[key] = data[table]
+                tables.update({key: table, **{str(k): table for k in data[table]}})
         if "title" in data:
             cons["title"] = data["title"]
         return cls.create(data["targets"], data.get("sets", {"simple": 2}), data.get("elements"), cons,
