@@ -47,11 +47,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..results.zero import clean_array
+from . import kernel as compiled_kernel
 from .kinematics import (
     combination_determinants,
     element_rows,
     element_shafts,
     hadamard_bound,
+    hadamard_factors,
     ratio_ranges,
 )
 from .mechanisms import PORTS, Mechanism
@@ -237,6 +239,12 @@ def multilinear(corner_values: np.ndarray, points: np.ndarray, level: int, sets:
     return (weights @ flat).reshape((len(points),) + corner_values.shape[1:])
 
 
+@functools.lru_cache(maxsize=32)
+def _children_table(level: int, sets: int) -> np.ndarray:
+    """:func:`_children` of every box at ``level`` (row = box number), computed once."""
+    return _children(np.arange(2 ** (level * sets)), level, sets)
+
+
 def _children(boxes: np.ndarray, level: int, sets: int) -> np.ndarray:
     """Numbers of the 2^S sub-boxes (at ``level + 1``) of each box (at ``level``), shape (len, 2^S).
 
@@ -335,8 +343,8 @@ def _holding(lay: Layout, combos: np.ndarray) -> np.ndarray:
     return np.flatnonzero(mark)
 
 
-def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list, full: int,
-                   gears: int) -> list[tuple[tuple[int, int, int], bool]]:
+def _pruned_level0(lay: Layout, pair: int, allowed: np.ndarray, directions: list, full: int,
+                   gears: int, compiled: bool = False) -> tuple[np.ndarray, np.ndarray] | None:
     """First-level survivors of one input/output pair, found from the rarest target (exact).
 
     An element set passes only if some combination of it reaches each target, so it holds one of
@@ -344,12 +352,13 @@ def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list,
     combination that reaches the target fewest element sets can reach (counted with
     :attr:`Layout.containing`) are examined; the rest cannot pass.  The survivors come in the
     order of the full scan: by block of brakes, then direction, then element set, each with whether
-    it admits one combination per target (:func:`_matched`).
+    it admits one combination per target (:func:`_matched`): rows (input, output, element set)
+    of a (3, n) array, and the n matched flags; None when none survives.  ``allowed``: the element
+    sets that brake neither input nor output and touch every shaft that must carry an element.
     """
     indptr, _ = lay.containing
     sizes = np.diff(indptr)
-    allowed = ((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need)
-    found, order = [], []
+    found, flags, order = [], [], []
     for d, (a, b, rows, _reach) in enumerate(directions):
         masks = rows[pair] & full
         bits = (masks[None, :] >> np.arange(gears, dtype=masks.dtype)[:, None]) & 1  # (gears, T)
@@ -358,21 +367,28 @@ def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list,
         rarest = int(np.argmin(bits.astype(np.int64) @ sizes))
         held = _holding(lay, np.flatnonzero(bits[rarest]))
         held = held[allowed[held]]
-        gathered = masks[lay.set_combos[held]]
-        keep = _passes(gathered, full, gears)
+        if compiled:  # the same tests in one compiled loop, without the (held, C) gather
+            keep, matched = compiled_kernel.passes_matched(masks[None, :], np.zeros(held.size, np.int64), held,
+                                                           lay.set_combos, gears)
+            matched = matched[keep]
+        else:
+            gathered = masks[lay.set_combos[held]]
+            keep = _passes(gathered, full, gears)
+            matched = _matched(gathered[keep], gears)
         ok = held[keep]
-        found += [((a, b, int(j)), bool(m)) for j, m in zip(ok, _matched(gathered[keep], gears))]
+        found.append(np.stack([np.full(ok.size, a), np.full(ok.size, b), ok]))
+        flags.append(matched)
         order.append(np.stack([np.searchsorted(lay.block_starts, ok, side="right"), np.full(ok.size, d), ok]))
     if not found:
-        return []
-    keys = np.concatenate(order, axis=1)
-    return [found[i] for i in np.lexsort(keys[::-1])]
+        return None
+    sort = np.lexsort(np.concatenate(order, axis=1)[::-1])
+    return np.concatenate(found, axis=1)[:, sort], np.concatenate(flags)[sort]
 
 
 def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray, forward: np.ndarray,
            reverse: np.ndarray, tolerance: float, levels: int = 2,
            input_members: tuple[str, ...] = PORTS, output_members: tuple[str, ...] = PORTS,
-           interpolate: bool = True, prune: bool = True) -> tuple[list[Placement], int]:
+           interpolate: bool = True, prune: bool = True, kernel: bool | None = None) -> tuple[list[Placement], int]:
     """Every (input, output, element set) of the mechanism that survives screening.
 
     Parameters
@@ -400,6 +416,9 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         Examine at the first level only the element sets that hold a combination
         reaching the rarest target (:func:`_pruned_level0`; exact: every other set
         misses that target; False: the reference, every element set scanned).
+    kernel : bool, optional
+        The range and matching tests in compiled loops (:mod:`~epicyclic.synthesis.kernel`, bit-equal
+        results); default: when numba is importable.  False: the numpy path (the reference).
 
     Returns
     -------
@@ -409,6 +428,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         Architectures (input, output, element set) examined.
     """
     mech = mechanism
+    compiled = compiled_kernel.use_kernel(kernel)
     low, high = np.asarray(low, float), np.asarray(high, float)
     sets = mech.sets
     levels = min(levels, 16 // sets)  # at most 2^16 boxes
@@ -432,7 +452,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
              or not mech.free_input and role_ok(x, output_members) and role_ok(y, input_members)]
     if not pairs:
         return [], 0
-    survivors: list[tuple[tuple[int, int, int], bool]] = []  # (input, output, element set), matched
+    level0: list[tuple[np.ndarray, np.ndarray]] = []  # (input, output, element set) rows, matched
     examined = 0
     if gears > 62:
         raise ValueError("screening handles at most 62 target ratios")
@@ -467,9 +487,11 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                                   [(x, y, fwd_rows, reach_fwd), (y, x, rev_rows, reach_rev)])
                       if (mech.free_input or role_ok(d[0], input_members)) and role_ok(d[1], output_members)]
         if prune:
-            survivors += _pruned_level0(lay, p, io, need, directions, full, gears)
-            examined += int(np.count_nonzero(((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need))) \
-                * len(directions)
+            allowed = ((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need)
+            examined += int(np.count_nonzero(allowed)) * len(directions)
+            found = _pruned_level0(lay, p, allowed, directions, full, gears, compiled)
+            if found is not None:
+                level0.append(found)
             continue
         for start, stop, block in blocks:
             covered = (lay.touched[start:stop] & need) == need
@@ -478,14 +500,17 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                 if reach[p] != full:
                     continue
                 ok = _passes_rows(rows[p][lay.columns[:, start:stop]], full, gears) & covered
-                survivors += [((a, b, start + int(j)), True) for j in np.flatnonzero(ok)]
+                j = start + np.flatnonzero(ok)
+                level0.append((np.stack([np.full(j.size, a), np.full(j.size, b), j]), np.ones(j.size, dtype=bool)))
     # the reference's order after bisection: groups (input, output) by first appearance among the
     # first level's survivors (pruned or not), then the first level's order
-    group_rank: dict[tuple[int, int], int] = {}
-    for (a, b, _), _ok in survivors:
-        group_rank.setdefault((a, b), len(group_rank))
-    first_rank = {s: r for r, (s, _ok) in enumerate(survivors)}
-    survivors = [s for s, matched in survivors if matched]
+    found = np.concatenate([f for f, _ in level0], axis=1) if level0 else np.zeros((3, 0), dtype=np.int64)
+    matched = np.concatenate([m for _, m in level0]) if level0 else np.zeros(0, dtype=bool)
+    _, first = np.unique(found[0] * mech.shafts + found[1], return_index=True)
+    group_rank = {(int(found[0, i]), int(found[1, i])): r for r, i in enumerate(np.sort(first))}
+    at_rank = np.flatnonzero(matched)
+    survivors = [(int(a), int(b), int(j)) for a, b, j in found[:, at_rank].T]
+    first_rank = dict(zip(survivors, at_rank.tolist()))
     # bisection: every survivor keeps the boxes (at the current level) in which it may reach the targets
     boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors}
     for level in range(1, levels + 1):
@@ -494,8 +519,9 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         used = np.unique(lay.set_combos[[s[2] for s in boxes]])
         points, corners = _grid(low, high, level)
         groups: dict[tuple[int, int], list[tuple[int, np.ndarray]]] = {}
+        children = _children_table(level - 1, sets)
         for (a, b, j), parents in boxes.items():
-            groups.setdefault((a, b), []).append((j, _children(parents, level - 1, sets).ravel()))
+            groups.setdefault((a, b), []).append((j, children[parents].ravel()))
         at = np.unique(corners[np.unique(np.concatenate([c for m in groups.values() for _, c in m]))])
         if not interpolate:  # the reference: every grid point solved again, for every shaft
             det = combination_determinants(mech, points[at], lay.combos[used], element_rows(mech.shafts))
@@ -505,29 +531,38 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
             counts = np.array([c.size for _, c in members])
             flat = np.concatenate([c for _, c in members])
             needed = np.unique(flat)
+            owner = np.repeat(np.arange(len(members)), counts)
             if interpolate:  # exact (multilinear in i0): only this group's combinations, points and two shafts
                 member_cols = lay.set_combos[sets_j]
                 cols = np.unique(member_cols)
                 live = cols[~dead[(a, b)][cols]] if prune else cols  # the others' masks are 0 in every box
                 here = np.unique(corners[needed])
-                pair = clean_array(multilinear(whole_box[:, live][:, :, [a, b]], here, level, sets),
-                                   hadamard_bound(mech, points[here], lay.combos[live])[:, :, None])
-                idx = np.searchsorted(here, corners[needed].T)  # (2^S, boxes) rows of pair
-                valid, lo, hi = ratio_ranges(pair[:, :, 0][idx], pair[:, :, 1][idx])  # (boxes, live)
-                mask = np.zeros((len(needed), len(cols)), dtype=np.int64)
-                mask[:, np.searchsorted(cols, live)] = _masks(valid, lo, hi, targets, tolerance)
+                raw = multilinear(whole_box[:, live][:, :, [a, b]], here, level, sets)
+                idx = np.searchsorted(here, corners[needed].T)  # (2^S, boxes) rows of raw
+                if compiled:  # the same tests, each (box, combination) range computed on demand
+                    live_of = np.full(len(cols), -1, dtype=np.int64)
+                    live_of[np.searchsorted(cols, live)] = np.arange(len(live))
+                    willis, elements = hadamard_factors(mech, points[here], lay.combos[live])
+                    ok, matched = compiled_kernel.group_tests(raw, willis, elements, idx, live_of, targets, tolerance,
+                                                              np.searchsorted(needed, flat), owner,
+                                                              np.searchsorted(cols, member_cols), match=prune)
+                else:
+                    pair = clean_array(raw, hadamard_bound(mech, points[here], lay.combos[live])[:, :, None])
+                    valid, lo, hi = ratio_ranges(pair[:, :, 0][idx], pair[:, :, 1][idx])  # (boxes, live)
+                    mask = np.zeros((len(needed), len(cols)), dtype=np.int64)
+                    mask[:, np.searchsorted(cols, live)] = _masks(valid, lo, hi, targets, tolerance)
             else:
                 member_cols = np.searchsorted(used, lay.set_combos[sets_j])  # (M, C) columns of det
                 cols = np.unique(member_cols)
                 idx = np.searchsorted(at, corners[needed].T)  # (2^S, boxes) rows of det
                 valid, lo, hi = ratio_ranges(det[:, cols, a][idx], det[:, cols, b][idx])  # (boxes, cols)
                 mask = _masks(valid, lo, hi, targets, tolerance)
-            owner = np.repeat(np.arange(len(members)), counts)
-            gathered = mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]]
-            ok = _passes(gathered, full, gears)
-            matched = ok.copy()
-            if prune:  # an architecture none of whose boxes admits one combination per target is dropped
-                matched[ok] = _matched(gathered[ok], gears)
+            if not (compiled and interpolate):
+                gathered = mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]]
+                ok = _passes(gathered, full, gears)
+                matched = ok.copy()
+                if prune:  # an architecture none of whose boxes admits one combination per target is dropped
+                    matched[ok] = _matched(gathered[ok], gears)
             alive = np.zeros(len(members), dtype=bool)
             np.logical_or.at(alive, owner, matched)
             for m, (j, keep) in enumerate(zip(sets_j, np.split(ok, np.cumsum(counts)[:-1]))):
