@@ -57,6 +57,7 @@ from .kinematics import (
     ratio_ranges,
 )
 from .mechanisms import PORTS, Mechanism
+from .symmetry import PlacementSymmetry, automorphisms
 
 __all__ = ["Layout", "Placement", "layout", "multilinear", "screen"]
 
@@ -343,7 +344,7 @@ def _holding(lay: Layout, combos: np.ndarray) -> np.ndarray:
     return np.flatnonzero(mark)
 
 
-def _pruned_level0(lay: Layout, pair: int, allowed: np.ndarray, directions: list, full: int,
+def _pruned_level0(lay: Layout, pair: int, allowed: list[np.ndarray], directions: list, full: int,
                    gears: int, compiled: bool = False) -> tuple[np.ndarray, np.ndarray] | None:
     """First-level survivors of one input/output pair, found from the rarest target (exact).
 
@@ -353,8 +354,9 @@ def _pruned_level0(lay: Layout, pair: int, allowed: np.ndarray, directions: list
     :attr:`Layout.containing`) are examined; the rest cannot pass.  The survivors come in the
     order of the full scan: by block of brakes, then direction, then element set, each with whether
     it admits one combination per target (:func:`_matched`): rows (input, output, element set)
-    of a (3, n) array, and the n matched flags; None when none survives.  ``allowed``: the element
-    sets that brake neither input nor output and touch every shaft that must carry an element.
+    of a (3, n) array, and the n matched flags; None when none survives.  ``allowed`` (per direction):
+    the element sets that brake neither input nor output, touch every shaft that must carry an
+    element (and represent their orbit under the mechanism's symmetries).
     """
     indptr, _ = lay.containing
     sizes = np.diff(indptr)
@@ -366,7 +368,7 @@ def _pruned_level0(lay: Layout, pair: int, allowed: np.ndarray, directions: list
             continue  # some target out of reach of every combination
         rarest = int(np.argmin(bits.astype(np.int64) @ sizes))
         held = _holding(lay, np.flatnonzero(bits[rarest]))
-        held = held[allowed[held]]
+        held = held[allowed[d][held]]
         if compiled:  # the same tests in one compiled loop, without the (held, C) gather
             keep, matched = compiled_kernel.passes_matched(masks[None, :], np.zeros(held.size, np.int64), held,
                                                            lay.set_combos, gears)
@@ -388,7 +390,8 @@ def _pruned_level0(lay: Layout, pair: int, allowed: np.ndarray, directions: list
 def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray, forward: np.ndarray,
            reverse: np.ndarray, tolerance: float, levels: int = 2,
            input_members: tuple[str, ...] = PORTS, output_members: tuple[str, ...] = PORTS,
-           interpolate: bool = True, prune: bool = True, kernel: bool | None = None) -> tuple[list[Placement], int]:
+           interpolate: bool = True, prune: bool = True, kernel: bool | None = None,
+           symmetry: bool = True) -> tuple[list[Placement], int]:
     """Every (input, output, element set) of the mechanism that survives screening.
 
     Parameters
@@ -419,6 +422,9 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     kernel : bool, optional
         The range and matching tests in compiled loops (:mod:`~epicyclic.synthesis.kernel`, bit-equal
         results); default: when numba is importable.  False: the numpy path (the reference).
+    symmetry : bool, default True
+        With ``prune``: examine one placement per orbit of the mechanism's automorphisms
+        (:mod:`~epicyclic.synthesis.symmetry`) and write the images back (the same placements).
 
     Returns
     -------
@@ -430,6 +436,8 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     mech = mechanism
     compiled = compiled_kernel.use_kernel(kernel)
     low, high = np.asarray(low, float), np.asarray(high, float)
+    group = automorphisms(mech, low, high) if prune and symmetry else ()
+    sym = PlacementSymmetry(group, lay.element_sets) if group else None
     sets = mech.sets
     levels = min(levels, 16 // sets)  # at most 2^16 boxes
     targets = np.concatenate([forward, reverse]).astype(float)
@@ -488,8 +496,9 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                       if (mech.free_input or role_ok(d[0], input_members)) and role_ok(d[1], output_members)]
         if prune:
             allowed = ((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need)
-            examined += int(np.count_nonzero(allowed)) * len(directions)
-            found = _pruned_level0(lay, p, allowed, directions, full, gears, compiled)
+            examined += int(np.count_nonzero(allowed)) * len(directions)  # images included
+            per = [allowed & sym.representatives(d[0], d[1]) if sym else allowed for d in directions]
+            found = _pruned_level0(lay, p, per, directions, full, gears, compiled)
             if found is not None:
                 level0.append(found)
             continue
@@ -506,13 +515,25 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     # first level's survivors (pruned or not), then the first level's order
     found = np.concatenate([f for f, _ in level0], axis=1) if level0 else np.zeros((3, 0), dtype=np.int64)
     matched = np.concatenate([m for _, m in level0]) if level0 else np.zeros(0, dtype=bool)
+    reps = None
+    if sym is not None:  # every image of a representative, in the full scan's order
+        reps = {(int(a), int(b), int(j)) for a, b, j in found[:, matched].T}
+        found, source = sym.orbits(found)
+        matched = matched[source]
+        pair_index = np.zeros((mech.shafts, mech.shafts), dtype=np.int64)
+        for p, (x, y) in enumerate(pairs):
+            pair_index[x, y] = pair_index[y, x] = p
+        first_of = np.array([x for x, _ in pairs])[pair_index[found[0], found[1]]]
+        order = np.lexsort((found[2], found[0] != first_of, np.searchsorted(lay.block_starts, found[2], side="right"),
+                            pair_index[found[0], found[1]]))
+        found, matched = found[:, order], matched[order]
     _, first = np.unique(found[0] * mech.shafts + found[1], return_index=True)
     group_rank = {(int(found[0, i]), int(found[1, i])): r for r, i in enumerate(np.sort(first))}
     at_rank = np.flatnonzero(matched)
     survivors = [(int(a), int(b), int(j)) for a, b, j in found[:, at_rank].T]
     first_rank = dict(zip(survivors, at_rank.tolist()))
     # bisection: every survivor keeps the boxes (at the current level) in which it may reach the targets
-    boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors}
+    boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors if reps is None or s in reps}
     for level in range(1, levels + 1):
         if not boxes:
             break
@@ -569,7 +590,11 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                 if alive[m]:  # its boxes stay those of the range test: the fit starts where it did
                     nxt[(a, b, int(j))] = members[m][1][keep]
         boxes = nxt
+    if sym is not None:
+        boxes = sym.expand(boxes, levels, sets)
     if levels:
         boxes = dict(sorted(boxes.items(), key=lambda item: (group_rank[item[0][:2]], first_rank[item[0]])))
+    elif sym is not None:
+        boxes = dict(sorted(boxes.items(), key=lambda item: first_rank[item[0]]))
     return [Placement(a, b, tuple(int(e) for e in lay.element_sets[j]), tuple(bx))
             for (a, b, j), bx in boxes.items()], examined
