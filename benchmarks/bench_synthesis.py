@@ -375,19 +375,28 @@ def kernel_paths(sample: int) -> None:
     rates = {}
     rng = np.random.default_rng(1)
     big = [mechs[i] for i in sorted(rng.choice(len(mechs), size=min(sample, len(mechs)), replace=False))]
-    examined, cpu, out = _rate(big, lay, FORWARD, REVERSE, 3)
-    rates[3] = examined / cpu
-    symmetric = sum(bool(automorphisms(m, LOW, HIGH)) for m in big)
-    print(f"new path, {len(big)} mechanisms ({symmetric} symmetric), 3 engaged, 8HP targets: "
-          f"{rates[3]:,.0f} per CPU s ({examined:.3g} architectures, {cpu:.1f} s)")
     four = enumerate_mechanisms(("simple",) * 4, 5)
-    lay4 = layout(9, 2, 4, 4)
-    lay4.containing  # noqa: B018
     picked = [four[i] for i in sorted(rng.choice(len(four), size=max(1, sample // 8), replace=False))]
-    examined, cpu, out = _rate(picked, lay4, TEN_FORWARD, TEN_REVERSE, 3)
-    rates[4] = examined / cpu
-    print(f"new path, {len(picked)} mechanisms, 4 engaged, 10R80 targets: {rates[4]:,.0f} per CPU s "
-          f"({examined:.3g} architectures, {cpu:.1f} s, {sum(map(len, out))} placements); peak {_peak():.0f} MiB")
+    for engaged, chosen_, shafts, forward, reverse, what in (
+            (3, big, 8, FORWARD, REVERSE, "8HP targets, ties in pairs"),
+            (4, picked, 9, TEN_FORWARD, TEN_REVERSE, "10R80 targets, every tie pattern")):
+        lay_ = layout(shafts, 2, 4, engaged)
+        lay_.containing  # noqa: B018
+        examined, cpu, out = _rate(chosen_, lay_, forward, reverse, 3)
+        rates[engaged] = examined / cpu
+        blay_ = base.layout(shafts, 2, 4, engaged)
+        blay_.containing  # noqa: B018
+        start = time.process_time()
+        old = [base.screen(m, blay_, LOW, HIGH, forward, reverse, 0.01, levels=3)[0] for m in chosen_]
+        old_cpu = time.process_time() - start
+        symmetric = sum(bool(automorphisms(m, LOW, HIGH)) for m in chosen_)
+        print(f"{len(chosen_)} mechanisms ({symmetric} symmetric), {engaged} engaged, {what}, {examined:.3g} "
+              f"architectures, {sum(map(len, out))} placements kept:")
+        print(f"  new path {rates[engaged]:>12,.0f} per CPU s ({cpu:.1f} s); main's pruned path "
+              f"{examined / old_cpu:>12,.0f} per CPU s ({old_cpu:.1f} s): {old_cpu / cpu:.2f} x; same placements: "
+              f"{plain(old) == plain(out)}; peak memory {_peak():.0f} MiB")
+        if plain(old) != plain(out):
+            raise SystemExit("the new path's placements differ from main's pruned path")
     full_space(rates)
 
 

@@ -73,31 +73,27 @@ def _jit(function):
 def _box_mask(values, willis, elements, zero, idx, box, live, ordered, widen):  # pragma: no cover - compiled
     """Target mask of one combination (column ``live`` of ``values``) over one box."""
     corners = idx.shape[0]
-    pos_in = neg_in = pos_out = neg_out = 0
     lo = np.inf
     hi = -np.inf
     bound_e = elements[live]
+    sign_in = sign_out = 0.0
     for c in range(corners):
         r = idx[c, box]
         bound = zero * abs(willis[r] * bound_e)  # clean_array against Hadamard's bound
         x = values[r, live, 0]
         y = values[r, live, 1]
-        if abs(x) <= bound and np.isfinite(x):
-            x = 0.0
-        if abs(y) <= bound and np.isfinite(y):
-            y = 0.0
-        pos_in += x > 0
-        neg_in += x < 0
-        pos_out += y > 0
-        neg_out += y < 0
-        if y != 0:
-            ratio = x / y
-            if ratio < lo:
-                lo = ratio
-            if ratio > hi:
-                hi = ratio
-    if not ((pos_in == corners or neg_in == corners) and (pos_out == corners or neg_out == corners)):
-        return np.int64(0)
+        if not (np.isfinite(x) and np.isfinite(y)) or abs(x) <= bound or abs(y) <= bound:
+            return np.int64(0)  # no strict sign at a corner (zero within round-off, or not a number): not valid
+        if c == 0:
+            sign_in = 1.0 if x > 0 else -1.0
+            sign_out = 1.0 if y > 0 else -1.0
+        elif (x > 0) != (sign_in > 0) or (y > 0) != (sign_out > 0):
+            return np.int64(0)  # a sign change inside the box
+        ratio = x / y
+        if ratio < lo:
+            lo = ratio
+        if ratio > hi:
+            hi = ratio
     lo_w = lo / widen if lo > 0 else lo * widen
     hi_w = hi * widen if hi > 0 else hi / widen
     targets = ordered.size
@@ -114,33 +110,33 @@ def _box_mask(values, willis, elements, zero, idx, box, live, ordered, widen):  
 
 @_jit
 def _group_tests(values, willis, elements, zero, idx, live_of, ordered, widen, rows, owner, table, full, gears,
-                 match):  # pragma: no cover - compiled
+                 match, order):  # pragma: no cover - compiled
     count = rows.size
     width = table.shape[1]
-    memo = np.full((idx.shape[1], live_of.size), -1, dtype=np.int64)
+    memo = np.zeros(live_of.size, dtype=np.int64)  # masks in the current box, valid where stamp == box
+    stamp = np.full(live_of.size, -1, dtype=np.int64)
     ok = np.zeros(count, dtype=np.bool_)
     matched = np.zeros(count, dtype=np.bool_)
     free = np.zeros(width, dtype=np.bool_)
-    for f in range(count):
+    for f in order:  # by box: each (box, combination) range is computed once, when first needed
         row = rows[f]
         member = owner[f]
         union = 0
         useful = 0
         for c in range(width):
             k = table[member, c]
-            m = memo[row, k]
-            if m < 0:  # computed once, when an architecture first needs it
+            if stamp[k] != row:
                 live = live_of[k]
-                m = np.int64(0) if live < 0 else _box_mask(values, willis, elements, zero, idx, row, live, ordered,
-                                                           widen)
-                memo[row, k] = m
-            m &= full
+                memo[k] = np.int64(0) if live < 0 else _box_mask(values, willis, elements, zero, idx, row, live,
+                                                                 ordered, widen)
+                stamp[k] = row
+            m = memo[k] & full
             union |= m
             useful += m != 0
         if union != full or useful < gears:
             continue
         ok[f] = True
-        matched[f] = _glover(memo, row, table, member, full, gears, free) if match else True
+        matched[f] = _glover(memo, table, member, full, gears, free) if match else True
     return ok, matched
 
 
@@ -196,11 +192,12 @@ def group_tests(values: np.ndarray, willis: np.ndarray, elements: np.ndarray, id
                         np.ascontiguousarray(idx, dtype=np.int64), np.ascontiguousarray(live_of, dtype=np.int64),
                         np.sort(np.asarray(targets, dtype=np.float64)), 1.0 + float(tolerance),
                         np.ascontiguousarray(rows, dtype=np.int64), np.ascontiguousarray(owner, dtype=np.int64),
-                        np.ascontiguousarray(table, dtype=np.int32), np.int64((1 << gears) - 1), gears, bool(match))
+                        np.ascontiguousarray(table, dtype=np.int32), np.int64((1 << gears) - 1), gears, bool(match),
+                        np.argsort(rows, kind="stable").astype(np.int64))
 
 
 @_jit
-def _glover(masks, row, table, member, full, gears, free):  # pragma: no cover - compiled
+def _glover(masks, table, member, full, gears, free):  # pragma: no cover - compiled
     width = table.shape[1]
     for c in range(width):
         free[c] = True
@@ -208,7 +205,7 @@ def _glover(masks, row, table, member, full, gears, free):  # pragma: no cover -
         pick = -1
         best = gears
         for c in range(width):
-            m = masks[row, table[member, c]] & full
+            m = masks[table[member, c]] & full
             if m == 0 or not free[c] or not (m >> j) & 1:
                 continue
             last = 0  # highest set bit: the interval's end
@@ -224,33 +221,32 @@ def _glover(masks, row, table, member, full, gears, free):  # pragma: no cover -
 
 
 @_jit
-def _passes_matched(masks, rows, owner, table, full, gears, match):  # pragma: no cover - compiled
-    count = rows.size
+def _passes_matched(masks, held, table, full, gears, match):  # pragma: no cover - compiled
+    count = held.size
     width = table.shape[1]
     ok = np.zeros(count, dtype=np.bool_)
     matched = np.zeros(count, dtype=np.bool_)
     free = np.zeros(width, dtype=np.bool_)
     for f in range(count):
-        row = rows[f]
-        member = owner[f]
+        member = held[f]
         union = 0
         useful = 0
         for c in range(width):
-            m = masks[row, table[member, c]] & full
+            m = masks[table[member, c]] & full
             union |= m
             useful += m != 0
         if union != full or useful < gears:
             continue
         ok[f] = True
-        matched[f] = _glover(masks, row, table, member, full, gears, free) if match else True
+        matched[f] = _glover(masks, table, member, full, gears, free) if match else True
     return ok, matched
 
 
-def passes_matched(masks: np.ndarray, rows: np.ndarray, owner: np.ndarray, table: np.ndarray, gears: int,
+def passes_matched(masks: np.ndarray, held: np.ndarray, table: np.ndarray, gears: int,
                    match: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """Range test and one-combination-per-target test of many architectures in one loop (compiled).
+    """Range test and one-combination-per-target test of many element sets in one loop (compiled).
 
-    Architecture f gathers ``masks[rows[f], table[owner[f], c]]`` for its C combinations; it passes
+    Element set ``held[f]`` gathers ``masks[table[held[f], c]]`` for its C combinations; it passes
     when their union holds every target and at least ``gears`` of them reach one (``_passes``), and
     is matched when the targets, in ascending order, can each take a distinct combination by
     Glover's greedy rule (``_matched``: the free combination covering the target whose interval
@@ -258,14 +254,12 @@ def passes_matched(masks: np.ndarray, rows: np.ndarray, owner: np.ndarray, table
 
     Parameters
     ----------
-    masks : ndarray of int (rows, columns)
-        Target bit masks (intervals of the sorted targets).
-    rows : ndarray of int (F,)
-        Row of ``masks`` per architecture (its box, or 0).
-    owner : ndarray of int (F,)
-        Row of ``table`` per architecture (its element set).
-    table : ndarray of int32 (M, C)
-        Columns of ``masks`` of each element set's combinations (e.g. ``Layout.set_combos``, not copied).
+    masks : ndarray of int (combinations,)
+        Target bit masks over the box (intervals of the sorted targets).
+    held : ndarray of int (F,)
+        Element sets to test (rows of ``table``).
+    table : ndarray of int32 (A, C)
+        Combination numbers of each element set (``Layout.set_combos``, not copied).
     gears : int
         Number of targets.
     match : bool, default True
@@ -281,5 +275,5 @@ def passes_matched(masks: np.ndarray, rows: np.ndarray, owner: np.ndarray, table
     """
     full = (1 << gears) - 1
     table = table if table.dtype == np.int32 and table.flags.c_contiguous else np.ascontiguousarray(table, np.int32)
-    return _passes_matched(np.ascontiguousarray(masks, dtype=np.int64), np.ascontiguousarray(rows, dtype=np.int64),
-                           np.ascontiguousarray(owner, dtype=np.int64), table, np.int64(full), gears, bool(match))
+    return _passes_matched(np.ascontiguousarray(masks, dtype=np.int64), np.ascontiguousarray(held, dtype=np.int64),
+                           table, np.int64(full), gears, bool(match))

@@ -370,8 +370,7 @@ def _pruned_level0(lay: Layout, pair: int, allowed: list[np.ndarray], directions
         held = _holding(lay, np.flatnonzero(bits[rarest]))
         held = held[allowed[d][held]]
         if compiled:  # the same tests in one compiled loop, without the (held, C) gather
-            keep, matched = compiled_kernel.passes_matched(masks[None, :], np.zeros(held.size, np.int64), held,
-                                                           lay.set_combos, gears)
+            keep, matched = compiled_kernel.passes_matched(masks, held, lay.set_combos, gears)
             matched = matched[keep]
         else:
             gathered = masks[lay.set_combos[held]]
