@@ -32,7 +32,8 @@
    space in worker-hours at those rates.  One BLAS thread, as Dask's worker processes run
    (``OPENBLAS_NUM_THREADS=1``, set before numpy is imported).
 
-Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms] [shortcuts | pruning | loopback | kernel]
+Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms] [shortcuts | pruning | loopback | kernel
+      | kernel-new (the new path alone on the samples)]
 """
 
 from __future__ import annotations
@@ -41,7 +42,7 @@ import os
 import sys
 import time
 
-if len(sys.argv) > 2 and sys.argv[2] == "kernel":  # one BLAS thread per worker, as Dask's nannies set it
+if len(sys.argv) > 2 and sys.argv[2].startswith("kernel"):  # one BLAS thread per worker, as Dask's nannies set it
     for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
         os.environ.setdefault(_name, "1")
 from math import comb
@@ -331,11 +332,15 @@ def _rate(chosen, lay, forward, reverse, levels, **flags):
     return examined, time.process_time() - start, out
 
 
-def kernel_paths(sample: int) -> None:
+def kernel_paths(sample: int, compare: bool = True) -> None:
     """Reference, main's pruned path (BASELINE) and the new path on one six-element sample; the new path's rates
-    with 3 and 4 engaged; the full space in worker-hours."""
+    with 3 and 4 engaged (against main's unless ``compare`` is False: ``kernel-new``); the full space in
+    worker-hours."""
     from epicyclic.synthesis import kernel
     from epicyclic.synthesis.symmetry import automorphisms
+
+    def plain(runs):  # the baseline module has its own Placement class
+        return [[(p.input, p.output, p.elements, tuple(int(b) for b in p.boxes)) for p in run] for run in runs]
 
     print(f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores; numba kernel: {kernel.AVAILABLE}; "
           f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS')}")
@@ -349,7 +354,14 @@ def kernel_paths(sample: int) -> None:
     examined, cpu, new = _rate(chosen, lay, FORWARD, REVERSE, 3)
     print(f"  new path (kernel + symmetry)   {examined / cpu:>12,.0f} per CPU s ({cpu:.2f} s, "
           f"{sum(map(len, new))} placements); peak memory so far {_peak():.0f} MiB")
-    base = _baseline_screening()
+    base = _baseline_screening() if compare else None
+    if compare:
+        _compare_first(chosen, lay, base, examined, cpu, new, plain)
+    _samples(mechs, base, plain, automorphisms)
+
+
+def _compare_first(chosen, lay, base, examined, cpu, new, plain) -> None:
+    """Main's pruned path and the reference on the first sample, against the new path's figures."""
     blay = base.layout(8, 2, 4, 3)
     blay.containing  # noqa: B018
     start = time.process_time()
@@ -357,9 +369,6 @@ def kernel_paths(sample: int) -> None:
     old_cpu = time.process_time() - start
     print(f"  main's pruned path ({BASELINE})  {examined / old_cpu:>12,.0f} per CPU s ({old_cpu:.2f} s, "
           f"{sum(map(len, old))} placements); peak memory so far {_peak():.0f} MiB")
-    def plain(runs):  # the baseline module has its own Placement class
-        return [[(p.input, p.output, p.elements, tuple(int(b) for b in p.boxes)) for p in run] for run in runs]
-
     if plain(old) != plain(new):
         raise SystemExit("the new path's placements differ from main's pruned path")
     _, ref_cpu, ref = _rate(chosen, lay, FORWARD, REVERSE, 3, interpolate=False, prune=False, kernel=False,
@@ -372,6 +381,10 @@ def kernel_paths(sample: int) -> None:
     if not ordered:
         raise SystemExit("the new path kept a placement the reference did not, or changed the order")
 
+
+def _samples(mechs, base, plain, automorphisms) -> None:
+    """The new path (and main's pruned path, with ``base``) on the 3- and 4-engaged samples; the full space."""
+    sample = int(sys.argv[1]) if len(sys.argv) > 1 else 24
     rates = {}
     rng = np.random.default_rng(1)
     big = [mechs[i] for i in sorted(rng.choice(len(mechs), size=min(sample, len(mechs)), replace=False))]
@@ -384,25 +397,27 @@ def kernel_paths(sample: int) -> None:
         lay_.containing  # noqa: B018
         examined, cpu, out = _rate(chosen_, lay_, forward, reverse, 3)
         rates[engaged] = examined / cpu
+        symmetric = sum(bool(automorphisms(m, LOW, HIGH)) for m in chosen_)
+        print(f"{len(chosen_)} mechanisms ({symmetric} symmetric), {engaged} engaged, {what}, {examined:.3g} "
+              f"architectures, {sum(map(len, out))} placements kept:")
+        print(f"  new path {rates[engaged]:>12,.0f} per CPU s ({cpu:.1f} s); peak memory {_peak():.0f} MiB")
+        if base is None:
+            continue
         blay_ = base.layout(shafts, 2, 4, engaged)
         blay_.containing  # noqa: B018
         start = time.process_time()
         old = [base.screen(m, blay_, LOW, HIGH, forward, reverse, 0.01, levels=3)[0] for m in chosen_]
         old_cpu = time.process_time() - start
-        symmetric = sum(bool(automorphisms(m, LOW, HIGH)) for m in chosen_)
-        print(f"{len(chosen_)} mechanisms ({symmetric} symmetric), {engaged} engaged, {what}, {examined:.3g} "
-              f"architectures, {sum(map(len, out))} placements kept:")
-        print(f"  new path {rates[engaged]:>12,.0f} per CPU s ({cpu:.1f} s); main's pruned path "
-              f"{examined / old_cpu:>12,.0f} per CPU s ({old_cpu:.1f} s): {old_cpu / cpu:.2f} x; same placements: "
-              f"{plain(old) == plain(out)}; peak memory {_peak():.0f} MiB")
+        print(f"  main's pruned path {examined / old_cpu:>12,.0f} per CPU s ({old_cpu:.1f} s): {old_cpu / cpu:.2f} x; "
+              f"same placements: {plain(old) == plain(out)}; peak memory {_peak():.0f} MiB")
         if plain(old) != plain(out):
             raise SystemExit("the new path's placements differ from main's pruned path")
     full_space(rates)
 
 
 def main(sample: int = 24) -> None:
-    if len(sys.argv) > 2 and sys.argv[2] == "kernel":
-        kernel_paths(sample)
+    if len(sys.argv) > 2 and sys.argv[2] in ("kernel", "kernel-new"):
+        kernel_paths(sample, compare=sys.argv[2] == "kernel")
         return
     if len(sys.argv) > 2 and sys.argv[2] == "shortcuts":
         shortcuts(sample)

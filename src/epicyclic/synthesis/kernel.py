@@ -277,3 +277,92 @@ def passes_matched(masks: np.ndarray, held: np.ndarray, table: np.ndarray, gears
     table = table if table.dtype == np.int32 and table.flags.c_contiguous else np.ascontiguousarray(table, np.int32)
     return _passes_matched(np.ascontiguousarray(masks, dtype=np.int64), np.ascontiguousarray(held, dtype=np.int64),
                            table, np.int64(full), gears, bool(match))
+
+
+@_jit
+def _interval_mask(lo, hi, ordered, widen):  # pragma: no cover - compiled
+    """``_masks`` of one valid range [lo, hi]."""
+    lo_w = lo / widen if lo > 0 else lo * widen
+    hi_w = hi * widen if hi > 0 else hi / widen
+    targets = ordered.size
+    first = 0
+    while first < targets and ordered[first] < lo_w:
+        first += 1
+    stop = 0
+    while stop < targets and ordered[stop] <= hi_w:
+        stop += 1
+    if stop < first:
+        stop = first
+    return (np.int64(1) << np.int64(stop)) - (np.int64(1) << np.int64(first))
+
+
+@_jit
+def _whole_box(det, xs, ys, ordered, widen):  # pragma: no cover - compiled
+    corners, count, _ = det.shape
+    pairs = xs.size
+    forward = np.zeros((count, pairs), dtype=np.int64)
+    backward = np.zeros((count, pairs), dtype=np.int64)
+    valid = np.zeros((count, pairs), dtype=np.bool_)
+    zero = np.zeros((count, pairs), dtype=np.bool_)
+    for t in range(count):
+        for p in range(pairs):
+            x, y = xs[p], ys[p]
+            zero_in = zero_out = True
+            pos_in = neg_in = pos_out = neg_out = 0
+            for c in range(corners):
+                a = det[c, t, x]
+                b = det[c, t, y]
+                zero_in &= a == 0
+                zero_out &= b == 0
+                pos_in += a > 0
+                neg_in += a < 0
+                pos_out += b > 0
+                neg_out += b < 0
+            zero[t, p] = zero_in or zero_out
+            if not ((pos_in == corners or neg_in == corners) and (pos_out == corners or neg_out == corners)):
+                continue
+            valid[t, p] = True
+            lo = np.inf
+            hi = -np.inf
+            for c in range(corners):
+                ratio = det[c, t, x] / det[c, t, y]
+                if ratio < lo:
+                    lo = ratio
+                if ratio > hi:
+                    hi = ratio
+            forward[t, p] = _interval_mask(lo, hi, ordered, widen)
+            backward[t, p] = _interval_mask(1.0 / hi, 1.0 / lo, ordered, widen)
+    return valid, forward, backward, zero
+
+
+def whole_box(det: np.ndarray, xs: np.ndarray, ys: np.ndarray, targets: np.ndarray,
+              tolerance: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The first screening level's ranges of every combination and input/output pair over the whole box (compiled).
+
+    The numpy path's ``ratio_ranges(det[..., xs], det[..., ys])``, the masks of the ratio x → y
+    and of its inverse y → x (``_masks`` of [lo, hi] and of [1/hi, 1/lo]), and whether a
+    determinant is zero at every corner, without the (corners, combinations, pairs) temporaries.
+
+    Parameters
+    ----------
+    det : ndarray (2^S, combinations, shafts)
+        Cleaned determinants at the box's corners (:func:`~epicyclic.synthesis.kinematics.combination_determinants`).
+    xs, ys : ndarray of int (pairs,)
+        Shafts of each pair.
+    targets : ndarray
+        Target ratios (any order).
+    tolerance : float
+        Relative tolerance on each target.
+
+    Returns
+    -------
+    valid, forward, backward, zero : ndarray (combinations, pairs)
+        Bool, int64 masks x → y and y → x, bool.
+
+    References
+    ----------
+    Moore, R. E. (1966), *Interval Analysis*, ch. 2 (bounds over boxes).
+    """
+    return _whole_box(np.ascontiguousarray(det, dtype=np.float64), np.ascontiguousarray(xs, dtype=np.int64),
+                      np.ascontiguousarray(ys, dtype=np.int64), np.sort(np.asarray(targets, dtype=np.float64)),
+                      1.0 + float(tolerance))

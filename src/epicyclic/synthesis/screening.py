@@ -390,9 +390,13 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     if gears > 62:
         raise ValueError("screening handles at most 62 target ratios")
     xs, ys = np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
-    valid, lo, hi = ratio_ranges(det[..., xs], det[..., ys])  # (T, pairs)
-    fwd_mask = _masks(valid, lo, hi, targets, tolerance)
-    rev_mask = _masks(valid, 1.0 / hi, 1.0 / lo, targets, tolerance)  # y -> x: 1/ratio
+    if compiled:  # the same ranges and masks without the (corners, combinations, pairs) temporaries
+        valid, fwd_mask, rev_mask, zero = compiled_kernel.whole_box(det, xs, ys, targets, tolerance)
+    else:
+        valid, lo, hi = ratio_ranges(det[..., xs], det[..., ys])  # (T, pairs)
+        fwd_mask = _masks(valid, lo, hi, targets, tolerance)
+        rev_mask = _masks(valid, 1.0 / hi, 1.0 / lo, targets, tolerance)  # y -> x: 1/ratio
+        zero = np.all(det[..., xs] == 0, axis=0) | np.all(det[..., ys] == 0, axis=0)  # (T, pairs)
     reach_fwd = np.bitwise_or.reduce(fwd_mask, axis=0)  # targets any combination can reach, per pair
     reach_rev = np.bitwise_or.reduce(rev_mask, axis=0)
 
@@ -402,7 +406,6 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     # combinations that reach no target in any sub-box of an input/output: valid over the whole box
     # with no target in range (a sub-box's range lies inside it), or a determinant zero at every corner
     # (multilinear, so zero throughout: no sub-box is valid)
-    zero = np.all(det[..., xs] == 0, axis=0) | np.all(det[..., ys] == 0, axis=0)  # (T, pairs)
     dead_fwd = (valid & (fwd_mask & full == 0)) | zero
     dead_rev = (valid & (rev_mask & full == 0)) | zero
     dead = {}
