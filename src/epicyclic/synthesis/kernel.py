@@ -9,11 +9,14 @@ steps that numpy does in several passes over large temporary arrays:
   gathers alone are 2^S copies of the table);
 * gathering, for every (element set, box), the masks of its C combinations and testing their
   union and count (``_passes``);
-* the one-combination-per-target test by Glover's greedy rule (``_matched``).
+* the one-combination-per-target test by Glover's greedy rule (``_matched``);
+* with four engaged elements, the first level's ranges of all 1.5 · 10⁵ combinations for every
+  input/output pair over the whole box (``ratio_ranges(det[..., xs], det[..., ys])``: temporaries
+  of corners × combinations × pairs).
 
 Here each is one loop over the output, compiled with ``numba.njit(cache=True, nogil=True)`` (no
 GIL held: threads of one worker scale).  Every operation is the numpy path's, in the same order
-on the same IEEE doubles (no ``fastmath``): the results are bit-equal (``tests/synthesis/test_kernel.py``
+on the same (finite) IEEE doubles (no ``fastmath``): the results are bit-equal (``tests/synthesis/test_kernel.py``
 on random and published spaces).  numba is optional: without it (or with ``EPICYCLIC_NUMBA=0``)
 :data:`AVAILABLE` is False and the screening runs its numpy path.
 
@@ -30,7 +33,7 @@ import os
 
 import numpy as np
 
-__all__ = ["AVAILABLE", "group_tests", "passes_matched", "use_kernel"]
+__all__ = ["AVAILABLE", "group_tests", "passes_matched", "use_kernel", "whole_box"]
 
 try:  # optional: pip install epicyclic[fast]
     if os.environ.get("EPICYCLIC_NUMBA", "1").strip() in ("0", "false", "no", "off"):
