@@ -23,13 +23,28 @@
 6. ``pruning``: the shortcuts with 5 and with 6 shift elements (2 brakes + 4 clutches, 20 combinations
    per element set, on sample // 12 mechanisms), and the full space at the 6-element pruned rate.
 
-Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms] [shortcuts | pruning | loopback]
+7. ``kernel``: three paths in one run on the same six-element sample (2 brakes + 4 clutches, 3 engaged,
+   8HP targets, sample // 12 mechanisms): the numpy reference (every grid point solved, every element
+   set scanned), main's pruned path before this work (commit ``BASELINE``, loaded from git), and the
+   new path (compiled kernel + symmetry); placements asserted equal where they must be; peak memory
+   after each path (the new one first); then the new path alone on ``sample`` mechanisms with 3 engaged
+   (8HP targets) and on sample // 8 with 4 engaged (the 10R80's ten ratios, 9 shafts), and the full
+   space in worker-hours at those rates.  One BLAS thread, as Dask's worker processes run
+   (``OPENBLAS_NUM_THREADS=1``, set before numpy is imported).
+
+Run:  .venv/bin/python benchmarks/bench_synthesis.py [sample_mechanisms] [shortcuts | pruning | loopback | kernel
+      | kernel-new (the new path alone on the samples)]
 """
 
 from __future__ import annotations
 
+import os
 import sys
 import time
+
+if len(sys.argv) > 2 and sys.argv[2].startswith("kernel"):  # one BLAS thread per worker, as Dask's nannies set it
+    for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ.setdefault(_name, "1")
 from math import comb
 
 import numpy as np
@@ -251,9 +266,14 @@ def loopback(tasks_used: int = 16, sizes: tuple[int, ...] = (1, 2, 4)) -> None:
                 proc.wait(timeout=30)
 
 
-def full_space(rate: float) -> None:
+def full_space(rate) -> None:
+    """The full space's size and time; ``rate`` per worker-second, or {engaged: rate} (2 engaged at the 3-engaged
+    rate, the lowest measured for fewer elements per combination)."""
+    rates = rate if isinstance(rate, dict) else {2: rate, 3: rate, 4: rate}
+    rates.setdefault(2, rates[3])
     kinds = ("simple",) * 4
     total = 0
+    hours = 0.0
     print("full space, 4 simple sets, 6 shift elements (every split brakes/clutches, k engaged):")
     for k in (2, 3, 4):
         for free in (False, True):
@@ -266,15 +286,139 @@ def full_space(rate: float) -> None:
             sets_ = sum(comb(n - 2, b) * comb(comb(n, 2), 6 - b) for b in range(1, 7))
             count = len(mechs) * io * sets_
             total += count
+            hours += count / rates[k] / 3600
             print(f"  k={k} free input={free!s:5}: {len(mechs):>6,d} mechanisms x {io} in/out x {sets_:,} element "
                   f"sets = {count:.3e}")
     print(f"  total architectures              {total:.3e}")
+    shown = ", ".join(f"{k} engaged {r:,.0f}" for k, r in sorted(rates.items()))
     for workers in (1, 2, 16, 256):
-        hours = total / (rate * workers) / 3600
-        print(f"  screening time on {workers:>3d} workers     {hours:>10.1f} h  (at {rate:,.0f} per s per worker)")
+        print(f"  screening time on {workers:>3d} workers     {hours / workers:>10.1f} h  (per s per worker: {shown})")
+
+
+#: main before the compiled kernel and the symmetry classes (the "current main's pruned path").
+BASELINE = "2e29162"
+TEN_FORWARD = np.array([4.696, 2.985, 2.146, 1.769, 1.520, 1.275, 1.000, 0.854, 0.689, 0.636])  # Ford 10R80
+TEN_REVERSE = np.array([-4.866])
+
+
+def _baseline_screening():
+    """The screening module of commit BASELINE, read with ``git show`` and run against this checkout's kinematics."""
+    import subprocess
+    import types
+
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    source = subprocess.run(["git", "show", f"{BASELINE}:src/epicyclic/synthesis/screening.py"], cwd=root,
+                            capture_output=True, text=True, check=True).stdout
+    module = types.ModuleType("epicyclic.synthesis._screening_baseline")
+    module.__package__ = "epicyclic.synthesis"
+    sys.modules[module.__name__] = module
+    exec(compile(source, f"screening.py@{BASELINE}", "exec"), module.__dict__)  # noqa: S102 - our own history
+    return module
+
+
+def _peak() -> float:
+    import resource
+
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+def _rate(chosen, lay, forward, reverse, levels, **flags):
+    start = time.process_time()
+    out, examined = [], 0
+    for m in chosen:
+        placements, n = screen(m, lay, LOW, HIGH, forward, reverse, 0.01, levels=levels, **flags)
+        out.append(placements)
+        examined += n
+    return examined, time.process_time() - start, out
+
+
+def kernel_paths(sample: int, compare: bool = True) -> None:
+    """Reference, main's pruned path (BASELINE) and the new path on one six-element sample; the new path's rates
+    with 3 and 4 engaged (against main's unless ``compare`` is False: ``kernel-new``); the full space in
+    worker-hours."""
+    from epicyclic.synthesis import kernel
+    from epicyclic.synthesis.symmetry import automorphisms
+
+    def plain(runs):  # the baseline module has its own Placement class
+        return [[(p.input, p.output, p.elements, tuple(int(b) for b in p.boxes)) for p in run] for run in runs]
+
+    print(f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores; numba kernel: {kernel.AVAILABLE}; "
+          f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS')}")
+    mechs = enumerate_mechanisms(("simple",) * 4, 4, max_members_per_shaft=2)
+    rng = np.random.default_rng(0)
+    chosen = [mechs[i] for i in sorted(rng.choice(len(mechs), size=max(1, sample // 12), replace=False))]
+    lay = layout(8, 2, 4, 3)
+    lay.containing  # noqa: B018 - built once per layout (cached)
+    screen(chosen[0], lay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=1)  # compiles or loads the kernel
+    print(f"{len(chosen)} mechanisms (8HP space), 2 brakes + 4 clutches, 3 engaged, 3 levels, CPU seconds:")
+    examined, cpu, new = _rate(chosen, lay, FORWARD, REVERSE, 3)
+    print(f"  new path (kernel + symmetry)   {examined / cpu:>12,.0f} per CPU s ({cpu:.2f} s, "
+          f"{sum(map(len, new))} placements); peak memory so far {_peak():.0f} MiB")
+    base = _baseline_screening() if compare else None
+    if compare:
+        _compare_first(chosen, lay, base, examined, cpu, new, plain)
+    _samples(mechs, base, plain, automorphisms)
+
+
+def _compare_first(chosen, lay, base, examined, cpu, new, plain) -> None:
+    """Main's pruned path and the reference on the first sample, against the new path's figures."""
+    blay = base.layout(8, 2, 4, 3)
+    blay.containing  # noqa: B018
+    start = time.process_time()
+    old = [base.screen(m, blay, LOW, HIGH, FORWARD, REVERSE, 0.01, levels=3)[0] for m in chosen]
+    old_cpu = time.process_time() - start
+    print(f"  main's pruned path ({BASELINE})  {examined / old_cpu:>12,.0f} per CPU s ({old_cpu:.2f} s, "
+          f"{sum(map(len, old))} placements); peak memory so far {_peak():.0f} MiB")
+    if plain(old) != plain(new):
+        raise SystemExit("the new path's placements differ from main's pruned path")
+    _, ref_cpu, ref = _rate(chosen, lay, FORWARD, REVERSE, 3, interpolate=False, prune=False, kernel=False,
+                            symmetry=False)
+    print(f"  numpy reference                {examined / ref_cpu:>12,.0f} per CPU s ({ref_cpu:.2f} s, "
+          f"{sum(map(len, ref))} placements); peak memory {_peak():.0f} MiB")
+    ordered = all([p for p in r if p in set(n)] == n for r, n in zip(ref, new))
+    print(f"  speed-up: {old_cpu / cpu:.2f} x over main's pruned path, {ref_cpu / cpu:.1f} x over the reference; "
+          f"new = main's, kept = reference's in order: {ordered}")
+    if not ordered:
+        raise SystemExit("the new path kept a placement the reference did not, or changed the order")
+
+
+def _samples(mechs, base, plain, automorphisms) -> None:
+    """The new path (and main's pruned path, with ``base``) on the 3- and 4-engaged samples; the full space."""
+    sample = int(sys.argv[1]) if len(sys.argv) > 1 else 24
+    rates = {}
+    rng = np.random.default_rng(1)
+    big = [mechs[i] for i in sorted(rng.choice(len(mechs), size=min(sample, len(mechs)), replace=False))]
+    four = enumerate_mechanisms(("simple",) * 4, 5)
+    picked = [four[i] for i in sorted(rng.choice(len(four), size=max(1, sample // 8), replace=False))]
+    for engaged, chosen_, shafts, forward, reverse, what in (
+            (3, big, 8, FORWARD, REVERSE, "8HP targets, ties in pairs"),
+            (4, picked, 9, TEN_FORWARD, TEN_REVERSE, "10R80 targets, every tie pattern")):
+        lay_ = layout(shafts, 2, 4, engaged)
+        lay_.containing  # noqa: B018
+        examined, cpu, out = _rate(chosen_, lay_, forward, reverse, 3)
+        rates[engaged] = examined / cpu
+        symmetric = sum(bool(automorphisms(m, LOW, HIGH)) for m in chosen_)
+        print(f"{len(chosen_)} mechanisms ({symmetric} symmetric), {engaged} engaged, {what}, {examined:.3g} "
+              f"architectures, {sum(map(len, out))} placements kept:")
+        print(f"  new path {rates[engaged]:>12,.0f} per CPU s ({cpu:.1f} s); peak memory {_peak():.0f} MiB")
+        if base is None:
+            continue
+        blay_ = base.layout(shafts, 2, 4, engaged)
+        blay_.containing  # noqa: B018
+        start = time.process_time()
+        old = [base.screen(m, blay_, LOW, HIGH, forward, reverse, 0.01, levels=3)[0] for m in chosen_]
+        old_cpu = time.process_time() - start
+        print(f"  main's pruned path {examined / old_cpu:>12,.0f} per CPU s ({old_cpu:.1f} s): {old_cpu / cpu:.2f} x; "
+              f"same placements: {plain(old) == plain(out)}; peak memory {_peak():.0f} MiB")
+        if plain(old) != plain(out):
+            raise SystemExit("the new path's placements differ from main's pruned path")
+    full_space(rates)
 
 
 def main(sample: int = 24) -> None:
+    if len(sys.argv) > 2 and sys.argv[2] in ("kernel", "kernel-new"):
+        kernel_paths(sample, compare=sys.argv[2] == "kernel")
+        return
     if len(sys.argv) > 2 and sys.argv[2] == "shortcuts":
         shortcuts(sample)
         return

@@ -51,6 +51,7 @@ __all__ = [
     "element_shafts",
     "gear_ratios",
     "hadamard_bound",
+    "hadamard_factors",
     "ratio_ranges",
     "willis_matrices",
 ]
@@ -167,11 +168,31 @@ def hadamard_bound(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray,
     ----------
     Hadamard, J. (1893), "Résolution d'une question relative aux déterminants", Bull. Sci. Math. 17.
     """
+    willis, elements = hadamard_factors(mechanism, ratios, combos, rows)
+    return willis[:, None] * elements[None, :]
+
+
+def hadamard_factors(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray,
+                     rows: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The two factors of :func:`hadamard_bound`: Willis rows' norms per point (P,), element rows' per combination (T,).
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+    ratios : ndarray (P, S)
+    combos : ndarray of int (T, k)
+    rows : ndarray, optional
+        Element rows (default :func:`element_rows`).
+
+    References
+    ----------
+    Hadamard, J. (1893), Bull. Sci. Math. 17.
+    """
     ratios = np.atleast_2d(np.asarray(ratios, dtype=float))
     rows = element_rows(mechanism.shafts) if rows is None else rows
     willis = np.prod(np.sqrt(1.0 + ratios ** 2 + (1.0 - ratios) ** 2), axis=1)  # (P,)
     elements = np.prod(np.linalg.norm(rows, axis=1)[np.asarray(combos)], axis=1)  # (T,)
-    return willis[:, None] * elements[None, :]
+    return willis, elements
 
 
 def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:

@@ -24,7 +24,10 @@ holding a combination that reaches the rarest target (:func:`_pruned_level0`);
 an architecture none of whose boxes admits one combination per target is dropped
 (:func:`_matched`: the fit gives every gear its own combination), its survivors
 keeping every box of the range test; and combinations that reach no target in any
-sub-box are skipped in the bisection.
+sub-box are skipped in the bisection.  With ``symmetry`` one placement per orbit of
+the mechanism's automorphisms is examined and the images are written back
+(:mod:`~epicyclic.synthesis.symmetry`); with ``kernel`` the range, pass and matching
+tests run compiled (:mod:`~epicyclic.synthesis.kernel`, numba, bit-equal).
 
 Survivors go to :mod:`~epicyclic.synthesis.fitting`.  Nothing here fits a
 ratio, so screening never drops an architecture that can reach the targets
@@ -47,14 +50,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..results.zero import clean_array
+from . import kernel as compiled_kernel
 from .kinematics import (
     combination_determinants,
     element_rows,
     element_shafts,
     hadamard_bound,
+    hadamard_factors,
     ratio_ranges,
 )
+from .boxes import _children, _children_table, _grid, multilinear
 from .mechanisms import PORTS, Mechanism
+from .symmetry import PlacementSymmetry, automorphisms
 
 __all__ = ["Layout", "Placement", "layout", "multilinear", "screen"]
 
@@ -179,78 +186,6 @@ def layout(shafts: int, brakes: int, clutches: int, engaged: int) -> Layout:
                   np.bitwise_or.reduce(bits[element_sets], axis=1))
 
 
-def _grid(low: np.ndarray, high: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray]:
-    """Grid of (2^level + 1)^S points over the box and the corner indices of each of its 2^(level·S) boxes.
-
-    Box number: digit k (base 2^level, least significant first) is the cell along set k.
-    """
-    return _cached_grid(tuple(float(v) for v in low), tuple(float(v) for v in high), level)
-
-
-@functools.lru_cache(maxsize=32)
-def _cached_grid(low_t: tuple[float, ...], high_t: tuple[float, ...], level: int) -> tuple[np.ndarray, np.ndarray]:
-    low, high = np.array(low_t), np.array(high_t)
-    sets = low.size
-    cells = 2 ** level
-    axis = np.linspace(0.0, 1.0, cells + 1)
-    codes = np.array(list(itertools.product(range(cells + 1), repeat=sets)))  # last set fastest
-    points = low + (high - low) * axis[codes]
-    stride = (cells + 1) ** np.arange(sets - 1, -1, -1)
-    box_cells = np.array(list(itertools.product(range(cells), repeat=sets)))[:, ::-1]  # set 0 fastest
-    offsets = np.array(list(itertools.product((0, 1), repeat=sets)))
-    corners = ((box_cells[:, None, :] + offsets[None, :, :]) * stride).sum(axis=2)
-    return points, corners
-
-
-def multilinear(corner_values: np.ndarray, points: np.ndarray, level: int, sets: int) -> np.ndarray:
-    """Values at grid points (numbers of :func:`_grid` at ``level``) of functions multilinear in i0.
-
-    A function multilinear in the S stationary ratios is fixed by its values at
-    the 2^S corners of the box: at fractional position t it is
-    Σ_corners Π_k (t_k or 1 − t_k) · value (tensor-product linear interpolation,
-    exact for multilinear functions).  The combination determinants D_x are
-    multilinear (each Willis row holds one i0, linearly), so their values
-    anywhere in the box cost one small matrix product instead of a solve.
-
-    Parameters
-    ----------
-    corner_values : ndarray (2^S, ...)
-        Values at the box's corners in the order of ``_grid(low, high, 0)``.
-    points : ndarray of int
-        Grid point numbers at ``level`` (set 0 most significant, base 2^level + 1).
-    level, sets : int
-
-    Returns
-    -------
-    ndarray (len(points), ...)
-
-    >>> corner = np.array([0.0, 1.0, 2.0, 3.0])   # f = 2 t0 + t1 on the unit square
-    >>> multilinear(corner, np.array([0, 4, 8]), 1, 2).tolist()   # (0, 0), (1/2, 1/2), (1, 1)
-    [0.0, 1.5, 3.0]
-    """
-    cells = 2 ** level
-    digits = (np.asarray(points)[:, None] // (cells + 1) ** np.arange(sets - 1, -1, -1)) % (cells + 1)
-    t = digits / cells  # (P, S)
-    bits = np.array(list(itertools.product((0, 1), repeat=sets)), dtype=bool)  # (2^S, S), set 0 first
-    weights = np.prod(np.where(bits[None, :, :], t[:, None, :], 1.0 - t[:, None, :]), axis=2)  # (P, 2^S)
-    flat = corner_values.reshape(corner_values.shape[0], -1)
-    return (weights @ flat).reshape((len(points),) + corner_values.shape[1:])
-
-
-def _children(boxes: np.ndarray, level: int, sets: int) -> np.ndarray:
-    """Numbers of the 2^S sub-boxes (at ``level + 1``) of each box (at ``level``), shape (len, 2^S).
-
-    >>> _children(np.array([0]), 0, 2).tolist()
-    [[0, 2, 1, 3]]
-    """
-    cells = 2 ** level
-    boxes = np.asarray(boxes, dtype=np.int64)
-    digits = (boxes[:, None] // cells ** np.arange(sets)) % cells  # (n, S)
-    halves = np.array(list(itertools.product((0, 1), repeat=sets)))  # (2^S, S)
-    weights = (2 * cells) ** np.arange(sets)
-    return ((2 * digits[:, None, :] + halves[None, :, :]) * weights).sum(axis=2)
-
-
 def _masks(valid: np.ndarray, lo: np.ndarray, hi: np.ndarray, targets: np.ndarray, tolerance: float) -> np.ndarray:
     """Bit mask of the targets each range can reach, widened by the tolerance.
 
@@ -335,8 +270,8 @@ def _holding(lay: Layout, combos: np.ndarray) -> np.ndarray:
     return np.flatnonzero(mark)
 
 
-def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list, full: int,
-                   gears: int) -> list[tuple[tuple[int, int, int], bool]]:
+def _pruned_level0(lay: Layout, pair: int, allowed: list[np.ndarray], directions: list, full: int,
+                   gears: int, compiled: bool = False) -> tuple[np.ndarray, np.ndarray] | None:
     """First-level survivors of one input/output pair, found from the rarest target (exact).
 
     An element set passes only if some combination of it reaches each target, so it holds one of
@@ -344,12 +279,14 @@ def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list,
     combination that reaches the target fewest element sets can reach (counted with
     :attr:`Layout.containing`) are examined; the rest cannot pass.  The survivors come in the
     order of the full scan: by block of brakes, then direction, then element set, each with whether
-    it admits one combination per target (:func:`_matched`).
+    it admits one combination per target (:func:`_matched`): rows (input, output, element set)
+    of a (3, n) array, and the n matched flags; None when none survives.  ``allowed`` (per direction):
+    the element sets that brake neither input nor output, touch every shaft that must carry an
+    element (and represent their orbit under the mechanism's symmetries).
     """
     indptr, _ = lay.containing
     sizes = np.diff(indptr)
-    allowed = ((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need)
-    found, order = [], []
+    found, flags, order = [], [], []
     for d, (a, b, rows, _reach) in enumerate(directions):
         masks = rows[pair] & full
         bits = (masks[None, :] >> np.arange(gears, dtype=masks.dtype)[:, None]) & 1  # (gears, T)
@@ -357,22 +294,29 @@ def _pruned_level0(lay: Layout, pair: int, io: int, need: int, directions: list,
             continue  # some target out of reach of every combination
         rarest = int(np.argmin(bits.astype(np.int64) @ sizes))
         held = _holding(lay, np.flatnonzero(bits[rarest]))
-        held = held[allowed[held]]
-        gathered = masks[lay.set_combos[held]]
-        keep = _passes(gathered, full, gears)
+        held = held[allowed[d][held]]
+        if compiled:  # the same tests in one compiled loop, without the (held, C) gather
+            keep, matched = compiled_kernel.passes_matched(masks, held, lay.set_combos, gears)
+            matched = matched[keep]
+        else:
+            gathered = masks[lay.set_combos[held]]
+            keep = _passes(gathered, full, gears)
+            matched = _matched(gathered[keep], gears)
         ok = held[keep]
-        found += [((a, b, int(j)), bool(m)) for j, m in zip(ok, _matched(gathered[keep], gears))]
+        found.append(np.stack([np.full(ok.size, a), np.full(ok.size, b), ok]))
+        flags.append(matched)
         order.append(np.stack([np.searchsorted(lay.block_starts, ok, side="right"), np.full(ok.size, d), ok]))
     if not found:
-        return []
-    keys = np.concatenate(order, axis=1)
-    return [found[i] for i in np.lexsort(keys[::-1])]
+        return None
+    sort = np.lexsort(np.concatenate(order, axis=1)[::-1])
+    return np.concatenate(found, axis=1)[:, sort], np.concatenate(flags)[sort]
 
 
 def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray, forward: np.ndarray,
            reverse: np.ndarray, tolerance: float, levels: int = 2,
            input_members: tuple[str, ...] = PORTS, output_members: tuple[str, ...] = PORTS,
-           interpolate: bool = True, prune: bool = True) -> tuple[list[Placement], int]:
+           interpolate: bool = True, prune: bool = True, kernel: bool | None = None,
+           symmetry: bool = True) -> tuple[list[Placement], int]:
     """Every (input, output, element set) of the mechanism that survives screening.
 
     Parameters
@@ -400,6 +344,12 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         Examine at the first level only the element sets that hold a combination
         reaching the rarest target (:func:`_pruned_level0`; exact: every other set
         misses that target; False: the reference, every element set scanned).
+    kernel : bool, optional
+        The range and matching tests in compiled loops (:mod:`~epicyclic.synthesis.kernel`, bit-equal
+        results); default: when numba is importable.  False: the numpy path (the reference).
+    symmetry : bool, default True
+        With ``prune``: examine one placement per orbit of the mechanism's automorphisms
+        (:mod:`~epicyclic.synthesis.symmetry`) and write the images back (the same placements).
 
     Returns
     -------
@@ -409,7 +359,10 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
         Architectures (input, output, element set) examined.
     """
     mech = mechanism
+    compiled = compiled_kernel.use_kernel(kernel)
     low, high = np.asarray(low, float), np.asarray(high, float)
+    group = automorphisms(mech, low, high) if prune and symmetry else ()
+    sym = PlacementSymmetry(group, lay.element_sets) if group else None
     sets = mech.sets
     levels = min(levels, 16 // sets)  # at most 2^16 boxes
     targets = np.concatenate([forward, reverse]).astype(float)
@@ -432,14 +385,18 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
              or not mech.free_input and role_ok(x, output_members) and role_ok(y, input_members)]
     if not pairs:
         return [], 0
-    survivors: list[tuple[tuple[int, int, int], bool]] = []  # (input, output, element set), matched
+    level0: list[tuple[np.ndarray, np.ndarray]] = []  # (input, output, element set) rows, matched
     examined = 0
     if gears > 62:
         raise ValueError("screening handles at most 62 target ratios")
     xs, ys = np.array([p[0] for p in pairs]), np.array([p[1] for p in pairs])
-    valid, lo, hi = ratio_ranges(det[..., xs], det[..., ys])  # (T, pairs)
-    fwd_mask = _masks(valid, lo, hi, targets, tolerance)
-    rev_mask = _masks(valid, 1.0 / hi, 1.0 / lo, targets, tolerance)  # y -> x: 1/ratio
+    if compiled:  # the same ranges and masks without the (corners, combinations, pairs) temporaries
+        valid, fwd_mask, rev_mask, zero = compiled_kernel.whole_box(det, xs, ys, targets, tolerance)
+    else:
+        valid, lo, hi = ratio_ranges(det[..., xs], det[..., ys])  # (T, pairs)
+        fwd_mask = _masks(valid, lo, hi, targets, tolerance)
+        rev_mask = _masks(valid, 1.0 / hi, 1.0 / lo, targets, tolerance)  # y -> x: 1/ratio
+        zero = np.all(det[..., xs] == 0, axis=0) | np.all(det[..., ys] == 0, axis=0)  # (T, pairs)
     reach_fwd = np.bitwise_or.reduce(fwd_mask, axis=0)  # targets any combination can reach, per pair
     reach_rev = np.bitwise_or.reduce(rev_mask, axis=0)
 
@@ -449,7 +406,6 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     # combinations that reach no target in any sub-box of an input/output: valid over the whole box
     # with no target in range (a sub-box's range lies inside it), or a determinant zero at every corner
     # (multilinear, so zero throughout: no sub-box is valid)
-    zero = np.all(det[..., xs] == 0, axis=0) | np.all(det[..., ys] == 0, axis=0)  # (T, pairs)
     dead_fwd = (valid & (fwd_mask & full == 0)) | zero
     dead_rev = (valid & (rev_mask & full == 0)) | zero
     dead = {}
@@ -467,9 +423,12 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                                   [(x, y, fwd_rows, reach_fwd), (y, x, rev_rows, reach_rev)])
                       if (mech.free_input or role_ok(d[0], input_members)) and role_ok(d[1], output_members)]
         if prune:
-            survivors += _pruned_level0(lay, p, io, need, directions, full, gears)
-            examined += int(np.count_nonzero(((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need))) \
-                * len(directions)
+            allowed = ((lay.brake_shafts & io) == 0) & ((lay.touched & need) == need)
+            examined += int(np.count_nonzero(allowed)) * len(directions)  # images included
+            per = [allowed & sym.representatives(d[0], d[1]) if sym else allowed for d in directions]
+            found = _pruned_level0(lay, p, per, directions, full, gears, compiled)
+            if found is not None:
+                level0.append(found)
             continue
         for start, stop, block in blocks:
             covered = (lay.touched[start:stop] & need) == need
@@ -478,24 +437,40 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                 if reach[p] != full:
                     continue
                 ok = _passes_rows(rows[p][lay.columns[:, start:stop]], full, gears) & covered
-                survivors += [((a, b, start + int(j)), True) for j in np.flatnonzero(ok)]
+                j = start + np.flatnonzero(ok)
+                level0.append((np.stack([np.full(j.size, a), np.full(j.size, b), j]), np.ones(j.size, dtype=bool)))
     # the reference's order after bisection: groups (input, output) by first appearance among the
     # first level's survivors (pruned or not), then the first level's order
-    group_rank: dict[tuple[int, int], int] = {}
-    for (a, b, _), _ok in survivors:
-        group_rank.setdefault((a, b), len(group_rank))
-    first_rank = {s: r for r, (s, _ok) in enumerate(survivors)}
-    survivors = [s for s, matched in survivors if matched]
+    found = np.concatenate([f for f, _ in level0], axis=1) if level0 else np.zeros((3, 0), dtype=np.int64)
+    matched = np.concatenate([m for _, m in level0]) if level0 else np.zeros(0, dtype=bool)
+    reps = None
+    if sym is not None:  # every image of a representative, in the full scan's order
+        reps = {(int(a), int(b), int(j)) for a, b, j in found[:, matched].T}
+        found, source = sym.orbits(found)
+        matched = matched[source]
+        pair_index = np.zeros((mech.shafts, mech.shafts), dtype=np.int64)
+        for p, (x, y) in enumerate(pairs):
+            pair_index[x, y] = pair_index[y, x] = p
+        first_of = np.array([x for x, _ in pairs])[pair_index[found[0], found[1]]]
+        order = np.lexsort((found[2], found[0] != first_of, np.searchsorted(lay.block_starts, found[2], side="right"),
+                            pair_index[found[0], found[1]]))
+        found, matched = found[:, order], matched[order]
+    _, first = np.unique(found[0] * mech.shafts + found[1], return_index=True)
+    group_rank = {(int(found[0, i]), int(found[1, i])): r for r, i in enumerate(np.sort(first))}
+    at_rank = np.flatnonzero(matched)
+    survivors = [(int(a), int(b), int(j)) for a, b, j in found[:, at_rank].T]
+    first_rank = dict(zip(survivors, at_rank.tolist()))
     # bisection: every survivor keeps the boxes (at the current level) in which it may reach the targets
-    boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors}
+    boxes = {s: np.zeros(1, dtype=np.int64) for s in survivors if reps is None or s in reps}
     for level in range(1, levels + 1):
         if not boxes:
             break
         used = np.unique(lay.set_combos[[s[2] for s in boxes]])
         points, corners = _grid(low, high, level)
         groups: dict[tuple[int, int], list[tuple[int, np.ndarray]]] = {}
+        children = _children_table(level - 1, sets)
         for (a, b, j), parents in boxes.items():
-            groups.setdefault((a, b), []).append((j, _children(parents, level - 1, sets).ravel()))
+            groups.setdefault((a, b), []).append((j, children[parents].ravel()))
         at = np.unique(corners[np.unique(np.concatenate([c for m in groups.values() for _, c in m]))])
         if not interpolate:  # the reference: every grid point solved again, for every shaft
             det = combination_determinants(mech, points[at], lay.combos[used], element_rows(mech.shafts))
@@ -505,36 +480,49 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
             counts = np.array([c.size for _, c in members])
             flat = np.concatenate([c for _, c in members])
             needed = np.unique(flat)
+            owner = np.repeat(np.arange(len(members)), counts)
             if interpolate:  # exact (multilinear in i0): only this group's combinations, points and two shafts
                 member_cols = lay.set_combos[sets_j]
                 cols = np.unique(member_cols)
                 live = cols[~dead[(a, b)][cols]] if prune else cols  # the others' masks are 0 in every box
                 here = np.unique(corners[needed])
-                pair = clean_array(multilinear(whole_box[:, live][:, :, [a, b]], here, level, sets),
-                                   hadamard_bound(mech, points[here], lay.combos[live])[:, :, None])
-                idx = np.searchsorted(here, corners[needed].T)  # (2^S, boxes) rows of pair
-                valid, lo, hi = ratio_ranges(pair[:, :, 0][idx], pair[:, :, 1][idx])  # (boxes, live)
-                mask = np.zeros((len(needed), len(cols)), dtype=np.int64)
-                mask[:, np.searchsorted(cols, live)] = _masks(valid, lo, hi, targets, tolerance)
+                raw = multilinear(whole_box[:, live][:, :, [a, b]], here, level, sets)
+                idx = np.searchsorted(here, corners[needed].T)  # (2^S, boxes) rows of raw
+                if compiled:  # the same tests, each (box, combination) range computed on demand
+                    live_of = np.full(len(cols), -1, dtype=np.int64)
+                    live_of[np.searchsorted(cols, live)] = np.arange(len(live))
+                    willis, elements = hadamard_factors(mech, points[here], lay.combos[live])
+                    ok, matched = compiled_kernel.group_tests(raw, willis, elements, idx, live_of, targets, tolerance,
+                                                              np.searchsorted(needed, flat), owner,
+                                                              np.searchsorted(cols, member_cols), match=prune)
+                else:
+                    pair = clean_array(raw, hadamard_bound(mech, points[here], lay.combos[live])[:, :, None])
+                    valid, lo, hi = ratio_ranges(pair[:, :, 0][idx], pair[:, :, 1][idx])  # (boxes, live)
+                    mask = np.zeros((len(needed), len(cols)), dtype=np.int64)
+                    mask[:, np.searchsorted(cols, live)] = _masks(valid, lo, hi, targets, tolerance)
             else:
                 member_cols = np.searchsorted(used, lay.set_combos[sets_j])  # (M, C) columns of det
                 cols = np.unique(member_cols)
                 idx = np.searchsorted(at, corners[needed].T)  # (2^S, boxes) rows of det
                 valid, lo, hi = ratio_ranges(det[:, cols, a][idx], det[:, cols, b][idx])  # (boxes, cols)
                 mask = _masks(valid, lo, hi, targets, tolerance)
-            owner = np.repeat(np.arange(len(members)), counts)
-            gathered = mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]]
-            ok = _passes(gathered, full, gears)
-            matched = ok.copy()
-            if prune:  # an architecture none of whose boxes admits one combination per target is dropped
-                matched[ok] = _matched(gathered[ok], gears)
+            if not (compiled and interpolate):
+                gathered = mask[np.searchsorted(needed, flat)[:, None], np.searchsorted(cols, member_cols)[owner]]
+                ok = _passes(gathered, full, gears)
+                matched = ok.copy()
+                if prune:  # an architecture none of whose boxes admits one combination per target is dropped
+                    matched[ok] = _matched(gathered[ok], gears)
             alive = np.zeros(len(members), dtype=bool)
             np.logical_or.at(alive, owner, matched)
             for m, (j, keep) in enumerate(zip(sets_j, np.split(ok, np.cumsum(counts)[:-1]))):
                 if alive[m]:  # its boxes stay those of the range test: the fit starts where it did
                     nxt[(a, b, int(j))] = members[m][1][keep]
         boxes = nxt
+    if sym is not None:
+        boxes = sym.expand(boxes, levels, sets)
     if levels:
         boxes = dict(sorted(boxes.items(), key=lambda item: (group_rank[item[0][:2]], first_rank[item[0]])))
+    elif sym is not None:
+        boxes = dict(sorted(boxes.items(), key=lambda item: first_rank[item[0]]))
     return [Placement(a, b, tuple(int(e) for e in lay.element_sets[j]), tuple(bx))
             for (a, b, j), bx in boxes.items()], examined

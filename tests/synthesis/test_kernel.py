@@ -1,0 +1,99 @@
+"""The compiled screening kernel (numba) returns exactly the numpy path's placements.
+
+The kernel (:mod:`epicyclic.synthesis.kernel`) fuses the range test over boxes (corner values of
+multilinear determinants, Moore 1966), the union/count test and Glover's (1967) matching into
+compiled loops doing the same IEEE operations in the same order, so the placements, their boxes and
+their order must be *equal*, not close: checked on the whole Simpson space, a sample of the ZF 8HP
+space (published ratios) and random targets on three-set mechanisms.  Without numba the package
+runs its numpy path (checked in a fresh interpreter with ``EPICYCLIC_NUMBA=0``).
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from epicyclic.synthesis import SynthesisSpec, enumerate_mechanisms, kernel
+from epicyclic.synthesis.mechanisms import canonical_members
+from epicyclic.synthesis.screening import layout, screen
+from epicyclic.synthesis.search import _mechanisms, bounds
+
+EIGHT_FORWARD = np.array([4.6957, 3.1304, 2.1039, 1.6667, 1.2845, 1.0, 0.8392, 0.6667])  # ZF 8HP 70
+EIGHT_REVERSE = np.array([-3.2968])
+
+needs_numba = pytest.mark.skipif(not kernel.AVAILABLE, reason="numba is not installed (pip install epicyclic[fast])")
+
+
+def _same(mech, lay, low, high, forward, reverse, tolerance, levels, **flags):
+    args = (mech, lay, low, high, np.asarray(forward, float), np.asarray(reverse, float), tolerance)
+    compiled = screen(*args, levels=levels, kernel=True, **flags)
+    reference = screen(*args, levels=levels, kernel=False, **flags)
+    assert compiled == reference, mech
+    return len(compiled[0])
+
+
+@needs_numba
+def test_compiled_equals_numpy_on_the_simpson_space():
+    spec = SynthesisSpec.create([2.46, 1.46, 1.0, -2.18], 2, {"brakes": 2, "clutches": 2}, {"tolerance": 0.01})
+    low, high = bounds(spec)
+    kept = 0
+    for engaged in spec.engaged:
+        for mech in _mechanisms(spec, engaged):
+            lay = layout(mech.shafts, spec.brakes, spec.clutches, engaged)
+            for prune in (True, False):
+                kept += _same(mech, lay, low, high, spec.forward, spec.reverse, spec.tolerance, spec.levels,
+                              prune=prune)
+    assert kept > 0
+
+
+@needs_numba
+def test_compiled_equals_numpy_on_a_sample_of_the_8hp_space():
+    """The ZF 8HP's mechanism (S1=S2, C1=R4, R2=S3, R3=S4) and two drawn at random, 8HP 70 ratios."""
+    mechs = enumerate_mechanisms(("simple",) * 4, 4, max_members_per_shaft=2)
+    eight = canonical_members((0, 1, 2, 0, 3, 4, 3, 5, 6, 5, 2, 7), ("simple",) * 4)
+    lay = layout(8, 2, 3, 3)
+    low, high = np.full(4, -4.0), np.full(4, -1.5)
+    rng = np.random.default_rng(7)
+    sample = [m for m in mechs if m.members == eight] + [mechs[k] for k in rng.choice(len(mechs), 2, replace=False)]
+    kept = sum(_same(m, lay, low, high, EIGHT_FORWARD, EIGHT_REVERSE, 0.01, 2) for m in sample)
+    assert len(sample) == 3 and kept > 0
+
+
+@needs_numba
+def test_compiled_equals_numpy_on_random_targets():
+    mechs = enumerate_mechanisms(("simple",) * 3, 3)
+    lay = layout(6, 2, 2, 2)
+    low, high = np.full(3, -4.5), np.full(3, -1.4)
+    rng = np.random.default_rng(11)
+    kept = 0
+    for k in rng.choice(len(mechs), size=12, replace=False):
+        forward = np.sort(rng.uniform(0.6, 4.0, size=3))[::-1]
+        kept += _same(mechs[k], lay, low, high, forward, [-rng.uniform(1.5, 4.0)], 0.02, 2)
+    assert kept > 0
+
+
+def test_kernel_asked_for_without_numba_is_refused(monkeypatch):
+    monkeypatch.setattr(kernel, "AVAILABLE", False)
+    assert kernel.use_kernel(None) is False and kernel.use_kernel(False) is False
+    with pytest.raises(ImportError, match=r"epicyclic\[fast\]"):
+        kernel.use_kernel(True)
+
+
+def test_the_package_screens_without_numba():
+    """A fresh interpreter with the kernel switched off: numpy path, the same placements as this one's."""
+    code = ("import numpy as np; from epicyclic.synthesis import kernel, enumerate_mechanisms;"
+            "from epicyclic.synthesis.screening import layout, screen;"
+            "m = enumerate_mechanisms(('simple',) * 2, 3, free_input=True)[3];"
+            "p, n = screen(m, layout(m.shafts, 2, 2, 2), np.full(2, -4.0), np.full(2, -1.5),"
+            " np.array([2.46, 1.46, 1.0]), np.array([-2.18]), 0.01);"
+            "print(kernel.AVAILABLE, n, [(q.input, q.output, q.elements, q.boxes) for q in p])")
+    env = dict(os.environ, EPICYCLIC_NUMBA="0")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True).stdout
+    m = enumerate_mechanisms(("simple",) * 2, 3, free_input=True)[3]
+    p, n = screen(m, layout(m.shafts, 2, 2, 2), np.full(2, -4.0), np.full(2, -1.5), np.array([2.46, 1.46, 1.0]),
+                  np.array([-2.18]), 0.01)
+    assert out.strip() == f"False {n} {[(q.input, q.output, q.elements, q.boxes) for q in p]}"
