@@ -79,9 +79,10 @@ class SearchEstimate:
             Also give the wall time on this many workers.
         """
         what = "at most" if self.exact else "about"
+        time = duration(self.worker_seconds)
+        time = time if time.startswith("under") else f"{what} {time}"  # not "at most under 1 s"
         text = (f"{what} {self.architectures:.3g} architectures on {self.mechanisms:,} mechanisms"
-                f"{'' if self.exact else ' (estimated)'}, {what} {duration(self.worker_seconds)} of screening on "
-                "one worker")
+                f"{'' if self.exact else ' (estimated)'}, {time} of screening on one worker")
         if workers and workers > 1:
             text += f", {duration(self.worker_seconds / workers)} on {workers}"
         return text
