@@ -369,7 +369,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     gears = targets.size
     full = (1 << gears) - 1
     points, corners = _grid(low, high, 0)
-    det = combination_determinants(mech, points, lay.combos, element_rows(mech.shafts))  # (2^S, T, N)
+    det = combination_determinants(mech, points, lay.combos, element_rows(mech.shafts), compiled)  # (2^S, T, N)
     whole_box = det
     single = [x for x in range(mech.member_shafts) if len(mech.shaft_members(x)) == 1]
     if mech.free_input:
