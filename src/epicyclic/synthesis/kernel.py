@@ -196,7 +196,13 @@ def group_tests(values: np.ndarray, willis: np.ndarray, elements: np.ndarray, id
                         np.sort(np.asarray(targets, dtype=np.float64)), 1.0 + float(tolerance),
                         np.ascontiguousarray(rows, dtype=np.int64), np.ascontiguousarray(owner, dtype=np.int64),
                         np.ascontiguousarray(table, dtype=np.int32), np.int64((1 << gears) - 1), gears, bool(match),
-                        np.argsort(rows, kind="stable").astype(np.int64))
+                        _by_box(np.asarray(rows), np.asarray(idx).shape[1]))
+
+
+def _by_box(rows: np.ndarray, boxes: int) -> np.ndarray:
+    """The stable order of ``rows`` (box numbers below ``boxes``): numpy's radix sort where they fit 16 bits."""
+    narrow = rows.astype(np.int16) if boxes <= np.iinfo(np.int16).max else rows
+    return np.argsort(narrow, kind="stable").astype(np.int64)
 
 
 @_jit
