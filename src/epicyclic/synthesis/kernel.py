@@ -33,7 +33,7 @@ import os
 
 import numpy as np
 
-__all__ = ["AVAILABLE", "group_tests", "passes_matched", "use_kernel", "whole_box"]
+__all__ = ["AVAILABLE", "four_cofactors", "group_tests", "passes_matched", "use_kernel", "whole_box"]
 
 try:  # optional: pip install epicyclic[fast]
     if os.environ.get("EPICYCLIC_NUMBA", "1").strip() in ("0", "false", "no", "off"):
@@ -196,7 +196,13 @@ def group_tests(values: np.ndarray, willis: np.ndarray, elements: np.ndarray, id
                         np.sort(np.asarray(targets, dtype=np.float64)), 1.0 + float(tolerance),
                         np.ascontiguousarray(rows, dtype=np.int64), np.ascontiguousarray(owner, dtype=np.int64),
                         np.ascontiguousarray(table, dtype=np.int32), np.int64((1 << gears) - 1), gears, bool(match),
-                        np.argsort(rows, kind="stable").astype(np.int64))
+                        _by_box(np.asarray(rows), np.asarray(idx).shape[1]))
+
+
+def _by_box(rows: np.ndarray, boxes: int) -> np.ndarray:
+    """The stable order of ``rows`` (box numbers below ``boxes``): numpy's radix sort where they fit 16 bits."""
+    narrow = rows.astype(np.int16) if boxes <= np.iinfo(np.int16).max else rows
+    return np.argsort(narrow, kind="stable").astype(np.int64)
 
 
 @_jit
@@ -369,3 +375,72 @@ def whole_box(det: np.ndarray, xs: np.ndarray, ys: np.ndarray, targets: np.ndarr
     return _whole_box(np.ascontiguousarray(det, dtype=np.float64), np.ascontiguousarray(xs, dtype=np.int64),
                       np.ascontiguousarray(ys, dtype=np.int64), np.sort(np.asarray(targets, dtype=np.float64)),
                       1.0 + float(tolerance))
+
+
+@_jit
+def _four_cofactors(funcs, combos, top_of, sign_of):  # pragma: no cover - compiled
+    points, _, d = funcs.shape
+    count = combos.shape[0]
+    out = np.empty((points, count, d))
+    upper = np.empty(10)
+    lower = np.empty(10)
+    for p in range(points):
+        for t in range(count):
+            a, b, c, e = combos[t, 0], combos[t, 1], combos[t, 2], combos[t, 3]
+            n = 0
+            for i in range(d):  # 2x2 minors of rows (a, b) and (c, e), pairs (i, j) in lexicographic order
+                for j in range(i + 1, d):
+                    upper[n] = funcs[p, a, i] * funcs[p, b, j] - funcs[p, a, j] * funcs[p, b, i]
+                    lower[n] = funcs[p, c, i] * funcs[p, e, j] - funcs[p, c, j] * funcs[p, e, i]
+                    n += 1
+            for i in range(d):
+                det = 0.0
+                for s in range(6):
+                    term = upper[top_of[i, s, 0]] * lower[top_of[i, s, 1]]
+                    if sign_of[s] > 0:
+                        det += term
+                    else:
+                        det += -term
+                out[p, t, i] = det if i % 2 == 0 else -det
+    return out
+
+
+def four_cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:
+    """Signed maximal minors of every 4 × 5 matrix ``funcs[p, combos[t]]`` by Laplace expansion (compiled).
+
+    The numpy path's :func:`~epicyclic.synthesis.kinematics._cofactors` for four engaged elements
+    (the common case of 9 shafts), term by term in the same order: the 2 × 2 minors of the first
+    two rows and of the last two, ``a_i b_j − a_j b_i``, then for every deleted column the six
+    products of complementary minors summed with the expansion's signs from 0.  Bit-equal, without
+    the (points, elements, elements, 10) table of minors and its gathers.
+
+    Parameters
+    ----------
+    funcs : ndarray (P, elements, 5)
+        Element rows in the null-space basis at each point.
+    combos : ndarray of int (T, 4)
+        Element numbers of each combination.
+
+    Returns
+    -------
+    ndarray (P, T, 5)
+        ``c_i = (−1)^(i+4) det(F without column i)``.
+
+    References
+    ----------
+    Laplace expansion by complementary minors: Horn, R. A. & Johnson, C. R. (2013), *Matrix
+    Analysis*, 2nd ed., section 0.8.9.
+    """
+    import itertools
+
+    pairs = list(itertools.combinations(range(5), 2))
+    top_of = np.zeros((5, 6, 2), dtype=np.int64)
+    sign_of = np.zeros(6, dtype=np.int64)
+    for i in range(5):
+        cols = [j for j in range(5) if j != i]
+        for s, (p, q) in enumerate(itertools.combinations(range(4), 2)):
+            r, t = (x for x in range(4) if x not in (p, q))
+            top_of[i, s] = pairs.index((cols[p], cols[q])), pairs.index((cols[r], cols[t]))
+            sign_of[s] = 1 if (p + q) % 2 else -1
+    return _four_cofactors(np.ascontiguousarray(funcs, dtype=np.float64), np.ascontiguousarray(combos, dtype=np.int64),
+                           top_of, sign_of)

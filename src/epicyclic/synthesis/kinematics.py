@@ -113,7 +113,7 @@ def _det(m: np.ndarray) -> np.ndarray:
 
 
 def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray,
-                             rows: np.ndarray | None = None) -> np.ndarray:
+                             rows: np.ndarray | None = None, compiled: bool = False) -> np.ndarray:
     """``D[p, t, x] = det[L(i0_p); E_t; e_x]`` for points p, combinations t, shafts x.
 
     Parameters
@@ -126,6 +126,9 @@ def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: n
         k = degrees of freedom − 1.
     rows : ndarray, optional
         Element rows (default :func:`element_rows`).
+    compiled : bool, default False
+        Four engaged elements: the cofactors in the compiled loop
+        (:func:`~epicyclic.synthesis.kernel.four_cofactors`, bit-equal; needs numba).
 
     Returns
     -------
@@ -141,7 +144,7 @@ def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: n
     basis_null = np.swapaxes(vt[:, sets:, :], 1, 2)  # (P, N, d)
     kappa = _det(lmat @ basis_row) * np.linalg.det(np.concatenate([basis_row, basis_null], axis=2))
     funcs = rows @ basis_null  # (P, elements, d)
-    cof = _cofactors(funcs, combos)  # (P, T, d)
+    cof = _cofactors(funcs, combos, compiled)  # (P, T, d)
     det = kappa[:, None, None] * (cof @ np.swapaxes(basis_null, 1, 2))
     # round-off of an exact zero (an output that stands still, or a combination that is no gear, whose
     # minors all vanish) is zero, relative to Hadamard's bound of the minors
@@ -195,10 +198,14 @@ def hadamard_factors(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarra
     return willis, elements
 
 
-def _cofactors(funcs: np.ndarray, combos: np.ndarray) -> np.ndarray:
+def _cofactors(funcs: np.ndarray, combos: np.ndarray, compiled: bool = False) -> np.ndarray:
     """Signed maximal minors c_i = (−1)^(i+k) det(F without column i) of each k×(k+1) matrix F."""
     k = combos.shape[1]
     d = funcs.shape[2]
+    if compiled and k == 4 and d == 5:  # the same terms in the same order, compiled (bit-equal)
+        from .kernel import four_cofactors
+
+        return four_cofactors(funcs, combos)
     if k == 3 and d == 4:  # the common case (three engaged elements): 2×2 minors of the first two rows
         a, b, c = (funcs[:, combos[:, j], :] for j in range(3))  # (P, T, 4) each
         m = {(i, j): a[..., i] * b[..., j] - a[..., j] * b[..., i] for i, j in itertools.combinations(range(4), 2)}

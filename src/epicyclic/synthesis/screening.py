@@ -258,6 +258,16 @@ def _matched(masks: np.ndarray, gears: int) -> np.ndarray:
     return ok
 
 
+def _unique_positions(values: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique`` of integers in [0, size) by marking (no sort), and each number's position in it (−1: absent)."""
+    mark = np.zeros(size, dtype=bool)
+    mark[values.ravel()] = True
+    unique = np.flatnonzero(mark)
+    position = np.full(size, -1, dtype=np.int64)
+    position[unique] = np.arange(unique.size)
+    return unique, position
+
+
 def _holding(lay: Layout, combos: np.ndarray) -> np.ndarray:
     """Element sets (sorted numbers) that hold at least one of these combinations (:attr:`Layout.containing`)."""
     indptr, indices = lay.containing
@@ -369,7 +379,7 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     gears = targets.size
     full = (1 << gears) - 1
     points, corners = _grid(low, high, 0)
-    det = combination_determinants(mech, points, lay.combos, element_rows(mech.shafts))  # (2^S, T, N)
+    det = combination_determinants(mech, points, lay.combos, element_rows(mech.shafts), compiled)  # (2^S, T, N)
     whole_box = det
     single = [x for x in range(mech.member_shafts) if len(mech.shaft_members(x)) == 1]
     if mech.free_input:
@@ -465,36 +475,35 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
     for level in range(1, levels + 1):
         if not boxes:
             break
-        used = np.unique(lay.set_combos[[s[2] for s in boxes]])
         points, corners = _grid(low, high, level)
         groups: dict[tuple[int, int], list[tuple[int, np.ndarray]]] = {}
         children = _children_table(level - 1, sets)
         for (a, b, j), parents in boxes.items():
             groups.setdefault((a, b), []).append((j, children[parents].ravel()))
-        at = np.unique(corners[np.unique(np.concatenate([c for m in groups.values() for _, c in m]))])
         if not interpolate:  # the reference: every grid point solved again, for every shaft
+            used = np.unique(lay.set_combos[[s[2] for s in boxes]])
+            at = np.unique(corners[np.unique(np.concatenate([c for m in groups.values() for _, c in m]))])
             det = combination_determinants(mech, points[at], lay.combos[used], element_rows(mech.shafts))
         nxt = {}
         for (a, b), members in groups.items():
             sets_j = np.array([j for j, _ in members])
             counts = np.array([c.size for _, c in members])
             flat = np.concatenate([c for _, c in members])
-            needed = np.unique(flat)
+            needed, box_of = _unique_positions(flat, len(corners))  # sorted boxes, and each one's position
             owner = np.repeat(np.arange(len(members)), counts)
             if interpolate:  # exact (multilinear in i0): only this group's combinations, points and two shafts
                 member_cols = lay.set_combos[sets_j]
-                cols = np.unique(member_cols)
+                cols, col_of = _unique_positions(member_cols, len(lay.combos))
                 live = cols[~dead[(a, b)][cols]] if prune else cols  # the others' masks are 0 in every box
-                here = np.unique(corners[needed])
-                raw = multilinear(whole_box[:, live][:, :, [a, b]], here, level, sets)
-                idx = np.searchsorted(here, corners[needed].T)  # (2^S, boxes) rows of raw
+                here, row_of = _unique_positions(corners[needed], len(points))
+                raw = multilinear(whole_box[:, live[:, None], np.array([a, b])], here, level, sets)
+                idx = row_of[corners[needed].T]  # (2^S, boxes) rows of raw
                 if compiled:  # the same tests, each (box, combination) range computed on demand
                     live_of = np.full(len(cols), -1, dtype=np.int64)
-                    live_of[np.searchsorted(cols, live)] = np.arange(len(live))
+                    live_of[col_of[live]] = np.arange(len(live))
                     willis, elements = hadamard_factors(mech, points[here], lay.combos[live])
                     ok, matched = compiled_kernel.group_tests(raw, willis, elements, idx, live_of, targets, tolerance,
-                                                              np.searchsorted(needed, flat), owner,
-                                                              np.searchsorted(cols, member_cols), match=prune)
+                                                              box_of[flat], owner, col_of[member_cols], match=prune)
                 else:
                     pair = clean_array(raw, hadamard_bound(mech, points[here], lay.combos[live])[:, :, None])
                     valid, lo, hi = ratio_ranges(pair[:, :, 0][idx], pair[:, :, 1][idx])  # (boxes, live)
@@ -513,10 +522,10 @@ def screen(mechanism: Mechanism, lay: Layout, low: np.ndarray, high: np.ndarray,
                 if prune:  # an architecture none of whose boxes admits one combination per target is dropped
                     matched[ok] = _matched(gathered[ok], gears)
             alive = np.zeros(len(members), dtype=bool)
-            np.logical_or.at(alive, owner, matched)
-            for m, (j, keep) in enumerate(zip(sets_j, np.split(ok, np.cumsum(counts)[:-1]))):
-                if alive[m]:  # its boxes stay those of the range test: the fit starts where it did
-                    nxt[(a, b, int(j))] = members[m][1][keep]
+            alive[owner[matched]] = True
+            offsets = np.concatenate([[0], np.cumsum(counts)]).tolist()
+            for m in np.flatnonzero(alive).tolist():  # its boxes stay those of the range test: the fit starts where it did
+                nxt[(a, b, int(sets_j[m]))] = members[m][1][ok[offsets[m]:offsets[m + 1]]]
         boxes = nxt
     if sym is not None:
         boxes = sym.expand(boxes, levels, sets)
