@@ -301,19 +301,25 @@ TEN_FORWARD = np.array([4.696, 2.985, 2.146, 1.769, 1.520, 1.275, 1.000, 0.854, 
 TEN_REVERSE = np.array([-4.866])
 
 
-def _baseline_screening():
-    """The screening module of commit BASELINE, read with ``git show`` and run against this checkout's kinematics."""
+def _baseline_module(commit: str, path: str):
+    """A module of the package at ``commit`` (``path`` under src/epicyclic/synthesis), read with ``git show`` and run
+    against this checkout's other modules: the same-run baseline of a benchmark."""
     import subprocess
     import types
 
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    source = subprocess.run(["git", "show", f"{BASELINE}:src/epicyclic/synthesis/screening.py"], cwd=root,
+    source = subprocess.run(["git", "show", f"{commit}:src/epicyclic/synthesis/{path}"], cwd=root,
                             capture_output=True, text=True, check=True).stdout
-    module = types.ModuleType("epicyclic.synthesis._screening_baseline")
+    module = types.ModuleType(f"epicyclic.synthesis._{path[:-3]}_{commit}")
     module.__package__ = "epicyclic.synthesis"
     sys.modules[module.__name__] = module
-    exec(compile(source, f"screening.py@{BASELINE}", "exec"), module.__dict__)  # noqa: S102 - our own history
+    exec(compile(source, f"{path}@{commit}", "exec"), module.__dict__)  # noqa: S102 - our own history
     return module
+
+
+def _baseline_screening():
+    """The screening module of commit BASELINE, read with ``git show`` and run against this checkout's kinematics."""
+    return _baseline_module(BASELINE, "screening.py")
 
 
 def _peak() -> float:

@@ -84,3 +84,63 @@ def test_four_engaged_cofactors_by_laplace_expansion_equal_lu_determinants():
     expected = np.stack([(-1) ** (i + 4) * np.linalg.det(picked[..., [j for j in range(5) if j != i]])
                          for i in range(5)], axis=-1)
     assert np.allclose(_cofactors(funcs, combos), expected, rtol=0, atol=1e-12 * np.abs(expected).max())
+
+
+def test_ratio_functions_of_one_set_are_the_willis_ratio_and_its_slope():
+    """Closed form (Queitsch eq. 12): ring held, sun in, carrier out: n_sun/n_carrier = 1 − i0, slope −1."""
+    from epicyclic.synthesis.kinematics import RatioFunctions
+
+    m = Mechanism(("simple",), (0, 1, 2))
+    f = RatioFunctions.of(m, np.array([-4.0]), np.array([-1.5]), np.array([[1]]), 0, 2)
+    for i0 in (-4.0, -3.3, -2.0, -1.5):
+        ratio, jacobian = f.with_jacobian(np.array([i0]))
+        assert ratio[0] == pytest.approx(1.0 - i0, rel=1e-12)
+        assert jacobian[0, 0] == pytest.approx(-1.0, rel=1e-12)
+        assert f(np.array([[i0]]))[0, 0] == pytest.approx(1.0 - i0, rel=1e-12)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(0, 10 ** 6), st.integers(2, 4))
+def test_ratio_functions_equal_the_general_path_with_exact_derivatives(seed, engaged):
+    """The fit's fast path (multilinear interpolation of corner determinants) equals gear_ratios.
+
+    Same NaN pattern (no gear), values to 1e-9 relative, and derivatives equal to the central
+    difference of the general path (an independent computation: null-space solve at two points).
+    """
+    from epicyclic.synthesis.fitting import combinations_of_elements
+    from epicyclic.synthesis.kinematics import RatioFunctions, element_count
+
+    rng = np.random.default_rng(seed)
+    mechs = _mechanisms(engaged)
+    m = mechs[rng.integers(len(mechs))]
+    elements = rng.choice(element_count(m.shafts), 6, replace=False)
+    combos = combinations_of_elements(tuple(int(e) for e in elements), engaged)
+    a, b = (int(v) for v in rng.choice(m.shafts, 2, replace=False))
+    low, high = np.full(4, -4.0), np.full(4, -1.5)
+    f = RatioFunctions.of(m, low, high, combos, a, b)
+    points = np.vstack([rng.uniform(low, high, (8, 4)), corner_points(low, high)[:3]])
+    fast, general = f(points), gear_ratios(m, points, combos, a, b)
+    assert np.array_equal(np.isnan(fast), np.isnan(general))
+    ok = ~np.isnan(general)
+    assert fast[ok] == pytest.approx(general[ok], rel=1e-9, abs=1e-12)
+    x = points[0]
+    ratio, jacobian = f.with_jacobian(x)
+    assert np.array_equal(np.isnan(ratio), np.isnan(general[0]))
+    h = 1e-6
+    for k in range(4):
+        step = np.zeros(4)
+        step[k] = h
+        central = (gear_ratios(m, (x + step)[None], combos, a, b)[0] - gear_ratios(m, (x - step)[None], combos, a, b)[0]) / (2 * h)
+        finite = np.isfinite(central) & np.isfinite(jacobian[:, k])
+        assert jacobian[finite, k] == pytest.approx(central[finite], rel=1e-4, abs=1e-6 * (1 + np.abs(ratio[finite]).max(initial=0)))
+
+
+_MECHANISMS: dict[int, tuple] = {}
+
+
+def _mechanisms(engaged: int) -> tuple:
+    from epicyclic.synthesis import enumerate_mechanisms
+
+    if engaged not in _MECHANISMS:
+        _MECHANISMS[engaged] = enumerate_mechanisms(("simple",) * 4, engaged + 1)
+    return _MECHANISMS[engaged]

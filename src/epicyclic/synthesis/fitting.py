@@ -9,7 +9,10 @@ sorted targets).  With the assignment fixed, the stationary ratios follow from
 a bounded nonlinear least-squares fit of log(r/target) (SciPy's trust-region
 reflective method); the assignment is then renewed and the fit repeated until it
 no longer changes.  Starts are the centres of the boxes that survived
-screening.
+screening.  Inside the fit the ratios and their exact derivatives come from the
+determinants at the box's corners (:class:`~epicyclic.synthesis.kinematics.RatioFunctions`:
+multilinear, so interpolation is exact), not from a solve per point and finite
+differences; the fit is then judged by the general path, :func:`gear_ratios`.
 
 References
 ----------
@@ -25,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .kinematics import gear_ratios
+from .kinematics import RatioFunctions, gear_ratios
 from .mechanisms import Mechanism
 
 __all__ = ["RatioFit", "assign", "fit_ratios", "combinations_of_elements", "single_swap_schedule"]
@@ -71,9 +74,8 @@ def _monotone(values: np.ndarray, targets: np.ndarray) -> tuple[float, list[int]
     t = np.log(targets)
     cost = np.full((n + 1, m + 1), np.inf)
     cost[0, :] = 0.0
-    for i in range(1, n + 1):
-        for j in range(i, m + 1):
-            cost[i, j] = min(cost[i, j - 1], cost[i - 1, j - 1] + (v[j - 1] - t[i - 1]) ** 2)
+    for i in range(1, n + 1):  # cost[i, j] = min(cost[i, j - 1], cost[i - 1, j - 1] + (v[j - 1] - t[i - 1])^2)
+        cost[i, i:] = np.minimum.accumulate(cost[i - 1, i - 1:m] + (v[i - 1:] - t[i - 1]) ** 2)
     picks, i, j = [], n, m
     while i > 0:
         if cost[i, j] == cost[i, j - 1] and j > i:
@@ -112,6 +114,26 @@ def assign(ratios: np.ndarray, forward: np.ndarray, reverse: np.ndarray) -> tupl
     return c1 + c2, [int(pos[p]) for p in p1] + [int(neg[p]) for p in p2]
 
 
+def _residuals(functions: RatioFunctions, chosen: np.ndarray, targets: np.ndarray, scale: float):
+    """Residuals log(r/target)/scale of the chosen combinations and their exact Jacobian, each point computed once."""
+    memo: dict[bytes, tuple[np.ndarray, np.ndarray]] = {}
+
+    def at(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        key = z.tobytes()
+        if key not in memo:
+            memo.clear()
+            r, jac = functions.with_jacobian(z)
+            r, jac = r[chosen], jac[chosen]
+            with np.errstate(invalid="ignore", divide="ignore"):
+                res = np.log(r / targets) / scale
+                d_res = jac / (r[:, None] * scale)
+            bad = ~np.isfinite(res)  # no gear, or the wrong sign: a large constant, as before
+            memo[key] = (np.where(bad, 1e3, res), np.where(bad[:, None] | ~np.isfinite(d_res), 0.0, d_res))
+        return memo[key]
+
+    return (lambda z: at(z)[0]), (lambda z: at(z)[1])
+
+
 def fit_ratios(mechanism: Mechanism, input: int, output: int, combos: np.ndarray, low: np.ndarray,
                high: np.ndarray, forward: np.ndarray, reverse: np.ndarray, tolerance: float,
                starts: np.ndarray) -> RatioFit | None:
@@ -141,12 +163,10 @@ def fit_ratios(mechanism: Mechanism, input: int, output: int, combos: np.ndarray
 
     targets = np.concatenate([forward, reverse])
     scale = np.log1p(tolerance)
-
-    def ratios_at(x: np.ndarray) -> np.ndarray:
-        return gear_ratios(mechanism, x[None, :], combos, input, output)[0]
+    functions = RatioFunctions.of(mechanism, low, high, combos, input, output)  # exact over the box, cheap
 
     # rank the starts by their assignment cost, keep the two best
-    at_starts = gear_ratios(mechanism, starts, combos, input, output)
+    at_starts = functions(starts)
     costs = [assign(r, forward, reverse)[0] for r in at_starts]
     best: RatioFit | None = None
     for s in np.argsort(costs)[:2]:
@@ -155,22 +175,16 @@ def fit_ratios(mechanism: Mechanism, input: int, output: int, combos: np.ndarray
         x = starts[s].copy()
         picks = assign(at_starts[s], forward, reverse)[1]
         for _ in range(3):
-            chosen = np.array(picks)
-
-            def residual(z: np.ndarray) -> np.ndarray:
-                r = ratios_at(z)[chosen]
-                with np.errstate(invalid="ignore", divide="ignore"):
-                    res = np.log(r / targets) / scale
-                return np.where(np.isfinite(res), res, 1e3)
-
-            sol = least_squares(residual, x, bounds=(low, high), method="trf", xtol=1e-12, ftol=1e-12,
+            residual, jacobian = _residuals(functions, np.array(picks), targets, scale)
+            sol = least_squares(residual, x, jac=jacobian, bounds=(low, high), method="trf", xtol=1e-12, ftol=1e-12,
                                 max_nfev=80)
             x = sol.x
-            cost, new = assign(ratios_at(x), forward, reverse)
+            cost, new = assign(functions(x)[0], forward, reverse)
             if not np.isfinite(cost) or new == picks:
                 break
             picks = new
-        r = ratios_at(x)
+        # the fit is judged by the general path (the null-space solve), not by the interpolation
+        r = gear_ratios(mechanism, x[None, :], combos, input, output)[0]
         if not picks or not np.all(np.isfinite(r[picks])):
             continue
         error = float(np.max(np.abs(r[picks] / targets - 1.0)))

@@ -37,10 +37,11 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
-from ..results.zero import clean_array
+from ..results.zero import ZERO_TOLERANCE, clean_array
 from .mechanisms import Mechanism
 
 __all__ = [
@@ -53,6 +54,7 @@ __all__ = [
     "hadamard_bound",
     "hadamard_factors",
     "ratio_ranges",
+    "RatioFunctions",
     "willis_matrices",
 ]
 
@@ -280,6 +282,100 @@ def gear_ratios(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray, in
     ok = (d_in != 0) & (d_out != 0)  # zeros are exact after clean_array
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(ok, d_in / d_out, np.nan)
+
+
+@dataclass(frozen=True)
+class RatioFunctions:
+    """Gear ratios of some combinations as functions of the stationary ratios over one box, with their derivatives.
+
+    ``D_in`` and ``D_out`` are multilinear in i0, so their values at the box's 2^S corners fix them
+    everywhere in it: at fractional position t, ``D(i0) = Σ_c w_c(t) D_c`` with
+    ``w_c = Π_k (t_k or 1 − t_k)`` (tensor-product linear interpolation, exact for multilinear
+    functions), and ``∂D/∂i0_k = Σ_c (∂w_c/∂t_k) D_c / (high_k − low_k)``.  One small product per
+    point replaces the null-space solve of :func:`gear_ratios`, and the derivatives are exact instead
+    of finite differences: the ratio fit's inner loop.  Inside the box the weights are convex, so the
+    values agree with :func:`gear_ratios` to round-off (``tests/synthesis/test_kinematics.py``); a
+    value within round-off of zero at a point (against Hadamard's bound there) is zero, as there.
+
+    Build with :meth:`of`.
+
+    Attributes
+    ----------
+    low, high : ndarray (S,)
+        The box.
+    inputs, outputs : ndarray (2^S, C)
+        ``D_in`` and ``D_out`` of each combination at the corners (order of :func:`corner_points`).
+    elements : ndarray (C,)
+        The element factor of Hadamard's bound of each combination (:func:`hadamard_factors`).
+
+    References
+    ----------
+    Kahraman et al. 2004, J. Mech. Des. 126(6), eqs. 1–5 (gear ratios from stationary ratios);
+    Hadamard, J. (1893), Bull. Sci. Math. 17.
+    """
+
+    low: np.ndarray
+    high: np.ndarray
+    inputs: np.ndarray
+    outputs: np.ndarray
+    elements: np.ndarray
+
+    @classmethod
+    def of(cls, mechanism: Mechanism, low: np.ndarray, high: np.ndarray, combos: np.ndarray, input: int,
+           output: int) -> RatioFunctions:
+        """The ratio functions of ``combos`` (rows of element numbers) from ``input`` to ``output`` over [low, high]."""
+        low, high = np.asarray(low, dtype=float), np.asarray(high, dtype=float)
+        det = combination_determinants(mechanism, corner_points(low, high), combos)
+        _, elements = hadamard_factors(mechanism, low[None, :], combos)
+        return cls(low, high, np.ascontiguousarray(det[..., input]), np.ascontiguousarray(det[..., output]), elements)
+
+    def _weights(self, ratios: np.ndarray) -> np.ndarray:
+        """w_c at points (P, S) → (P, 2^S): Kronecker products of (1 − t_k, t_k), set 0 most significant."""
+        t = np.clip((ratios - self.low) / (self.high - self.low), 0.0, 1.0)
+        weights = np.ones((t.shape[0], 1))
+        for k in range(t.shape[1]):
+            weights = (weights[:, :, None] * np.stack([1.0 - t[:, k], t[:, k]], axis=1)[:, None, :]).reshape(t.shape[0], -1)
+        return weights
+
+    def _point_weights(self, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """w_c (2^S,) at one point and ∂w_c/∂i0_k (S, 2^S): the k-th factor replaced by (−1, 1)/width_k."""
+        width = self.high - self.low
+        t = np.clip((point - self.low) / width, 0.0, 1.0)
+        factors = [np.array([1.0 - v, v]) for v in t.tolist()]
+        slopes = [np.array([-1.0, 1.0]) / w for w in width.tolist()]
+        rows = []
+        for k in range(-1, t.size):  # -1: the weights themselves
+            out = np.ones(1)
+            for j, factor in enumerate(factors):
+                out = np.multiply.outer(out, slopes[j] if j == k else factor).ravel()
+            rows.append(out)
+        return rows[0], np.array(rows[1:])
+
+    def _clean(self, values: np.ndarray, ratios: np.ndarray) -> np.ndarray:
+        """``clean_array`` against Hadamard's bound at each point (P, C)."""
+        willis = np.prod(np.sqrt(1.0 + ratios ** 2 + (1.0 - ratios) ** 2), axis=1)
+        bound = ZERO_TOLERANCE * willis[:, None] * self.elements[None, :]
+        return np.where(np.abs(values) <= bound, 0.0, values) + 0.0
+
+    def __call__(self, ratios: np.ndarray) -> np.ndarray:
+        """Gear ratio of every combination at points ``ratios`` (P, S) → (P, C); NaN where no gear."""
+        ratios = np.atleast_2d(np.asarray(ratios, dtype=float))
+        weights = self._weights(ratios)
+        num, den = self._clean(weights @ self.inputs, ratios), self._clean(weights @ self.outputs, ratios)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where((num != 0) & (den != 0), num / den, np.nan)
+
+    def with_jacobian(self, ratios: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Ratios (C,) at one point (S,) and their derivatives ∂r/∂i0, shape (C, S); NaN where no gear."""
+        point = np.asarray(ratios, dtype=float)[None, :]
+        weights, grads = self._point_weights(point[0])
+        num, den = self._clean(weights @ self.inputs, point)[0], self._clean(weights @ self.outputs, point)[0]
+        d_num, d_den = grads @ self.inputs, grads @ self.outputs  # (S, C)
+        ok = (num != 0) & (den != 0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.where(ok, num / den, np.nan)
+            jacobian = np.where(ok[:, None], ((d_num * den - num * d_den) / den ** 2).T, np.nan)
+        return ratio, jacobian
 
 
 def combinations_of(elements: Sequence[int], size: int) -> np.ndarray:
