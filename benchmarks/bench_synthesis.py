@@ -293,6 +293,9 @@ def full_space(rate) -> None:
     shown = ", ".join(f"{k} engaged {r:,.0f}" for k, r in sorted(rates.items()))
     for workers in (1, 2, 16, 256):
         print(f"  screening time on {workers:>3d} workers     {hours / workers:>10.1f} h  (per s per worker: {shown})")
+    print("  (an overestimate: the rates count the architectures a screening examines, about 45 % of the counted "
+          "space's, which also holds element sets that leave a one-member shaft free; and one split and sample stand "
+          "for all. benchmarks/bench_synthesis_space.py measures the space stratum by stratum)")
 
 
 #: main before the compiled kernel and the symmetry classes (the "current main's pruned path").

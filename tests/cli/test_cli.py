@@ -270,3 +270,17 @@ def test_set_on_transmission_commands(command):
     result = run(command, zf, "--set", "brake.nope.engaged=true")
     assert result.exit_code == 2 and "no [[brake]] named 'nope'" in result.stderr
     assert run(command, zf, "--set", "planetary.P1.stationary_efficiency=0.9").exit_code == 0
+
+
+def test_serve_passes_the_synthesis_limits_to_the_page(monkeypatch):
+    """``serve --synthesis-architectures/--synthesis-seconds`` set the Synthesis tab's bound and time limit."""
+    import uvicorn
+
+    served = {}
+    monkeypatch.setattr(uvicorn, "run", lambda app_, **kw: served.update(app=app_, **kw))
+    result = runner.invoke(app, ["serve", "--port", "8765", "--synthesis-architectures", "5000000",
+                                 "--synthesis-seconds", "300"])
+    assert result.exit_code == 0, result.output
+    limits = served["app"].state.limits
+    assert (limits.synthesis_architectures, limits.synthesis_seconds) == (5_000_000, 300.0)
+    assert served["port"] == 8765

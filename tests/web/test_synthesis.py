@@ -183,3 +183,16 @@ def test_the_page_stops_a_search_at_its_time_limit():
     text = html.unescape(answer.text)
     assert answer.status_code == 200 and 'data-complete="no"' in text
     assert "stopped at the page's limit of 2 s" in text
+
+
+def test_a_search_stopped_before_any_task_finished_does_not_say_the_targets_are_unmet(tmp_path):
+    """Cancel pressed before the first task is done: the answer says nothing finished, not "no transmission meets"."""
+    from epicyclic.web.synthesis_tool import partial_view
+
+    fields = {"synth_mode": "form", **LONG}
+    reply = partial_view(fields, str(tmp_path), "cancelled")
+    text = html.unescape(reply.body)
+    assert reply.status == 200
+    assert "The search was cancelled; 0 candidate(s) of the 0 finished task(s) are kept." in text
+    assert "No task had finished when the search stopped" in text
+    assert "No transmission meets the targets" not in text

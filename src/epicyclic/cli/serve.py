@@ -13,6 +13,7 @@ from typing import Annotated
 
 import typer
 
+from ..limits import MAX_SYNTHESIS_ARCHITECTURES
 from ._common import fail
 
 __all__ = ["serve"]
@@ -55,6 +56,12 @@ def serve(
                                           max=65536)] = 4096,
     worker_memory: Annotated[int, typer.Option(help="MiB each worker's memory may grow after its start "
                                                "(0: no limit).", min=0, max=1 << 20)] = 2048,
+    synthesis_architectures: Annotated[int, typer.Option(
+        help="Largest synthesis the Synthesis tab runs, in architectures (larger ones are refused before they "
+             "start, with the command line to run them).", min=1, max=MAX_SYNTHESIS_ARCHITECTURES)] = 2 * 10**7,
+    synthesis_seconds: Annotated[float, typer.Option(
+        help="Seconds after which the Synthesis tab stops a search, keeping what it found.", min=1.0,
+        max=86400.0)] = 60.0,
 ) -> None:
     """Open a page to work in: examples, an editor, the operating point, results, pictures, reports."""
     try:
@@ -67,6 +74,9 @@ def serve(
     if not math.isfinite(timeout):  # a float range lets NaN through (every comparison is False)
         fail(f"error: serve --timeout must be a number of seconds from 0.1 to 3600, got {timeout}.")
         return
+    if not math.isfinite(synthesis_seconds):
+        fail(f"error: serve --synthesis-seconds must be a number of seconds from 1 to 86400, got {synthesis_seconds}.")
+        return
     problem = _address_problem(host, port)
     if problem:
         fail(f"error: serve --host {host!r:.60} --port {port}: {problem}")
@@ -75,7 +85,9 @@ def serve(
     if not loopback:
         typer.echo(f"warning: serving on {host}, reachable from other computers; the page has no login.", err=True)
     limits = Limits(max_body=max_body * 1024, solve_timeout=timeout, workers=workers,
-                    worker_memory=worker_memory * 2**20 or None, draw_examples=True, allowed_hosts=Limits.allowed_hosts if loopback else ("*",))
+                    worker_memory=worker_memory * 2**20 or None, draw_examples=True,
+                    allowed_hosts=Limits.allowed_hosts if loopback else ("*",),
+                    synthesis_architectures=synthesis_architectures, synthesis_seconds=synthesis_seconds)
     shown = f"[{host}]" if ":" in host else host
     typer.echo(f"epicyclic serve: open http://{shown}:{port}/ (Ctrl+C stops)")
     uvicorn.run(create_app(limits), host=host, port=port, log_level="warning")
