@@ -147,10 +147,28 @@ def combination_determinants(mechanism: Mechanism, ratios: np.ndarray, combos: n
     kappa = _det(lmat @ basis_row) * np.linalg.det(np.concatenate([basis_row, basis_null], axis=2))
     funcs = rows @ basis_null  # (P, elements, d)
     cof = _cofactors(funcs, combos, compiled)  # (P, T, d)
-    det = kappa[:, None, None] * (cof @ np.swapaxes(basis_null, 1, 2))
+    det = np.matmul(cof, np.swapaxes(basis_null, 1, 2), out=np.empty(cof.shape[:2] + (n,)))
+    det *= kappa[:, None, None]
     # round-off of an exact zero (an output that stands still, or a combination that is no gear, whose
     # minors all vanish) is zero, relative to Hadamard's bound of the minors
-    return clean_array(det, hadamard_bound(mechanism, ratios, combos, rows)[:, :, None])
+    return _clean_in_place(det, hadamard_bound(mechanism, ratios, combos, rows)[:, :, None])
+
+
+def _clean_in_place(values: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """``clean_array(values, scale)`` written into ``values``, a block of points at a time.
+
+    The same test and the same result (``tests/synthesis/test_kinematics.py``), without its
+    full-size temporaries: with four engaged elements a table is 170 MB, and each temporary of that
+    size is a fresh mmap whose pages the kernel faults in and zeroes (a quarter of a task's CPU time).
+    """
+    step = max(1, (8 << 20) // max(values[0].nbytes, 1))  # blocks of about 8 MB: reused heap memory
+    for start in range(0, values.shape[0], step):
+        block = values[start:start + step]
+        with np.errstate(invalid="ignore", over="ignore"):
+            zero = (np.abs(block) <= ZERO_TOLERANCE * np.abs(scale[start:start + step])) & np.isfinite(block)
+        block[zero] = 0.0
+        block += 0.0  # as clean_array: no negative zero
+    return values
 
 
 def hadamard_bound(mechanism: Mechanism, ratios: np.ndarray, combos: np.ndarray,
