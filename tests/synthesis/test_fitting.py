@@ -91,14 +91,9 @@ def _monotone_by_the_recurrence(values, targets):
         for j in range(i, m + 1):
             d = v[j - 1] - t[i - 1]
             cost[i, j] = min(cost[i, j - 1], cost[i - 1, j - 1] + d * d)
-    picks, i, j = [], n, m
-    while i > 0:
-        if cost[i, j] == cost[i, j - 1] and j > i:
-            j -= 1
-        else:
-            picks.append(int(order[j - 1]))
-            i, j = i - 1, j - 1
-    return float(cost[n, m]), picks[::-1]
+    from epicyclic.synthesis.fitting import _backtrack
+
+    return _backtrack(cost, order)  # the same table gives the same picks
 
 
 @settings(max_examples=200, deadline=None)

@@ -19,7 +19,7 @@ import itertools
 
 import numpy as np
 
-__all__ = ["multilinear"]
+__all__ = ["corner_bits", "corner_weights", "multilinear"]
 
 
 def _grid(low: np.ndarray, high: np.ndarray, level: int) -> tuple[np.ndarray, np.ndarray]:
@@ -73,11 +73,23 @@ def multilinear(corner_values: np.ndarray, points: np.ndarray, level: int, sets:
     """
     cells = 2 ** level
     digits = (np.asarray(points)[:, None] // (cells + 1) ** np.arange(sets - 1, -1, -1)) % (cells + 1)
-    t = digits / cells  # (P, S)
-    bits = np.array(list(itertools.product((0, 1), repeat=sets)), dtype=bool)  # (2^S, S), set 0 first
-    weights = np.prod(np.where(bits[None, :, :], t[:, None, :], 1.0 - t[:, None, :]), axis=2)  # (P, 2^S)
     flat = corner_values.reshape(corner_values.shape[0], -1)
-    return (weights @ flat).reshape((len(points),) + corner_values.shape[1:])
+    return (corner_weights(digits / cells) @ flat).reshape((len(points),) + corner_values.shape[1:])
+
+
+def corner_bits(sets: int) -> np.ndarray:
+    """Which end of each set's range every corner takes, (2^S, S) bool: set 0 most significant."""
+    return np.array(list(itertools.product((0, 1), repeat=sets)), dtype=bool)
+
+
+def corner_weights(t: np.ndarray) -> np.ndarray:
+    """Weights Π_k (t_k or 1 − t_k) of the 2^S corners at fractional positions ``t`` (P, S) → (P, 2^S).
+
+    >>> corner_weights(np.array([[0.25, 1.0]])).tolist()   # corners (0, 0), (0, 1), (1, 0), (1, 1)
+    [[0.0, 0.75, 0.0, 0.25]]
+    """
+    bits = corner_bits(t.shape[1])
+    return np.prod(np.where(bits[None, :, :], t[:, None, :], 1.0 - t[:, None, :]), axis=2)
 
 
 @functools.lru_cache(maxsize=32)

@@ -76,6 +76,12 @@ def _monotone(values: np.ndarray, targets: np.ndarray) -> tuple[float, list[int]
     cost[0, :] = 0.0
     for i in range(1, n + 1):  # cost[i, j] = min(cost[i, j - 1], cost[i - 1, j - 1] + (v[j - 1] - t[i - 1])^2)
         cost[i, i:] = np.minimum.accumulate(cost[i - 1, i - 1:m] + (v[i - 1:] - t[i - 1]) ** 2)
+    return _backtrack(cost, order)
+
+
+def _backtrack(cost: np.ndarray, order: np.ndarray) -> tuple[float, list[int]]:
+    """Least cost and the picks (rows of the unsorted values) from the assignment's cost table (n + 1, m + 1)."""
+    n, m = cost.shape[0] - 1, cost.shape[1] - 1
     picks, i, j = [], n, m
     while i > 0:
         if cost[i, j] == cost[i, j - 1] and j > i:

@@ -42,6 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..results.zero import ZERO_TOLERANCE, clean_array
+from .boxes import corner_bits, corner_weights
 from .mechanisms import Mechanism
 
 __all__ = [
@@ -265,8 +266,7 @@ def _cofactors(funcs: np.ndarray, combos: np.ndarray, compiled: bool = False) ->
 def corner_points(low: np.ndarray, high: np.ndarray) -> np.ndarray:
     """All 2^S corners of the box [low, high] (arrays of length S), shape (2^S, S)."""
     low, high = np.asarray(low, float), np.asarray(high, float)
-    picks = np.array(list(itertools.product((0, 1), repeat=low.size)), dtype=bool)
-    return np.where(picks, high, low)
+    return np.where(corner_bits(low.size), high, low)
 
 
 def ratio_ranges(det_in: np.ndarray, det_out: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -347,27 +347,20 @@ class RatioFunctions:
         _, elements = hadamard_factors(mechanism, low[None, :], combos)
         return cls(low, high, np.ascontiguousarray(det[..., input]), np.ascontiguousarray(det[..., output]), elements)
 
-    def _weights(self, ratios: np.ndarray) -> np.ndarray:
-        """w_c at points (P, S) → (P, 2^S): Kronecker products of (1 − t_k, t_k), set 0 most significant."""
-        t = np.clip((ratios - self.low) / (self.high - self.low), 0.0, 1.0)
-        weights = np.ones((t.shape[0], 1))
-        for k in range(t.shape[1]):
-            weights = (weights[:, :, None] * np.stack([1.0 - t[:, k], t[:, k]], axis=1)[:, None, :]).reshape(t.shape[0], -1)
-        return weights
+    def _position(self, ratios: np.ndarray) -> np.ndarray:
+        return np.clip((ratios - self.low) / (self.high - self.low), 0.0, 1.0)
 
-    def _point_weights(self, point: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """w_c (2^S,) at one point and ∂w_c/∂i0_k (S, 2^S): the k-th factor replaced by (−1, 1)/width_k."""
-        width = self.high - self.low
-        t = np.clip((point - self.low) / width, 0.0, 1.0)
-        factors = [np.array([1.0 - v, v]) for v in t.tolist()]
-        slopes = [np.array([-1.0, 1.0]) / w for w in width.tolist()]
-        rows = []
-        for k in range(-1, t.size):  # -1: the weights themselves
-            out = np.ones(1)
-            for j, factor in enumerate(factors):
-                out = np.multiply.outer(out, slopes[j] if j == k else factor).ravel()
-            rows.append(out)
-        return rows[0], np.array(rows[1:])
+    def _gradients(self, point: np.ndarray) -> np.ndarray:
+        """∂w_c/∂i0_k at one point, (S, 2^S): the k-th factor of each weight replaced by ±1 / width_k."""
+        t = self._position(point)
+        bits = corner_bits(t.size)
+        factors = np.where(bits, t, 1.0 - t)  # (2^S, S)
+        grads = np.empty((t.size, bits.shape[0]))
+        for k, width in enumerate((self.high - self.low).tolist()):
+            others = factors.copy()
+            others[:, k] = np.where(bits[:, k], 1.0, -1.0)
+            grads[k] = np.prod(others, axis=1) / width
+        return grads
 
     def _clean(self, values: np.ndarray, ratios: np.ndarray) -> np.ndarray:
         """``clean_array`` against Hadamard's bound at each point (P, C)."""
@@ -378,7 +371,7 @@ class RatioFunctions:
     def __call__(self, ratios: np.ndarray) -> np.ndarray:
         """Gear ratio of every combination at points ``ratios`` (P, S) → (P, C); NaN where no gear."""
         ratios = np.atleast_2d(np.asarray(ratios, dtype=float))
-        weights = self._weights(ratios)
+        weights = corner_weights(self._position(ratios))
         num, den = self._clean(weights @ self.inputs, ratios), self._clean(weights @ self.outputs, ratios)
         with np.errstate(divide="ignore", invalid="ignore"):
             return np.where((num != 0) & (den != 0), num / den, np.nan)
@@ -386,7 +379,7 @@ class RatioFunctions:
     def with_jacobian(self, ratios: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Ratios (C,) at one point (S,) and their derivatives ∂r/∂i0, shape (C, S); NaN where no gear."""
         point = np.asarray(ratios, dtype=float)[None, :]
-        weights, grads = self._point_weights(point[0])
+        weights, grads = corner_weights(self._position(point))[0], self._gradients(point[0])
         num, den = self._clean(weights @ self.inputs, point)[0], self._clean(weights @ self.outputs, point)[0]
         d_num, d_den = grads @ self.inputs, grads @ self.outputs  # (S, C)
         ok = (num != 0) & (den != 0)
