@@ -19,6 +19,8 @@
     cutter = { teeth = 24, profile_shift = 0.0, addendum = 1.25, tip_radius = 0.25 }   # internal gears
     rim_thickness = { ring = 12.0 }       # s_R below the root, mm (Y_B); others solid
     long_life = "standard"                # or "optimum"
+    [rating.scuffing]                     # scuffing (flash and integral temperature): io/scuffing_format.py
+    load_stage = 12
     [rating.lubricant]
     viscosity_40 = 35.0                   # mm²/s (or in the top-level [lubricant])
     viscosity_100 = 7.0
@@ -48,7 +50,7 @@ __all__ = ["RATING_KEYS", "read_rating"]
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
                "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
-               "rim_thickness"}
+               "rim_thickness", "scuffing"}
 _NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "K_Hbeta", "K_v",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
 _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
@@ -149,6 +151,10 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
         r_where = at_key(where, "rim_thickness")
         rims = reader.table(table["rim_thickness"], r_where)
         values["rim_thickness"] = {k: reader.number(v, k, r_where) for k, v in rims.items()}
+    if "scuffing" in table:
+        from .scuffing_format import read_scuffing
+
+        values["scuffing"] = read_scuffing(reader, table["scuffing"])
     oil = dict(lubricant or {})
     if "lubricant" in table:
         own = reader.table(table["lubricant"], "[rating.lubricant]")

@@ -20,6 +20,7 @@ long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``
 pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
 tip_relief              running-in C_ay             C_a for K_v, µm (without one: C_ay of the pair)
 rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
+scuffing                none (not rated)            :class:`~epicyclic.rating.scuffing.ScuffingSpec`
 ======================  ==========================  =============================================
 
 Required (an error names the key and the value it would suggest): ``material`` (a
@@ -132,6 +133,8 @@ class RatingSpec:
     rim_thickness : mapping gear → float, optional
         Rim thickness s_R below the root per gear name (``ring``, ``"P1:ring"``), mm, for Y_B;
         gears not named are solid (Y_B = 1).
+    scuffing : ScuffingSpec, optional
+        Inputs of the scuffing rating (``[rating.scuffing]``); without, scuffing is not rated.
 
     Raises
     ------
@@ -165,6 +168,7 @@ class RatingSpec:
     tip_relief: float | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
     rim_thickness: Mapping[str, float] | None = None
+    scuffing: Any = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "standard", edition(self.standard))
@@ -199,6 +203,11 @@ class RatingSpec:
             for key, value in rims.items():
                 rims[key] = _number(value, f"rim_thickness.{key}")
             object.__setattr__(self, "rim_thickness", MappingProxyType(rims))
+        if self.scuffing is not None:
+            from .scuffing.spec import ScuffingSpec
+
+            if not isinstance(self.scuffing, ScuffingSpec):
+                raise RatingError(f"rating.scuffing must be a ScuffingSpec, got {type(self.scuffing).__name__}.")
         if isinstance(self.material, str):
             object.__setattr__(self, "material", material(self.material))
         elif isinstance(self.material, Mapping):
@@ -308,4 +317,5 @@ class RatingSpec:
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
                 "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,
                 "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,
-                "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None}
+                "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None,
+                "scuffing": self.scuffing.to_dict() if self.scuffing is not None else None}
