@@ -34,7 +34,7 @@ from .methods import C_1, C_2, C_FLASH, ScuffingInput, ScuffingLoad, flash_tempe
 from .results import ScuffingRating
 from .spec import ScuffingSpec
 
-__all__ = ["multiple_meshing_factor", "rate_scuffing", "rate_train_scuffing", "scuffing_input"]
+__all__ = ["multiple_meshing_factor", "rate_scuffing", "rate_train_scuffing", "scuffing_input", "scuffing_of_ratings"]
 
 
 def multiple_meshing_factor(inp: MeshInput) -> float:
@@ -138,36 +138,36 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
     t_1t = d["T_1T"]
     given_int = s.integral_scuffing_temperature is not None
     integral = [
-        _factor("theta_oil", s.oil_temperature, "degC", it, "oil temperature"),
+        _factor("theta_oil", s.oil_temperature, "°C", it, "oil temperature"),
         _factor("w_Bt", r["w_Bt"], "N/mm", it, "transverse unit load K_A K_gamma K_v K_Bbeta K_Balpha F_t/b"),
         _factor("K_Bgamma", d["K_Bgamma"], "1", it, "helical load factor"),
-        _factor("X_M", si.thermo_elastic, "K*N^-3/4*s^1/2*m^-1/2*mm", it,
-                f"thermo-elastic factor (B_M = {s.contact_coefficient:g} N/(mm*s^0.5*K))"),
+        _factor("X_M", si.thermo_elastic, "K·N^-3/4·s^1/2·m^-1/2·mm", it,
+                f"thermo-elastic factor (B_M = {s.contact_coefficient:g} N/(mm·s^0.5·K))"),
         _factor("X_BE", d["X_BE"], "1", it, "geometry factor at the tip of gear 1"),
         _factor("X_alphabeta", d["X_alphabeta"], "1", it, "angle factor"),
         _factor("epsilon_1", d["eps_1"], "1", it, "addendum contact ratio of gear 1"),
         _factor("epsilon_2", d["eps_2"], "1", it, "addendum contact ratio of gear 2"),
         _factor("X_epsilon", d["X_epsilon"], "1", it, "contact ratio factor"),
-        _factor("C_eff", r["C_eff"], "um", it, "effective tip relief K_A F_t/(b c_gamma_alpha)"),
-        _factor("C_a", load.tip_relief, "um", it, "tip relief (as in K_v)"),
+        _factor("C_eff", r["C_eff"], "µm", it, "effective tip relief K_A F_t/(b c_gamma_alpha)"),
+        _factor("C_a", load.tip_relief, "µm", it, "tip relief (as in K_v)"),
         _factor("X_Ca", r["X_Ca"], "1", it, "tip relief factor"),
         _factor("X_E", s.running_in_factor, "1", it, "running-in factor (given)"),
         _factor("X_Q", d["X_Q"], "1", it, "approach factor" + ("" if s.driving else " (no driving gear given: 1)")),
         _factor("rho_redC", d["rho_redC"], "mm", it, "relative radius of curvature at the pitch point"),
-        _factor("eta_oil", si.viscosity, "mPa*s", it, f"dynamic viscosity at {s.oil_temperature:g} degC"),
-        _factor("R_a", si.roughness, "um", it, "mean arithmetic roughness of the flanks"),
+        _factor("eta_oil", si.viscosity, "mPa·s", it, f"dynamic viscosity at {s.oil_temperature:g} °C"),
+        _factor("R_a", si.roughness, "µm", it, "mean arithmetic roughness of the flanks"),
         _factor("X_L", d["X_L"], "1", it, f"lubricant factor ({s.oil_type} oil)"),
         _factor("mu_mC", r["mu_mC"], "1", it, "mean coefficient of friction"),
         _factor("theta_flaE", r["theta_flaE"], "K", it, "flash temperature at the tip of gear 1"),
         _factor("theta_flaint", r["theta_flaint"], "K", it, "mean flash temperature"),
         _factor("X_S", d["X_S"], "1", it, f"lubrication factor ({s.lubrication})"),
         _factor("X_mp", si.multiple_meshing, "1", it, "multiple meshing factor"),
-        _factor("theta_M", r["theta_M"], "degC", it, f"bulk temperature theta_oil + {C_1} X_S X_mp theta_flaint"),
-        _factor("theta_int", r["theta_int"], "degC", it, f"integral temperature theta_M + {C_2} theta_flaint"),
+        _factor("theta_M", r["theta_M"], "°C", it, f"bulk temperature theta_oil + {C_1} X_S X_mp theta_flaint"),
+        _factor("theta_int", r["theta_int"], "°C", it, f"integral temperature theta_M + {C_2} theta_flaint"),
         _factor("X_WrelT", s.structural_factor, "1", it, "relative structural factor"),
-        _factor("T_1T", t_1t if t_1t is not None else float("nan"), "N*m", "ISO 14635-1:2000, Table 2",
+        _factor("T_1T", t_1t if t_1t is not None else float("nan"), "N·m", "ISO 14635-1:2000, Table 2",
                 f"FZG A/8.3/90 pinion torque of load stage {s.load_stage}" if t_1t is not None else "not used"),
-        _factor("theta_intS", d["theta_intS"], "degC", it,
+        _factor("theta_intS", d["theta_intS"], "°C", it,
                 "permissible integral temperature" + (" (given)" if given_int else " from the FZG load stage")),
         _factor("S_intS", r["S_intS"], "1", it, "safety factor for scuffing (integral temperature)"),
         _factor("S_SL", r["S_SL"], "1", it, "safety for the transmittable torque"),
@@ -176,14 +176,14 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
         _factor("mu_m", f["mu_m"], "1", fl, "mean coefficient of friction (as mu_mC)"),
         _factor("X_J", 1.0, "1", fl, "approach factor (taken as 1)"),
         _factor("theta_flm", f["theta_flm"], "K", fl, "mean flash temperature along the path"),
-        _factor("theta_M", f["theta_M"], "degC", fl, f"bulk temperature theta_oil + {C_FLASH} X_S X_mp theta_flm"),
+        _factor("theta_M", f["theta_M"], "°C", fl, f"bulk temperature theta_oil + {C_FLASH} X_S X_mp theta_flm"),
         _factor("theta_flmax", np.max(f["theta_fl"], axis=-1), "K", fl, "highest flash temperature"),
-        _factor("theta_Bmax", f["theta_Bmax"], "degC", fl, "highest contact temperature theta_M + theta_fl"),
+        _factor("theta_Bmax", f["theta_Bmax"], "°C", fl, "highest contact temperature theta_M + theta_fl"),
         _factor("Gamma_max", f["gamma_max"], "1", fl, "parameter Gamma of the highest contact temperature"),
         _factor("X_Gamma", f["X_Gamma_max"], "1", fl, "load sharing factor there"),
         _factor("X_L_S", d["X_L_flash"], "1", fl, "lubricant factor of theta_S, X_L eta_oil^-0.05"),
         _factor("X_W", s.structural_factor, "1", fl, "structural factor"),
-        _factor("theta_S", d["theta_S"], "degC", fl, "scuffing temperature" + (
+        _factor("theta_S", d["theta_S"], "°C", fl, "scuffing temperature" + (
             " (given)" if s.scuffing_temperature is not None else f" of FZG load stage {s.load_stage}")),
         _factor("S_B", f["S_B"], "1", fl, "safety factor for scuffing (flash temperature)"),
     ]
@@ -237,3 +237,35 @@ def rate_train_scuffing(planned, rating: TrainRating, scuffing: ScuffingSpec | N
                               f"the rating's {mesh.element} {mesh.mesh}.")
         out.append(rate_scuffing(si, mesh, element=mesh.element, gears=item.input.gears))
     return tuple(out)
+
+
+def scuffing_of_ratings(geometry, spec, ratings) -> list[tuple[ScuffingRating, ...]]:
+    """The scuffing of every mesh of each of ``ratings`` (TrainRatings of ``geometry`` and ``spec``).
+
+    Parameters
+    ----------
+    geometry : mapping element → SetGeometry or StageGeometry
+    spec : RatingSpec
+        With ``scuffing``.
+    ratings : sequence of TrainRating
+        Rated from ``geometry`` and ``spec`` (one per gear, say).
+
+    Returns
+    -------
+    list of tuple of ScuffingRating
+        One tuple per rating, one entry per mesh.
+
+    Raises
+    ------
+    RatingError
+        No scuffing inputs, or a rating of other meshes.
+
+    References
+    ----------
+    ISO/TS 6336-20:2017; ISO/TS 6336-21:2017.
+    """
+    from ..train import mesh_inputs
+
+    planned, _ = mesh_inputs(geometry, spec)
+    inputs = [scuffing_input(p.input) for p in planned]
+    return [rate_train_scuffing(planned, r, inputs=inputs) for r in ratings]

@@ -22,8 +22,8 @@ from ..report import _RED, _below, _fmt, _html_rows, _md_table
 
 __all__ = ["SCUFFING_HEAD", "detail_rows", "html_section", "markdown_section", "summary_rows", "text_section"]
 
-SCUFFING_HEAD = ["element", "mesh", "theta_int [degC]", "theta_intS [degC]", "S_intS", "S_SL",
-                 "theta_Bmax [degC]", "theta_S [degC]", "S_B", "ok"]
+SCUFFING_HEAD = ["element", "mesh", "theta_int [°C]", "theta_intS [°C]", "S_intS", "S_SL",
+                 "theta_Bmax [°C]", "theta_S [°C]", "S_B", "ok"]
 DETAIL_HEAD = ["quantity", "symbol", "unit", "value", "clause"]
 _TITLE = "Scuffing: integral temperature and flash temperature methods"
 
@@ -113,7 +113,7 @@ def text_section(ratings, *, details: bool = True) -> str:
     if details:
         for r in ratings:
             parts.append(text_table(DETAIL_HEAD, detail_rows(r), title=_mesh_title(r)))
-            parts.extend(f"note: {n}" for n in r.notes)
+            parts.append("\n".join(f"note: {n}" for n in r.notes))
     return "\n\n".join(parts)
 
 
