@@ -203,11 +203,9 @@ class RatingSpec:
             for key, value in rims.items():
                 rims[key] = _number(value, f"rim_thickness.{key}")
             object.__setattr__(self, "rim_thickness", MappingProxyType(rims))
-        if self.scuffing is not None:
-            from .scuffing.spec import ScuffingSpec
-
-            if not isinstance(self.scuffing, ScuffingSpec):
-                raise RatingError(f"rating.scuffing must be a ScuffingSpec, got {type(self.scuffing).__name__}.")
+        if self.scuffing is not None and not (hasattr(self.scuffing, "clauses") and hasattr(self.scuffing, "to_dict")):
+            raise RatingError(f"rating.scuffing must be an epicyclic.rating.scuffing.ScuffingSpec, got "
+                              f"{type(self.scuffing).__name__}.")
         if isinstance(self.material, str):
             object.__setattr__(self, "material", material(self.material))
         elif isinstance(self.material, Mapping):
