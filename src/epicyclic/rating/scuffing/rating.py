@@ -19,7 +19,7 @@ ISO/TS 6336-20:2017; ISO/TS 6336-21:2017; ISO/TR 13989-1, -2:2000; DIN 3990-4:19
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
@@ -206,7 +206,7 @@ def rate_train_scuffing(planned, rating: TrainRating, scuffing: ScuffingSpec | N
 
     Parameters
     ----------
-    planned : sequence of PlannedMesh
+    planned : sequence of PlannedMesh, or the (planned, skipped) pair of mesh_inputs
         The meshes ``rating`` was rated from, in its order.
     rating : TrainRating
     scuffing : ScuffingSpec, optional
@@ -227,6 +227,8 @@ def rate_train_scuffing(planned, rating: TrainRating, scuffing: ScuffingSpec | N
     ----------
     ISO/TS 6336-20:2017; ISO/TS 6336-21:2017.
     """
+    if len(planned) == 2 and isinstance(planned[1], Mapping):  # mesh_inputs' (planned, skipped)
+        planned = planned[0]
     if len(planned) != len(rating.meshes):
         raise RatingError(f"scuffing: {len(planned)} planned meshes but the rating has {len(rating.meshes)}.")
     inputs = inputs if inputs is not None else [scuffing_input(p.input, scuffing) for p in planned]
