@@ -242,3 +242,32 @@ def test_oil_above_the_scuffing_temperature_warns_and_gives_zero():
     r, f = integral_temperature(si, LOAD), flash_temperature(si, LOAD)
     assert float(r["S_SL"]) == 0.0 and f["S_B"] == 0.0
     assert 0.0 < float(r["S_intS"]) < 1.0
+
+
+@pytest.mark.filterwarnings("ignore::epicyclic.rating.errors.RatingWarning")
+@settings(max_examples=40, deadline=None)
+@given(z1=st.integers(14, 40), z2=st.integers(17, 120), helix=st.floats(0.0, 25.0), x1=st.floats(-0.2, 0.6),
+       x2=st.floats(-0.2, 0.6), internal=st.booleans(), torque=st.floats(10.0, 5000.0), step=st.floats(1.05, 3.0))
+def test_random_gear_sets(z1, z2, helix, x1, x2, internal, torque, step):
+    """Random external and internal pairs: every safety positive and finite, falling as the torque rises."""
+    from epicyclic.rating import RatingError
+
+    rack = BasicRack(3.0, helix_angle=helix)
+    assume(not internal or z2 - z1 >= 15)
+    try:
+        mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, -x2 if internal else x2,
+                                                                     internal=internal))
+        path = contact_path(mesh, 30.0)
+        si = ScuffingInput(path, ScuffingSpec(oil_temperature=70.0, roughness_Ra=0.5, load_stage=9), 150.0, 40.0,
+                           0.5, X_M)
+    except (RatingError, ValueError):
+        assume(False)
+    d1 = mesh.gear1.reference_diameter
+    safeties = []
+    for t in (torque, torque * step):
+        load = ScuffingLoad(2000.0 * t / d1, math.pi * d1 * 2000.0 / 60000.0, 1.25, 1.0, 1.05, 1.2, 1.1, 18.0, 2.0)
+        r, f = integral_temperature(si, load), flash_temperature(si, load)
+        values = (float(r["S_intS"]), float(r["S_SL"]), f["S_B"])
+        assert all(0.0 < v < math.inf for v in values)
+        safeties.append(values)
+    assert all(b < a for a, b in zip(*safeties))

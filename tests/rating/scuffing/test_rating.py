@@ -97,3 +97,26 @@ def test_example_file_rates_the_stage_like_the_report():
     (s,) = scuffing_of_ratings(tf.geometry, tf.rating, [rating])[0]
     assert s.integral["theta_int"].value == pytest.approx(115.75, rel=0.015)
     assert np.asarray(s.path["theta_B"]).shape == np.asarray(s.path["gamma"]).shape
+
+
+def test_load_cases_at_once_equal_the_per_case_ratings():
+    """Over a BatchSolution every quantity is an array, equal to rating each case alone."""
+    from epicyclic.rating import rate_batch
+    from epicyclic.solver.batch import solve_batch
+
+    sol, geometry, spec = _planetary()
+    train = GearTrain([PlanetarySet.simple("P", sun="in", ring="r", carrier="out", z_sun=21, z_planet=39, z_ring=99),
+                       Brake("B", "r")])
+    torques, speeds = np.array([200.0, 600.0, 1500.0]), np.array([3000.0, 1500.0, 500.0])
+    batch = solve_batch(train, speeds={"in": speeds}, torques={"in": torques}, drives=["in"], loads=["out"])
+    planned = mesh_inputs(geometry, spec)
+    many = rate_train_scuffing(planned, rate_batch(batch, geometry, spec, planned=planned))
+    for k in range(3):
+        one = solve(train, OperatingPoint(speeds={"in": speeds[k]}, torques={"in": torques[k]}, drives=["in"],
+                                          loads=["out"]))
+        single = rate_train_scuffing(planned, rate_solution(one, geometry, spec, planned=planned))
+        for a, b in zip(many, single):
+            assert a.S_intS[k] == pytest.approx(b.S_intS, rel=1e-9)
+            assert a.S_B[k] == pytest.approx(b.S_B, rel=1e-9)
+            np.testing.assert_allclose(a.path["theta_B"][k], b.path["theta_B"], rtol=1e-9)
+    assert many[0].to_dict()["S_B"] == [float(x) for x in many[0].S_B]

@@ -188,7 +188,8 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
         _factor("S_B", f["S_B"], "1", fl, "safety factor for scuffing (flash temperature)"),
     ]
     path = {"gamma": d["gamma"], "X_Gamma": d["X_Gamma"], "theta_fl": f["theta_fl"], "theta_B": f["theta_B"]}
-    base = ["X_J = 1 (approach factor)", "mu_m of the flash method = mu_mC (the integral method's)"]
+    base = ["X_J = 1 (approach factor)", "mu_m of the flash method = mu_mC (the integral method's)",
+            "X_Gamma of unmodified profiles (ISO/TS 6336-20 load sharing without designed tip relief)"]
     if not s.driving:
         base.append("no driving gear given: X_Q = 1 (on the safe side)")
     return ScuffingRating(element or rating.element, rating.mesh, tuple(gears), it, fl,
