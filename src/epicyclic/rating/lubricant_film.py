@@ -37,6 +37,7 @@ import numpy as np
 from ..losses.errors import LossModelError
 from ..losses.oil import Oil
 from .errors import RatingError
+from .flank import elasticity_factor
 
 __all__ = ["LUBRICANT_TYPES", "OilProperties", "film_thickness", "reduced_modulus"]
 
@@ -51,18 +52,7 @@ LUBRICANT_TYPES = {
 
 
 def reduced_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
-    """E_r = 2 / ((1 − ν1²)/E1 + (1 − ν2²)/E2), N/mm² (ISO/TS 6336-22:2018, eq. (6); Z_E = √(E_r/(2π))).
-
-    Parameters
-    ----------
-    E1, E2 : float
-        Moduli of elasticity, N/mm².
-    nu1, nu2 : float
-        Poisson's ratios.
-
-    Returns
-    -------
-    float
+    """E_r = 2 / ((1 − ν1²)/E1 + (1 − ν2²)/E2) = 2π Z_E², N/mm² (Z_E of :func:`~.flank.elasticity_factor`).
 
     References
     ----------
@@ -73,7 +63,7 @@ def reduced_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
     >>> round(reduced_modulus(206000, 0.3, 206000, 0.3), 1)
     226373.6
     """
-    return 2.0 / ((1.0 - nu1 ** 2) / E1 + (1.0 - nu2 ** 2) / E2)
+    return 2.0 * math.pi * elasticity_factor(E1, nu1, E2, nu2) ** 2
 
 
 class OilProperties:
