@@ -210,6 +210,6 @@ def test_safety_positive_finite_and_not_rising_with_torque(torque, factor, speed
 
 def test_overload_beyond_the_oil_data_warns_and_stays_finite():
     inp = MeshInput("pair", PAIR, 40.0, ("pinion", "wheel"), spec())
-    with pytest.warns(RatingWarning, match="beyond the 200 degC of the oil"):
-        mode = rate_mesh(inp, 6000.0, 3000.0).mode("micropitting")
+    with pytest.warns(RatingWarning, match="beyond the 350 degC"):
+        mode = rate_mesh(inp, 12000.0, 4000.0).mode("micropitting")
     assert math.isfinite(mode.value) and mode.value > 0

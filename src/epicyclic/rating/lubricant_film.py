@@ -35,7 +35,7 @@ import math
 import numpy as np
 
 from ..losses.errors import LossModelError
-from ..losses.oil import Oil
+from ..losses.oil import KELVIN, Oil, walther_constants
 from .errors import RatingError
 from .flank import elasticity_factor
 
@@ -114,8 +114,10 @@ class OilProperties:
         self.alpha_38 = c * float(self.dynamic_viscosity(38.0)) ** e
 
     def kinematic_viscosity(self, theta):
-        """ν at θ (°C), mm²/s (Walther, ASTM D341)."""
-        return self.oil.kinematic_viscosity(np.clip(np.asarray(theta, dtype=float), -40.0, 200.0))
+        """ν at θ (°C), mm²/s (Walther's line through ν_40 and ν_100, ASTM D341; also above 200 °C, where
+        the contact temperatures of a loaded mesh lie)."""
+        a, b = walther_constants(self.oil.viscosity_40, self.oil.viscosity_100)
+        return 10.0 ** (10.0 ** (a - b * np.log10(np.asarray(theta, dtype=float) + KELVIN))) - 0.7
 
     def density(self, theta):
         """ρ_θ = ρ_15 (1 − 0.7 (θ + 273 − 289)/ρ_15), kg/m³ (ISO/TR 15144-1:2014, eq. (20))."""

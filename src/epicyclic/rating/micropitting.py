@@ -78,8 +78,8 @@ FZG_TORQUES = MappingProxyType({1: 3.3, 2: 13.7, 3: 35.3, 4: 60.8, 5: 94.1, 6: 1
                                 9: 302.0, 10: 372.6, 11: 450.1, 12: 534.5})
 #: X_S of the lubrication (ISO/TR 15144-1:2014, eq. (84); ISO/TR 13989-1:2000, 8.2).
 LUBRICATION = MappingProxyType({"spray": 1.2, "dip": 1.0, "submerged": 0.2})
-#: Highest temperature of the oil data (Walther's line, ASTM D341), °C.
-OIL_LIMIT = 200.0
+#: Highest contact temperature the oil's formulas are taken to (α_θ of eq. (8) falls to 0 at 510 °C), °C.
+OIL_LIMIT = 350.0
 #: B_M = √(λ_M ρ_M c_M) of steel (45 W/(m K), 7800 kg/m³, 440 J/(kg K)), N/(m s^0.5 K).
 STEEL_THERMAL = math.sqrt(45.0 * 7800.0 * 440.0)
 
@@ -342,8 +342,8 @@ def film_state(path: ContactPath, oil: OilProperties, *, E_r: float, roughness: 
     theta_b = theta_m_b + theta_fl
     hottest = float(np.max(theta_b))
     if hottest > OIL_LIMIT or float(np.max(theta_m)) > OIL_LIMIT:
-        warn_validity(f"contact temperature up to {hottest:.0f} degC beyond the {OIL_LIMIT:g} degC of the oil's "
-                      "viscosity data (the mesh scuffs first); the lubricant is taken at that limit there",
+        warn_validity(f"contact temperature up to {hottest:.0f} degC beyond the {OIL_LIMIT:g} degC the oil's "
+                      "formulas are taken to (the mesh scuffs first); the lubricant is taken at that limit there",
                       "ISO/TS 6336-22:2018, 7 (ISO/TR 15144-1:2014, eqs. (8), (27))")
     theta_b_oil = np.minimum(theta_b, OIL_LIMIT)
     s_gf = oil.pressure_viscosity(theta_b_oil) * oil.dynamic_viscosity(theta_b_oil) / (alpha_m * eta_m)

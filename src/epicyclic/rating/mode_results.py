@@ -120,13 +120,26 @@ class ModeRating:
 
         return text_table(MODE_HEAD, mode_rows(self), title=f"{self.title} — {self.standard}")
 
-    def _repr_html_(self) -> str:
+    def markdown(self) -> str:
+        """The mode's section in Markdown (a safety below its minimum ends in ``!``)."""
+        from .report import _md_table
+
+        notes = "".join(f"\n\n*note: {n}*" for n in self.notes)
+        return f"#### {self.title} — {self.standard}\n\n{_md_table(MODE_HEAD, mode_rows(self))}{notes}"
+
+    def html(self) -> str:
+        """The mode's section as an HTML fragment (a safety below its minimum in red)."""
+        from .report import _RED, _html_rows
+
         esc = html.escape
         head = "".join(f"<th>{esc(h)}</th>" for h in MODE_HEAD)
-        body = "".join("<tr>" + "".join(f"<td>{esc(c)}</td>" for c in r) + "</tr>" for r in mode_rows(self))
+        cls = "" if self.ok else f" class='below' style='{_RED}'"
         notes = "".join(f"<p class='note'>{esc(n)}</p>" for n in self.notes)
-        return (f"<h4>{esc(self.title)} — {esc(self.standard)}</h4><table><thead><tr>{head}</tr></thead>"
-                f"<tbody>{body}</tbody></table>{notes}")
+        return (f"<h4{cls}>{esc(self.title)} — {esc(self.standard)}</h4><table><thead><tr>{head}</tr></thead>"
+                f"<tbody>{_html_rows(mode_rows(self), (3, 4))}</tbody></table>{notes}")
+
+    def _repr_html_(self) -> str:
+        return self.html()
 
     def __repr__(self) -> str:
         return (f"ModeRating({self.mode}: {self.safety} {float(np.min(self.value)):.3f} "
