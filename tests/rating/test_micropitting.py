@@ -213,3 +213,24 @@ def test_overload_beyond_the_oil_data_warns_and_stays_finite():
     with pytest.warns(RatingWarning, match="beyond the 350 degC"):
         mode = rate_mesh(inp, 12000.0, 4000.0).mode("micropitting")
     assert math.isfinite(mode.value) and mode.value > 0
+
+
+def test_a_batch_of_load_cases_rates_micropitting_per_case():
+    from epicyclic import Brake, GearTrain, OperatingPoint, PlanetarySet, solve
+    from epicyclic.geometry import SetGeometry
+    from epicyclic.rating import rate_batch, rate_solution
+    from epicyclic.solver.batch import solve_batch
+
+    pset = PlanetarySet.simple("P", sun="in", ring="r", carrier="out", z_sun=21, z_planet=39, z_ring=99)
+    train = GearTrain([pset, Brake("B", "r")])
+    geometry = {"P": SetGeometry.create(pset, 3.0, face_width=40.0, x_sun=0.25, x_planet=0.1, x_ring=-0.45)}
+    torques = np.array([200.0, 400.0, 600.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RatingWarning)
+        batch = rate_batch(solve_batch(train, speeds={"in": np.full(3, 1500.0)}, torques={"in": torques},
+                                       drives=["in"], loads=["out"]), geometry, spec())
+        last = rate_solution(solve(train, OperatingPoint(speeds={"in": 1500}, torques={"in": 600}, drives=["in"],
+                                                         loads=["out"])), geometry, spec())
+    values = batch.mesh("P", "sun-planet").mode("micropitting").value
+    assert values.shape == (3,) and np.all(np.diff(values) < 0)                # more torque, thinner film
+    assert values[-1] == pytest.approx(last.mesh("P", "sun-planet").mode("micropitting").value, rel=1e-12)

@@ -46,6 +46,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 from types import MappingProxyType
 from typing import Any
 
@@ -414,6 +415,16 @@ def permissible_film_thickness(oil: OilProperties, load_stage: int, material_fac
     if not 5 <= load_stage <= 10:
         warn_validity(f"FZG failure load stage {load_stage} lies outside the test's stages 5 ... 10; λ_GFT is "
                       "computed at that stage's torque all the same", "ISO/TS 6336-22:2018, Annex A")
+    lam_t, theta = _test_film(oil.oil.viscosity_40, oil.oil.viscosity_100, oil.lubricant_type, oil.density_15,
+                              load_stage)
+    return {"lambda_GFT": lam_t, "lambda_GFP": 1.4 * material_factor * lam_t, "theta_M": theta,
+            "torque": FZG_TORQUES[load_stage]}
+
+
+@lru_cache(maxsize=64)
+def _test_film(nu40: float, nu100: float, kind: str, density: float, load_stage: int) -> tuple[float, float]:
+    """(λ_GF,min, θ_M) of the FZG C test gears at ``load_stage`` with this oil (once per oil and stage)."""
+    oil = OilProperties(nu40, nu100, kind, density)
     path = fzg_c_path()
     torque = FZG_TORQUES[load_stage]
     d_w1 = path.mesh.operating_pitch_diameters[0]
@@ -421,6 +432,4 @@ def permissible_film_thickness(oil: OilProperties, load_stage: int, material_fac
     force = 2000.0 * torque / path.mesh.gear1.reference_diameter
     state = film_state(path, oil, E_r=reduced_modulus(206000.0, 0.3, 206000.0, 0.3), roughness=0.5, speed1=speed,
                        force=force, load_factor=1.0, oil_temperature=90.0, lubrication="dip")
-    lam_t = state.lambda_min
-    return {"lambda_GFT": lam_t, "lambda_GFP": 1.4 * material_factor * lam_t, "theta_M": state.scalars["theta_M"],
-            "torque": torque}
+    return float(state.lambda_min), float(state.scalars["theta_M"])
