@@ -234,3 +234,11 @@ def test_a_batch_of_load_cases_rates_micropitting_per_case():
     values = batch.mesh("P", "sun-planet").mode("micropitting").value
     assert values.shape == (3,) and np.all(np.diff(values) < 0)                # more torque, thinner film
     assert values[-1] == pytest.approx(last.mesh("P", "sun-planet").mode("micropitting").value, rel=1e-12)
+
+
+def test_no_load_gives_an_unbounded_safety_null_in_json():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)                         # no 0 ** -0.13 warning leaks
+        mode = rated(np.array([0.0, 300.0]), np.array([1500.0, 1500.0])).mode("micropitting")
+    assert math.isinf(mode.value[0]) and mode.value[1] > 0 and mode.ok
+    assert json.loads(json.dumps(mode.to_dict(), allow_nan=False))["value"][0] is None

@@ -164,6 +164,7 @@ def film_thickness(rho_n, G_M, U, W, S_GF=1.0):
     >>> round(float(film_thickness(10.0, 5000.0, 1e-11, 1e-4)), 4)
     0.1752
     """
-    return 1600.0 * np.asarray(rho_n, dtype=float) * np.asarray(G_M, dtype=float) ** 0.6 * \
-        np.asarray(U, dtype=float) ** 0.7 * np.asarray(W, dtype=float) ** -0.13 * \
-        np.asarray(S_GF, dtype=float) ** 0.22
+    with np.errstate(divide="ignore"):  # W = 0 (no load): an unbounded film, h = ∞
+        return 1600.0 * np.asarray(rho_n, dtype=float) * np.asarray(G_M, dtype=float) ** 0.6 * \
+            np.asarray(U, dtype=float) ** 0.7 * np.asarray(W, dtype=float) ** -0.13 * \
+            np.asarray(S_GF, dtype=float) ** 0.22
