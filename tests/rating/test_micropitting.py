@@ -242,3 +242,20 @@ def test_no_load_gives_an_unbounded_safety_null_in_json():
         mode = rated(np.array([0.0, 300.0]), np.array([1500.0, 1500.0])).mode("micropitting")
     assert math.isinf(mode.value[0]) and mode.value[1] > 0 and mode.ok
     assert json.loads(json.dumps(mode.to_dict(), allow_nan=False))["value"][0] is None
+
+
+@settings(max_examples=20, deadline=None)
+@given(z1=st.integers(17, 40), ratio=st.floats(1.0, 5.0), module=st.sampled_from([3.0, 4.0, 6.0, 8.0]),
+       load=st.floats(0.5, 3.0), speed=st.floats(200.0, 3000.0), internal=st.booleans())
+def test_random_sets_give_a_positive_finite_safety_falling_with_torque(z1, ratio, module, load, speed, internal):
+    rack = BasicRack(module)
+    z2 = max(z1 + 30, round(3 * z1 * ratio)) if internal else max(z1, round(z1 * ratio))
+    mesh = MeshGeometry(GearGeometry(z1, rack, 0.3), GearGeometry(z2, rack, -0.3 if internal else 0.0,
+                                                                   internal=internal))
+    d1, b = mesh.gear1.reference_diameter, 10.0 * module
+    torque = load * d1 ** 2 * b / 2000.0        # K = F_t/(d1 b) = load N/mm² (a moderate to high flank load)
+    inp = MeshInput("set", mesh, b, ("pinion", "wheel"), spec())
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RatingWarning)
+        low, high = (rate_mesh(inp, t, speed).mode("micropitting").value for t in (torque, 1.5 * torque))
+    assert 0 < high <= low and math.isfinite(low)
