@@ -16,8 +16,8 @@ import warnings
 
 import numpy as np
 
-from epicyclic.geometry import SetGeometry
 from epicyclic import PlanetarySet
+from epicyclic.geometry import SetGeometry
 from epicyclic.rating import MeshInput, RatingSpec, RatingWarning, rate_mesh
 from epicyclic.rating.micropitting import MicropittingSpec
 
