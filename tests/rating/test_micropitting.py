@@ -231,3 +231,17 @@ def test_random_sets_give_a_positive_finite_safety_falling_with_torque(z1, ratio
         warnings.simplefilter("ignore", RatingWarning)
         low, high = (rate_mesh(inp, t, speed).mode("micropitting").value for t in (torque, 1.5 * torque))
     assert 0 < high <= low and math.isfinite(low)
+
+
+def test_tip_relief_unloads_the_tips_and_lowers_the_bulk_temperature():
+    plain = rated(400.0).mode("micropitting")
+    relieved = rated(400.0, mp=MicropittingSpec(oil_temperature=70.0, load_stage=9, roughness=0.5,
+                                                 profile_modification="both")).mode("micropitting")
+    assert plain["X_Ca"] == 1.0 and relieved["X_Ca"] > 1.0                   # grade 6 with tip relief, eq. (100)
+    assert relieved["theta_M"] < plain["theta_M"]
+    x_y = relieved.profile["X_Y"]
+    assert x_y[0] == 0.0 and x_y[-1] == 0.0                                   # A and E carry nothing
+    assert relieved["lambda_GF_min"] > plain["lambda_GF_min"]                 # the minimum at A is gone
+    coarse = rated(400.0, accuracy_grade=8, mp=MicropittingSpec(oil_temperature=70.0, load_stage=9,
+                                                                 profile_modification="both"))
+    assert coarse.mode("micropitting")["X_Ca"] == 1.0                         # above grade 6: 1 (eq. (101))
