@@ -119,7 +119,6 @@ def rate(
 ) -> None:
     """Rate FILE's meshes by ISO 6336 Method B: safeties S_H (pitting) and S_F (tooth root) of every gear."""
     from ..rating import report
-    from ..rating.scuffing import report as sections
 
     train_file = load(file, None if gear == "all" else gear, set_)
     if gear == "all":
@@ -137,41 +136,26 @@ def rate(
             emit(_explain(ratings, explain), out)
             _stderr(caught, ratings)
             return
-        scuffing = _scuffing(train_file, ratings)
     title = report_title(train_file) if gear != "all" else (train_file.title or train_file.train.name)
     if format is OutputFormat.json:
         data = {"schema": "epicyclic-rating/1", "source": str(file), "title": title,
                 "inputs": train_file.rating.to_dict(), "ratings": [r.to_dict() for _, r in ratings],
                 "warnings": sorted({str(w.message) for w in caught})}
-        for entry, scuffed in zip(data["ratings"], scuffing):
-            entry["scuffing"] = [s.to_dict() for s in scuffed]
         check_finite(data, file, "rating")
         text = json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False)
     elif format is OutputFormat.markdown:
-        text = f"# {title}\n\n" + "\n".join(report.markdown_report(r) + "".join(
-            "\n" + sections.markdown_section(s) for s in scuffing[i:i + 1]) for i, (_, r) in enumerate(ratings))
+        text = f"# {title}\n\n" + "\n".join(report.markdown_report(r) for _, r in ratings)
     elif format is OutputFormat.html:
         text = report.html_document(ratings[0][1], title) if len(ratings) == 1 else (
             "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>rating</title></head><body>"
             + "".join(report.html_section(r) for _, r in ratings) + "</body></html>")
-        text = text.replace("</body>", "".join(sections.html_section(s) for s in scuffing) + "</body>")
     else:
-        text = "\n\n".join(report.text_report(r) + "".join(
-            "\n\n" + sections.text_section(s) for s in scuffing[i:i + 1]) for i, (_, r) in enumerate(ratings))
+        text = "\n\n".join(report.text_report(r) for _, r in ratings)
     emit(text, out)
-    _stderr(caught, ratings, scuffing)
+    _stderr(caught, ratings)
 
 
-def _scuffing(train_file, ratings):
-    """[(ScuffingRating, ...)] per gear where the file's [rating] has a scuffing table, else []."""
-    if train_file.rating.scuffing is None:
-        return []
-    from ..rating.scuffing.rating import scuffing_of_ratings
-
-    return scuffing_of_ratings(train_file.geometry, train_file.rating, [r for _, r in ratings])
-
-
-def _stderr(caught, ratings, scuffing=()) -> None:
+def _stderr(caught, ratings) -> None:
     from ..text import terminal_text
 
     for message in sorted({str(w.message) for w in caught}):
@@ -181,9 +165,3 @@ def _stderr(caught, ratings, scuffing=()) -> None:
             if not m.ok:
                 typer.echo(terminal_text(f"below minimum safety: {m.element} {m.mesh}" + (f" in gear {gear}" if gear
                                                                                          else "")), err=True)
-    for (gear, _), scuffed in zip(ratings, scuffing):
-        for s in scuffed:
-            if not s.ok:
-                typer.echo(terminal_text(f"below minimum scuffing safety: {s.element} {s.mesh} "
-                                         f"({', '.join(s.below_minimum())})" + (f" in gear {gear}" if gear else "")),
-                           err=True)

@@ -24,6 +24,9 @@
     [rating.lubricant]
     viscosity_40 = 35.0                   # mm²/s (or in the top-level [lubricant])
     viscosity_100 = 7.0
+    [rating.micropitting]                 # ISO/TS 6336-22 (see failure_modes_format)
+    oil_temperature = 70.0
+    load_stage = 9
     [rating.materials.MySteel]            # a user material, then material = "MySteel"
     treatment = "Eh"                      # ISO 6336-5 symbol
     sigma_Hlim = 1550.0
@@ -43,6 +46,7 @@ from ..errors import EpicyclicError
 from ..rating.materials import DEFAULT_QUALITY, Material, material, material_names
 from ..rating.spec import RatingSpec
 from ..rating.tooth_form import Cutter
+from .failure_modes_format import read_micropitting
 from .reader import at_key
 
 __all__ = ["RATING_KEYS", "read_rating"]
@@ -50,7 +54,7 @@ __all__ = ["RATING_KEYS", "read_rating"]
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
                "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
-               "rim_thickness", "scuffing"}
+               "rim_thickness", "micropitting", "scuffing"}
 _NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "K_Hbeta", "K_v",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
 _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
@@ -151,6 +155,8 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
         r_where = at_key(where, "rim_thickness")
         rims = reader.table(table["rim_thickness"], r_where)
         values["rim_thickness"] = {k: reader.number(v, k, r_where) for k, v in rims.items()}
+    if "micropitting" in table:  # the failure modes beyond pitting and root: their own sub-tables
+        values["micropitting"] = read_micropitting(reader, table["micropitting"])
     if "scuffing" in table:
         from .scuffing_format import read_scuffing
 

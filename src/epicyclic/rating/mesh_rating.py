@@ -31,7 +31,7 @@ eqs. (1)–(5) and Annex B (Y_M).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -39,6 +39,7 @@ import numpy as np
 from ..geometry.gear import MeshGeometry
 from . import flank, load_factors, root
 from .errors import RatingError
+from .failure_modes import failure_modes
 from .life_factors import bending_curve, pitting_curve
 from .materials import Material
 from .results import Factor, GearRating, MeshRating
@@ -380,5 +381,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     method_c = (f"K_Hbeta by method C from F_betax = 1.33 f_sh + f_Hbeta "
                 f"(f_Hbeta = {s['f_Hbeta']:.1f} um, grade {spec.accuracy_grade})")
     notes = tuple(spec.notes) + ((method_c,) if spec.K_Hbeta is None else ())
-    return MeshRating(inp.element, mesh.name, f"ISO 6336:{year}", "B", {x.symbol: x for x in mesh_factors},
-                      (gears[0], gears[1]), mesh.internal, notes)
+    rating = MeshRating(inp.element, mesh.name, f"ISO 6336:{year}", "B", {x.symbol: x for x in mesh_factors},
+                        (gears[0], gears[1]), mesh.internal, notes)
+    modes = failure_modes(inp, rating, t1, n1)
+    return replace(rating, modes=modes) if modes else rating

@@ -26,6 +26,7 @@ __all__ = [
     "html_section",
     "markdown_report",
     "mesh_rows",
+    "modes_rows",
     "summary_rows",
     "text_report",
 ]
@@ -33,6 +34,7 @@ __all__ = [
 SUMMARY_HEAD = ["element", "mesh", "gear", "sigma_H [N/mm^2]", "sigma_HP [N/mm^2]", "S_H", "sigma_F [N/mm^2]",
                 "sigma_FP [N/mm^2]", "S_F", "ok"]
 FACTOR_HEAD = ["quantity", "symbol", "unit", "gear 1", "gear 2", "clause"]
+MODES_HEAD = ["element", "mesh", "failure mode", "safety", "value", "minimum", "method"]
 
 
 def _fmt(value) -> str:
@@ -78,6 +80,26 @@ def summary_rows(rating) -> list[list[str]]:
             rows.append([m.element, m.mesh, g.gear, _fmt(g["sigma_H"]), _fmt(g["sigma_HP"]), s_h,
                          _fmt(g["sigma_F"]), _fmt(g["sigma_FP"]), s_f, "yes" if g.ok else "NO"])
     return rows
+
+
+def modes_rows(rating) -> list[list[str]]:
+    """One row per failure mode rated beyond pitting and root (micropitting ...) of every mesh.
+
+    Parameters
+    ----------
+    rating : TrainRating
+
+    Returns
+    -------
+    list of list of str
+        Cells of :data:`MODES_HEAD`; a safety below its minimum ends in ``!``.
+
+    References
+    ----------
+    ISO/TS 6336-22:2018, eq. (1) (S_λ).
+    """
+    return [[m.element, m.mesh, x.title, x.safety, _fmt(x.value) + ("" if x.ok else " !"), f"{x.minimum:g}",
+             x.standard] for m in rating.meshes for x in m.modes]
 
 
 def mesh_rows(mesh) -> list[list[str]]:
@@ -138,10 +160,15 @@ def text_report(rating, *, details: bool = True) -> str:
     head = (f"Tooth load capacity, {rating.standard} method B"
             + (f", gear {rating.gear}" if rating.gear else "") + f", required life {rating.life_hours:g} h")
     parts = [text_table(SUMMARY_HEAD, summary_rows(rating), title=head)]
+    if any(m.modes for m in rating.meshes):
+        parts.append(text_table(MODES_HEAD, modes_rows(rating), title="Failure modes beyond pitting and root"))
     if details:
         for m in rating.meshes:
             parts.append(text_table(FACTOR_HEAD, mesh_rows(m), title=_title(m)))
             parts.extend(f"note: {n}" for n in m.notes)
+            for mode in m.modes:
+                parts.append(mode.table())
+                parts.extend(f"note: {n}" for n in mode.notes)
     parts.extend(f"not rated: {k}: {v}" for k, v in rating.skipped.items())
     return "\n\n".join(parts)
 
@@ -173,9 +200,12 @@ def markdown_report(rating, *, details: bool = True) -> str:
     parts = [f"## Tooth load capacity ({rating.standard}, method B"
              + (f", gear {rating.gear}" if rating.gear else "") + f", life {rating.life_hours:g} h)",
              _md_table(SUMMARY_HEAD, summary_rows(rating))]
+    if any(m.modes for m in rating.meshes):
+        parts.append(_md_table(MODES_HEAD, modes_rows(rating)))
     if details:
         for m in rating.meshes:
             parts += [f"### {_title(m)}", _md_table(FACTOR_HEAD, mesh_rows(m))]
+            parts += [mode.markdown() for mode in m.modes]
     return "\n\n".join(parts) + "\n"
 
 
@@ -212,6 +242,10 @@ def html_section(rating, *, details: bool = True) -> str:
     parts = [f"<section class='rating'><h2>Tooth load capacity — {esc(rating.standard)}, method B"
              + (f", gear {esc(rating.gear)}" if rating.gear else "") + f", life {rating.life_hours:g} h</h2>",
              f"<table><thead><tr>{head}</tr></thead><tbody>{_html_rows(summary_rows(rating), (5, 8))}</tbody></table>"]
+    if any(m.modes for m in rating.meshes):
+        mhead = "".join(f"<th>{esc(h)}</th>" for h in MODES_HEAD)
+        parts.append(f"<table><thead><tr>{mhead}</tr></thead><tbody>{_html_rows(modes_rows(rating), (4,))}"
+                     "</tbody></table>")
     if details:
         fhead = "".join(f"<th>{esc(h)}</th>" for h in FACTOR_HEAD)
         for m in rating.meshes:
@@ -219,6 +253,7 @@ def html_section(rating, *, details: bool = True) -> str:
             parts.append(f"<h3{cls}>{esc(_title(m))}</h3><table><thead><tr>{fhead}</tr></thead><tbody>"
                          f"{_html_rows(mesh_rows(m), (3, 4))}</tbody></table>")
             parts.extend(f"<p class='note'>{esc(n)}</p>" for n in m.notes)
+            parts.extend(mode.html() for mode in m.modes)
     parts.append("</section>")
     return "".join(parts)
 

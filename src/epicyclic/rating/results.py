@@ -222,6 +222,9 @@ class MeshRating:
         Gear 2 is internal (a ring).
     notes : tuple of str
         What the rating assumed (defaults taken, clamps applied).
+    modes : tuple of ModeRating
+        The failure modes beyond pitting and root that were rated (micropitting, flank fracture …,
+        :class:`~epicyclic.rating.mode_results.ModeRating`).
     """
 
     element: str
@@ -232,6 +235,7 @@ class MeshRating:
     gears: tuple[GearRating, GearRating]
     internal: bool = False
     notes: tuple[str, ...] = ()
+    modes: tuple = ()
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "factors", _factors(self.factors))
@@ -255,15 +259,23 @@ class MeshRating:
 
     @property
     def ok(self) -> bool:
-        """Whether both gears meet their minimum safeties."""
-        return all(g.ok for g in self.gears)
+        """Whether both gears, and every failure mode rated, meet their minimum safeties."""
+        return all(g.ok for g in self.gears) and all(m.ok for m in self.modes)
+
+    def mode(self, name: str):
+        """The :class:`~epicyclic.rating.mode_results.ModeRating` of failure mode ``name`` (KeyError if not rated)."""
+        for m in self.modes:
+            if m.mode == name:
+                return m
+        raise KeyError(f"{self.element} {self.mesh}: {name!r} not rated (rated: {[m.mode for m in self.modes]})")
 
     def to_dict(self) -> dict[str, Any]:
         """JSON data: element, mesh, standard, method, factors by ISO symbol, gears, ok, notes."""
         return {"element": self.element, "mesh": self.mesh, "standard": self.standard, "method": self.method,
                 "internal": self.internal, "factors": {s: f.to_dict() for s, f in self.factors.items()},
                 "gears": {g.gear: g.to_dict() for g in self.gears},
-                "S_H": json_value(self.S_H), "S_F": json_value(self.S_F), "ok": self.ok, "notes": list(self.notes)}
+                "S_H": json_value(self.S_H), "S_F": json_value(self.S_F), "ok": self.ok, "notes": list(self.notes),
+                "modes": {m.mode: m.to_dict() for m in self.modes}}
 
     def table(self) -> str:
         """This mesh's factors as a plain-text table (a safety below its minimum ends in ``!``)."""
@@ -327,6 +339,7 @@ class TrainRating:
                 value, minimum = min((float(np.min(getattr(g, kind))), getattr(g, kind + "min")) for g in mesh.gears)
                 if any(float(np.min(getattr(g, kind))) < getattr(g, kind + "min") for g in mesh.gears):
                     short.append(f"{kind} {value:.3g} < {minimum:g}")
+            short += [s for s in (m.below_minimum() for m in mesh.modes) if s]
             if short:
                 out.setdefault(mesh.element, []).append(f"{mesh.mesh}: {', '.join(short)}")
         return {element: "\n".join(items) for element, items in out.items()}

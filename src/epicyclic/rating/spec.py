@@ -20,6 +20,7 @@ long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``
 pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
 tip_relief              running-in C_ay             C_a for K_v, µm (without one: C_ay of the pair)
 rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
+micropitting            none (not rated)            :class:`~.micropitting.MicropittingSpec`
 scuffing                none (not rated)            :class:`~epicyclic.rating.scuffing.ScuffingSpec`
 ======================  ==========================  =============================================
 
@@ -44,6 +45,7 @@ from typing import Any
 
 from .errors import RatingError
 from .materials import Material, material
+from .micropitting import MicropittingSpec
 from .standard import DEFAULT_EDITION, edition
 from .tooth_form import Cutter
 
@@ -133,6 +135,8 @@ class RatingSpec:
     rim_thickness : mapping gear → float, optional
         Rim thickness s_R below the root per gear name (``ring``, ``"P1:ring"``), mm, for Y_B;
         gears not named are solid (Y_B = 1).
+    micropitting : MicropittingSpec, optional
+        Rate micropitting (ISO/TS 6336-22 Method B) with these inputs.
     scuffing : ScuffingSpec, optional
         Inputs of the scuffing rating (``[rating.scuffing]``); without, scuffing is not rated.
 
@@ -168,6 +172,7 @@ class RatingSpec:
     tip_relief: float | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
     rim_thickness: Mapping[str, float] | None = None
+    micropitting: MicropittingSpec | None = None
     scuffing: Any = None
 
     def __post_init__(self) -> None:
@@ -211,6 +216,9 @@ class RatingSpec:
         elif isinstance(self.material, Mapping):
             object.__setattr__(self, "material", MappingProxyType(
                 {k: material(v) if isinstance(v, str) else v for k, v in self.material.items()}))
+        for key, kind in (("micropitting", MicropittingSpec),):
+            if getattr(self, key) is not None and not isinstance(getattr(self, key), kind):
+                raise RatingError(f"rating.{key} must be a {kind.__name__}, got {type(getattr(self, key)).__name__}.")
 
     # ------------------------------------------------------------------ required values
     def material_of(self, element: str, gear: str) -> Material:
@@ -316,4 +324,5 @@ class RatingSpec:
                 "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,
                 "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,
                 "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None,
+                "micropitting": self.micropitting.to_dict() if self.micropitting else None,
                 "scuffing": self.scuffing.to_dict() if self.scuffing is not None else None}

@@ -13,7 +13,7 @@ from epicyclic.geometry import SetGeometry
 from epicyclic.io import load_train_file
 from epicyclic.rating import RatingError, RatingSpec, mesh_inputs, rate_solution
 from epicyclic.rating.scuffing import ScuffingSpec, rate_train_scuffing, scuffing_input
-from epicyclic.rating.scuffing.rating import multiple_meshing_factor, scuffing_of_ratings
+from epicyclic.rating.scuffing.rating import multiple_meshing_factor
 
 EXAMPLE = Path(__file__).resolve().parents[3] / "examples" / "rating" / "helical_stage_scuffing.toml"
 SCUFFING = ScuffingSpec(oil_temperature=90.0, roughness_Ra={"sun": 0.5, "planet": 0.5, "ring": 0.8}, load_stage=10)
@@ -43,7 +43,11 @@ def test_every_mesh_of_a_planetary_set():
         assert r.integral["X_mp"].value == 2.0  # the sun meets three planets: (1 + 3)/2
         assert r.integral["mu_mC"].value == r.flash["mu_m"].value
     assert "S_intS" in repr(sun) and "<table>" in sun._repr_html_() and "theta_intS" in sun.table()
-    assert scuffing_of_ratings(geometry, spec, [rating])[0][0].S_B == pytest.approx(sun.S_B)
+    # rate_mesh carries the same as the mesh's failure modes
+    mesh = rating.mesh("P", "sun-planet")
+    assert mesh.mode("scuffing_flash").value == pytest.approx(sun.S_B)
+    assert mesh.mode("scuffing_integral").value == pytest.approx(sun.S_intS)
+    assert mesh.mode("scuffing_flash").profile["theta_B"] is not None
 
 
 def test_multiple_meshing_factor():
@@ -94,9 +98,9 @@ def test_example_file_rates_the_stage_like_the_report():
     from epicyclic.cli.rate import rate_file
 
     (_, rating), = rate_file(tf, EXAMPLE, [None])
-    (s,) = scuffing_of_ratings(tf.geometry, tf.rating, [rating])[0]
-    assert s.integral["theta_int"].value == pytest.approx(115.75, rel=0.015)
-    assert np.asarray(s.path["theta_B"]).shape == np.asarray(s.path["gamma"]).shape
+    integral, flash = rating.meshes[0].mode("scuffing_integral"), rating.meshes[0].mode("scuffing_flash")
+    assert integral["theta_int"] == pytest.approx(115.75, rel=0.015)
+    assert np.asarray(flash.profile["theta_B"]).shape == np.asarray(flash.profile["gamma"]).shape
 
 
 def test_load_cases_at_once_equal_the_per_case_ratings():

@@ -6,8 +6,12 @@
 * :mod:`~.methods` — :func:`integral_temperature` (ISO/TS 6336-21:2017, ISO/TR 13989-2:2000) and
   :func:`flash_temperature` along the path of contact (ISO/TS 6336-20:2017, ISO/TR 13989-1:2000),
   vectorised over load cases;
-* :mod:`~.rating` — :func:`rate_scuffing` / :func:`rate_train_scuffing` beside the ISO 6336 rating;
-* :mod:`~.results` — :class:`ScuffingRating`; :mod:`~.report` — its text, Markdown and HTML section.
+* :mod:`~.rating` — :func:`rate_scuffing` / :func:`rate_train_scuffing` beside the ISO 6336 rating, and
+  :func:`~.rating.scuffing_modes`, which :func:`~epicyclic.rating.rate_mesh` calls (through
+  :mod:`epicyclic.rating.failure_modes`) when the spec has ``scuffing``: every mesh's rating then
+  carries the modes ``scuffing_integral`` and ``scuffing_flash`` (``MeshRating.mode(...)``), which the
+  reports of ``epicyclic rate`` show in every format;
+* :mod:`~.results` — :class:`ScuffingRating` (both methods, rendered as two failure modes).
 
 References
 ----------

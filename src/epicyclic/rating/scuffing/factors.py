@@ -43,6 +43,7 @@ import math
 import numpy as np
 
 from ..errors import RatingError, warn_validity
+from ..micropitting import helical_load_factor  # K_Bγ, shared with micropitting (ISO/TR 15144-1)
 
 __all__ = [
     "FZG_TORQUES",
@@ -150,20 +151,6 @@ def pitch_point_radius(u: float, center_distance: float, alpha_wt: float, beta_b
     """
     s = -1.0 if internal else 1.0
     return u * center_distance * math.sin(alpha_wt) / ((u + s) ** 2 * math.cos(beta_b))
-
-
-def helical_load_factor(eps_gamma: float) -> float:
-    """K_Bγ from the total contact ratio ε_γ.
-
-    References
-    ----------
-    ISO/TR 13989-2:2000 and ISO/TS 6336-21:2017 (helical load factor).
-    """
-    if eps_gamma <= 2.0:
-        return 1.0
-    if eps_gamma < 3.5:
-        return 1.0 + 0.2 * math.sqrt((eps_gamma - 2.0) * (5.0 - eps_gamma))
-    return 1.3
 
 
 def contact_ratio_factor(eps_1: float, eps_2: float, clause: str = "ISO/TS 6336-21:2017") -> float:

@@ -27,17 +27,16 @@ from ...losses.errors import LossModelError
 from ...losses.oil import Oil
 from ..contact_path import contact_path
 from ..errors import RatingError, warn_validity
-from ..mesh_rating import MeshInput
 from ..results import Factor, MeshRating, TrainRating
 from . import factors
 from .methods import C_1, C_2, C_FLASH, ScuffingInput, ScuffingLoad, flash_temperature, integral_temperature
 from .results import ScuffingRating
 from .spec import ScuffingSpec
 
-__all__ = ["multiple_meshing_factor", "rate_scuffing", "rate_train_scuffing", "scuffing_input", "scuffing_of_ratings"]
+__all__ = ["multiple_meshing_factor", "rate_scuffing", "rate_train_scuffing", "scuffing_input", "scuffing_modes"]
 
 
-def multiple_meshing_factor(inp: MeshInput) -> float:
+def multiple_meshing_factor(inp) -> float:
     """X_mp = (1 + n_p)/2, n_p the number of meshes of the busiest gear of ``inp``.
 
     A central gear meshing N planets has N, a planet between sun and ring (reversed bending) 2,
@@ -51,12 +50,13 @@ def multiple_meshing_factor(inp: MeshInput) -> float:
     return (1.0 + max(meshes)) / 2.0
 
 
-def scuffing_input(inp: MeshInput, scuffing: ScuffingSpec | None = None, *, points: int = 41) -> ScuffingInput:
+def scuffing_input(inp, scuffing: ScuffingSpec | None = None, *, points: int = 41) -> ScuffingInput:
     """The load-independent scuffing data of ``inp`` (its spec's ``scuffing`` unless given).
 
     Parameters
     ----------
     inp : MeshInput
+        The mesh (:class:`~epicyclic.rating.mesh_rating.MeshInput`).
     scuffing : ScuffingSpec, optional
     points : int, default 41
         Points of the flash temperature along the path.
@@ -165,8 +165,8 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
         _factor("theta_M", r["theta_M"], "°C", it, f"bulk temperature theta_oil + {C_1} X_S X_mp theta_flaint"),
         _factor("theta_int", r["theta_int"], "°C", it, f"integral temperature theta_M + {C_2} theta_flaint"),
         _factor("X_WrelT", s.structural_factor, "1", it, "relative structural factor"),
-        _factor("T_1T", t_1t if t_1t is not None else float("nan"), "N·m", "ISO 14635-1:2000, Table 2",
-                f"FZG A/8.3/90 pinion torque of load stage {s.load_stage}" if t_1t is not None else "not used"),
+        *([_factor("T_1T", t_1t, "N·m", "ISO 14635-1:2000, Table 2",
+                   f"FZG A/8.3/90 pinion torque of load stage {s.load_stage}")] if t_1t is not None else []),
         _factor("theta_intS", d["theta_intS"], "°C", it,
                 "permissible integral temperature" + (" (given)" if given_int else " from the FZG load stage")),
         _factor("S_intS", r["S_intS"], "1", it, "safety factor for scuffing (integral temperature)"),
@@ -242,33 +242,24 @@ def rate_train_scuffing(planned, rating: TrainRating, scuffing: ScuffingSpec | N
     return tuple(out)
 
 
-def scuffing_of_ratings(geometry, spec, ratings) -> list[tuple[ScuffingRating, ...]]:
-    """The scuffing of every mesh of each of ``ratings`` (TrainRatings of ``geometry`` and ``spec``).
+
+def scuffing_modes(inp, rating: MeshRating) -> tuple:
+    """The two :class:`~epicyclic.rating.mode_results.ModeRating` s of a mesh (integral, flash) for ``rate_mesh``.
 
     Parameters
     ----------
-    geometry : mapping element → SetGeometry or StageGeometry
-    spec : RatingSpec
-        With ``scuffing``.
-    ratings : sequence of TrainRating
-        Rated from ``geometry`` and ``spec`` (one per gear, say).
+    inp : MeshInput
+        With ``spec.scuffing``.
+    rating : MeshRating
+        The ISO 6336 rating of the same load.
 
     Returns
     -------
-    list of tuple of ScuffingRating
-        One tuple per rating, one entry per mesh.
-
-    Raises
-    ------
-    RatingError
-        No scuffing inputs, or a rating of other meshes.
+    tuple of ModeRating
+        ``scuffing_integral`` (S_intS) and ``scuffing_flash`` (S_B).
 
     References
     ----------
-    ISO/TS 6336-20:2017; ISO/TS 6336-21:2017.
+    ISO/TS 6336-21:2017; ISO/TS 6336-20:2017.
     """
-    from ..train import mesh_inputs
-
-    planned, _ = mesh_inputs(geometry, spec)
-    inputs = [scuffing_input(p.input) for p in planned]
-    return [rate_train_scuffing(planned, r, inputs=inputs) for r in ratings]
+    return rate_scuffing(scuffing_input(inp), rating, element=inp.element, gears=inp.gears).modes()

@@ -108,16 +108,26 @@ class ScuffingRating:
                 "S_intS": json_value(self.S_intS), "S_SL": json_value(self.S_SL), "S_B": json_value(self.S_B),
                 "S_Smin": self.S_Smin, "S_Bmin": self.S_Bmin, "ok": self.ok, "notes": list(self.notes)}
 
-    def table(self) -> str:
-        """Both methods as a plain-text table (a safety below its minimum ends in ``!``)."""
-        from .report import text_section
+    def modes(self) -> tuple:
+        """(integral, flash) as :class:`~epicyclic.rating.mode_results.ModeRating` s, the failure modes of a mesh.
 
-        return text_section((self,))
+        ``scuffing_integral`` with the safety S_intS against S_Smin, ``scuffing_flash`` with S_B against
+        S_Bmin and the temperatures along the path as its profile.
+        """
+        from ..mode_results import ModeRating
+
+        integral = ModeRating("scuffing_integral", "Scuffing, integral temperature method", self.integral_method,
+                              self.integral, "S_intS", self.S_Smin, gears=self.gears, notes=self.notes)
+        flash = ModeRating("scuffing_flash", "Scuffing, flash temperature method", self.flash_method, self.flash,
+                           "S_B", self.S_Bmin, gears=self.gears, profile=self.path, notes=self.notes)
+        return integral, flash
+
+    def table(self) -> str:
+        """Both methods as plain-text tables (a safety below its minimum ends in ``!``)."""
+        return "\n\n".join(m.table() for m in self.modes())
 
     def _repr_html_(self) -> str:
-        from .report import html_section
-
-        return html_section((self,))
+        return "".join(m.html() for m in self.modes())
 
     def __repr__(self) -> str:
         return (f"ScuffingRating({self.element}: {self.mesh}, S_intS {_lowest(self.S_intS):.3f}, "
