@@ -147,3 +147,19 @@ def test_pressure_positive_finite_and_monotone_in_load(torque, factor, z1, ratio
     high = path.state(path.gammas(15), 1000.0, ft * factor, 189.8).p_H
     assert np.all(np.isfinite(low)) and np.all(low > 0)
     assert np.all(high > low)
+
+
+def test_the_tip_of_gear_1_below_the_base_circle_of_gear_2_is_interference():
+    """ρ_E ≥ a_w sin α_wt puts the contact below gear 2's base circle (its flank radius ρ_2 < 0): an error."""
+    rack = BasicRack(3.0)
+    with pytest.raises(RatingError, match="below the base circle of gear 2"):
+        contact_path(MeshGeometry(GearGeometry(10, rack, 0.8), GearGeometry(12, rack, -0.6)), 20.0)
+
+
+def test_a_vanishing_helix_angle_gives_the_spur_load_sharing():
+    """β → 0 (hypothesis found 2e-309°): X_but = 1, X_Γ finite and equal to the spur pair's."""
+    spur = contact_path(MeshGeometry(GearGeometry(14, BasicRack(3.0)), GearGeometry(17, BasicRack(3.0))), 30.0)
+    rack = BasicRack(3.0, helix_angle=2.2e-309)
+    tiny = contact_path(MeshGeometry(GearGeometry(14, rack), GearGeometry(17, rack)), 30.0)
+    gam = spur.gammas(11)
+    np.testing.assert_allclose(tiny.load_sharing(gam), spur.load_sharing(gam), rtol=1e-12)

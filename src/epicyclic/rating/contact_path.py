@@ -201,6 +201,10 @@ class ContactPath:
         if rho_a <= 0.0:
             raise RatingError(f"contact path of {name}: the tip of gear 2 reaches below the base circle of gear 1 "
                               f"(ρ_A = {rho_a:.4f} mm): the teeth interfere; raise x1 or shorten gear 2's tips.")
+        if not mesh.internal and rho_e >= common:
+            raise RatingError(f"contact path of {name}: the tip of gear 1 reaches below the base circle of gear 2 "
+                              f"(ρ_E = {rho_e:.4f} mm ≥ a_w sin α_wt = {common:.4f} mm): the teeth interfere; raise "
+                              "x2 or shorten gear 1's tips.")
         p_bt = math.pi * g1.base_diameter / g1.teeth
         eps_a = (rho_e - rho_a) / p_bt
         if eps_a < 1.0:
@@ -307,10 +311,10 @@ class ContactPath:
         return np.clip(x, 0.0, 1.0)
 
     def _buttressing(self, gamma: np.ndarray) -> np.ndarray:
-        if not self.buttressing or self.eps_beta == 0.0:
-            return np.ones(gamma.shape)
         width = 0.2 * math.sin(self.beta_b)
         peak = 1.3 if self.eps_beta >= 1.0 else 1.0 + 0.3 * self.eps_beta
+        if not self.buttressing or self.eps_beta == 0.0 or peak <= 1.0:  # (a β so small that X_but = 1)
+            return np.ones(gamma.shape)
         ga, ge = self.points["A"], self.points["E"]
         near_a = peak - (gamma - ga) / width * (peak - 1.0)
         near_e = peak - (ge - gamma) / width * (peak - 1.0)
