@@ -26,7 +26,7 @@ import numpy as np
 from ...losses.errors import LossModelError
 from ...losses.oil import Oil
 from ..contact_path import contact_path
-from ..errors import RatingError, warn_validity
+from ..errors import RatingError
 from ..results import Factor, MeshRating, TrainRating
 from . import factors
 from .methods import C_1, C_2, C_FLASH, ScuffingInput, ScuffingLoad, flash_temperature, integral_temperature
@@ -132,9 +132,6 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
                         rating["K_Hbeta"], rating["K_Halpha"], rating["c_gamma_alpha"], float(rating["C_a"]))
     r = integral_temperature(si, load)
     f = flash_temperature(si, load)
-    if np.any(np.asarray(load.tip_relief) > np.asarray(r["C_eff"])):
-        warn_validity(f"tip relief C_a = {load.tip_relief:g} um exceeds C_eff = {_low(r['C_eff']):.3g} um in "
-                      f"{rating.element} {rating.mesh}: X_Ca is taken with C_a = C_eff", it)
     t_1t = d["T_1T"]
     given_int = s.integral_scuffing_temperature is not None
     integral = [
@@ -192,6 +189,9 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
             "X_Gamma of unmodified profiles (ISO/TS 6336-20 load sharing without designed tip relief)"]
     if not s.driving:
         base.append("no driving gear given: X_Q = 1 (on the safe side)")
+    if np.any(load.tip_relief > np.asarray(r["C_eff"])):
+        base.append(f"C_a = {load.tip_relief:g} µm above C_eff (down to {_low(r['C_eff']):.3g} µm): X_Ca with "
+                    "C_a = C_eff, as the standard limits it")
     return ScuffingRating(element or rating.element, rating.mesh, tuple(gears), it, fl,
                           {x.symbol: x for x in integral}, {x.symbol: x for x in flash}, path, s.S_Smin, s.S_Bmin,
                           tuple(notes) + tuple(base))
