@@ -11,7 +11,7 @@
     lubrication = "dip"                   # X_S: dip, spray, immersed
     structural_factor = 1.0               # X_W
     contact_coefficient = 13.78           # B_M, N/(mm s^½ K)
-    running_in_factor = 1.0               # X_E
+    run_in = 1.0                          # φ_E of X_E: 1 well run in, 0 new
     driving = "gear1"                     # X_Q (without: 1)
     S_Smin = 1.8                          # integral temperature
     S_Bmin = 2.0                          # flash temperature
@@ -36,9 +36,9 @@ from .reader import at_key
 __all__ = ["SCUFFING_KEYS", "read_scuffing"]
 
 SCUFFING_KEYS = {"load_stage", "oil_temperature", "roughness_Ra", "oil_type", "oil_density", "lubrication",
-                 "structural_factor", "contact_coefficient", "running_in_factor", "driving", "multiple_meshing",
+                 "structural_factor", "contact_coefficient", "run_in", "driving", "multiple_meshing",
                  "S_Smin", "S_Bmin", "edition", "integral_scuffing_temperature", "scuffing_temperature"}
-_NUMBERS = ("oil_temperature", "oil_density", "structural_factor", "contact_coefficient", "running_in_factor",
+_NUMBERS = ("oil_temperature", "oil_density", "structural_factor", "contact_coefficient", "run_in",
             "multiple_meshing", "S_Smin", "S_Bmin", "integral_scuffing_temperature", "scuffing_temperature")
 
 

@@ -108,12 +108,19 @@ def test_mean_friction_falls_with_viscosity_and_rises_with_roughness():
     assert float(factors.mean_friction(1000.0, 0.0, 30.0, 20.0, 0.5, 1.0)) == 0.0
 
 
-@pytest.mark.parametrize("stage", [0, 13, 2.5, True])
+@pytest.mark.parametrize("stage", [0, 15, 2.5, True])
 def test_fzg_stage_outside_the_test(stage):
-    """ISO 14635-1 has stages 1 … 12: anything else is an error naming the key and the safe choice."""
+    """Stages 1 … 12 of ISO 14635-1 (13, 14 extrapolate): anything else is an error naming the key and 12."""
     with pytest.raises(RatingError, match="load_stage.*12"):
         factors.fzg_torque(stage)
-    assert factors.fzg_torque(12) == 534.5 and factors.fzg_torque(1) == 3.3
+
+
+def test_fzg_torque_formula_and_the_test_table():
+    """T_1T = 3.726 S² lies within 0.9 % of the torques of ISO 14635-1, Table 2, from stage 6 on (exact at 10)."""
+    assert factors.fzg_torque(12) == pytest.approx(3.726 * 144)
+    for stage in range(6, 13):
+        assert factors.fzg_torque(stage) == pytest.approx(factors.FZG_TORQUES[stage - 1], rel=0.009)
+    assert factors.fzg_torque(10) == pytest.approx(372.6)
 
 
 def test_angle_factor_of_a_spur_pair():

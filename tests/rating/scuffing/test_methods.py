@@ -25,8 +25,9 @@ Justified differences (not widened tolerances):
   stages (ISO 14635-1): the report extrapolates.  Its θ_S = 451.98 °C is met exactly by
   80 + (0.85 + 1.4 X_W) X_L' 14² with X_L' = η_oil^-0.05 = 0.843 (the printed X_L) — so that
   formula is tested at 14; its θ_intS = 455.17 °C needs T_1T = 714.2 N·m in
-  80 + 0.23 T_1T + 1.5 · 0.2 T_1T (100/ν_40)^0.02, a torque the standard's table does not have
-  (stage 12: 534.5 N·m).  S_intS and S_SL are therefore checked with the printed θ_intS given.
+  80 + 0.23 T_1T + 1.5 · 0.2 T_1T (100/ν_40)^0.02, where T_1T = 3.726 S² gives 730.3 N·m (θ_intS
+  463.6 °C, 1.9 % above the print; the report's extrapolation of the torque is not known).
+  S_intS and S_SL are therefore checked with the printed θ_intS given.
 * **Flash temperature along the path**: the printed μ_m = 0.041 and θ_B,max = 169.50 °C are not
   reproduced (here μ_m = μ_mC = 0.0297, θ_B,max = 141.8 °C): the friction formula of
   ISO/TR 13989-1 was not reachable, and the ratio θ_fl,E/θ_flm = 2.49 of the report (independent of
@@ -134,10 +135,10 @@ def test_report_mean_flash_temperature_needs_the_pitch_sum_velocity():
 
 def test_report_scuffing_temperature_of_the_flash_method():
     """θ_S = 80 + (0.85 + 1.4 X_W) X_L η^-0.05 S_FZG² is the printed 451.98 °C at the report's stage 14."""
-    theta_s = 80.0 + (0.85 + 1.4) * 30.09 ** -0.05 * 14 ** 2
-    assert theta_s == pytest.approx(451.98, abs=0.005)
-    si = _input(load_stage=12)
-    assert si["theta_S"] == pytest.approx(80.0 + 2.25 * 30.09 ** -0.05 * 144)
+    with pytest.warns(RatingWarning, match="beyond the test's 12 stages"):
+        si = _input(load_stage=14)
+    assert si["theta_S"] == pytest.approx(451.98, abs=0.005)
+    assert _input(load_stage=12)["theta_S"] == pytest.approx(80.0 + 2.25 * 30.09 ** -0.05 * 144)
 
 
 def test_report_flash_relations():
@@ -151,14 +152,16 @@ def test_report_flash_relations():
 
 
 def test_integral_scuffing_temperature_from_the_load_stage():
-    """θ_intS = 80 + 0.23 T_1T X_L + X_WrelT 1.5 · 0.2 T_1T (100/ν_40)^0.02 X_L with T_1T of ISO 14635-1."""
+    """θ_intS = 80 + 0.23 T_1T X_L + X_WrelT 1.5 · 0.2 T_1T (100/ν_40)^0.02 X_L, T_1T = 3.726 S²."""
     si = _input(load_stage=12)
-    t = 534.5
-    assert si["T_1T"] == t
+    t = 3.726 * 144
+    assert si["T_1T"] == pytest.approx(t)
     assert si["theta_intS"] == pytest.approx(80 + 0.23 * t + 1.5 * 0.2 * t * (100 / 220) ** 0.02)
-    # the report's θ_intS at its "stage 14" needs a torque beyond the table
+    # the report's θ_intS at its "stage 14" is not this formula's (463.6 °C): it needs T_1T = 714.2 N·m
+    with pytest.warns(RatingWarning):
+        assert _input(load_stage=14)["theta_intS"] == pytest.approx(463.6, abs=0.05)
     implied = (455.17 - 80.0) / (0.23 + 0.3 * (100 / 220) ** 0.02)
-    assert implied == pytest.approx(714.2, abs=0.05) and implied > factors.FZG_TORQUES[-1]
+    assert implied == pytest.approx(714.2, abs=0.05) and implied != pytest.approx(3.726 * 196, rel=0.01)
 
 
 def test_flash_and_integral_share_the_geometry_factor():
@@ -184,14 +187,14 @@ def test_flash_temperature_closed_form_scaling():
     """θ_fl ∝ μ w_Bt^0.75 v^0.5 at fixed geometry (ISO/TS 6336-20; Blok)."""
     base = flash_temperature(SI, LOAD)
     double = flash_temperature(SI, ScuffingLoad(2 * F_T, V, 1.25, 1.0, K_V, 1.15, 1.069, 18.632, 2.0))
-    fast = flash_temperature(SI, ScuffingLoad(F_T, 3 * V, 1.25, 1.0, K_V, 1.15, 1.069, 18.632, 2.0))
+    fast = flash_temperature(SI, ScuffingLoad(F_T, 2 * V, 1.25, 1.0, K_V, 1.15, 1.069, 18.632, 2.0))  # 42 m/s
     hot = base["theta_fl"] > 0  # away from the pitch point, where θ_fl = 0
     ratio_mu = double["mu_m"] / base["mu_m"]
     assert ratio_mu == pytest.approx(2 ** 0.2)
     np.testing.assert_allclose(double["theta_fl"][hot] / base["theta_fl"][hot], ratio_mu * 2 ** 0.75, rtol=1e-12)
     mu_v = fast["mu_m"] / base["mu_m"]
-    assert mu_v == pytest.approx(3 ** -0.2)
-    np.testing.assert_allclose(fast["theta_fl"][hot] / base["theta_fl"][hot], mu_v * 3 ** 0.5, rtol=1e-12)
+    assert mu_v == pytest.approx(2 ** -0.2)
+    np.testing.assert_allclose(fast["theta_fl"][hot] / base["theta_fl"][hot], mu_v * 2 ** 0.5, rtol=1e-12)
 
 
 def test_vectorised_equals_per_case():

@@ -44,5 +44,5 @@ def test_below_the_minimum_is_marked_and_named():
 
 
 def test_a_bad_key_exits_2_naming_it():
-    result = runner.invoke(app, ["rate", EXAMPLE, "--set", "rating.scuffing.load_stage=14"])
+    result = runner.invoke(app, ["rate", EXAMPLE, "--set", "rating.scuffing.load_stage=15"])
     assert result.exit_code == 2 and "load_stage" in result.output

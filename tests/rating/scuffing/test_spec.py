@@ -27,11 +27,11 @@ def test_missing_required_key(missing, message):
 
 
 @pytest.mark.parametrize(("key", "value", "message"), [
-    ("load_stage", 13, "1 ... 12"), ("load_stage", 0, "1 ... 12"), ("oil_type", "castor", "oil_type must be one of"),
+    ("load_stage", 15, "1 ... 12"), ("load_stage", 0, "1 ... 12"), ("oil_type", "castor", "oil_type must be one of"),
     ("lubrication", "mist", "lubrication must be one of"), ("driving", "sun", "driving must be"),
     ("edition", "2030", "edition must be one of"), ("oil_temperature", float("nan"), "oil_temperature must be"),
     ("roughness_Ra", -0.1, "roughness_Ra must be"), ("S_Smin", 0.0, "S_Smin must be"),
-    ("scuffing_temperature", 50.0, "scuffing_temperature must be a number > 80"),
+    ("scuffing_temperature", 50.0, "scuffing_temperature must be a number > 80"), ("run_in", 1.5, "run_in must be"),
 ])
 def test_bad_values(key, value, message):
     with pytest.raises(RatingError, match=message):
@@ -58,6 +58,6 @@ def test_the_toml_table():
     with pytest.raises(InputFileError, match=r"rating.scuffing.*colour"):
         loads_train_file(text.replace("load_stage = 12", "load_stage = 12\ncolour = 1"), EXAMPLE)
     with pytest.raises(EpicyclicError, match=r"helical_stage_scuffing.toml: \[rating.scuffing\].*load_stage"):
-        loads_train_file(text.replace("load_stage = 12", "load_stage = 14"), EXAMPLE)
+        loads_train_file(text.replace("load_stage = 12", "load_stage = 15"), EXAMPLE)
     with pytest.raises(EpicyclicError, match=r"oil_temperature is missing"):
         loads_train_file(text.replace("oil_temperature = 80.0", ""), EXAMPLE)

@@ -10,10 +10,12 @@
   integral temperature method (ISO/TS 6336-21:2017; ISO/TR 13989-2:2000):
 
     θ_flaE   = μ_mC X_M X_BE X_αβ (K_Bγ w_Bt)^0.75 v^0.5 / a^0.25 · X_E / (X_Q X_Ca)
+    (X_E = 1 + (1 − φ_E) 30 R_a/ρ_redC; X_Ca = 1 for accuracy grades coarser than 6; μ_mC with
+    w_Bt ≥ 150 N/mm and v ≤ 50 m/s)
     θ_flaint = θ_flaE X_ε,   θ_M = θ_oil + C_1 X_mp θ_flaint,   θ_int = θ_M + C_2 θ_flaint
     (C_1 = 0.7, C_2 = 1.5; θ_M with X_S as well)
     θ_intS   = θ_MT + X_WrelT C_2 θ_flaintT,  θ_MT = 80 + 0.23 T_1T X_L,
-               θ_flaintT = 0.2 T_1T (100/ν_40)^0.02 X_L   (T_1T of the FZG load stage)
+               θ_flaintT = 0.2 T_1T (100/ν_40)^0.02 X_L   (T_1T = 3.726 S_FZG², the FZG load stage)
     S_intS   = θ_intS / θ_int,   S_SL = (θ_intS − θ_oil) / (θ_int − θ_oil)
 
   flash temperature method (ISO/TS 6336-20:2017; ISO/TR 13989-1:2000), along the path Γ_A … Γ_E:
@@ -48,12 +50,16 @@ from ..errors import RatingError, warn_validity
 from . import factors
 from .spec import LUBRICATION_FACTORS, ScuffingSpec
 
-__all__ = ["C_1", "C_2", "ScuffingInput", "ScuffingLoad", "flash_temperature", "integral_temperature"]
+__all__ = ["C_1", "C_2", "FRICTION_LOAD_FLOOR", "FRICTION_SPEED_LIMIT", "ScuffingInput", "ScuffingLoad", "flash_temperature", "integral_temperature"]
 
 #: Weighting factors of the integral temperature method (ISO/TS 6336-21:2017).
 C_1, C_2 = 0.7, 1.5
 #: Weight of the mean flash temperature in the bulk temperature of the flash method.
 C_FLASH = 0.47
+#: The friction formula's range: w_Bt below 150 N/mm is taken as 150, v above 50 m/s as 50 (ISO/TR 13989-2, 5.1).
+FRICTION_LOAD_FLOOR, FRICTION_SPEED_LIMIT = 150.0, 50.0
+#: Tip relief is credited in X_Ca for ISO 1328 accuracy grades up to this one (ISO/TR 13989-2, X_Ca).
+TIP_RELIEF_GRADE = 6
 
 
 @dataclass(frozen=True)
@@ -153,6 +159,9 @@ class ScuffingInput:
             x_q = factors.approach_factor(eps_1, eps_2)
         x_l = factors.LUBRICANT_FACTORS[s.oil_type]
         flash_clause, integral_clause = s.clauses
+        if s.load_stage is not None and s.load_stage > 12:
+            warn_validity(f"FZG A/8.3/90 load stage {s.load_stage} lies beyond the test's 12 stages (ISO 14635-1): "
+                          "θ_S and θ_intS are extrapolated from the formulas of the test", integral_clause)
         if s.integral_scuffing_temperature is not None:
             theta_ints = s.integral_scuffing_temperature
             t_1t = None
@@ -171,12 +180,13 @@ class ScuffingInput:
         if theta_s <= s.oil_temperature:
             warn_validity(f"the scuffing temperature θ_S = {theta_s:.1f} °C is not above the oil temperature "
                           f"{s.oil_temperature:g} °C: the oil scuffs at any load (S_B = 0)", flash_clause)
+        rho_c = factors.pitch_point_radius(u, a, p.alpha_wt, p.beta_b, p.internal)
         object.__setattr__(self, "derived", {
-            "u": u, "a": a, "eps_1": eps_1, "eps_2": eps_2, "eps_gamma": eps_gamma, "X_alphabeta": x_ab,
+            "X_E": 1.0 + (1.0 - s.run_in) * 30.0 * self.roughness / rho_c, "u": u, "a": a, "eps_1": eps_1, "eps_2": eps_2, "eps_gamma": eps_gamma, "X_alphabeta": x_ab,
             "X_BE": factors.geometry_factor(p.points["E"], u, p.internal),
             "X_epsilon": factors.contact_ratio_factor(eps_1, eps_2, integral_clause),
             "K_Bgamma": factors.helical_load_factor(eps_gamma),
-            "rho_redC": factors.pitch_point_radius(u, a, p.alpha_wt, p.beta_b, p.internal),
+            "rho_redC": rho_c,
             "X_Q": x_q, "X_L": x_l, "X_L_flash": x_l_flash, "X_S": LUBRICATION_FACTORS[s.lubrication],
             "T_1T": t_1t, "theta_intS": theta_ints, "theta_S": theta_s, "gamma": gam,
             "X_G": x_ab * factors.geometry_factor(gam, u, p.internal), "X_Gamma": p.load_sharing(gam),
@@ -187,10 +197,13 @@ class ScuffingInput:
 
 
 def _friction(si: ScuffingInput, load: ScuffingLoad, w_bt) -> np.ndarray:
+    """μ_mC with the friction formula's range: w_Bt at least 150 N/mm, v at most 50 m/s."""
     d, p = si.derived, si.path
+    v = np.minimum(np.asarray(load.velocity, dtype=float), FRICTION_SPEED_LIMIT)
     # v_ΣC = 2 ω1 ρ_C1 = 2 v_w sin α_wt: the sum velocity at the pitch point (v_w at the operating pitch circle)
-    v_sum = 2.0 * np.asarray(load.velocity, dtype=float) * math.tan(p.alpha_wt) * math.cos(p.alpha_t)
-    return factors.mean_friction(w_bt * d["K_Bgamma"], v_sum, d["rho_redC"], si.viscosity, si.roughness, d["X_L"])
+    v_sum = 2.0 * v * math.tan(p.alpha_wt) * math.cos(p.alpha_t)
+    w = np.maximum(np.asarray(w_bt, dtype=float), FRICTION_LOAD_FLOOR)
+    return factors.mean_friction(w * d["K_Bgamma"], v_sum, d["rho_redC"], si.viscosity, si.roughness, d["X_L"])
 
 
 def _safety(limit, value, base):
@@ -226,10 +239,11 @@ def integral_temperature(si: ScuffingInput, load: ScuffingLoad) -> dict[str, obj
     mu = _friction(si, load, w_bt)
     c_eff = factors.effective_tip_relief(np.asarray(load.K_A, dtype=float), load.tangential_force, b,
                                          load.mesh_stiffness)
-    x_ca = factors.tip_relief_factor(load.tip_relief, c_eff, max(d["eps_1"], d["eps_2"]))
+    x_ca = (factors.tip_relief_factor(load.tip_relief, c_eff, max(d["eps_1"], d["eps_2"]))
+            if p.accuracy_grade <= TIP_RELIEF_GRADE else np.ones(np.shape(c_eff)))
     v = np.asarray(load.velocity, dtype=float)
     theta_flae = (mu * si.thermo_elastic * d["X_BE"] * d["X_alphabeta"] * (d["K_Bgamma"] * w_bt) ** 0.75
-                  * np.sqrt(v) / d["a"] ** 0.25 * s.running_in_factor / (d["X_Q"] * x_ca))
+                  * np.sqrt(v) / d["a"] ** 0.25 * d["X_E"] / (d["X_Q"] * x_ca))
     theta_flaint = theta_flae * d["X_epsilon"]
     theta_m = s.oil_temperature + C_1 * d["X_S"] * si.multiple_meshing * theta_flaint
     theta_int = theta_m + C_2 * theta_flaint

@@ -128,8 +128,9 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
     """
     s, d, p = si.spec, si.derived, si.path
     fl, it = s.clauses
+    stiffness = rating["c_gamma_alpha"] if p.eps_beta > 0 else rating["c_prime"]  # C_eff: c_γ helical, c' spur
     load = ScuffingLoad(rating["F_t"], rating["v"], rating["K_A"], rating["K_gamma"], rating["K_v"],
-                        rating["K_Hbeta"], rating["K_Halpha"], rating["c_gamma_alpha"], float(rating["C_a"]))
+                        rating["K_Hbeta"], rating["K_Halpha"], stiffness, float(rating["C_a"]))
     r = integral_temperature(si, load)
     f = flash_temperature(si, load)
     t_1t = d["T_1T"]
@@ -145,10 +146,10 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
         _factor("epsilon_1", d["eps_1"], "1", it, "addendum contact ratio of gear 1"),
         _factor("epsilon_2", d["eps_2"], "1", it, "addendum contact ratio of gear 2"),
         _factor("X_epsilon", d["X_epsilon"], "1", it, "contact ratio factor"),
-        _factor("C_eff", r["C_eff"], "µm", it, "effective tip relief K_A F_t/(b c_gamma_alpha)"),
+        _factor("C_eff", r["C_eff"], "µm", it, "effective tip relief K_A F_t/(b c_gamma) (c' of a spur pair)"),
         _factor("C_a", load.tip_relief, "µm", it, "tip relief (as in K_v)"),
         _factor("X_Ca", r["X_Ca"], "1", it, "tip relief factor"),
-        _factor("X_E", s.running_in_factor, "1", it, "running-in factor (given)"),
+        _factor("X_E", d["X_E"], "1", it, f"running-in factor (phi_E = {s.run_in:g})"),
         _factor("X_Q", d["X_Q"], "1", it, "approach factor" + ("" if s.driving else " (no driving gear given: 1)")),
         _factor("rho_redC", d["rho_redC"], "mm", it, "relative radius of curvature at the pitch point"),
         _factor("eta_oil", si.viscosity, "mPa·s", it, f"dynamic viscosity at {s.oil_temperature:g} °C"),
@@ -189,6 +190,10 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
             "X_Gamma of unmodified profiles (ISO/TS 6336-20 load sharing without designed tip relief)"]
     if not s.driving:
         base.append("no driving gear given: X_Q = 1 (on the safe side)")
+    if np.any(np.asarray(load.velocity) > 50.0) or np.any(np.asarray(r["w_Bt"]) < 150.0):
+        base.append("mu_mC evaluated at w_Bt >= 150 N/mm and v <= 50 m/s, the friction formula's range")
+    if p.accuracy_grade > 6:
+        base.append(f"accuracy grade {p.accuracy_grade} coarser than 6: no tip relief credited (X_Ca = 1)")
     if np.any(load.tip_relief > np.asarray(r["C_eff"])):
         base.append(f"C_a = {load.tip_relief:g} µm above C_eff (down to {_low(r['C_eff']):.3g} µm): X_Ca with "
                     "C_a = C_eff, as the standard limits it")

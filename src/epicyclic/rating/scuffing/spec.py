@@ -3,7 +3,7 @@
 ======================  ==========================  =============================================
 key                     default                     meaning
 ======================  ==========================  =============================================
-load_stage              required (or a temperature) FZG A/8.3/90 failure load stage of the oil (1 … 12)
+load_stage              required (or a temperature) FZG A/8.3/90 failure load stage of the oil (1 … 12; 13, 14)
 oil_temperature         required                    θ_oil, °C (sump or injection temperature)
 roughness_Ra            required                    R_a of the flanks, µm (one, or per gear)
 oil_type                ``"mineral"``               X_L (ISO/TR 13989-2, Table 1)
@@ -11,7 +11,7 @@ oil_density             880                         kg/m³ at 15 °C (η = ρ ν
 lubrication             ``"dip"``                   X_S: dip 1.0, spray 1.2, immersed 0.2
 structural_factor       1.0                         X_W (X_WrelT = X_W / X_WT, X_WT = 1 for the test gears)
 contact_coefficient     13.78                       B_M of steel, N/(mm s^½ K)
-running_in_factor       1.0                         X_E (1: well run in)
+run_in                  1.0                         φ_E of X_E = 1 + (1 − φ_E) 30 R_a/ρ_redC (1 run in, 0 new)
 driving                 none                        ``"gear1"``/``"gear2"`` for X_Q; without, X_Q = 1 (safe side)
 multiple_meshing        from the set                X_mp = (1 + n_p)/2, n_p the meshes of the busiest gear
 S_Smin / S_Bmin         1.8 / 2.0                   minimum safeties (integral / flash); to be agreed
@@ -39,7 +39,7 @@ from types import MappingProxyType
 from typing import Any
 
 from ..errors import RatingError
-from .factors import LUBRICANT_FACTORS
+from .factors import LUBRICANT_FACTORS, MAX_LOAD_STAGE
 
 __all__ = ["EDITIONS", "LUBRICATION_FACTORS", "ScuffingSpec"]
 
@@ -78,7 +78,8 @@ class ScuffingSpec:
     lubrication : str, default "dip"
     structural_factor : float, default 1.0
     contact_coefficient : float, default 13.78
-    running_in_factor : float, default 1.0
+    run_in : float, default 1.0
+        φ_E, the running-in state of the flanks (1 well run in, 0 new) for X_E.
     driving : str, optional
         ``"gear1"`` or ``"gear2"``: which gear of each mesh drives (for X_Q).
     multiple_meshing : float, optional
@@ -106,7 +107,7 @@ class ScuffingSpec:
     lubrication: str = "dip"
     structural_factor: float = 1.0
     contact_coefficient: float = 13.78
-    running_in_factor: float = 1.0
+    run_in: float = 1.0
     driving: str | None = None
     multiple_meshing: float | None = None
     S_Smin: float = 1.8
@@ -131,10 +132,10 @@ class ScuffingSpec:
             object.__setattr__(self, "roughness_Ra", _number(ra, "roughness_Ra"))
         if self.load_stage is not None:
             s = self.load_stage
-            if isinstance(s, bool) or not isinstance(s, int) or not 1 <= s <= 12:
+            if isinstance(s, bool) or not isinstance(s, int) or not 1 <= s <= MAX_LOAD_STAGE:
                 raise RatingError(f"rating.scuffing.load_stage must be a whole FZG A/8.3/90 load stage 1 ... 12 "
-                                  f"(ISO 14635-1), got {s!r}; an oil that passes stage 12 is rated with 12 (on the "
-                                  "safe side), or give the scuffing temperatures of its own test.")
+                                  f"(ISO 14635-1; 13 and 14 extrapolate), got {s!r}; an oil that passes stage 12 is "
+                                  "rated with 12 (on the safe side), or give the scuffing temperatures of its own test.")
         elif self.integral_scuffing_temperature is None or self.scuffing_temperature is None:
             raise RatingError("rating.scuffing.load_stage is missing (the oil's FZG A/8.3/90 failure load stage, "
                               "ISO 14635-1, from its data sheet); give it - e.g. load_stage = 12 - or both "
@@ -156,8 +157,13 @@ class ScuffingSpec:
             raise RatingError(f"rating.scuffing.edition must be one of {', '.join(EDITIONS)}, got {self.edition!r}.")
         object.__setattr__(self, "edition", str(self.edition))
         object.__setattr__(self, "oil_density", _number(self.oil_density, "oil_density", 500.0, 2000.0))
-        for key, high in (("structural_factor", 3.0), ("contact_coefficient", 100.0), ("running_in_factor", 10.0),
-                          ("S_Smin", 100.0), ("S_Bmin", 100.0)):
+        run_in = self.run_in
+        if isinstance(run_in, bool) or not isinstance(run_in, (int, float)) or not 0.0 <= run_in <= 1.0:
+            raise RatingError(f"rating.scuffing.run_in must be a number 0 ... 1 (φ_E: 1 well run in, 0 new flanks), "
+                              f"got {run_in!r}; the default is 1.")
+        object.__setattr__(self, "run_in", float(run_in))
+        for key, high in (("structural_factor", 3.0), ("contact_coefficient", 100.0), ("S_Smin", 100.0),
+                          ("S_Bmin", 100.0)):
             object.__setattr__(self, key, _number(getattr(self, key), key, 0.0, high))
         if self.multiple_meshing is not None:
             object.__setattr__(self, "multiple_meshing", _number(self.multiple_meshing, "multiple_meshing", 0.0, 10.0))
@@ -197,7 +203,7 @@ class ScuffingSpec:
         return {"oil_temperature": self.oil_temperature, "roughness_Ra": dict(ra) if isinstance(ra, Mapping) else ra,
                 "load_stage": self.load_stage, "oil_type": self.oil_type, "oil_density": self.oil_density,
                 "lubrication": self.lubrication, "structural_factor": self.structural_factor,
-                "contact_coefficient": self.contact_coefficient, "running_in_factor": self.running_in_factor,
+                "contact_coefficient": self.contact_coefficient, "run_in": self.run_in,
                 "driving": self.driving, "multiple_meshing": self.multiple_meshing, "S_Smin": self.S_Smin,
                 "S_Bmin": self.S_Bmin, "edition": self.edition,
                 "integral_scuffing_temperature": self.integral_scuffing_temperature,
