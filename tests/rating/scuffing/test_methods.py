@@ -184,17 +184,32 @@ def test_geometry_factor_is_blok_at_the_point():
 
 
 def test_flash_temperature_closed_form_scaling():
-    """θ_fl ∝ μ w_Bt^0.75 v^0.5 at fixed geometry (ISO/TS 6336-20; Blok)."""
-    base = flash_temperature(SI, LOAD)
-    double = flash_temperature(SI, ScuffingLoad(2 * F_T, V, 1.25, 1.0, K_V, 1.15, 1.069, 18.632, 2.0))
-    fast = flash_temperature(SI, ScuffingLoad(F_T, 2 * V, 1.25, 1.0, K_V, 1.15, 1.069, 18.632, 2.0))  # 42 m/s
-    hot = base["theta_fl"] > 0  # away from the pitch point, where θ_fl = 0
+    """θ_fl ∝ μ w_Bt^0.75 v^0.5 at fixed geometry (ISO/TS 6336-20; Blok), in the recess where X_J = 1."""
+    si = _input(driving="gear1", integral_scuffing_temperature=455.17, scuffing_temperature=451.98)
+    base = flash_temperature(si, LOAD)
+    double = flash_temperature(si, ScuffingLoad(2 * F_T, V, 1.25, 1.0, K_V, 1.15, 1.069, 18.632, 2.0))
+    fast = flash_temperature(si, ScuffingLoad(F_T, 2 * V, 1.25, 1.0, K_V, 1.15, 1.069, 18.632, 2.0))  # 42 m/s
+    hot = si["gamma"] > 0  # the recess of a driving pinion (X_J = 1), away from the pitch point (θ_fl = 0)
     ratio_mu = double["mu_m"] / base["mu_m"]
     assert ratio_mu == pytest.approx(2 ** 0.2)
     np.testing.assert_allclose(double["theta_fl"][hot] / base["theta_fl"][hot], ratio_mu * 2 ** 0.75, rtol=1e-12)
     mu_v = fast["mu_m"] / base["mu_m"]
     assert mu_v == pytest.approx(2 ** -0.2)
     np.testing.assert_allclose(fast["theta_fl"][hot] / base["theta_fl"][hot], mu_v * 2 ** 0.5, rtol=1e-12)
+
+
+def test_approach_factor():
+    """X_J = 1 + (C_eff − C_a)/50 (|Γ|/(Γ_E − Γ_A))³ in the approach only; at E (the report's maximum) 1."""
+    from epicyclic.rating.scuffing.methods import approach_factor_path
+
+    gam = SI["gamma"]
+    span = gam[-1] - gam[0]
+    x_j = approach_factor_path(gam, 44.74, 2.0, "gear1")
+    assert x_j[0] == pytest.approx(1 + 42.74 / 50 * (abs(gam[0]) / span) ** 3) and x_j[-1] == 1.0
+    assert np.all(x_j[gam >= 0] == 1.0) and np.all(x_j[gam < 0] > 1.0)
+    both = approach_factor_path(gam, 44.74, 2.0, None)
+    assert both[-1] == pytest.approx(1 + 42.74 / 50 * (gam[-1] / span) ** 3) and both[0] == x_j[0]
+    assert np.all(approach_factor_path(gam, 30.0, 40.0, None) == 1.0)  # C_a ≥ C_eff: no rise
 
 
 def test_vectorised_equals_per_case():

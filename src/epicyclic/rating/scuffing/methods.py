@@ -20,7 +20,8 @@
 
   flash temperature method (ISO/TS 6336-20:2017; ISO/TR 13989-1:2000), along the path Γ_A … Γ_E:
 
-    θ_fl(Γ) = μ_m X_M X_J X_G(Γ) (X_Γ w_Bt)^0.75 v^0.5 / a^0.25,  X_G = X_αβ X_BE(Γ)
+    θ_fl(Γ) = μ_m X_M X_J X_G(Γ) (X_Γ w_Bt)^0.75 v^0.5 / a^0.25,  X_G = X_αβ X_BE(Γ),
+    X_J = 1 + (C_eff − C_a)/50 (|Γ|/(Γ_E − Γ_A))³ in the approach (the driven gear's tip), else 1
     θ_M     = θ_oil + 0.47 X_S X_mp θ_flm   (θ_flm the mean of θ_fl over the path)
     θ_B     = θ_M + θ_fl,   θ_S = 80 + (0.85 + 1.4 X_W) X_L' S_FZG²,  X_L' = X_L η_oil^-0.05
     S_B     = (θ_S − θ_oil) / (θ_B,max − θ_oil)
@@ -50,7 +51,7 @@ from ..errors import RatingError, warn_validity
 from . import factors
 from .spec import LUBRICATION_FACTORS, ScuffingSpec
 
-__all__ = ["C_1", "C_2", "FRICTION_LOAD_FLOOR", "FRICTION_SPEED_LIMIT", "ScuffingInput", "ScuffingLoad", "flash_temperature", "integral_temperature"]
+__all__ = ["C_1", "C_2", "FRICTION_LOAD_FLOOR", "FRICTION_SPEED_LIMIT", "approach_factor_path", "ScuffingInput", "ScuffingLoad", "flash_temperature", "integral_temperature"]
 
 #: Weighting factors of the integral temperature method (ISO/TS 6336-21:2017).
 C_1, C_2 = 0.7, 1.5
@@ -254,6 +255,41 @@ def integral_temperature(si: ScuffingInput, load: ScuffingLoad) -> dict[str, obj
             "S_SL": _safety(d["theta_intS"], theta_int, s.oil_temperature)}
 
 
+def approach_factor_path(gamma, effective, tip_relief: float, driving: str | None):
+    """X_J along the path: 1 + (C_eff − C_a)/50 · (|Γ|/(Γ_E − Γ_A))³ where the driven gear's tip enters, ≥ 1.
+
+    The driven gear's tip meets the driving flank in the approach: Γ < 0 when gear 1 drives, Γ > 0
+    when gear 2 does; without ``driving`` both ends (on the safe side).
+
+    Parameters
+    ----------
+    gamma : ndarray
+        Γ of the points, from Γ_A to Γ_E.
+    effective : float or ndarray
+        C_eff, µm (one per load case, broadcast against ``gamma``).
+    tip_relief : float
+        C_a, µm.
+    driving : {"gear1", "gear2", None}
+
+    Returns
+    -------
+    ndarray
+
+    References
+    ----------
+    ISO/TR 13989-1:2000 and ISO/TS 6336-20:2017 (approach factor X_J); DIN 3990-4:1987.
+    """
+    gam = np.asarray(gamma, dtype=float)
+    span = gam[-1] - gam[0]
+    rise = np.maximum(np.asarray(effective, dtype=float) - tip_relief, 0.0) / 50.0
+    approach = np.zeros(gam.shape, dtype=bool)
+    if driving in ("gear1", None):
+        approach |= gam < 0.0
+    if driving in ("gear2", None):
+        approach |= gam > 0.0
+    return np.where(approach, 1.0 + rise * (np.abs(gam) / span) ** 3, 1.0)
+
+
 def flash_temperature(si: ScuffingInput, load: ScuffingLoad) -> dict[str, object]:
     """θ_fl along the path, θ_flm, θ_M, θ_B and its maximum, S_B (numbers or arrays).
 
@@ -279,13 +315,17 @@ def flash_temperature(si: ScuffingInput, load: ScuffingLoad) -> dict[str, object
     gam, x_g, x_gam = d["gamma"], d["X_G"], d["X_Gamma"]
     scale = mu * si.thermo_elastic * np.sqrt(np.asarray(load.velocity, dtype=float)) / d["a"] ** 0.25
     w = np.asarray(w_bt, dtype=float)[..., None]
-    theta_fl = np.asarray(scale, dtype=float)[..., None] * x_g * (x_gam * w) ** 0.75
+    c_eff = factors.effective_tip_relief(np.asarray(load.K_A, dtype=float), load.tangential_force, p.face_width,
+                                         load.mesh_stiffness)
+    x_j = approach_factor_path(gam, np.asarray(c_eff, dtype=float)[..., None], load.tip_relief, s.driving)
+    theta_fl = np.asarray(scale, dtype=float)[..., None] * x_j * x_g * (x_gam * w) ** 0.75
     theta_flm = np.trapezoid(theta_fl, gam, axis=-1) / (gam[-1] - gam[0])
     theta_m = s.oil_temperature + C_FLASH * d["X_S"] * si.multiple_meshing * theta_flm
     theta_b = theta_m[..., None] + theta_fl
     k = np.argmax(theta_b, axis=-1)
     theta_bmax = np.take_along_axis(theta_b, np.asarray(k)[..., None], axis=-1)[..., 0]
-    out = {"w_Bt": w_bt, "mu_m": mu, "theta_fl": theta_fl, "theta_flm": theta_flm, "theta_M": theta_m,
+    x_j_max = np.take_along_axis(np.broadcast_to(x_j, theta_b.shape), np.asarray(k)[..., None], axis=-1)[..., 0]
+    out = {"w_Bt": w_bt, "mu_m": mu, "X_J_max": x_j_max, "theta_fl": theta_fl, "theta_flm": theta_flm, "theta_M": theta_m,
            "theta_B": theta_b, "theta_Bmax": theta_bmax, "gamma_max": gam[k], "X_Gamma_max": x_gam[k],
            "S_B": _safety(d["theta_S"], theta_bmax, s.oil_temperature)}
     return {key: (float(v) if isinstance(v, np.ndarray) and v.ndim == 0 else v) for key, v in out.items()}

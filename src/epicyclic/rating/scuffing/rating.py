@@ -8,8 +8,8 @@ K_Hβ = K_Bβ, K_Hα = K_Bα, c_γα, C_a: the same factors, per load case) and 
 :func:`rate_train_scuffing` does so for every mesh of a :class:`~epicyclic.rating.results.TrainRating`.
 
 Defaults taken (and said in the notes): gear 1 of the mesh in the role of the pinion (the planet of
-a ring mesh); X_J = 1 (approach factor); X_Q = 1 without ``driving``; the multiple meshing factor
-X_mp = (1 + n_p)/2 with n_p the meshes of the busiest gear of the mesh (a sun or ring with N
+a ring mesh); without ``driving`` X_Q = 1 and the approach factor X_J at both ends of the path; the
+multiple meshing factor X_mp = (1 + n_p)/2 with n_p the meshes of the busiest gear of the mesh (a sun or ring with N
 planets: N, a planet between sun and ring: 2); the load sharing X_Γ of unmodified profiles.
 
 References
@@ -172,7 +172,7 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
     ]
     flash = [
         _factor("mu_m", f["mu_m"], "1", fl, "mean coefficient of friction (as mu_mC)"),
-        _factor("X_J", 1.0, "1", fl, "approach factor (taken as 1)"),
+        _factor("X_J", f["X_J_max"], "1", fl, "approach factor at the highest contact temperature"),
         _factor("theta_flm", f["theta_flm"], "K", fl, "mean flash temperature along the path"),
         _factor("theta_M", f["theta_M"], "°C", fl, f"bulk temperature theta_oil + {C_FLASH} X_S X_mp theta_flm"),
         _factor("theta_flmax", np.max(f["theta_fl"], axis=-1), "K", fl, "highest flash temperature"),
@@ -186,10 +186,10 @@ def rate_scuffing(si: ScuffingInput, rating: MeshRating, *, element: str = "", g
         _factor("S_B", f["S_B"], "1", fl, "safety factor for scuffing (flash temperature)"),
     ]
     path = {"gamma": d["gamma"], "X_Gamma": d["X_Gamma"], "theta_fl": f["theta_fl"], "theta_B": f["theta_B"]}
-    base = ["X_J = 1 (approach factor)", "mu_m of the flash method = mu_mC (the integral method's)",
+    base = ["mu_m of the flash method = mu_mC (the integral method's)",
             "X_Gamma of unmodified profiles (ISO/TS 6336-20 load sharing without designed tip relief)"]
     if not s.driving:
-        base.append("no driving gear given: X_Q = 1 (on the safe side)")
+        base.append("no driving gear given: X_Q = 1 and X_J at both ends of the path (on the safe side)")
     if np.any(np.asarray(load.velocity) > 50.0) or np.any(np.asarray(r["w_Bt"]) < 150.0):
         base.append("mu_mC evaluated at w_Bt >= 150 N/mm and v <= 50 m/s, the friction formula's range")
     if p.accuracy_grade > 6:
