@@ -202,7 +202,7 @@ class ContactPath:
             raise RatingError(f"contact path of {name}: the tip of gear 2 reaches below the base circle of gear 1 "
                               f"(ρ_A = {rho_a:.4f} mm): the teeth interfere; raise x1 or shorten gear 2's tips.")
         p_bt = math.pi * g1.base_diameter / g1.teeth
-        eps_a = (rho_e - rho_a) / p_bt
+        eps_a = mesh.contact_ratio  # = (ρ_E − ρ_A)/p_bt, ISO 21771
         if eps_a < 1.0:
             raise RatingError(f"contact path of {name}: transverse contact ratio ε_α = {eps_a:.4f} < 1, the mesh "
                               "cannot run; lengthen the tips or change the profile shifts.")
