@@ -47,7 +47,7 @@ def _progress(quiet: bool, rows: int):
 
 @guarded
 def cycle(
-    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a \\[transmission] table and losses.")],
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table and losses.")],
     cycle_file: Annotated[Path, typer.Option("--cycle", help="The drive cycle, CSV (docs/drive-cycles.md).")],
     mass: Annotated[Optional[float], typer.Option("--mass", help="Vehicle mass, kg (road load).")] = None,
     wheel_radius: Annotated[Optional[float], typer.Option("--wheel-radius", help="Dynamic wheel radius, m.")] = None,
