@@ -80,8 +80,15 @@ def gears(
     point = input_point(transmission.input, spec.operating_point, speed=speed, torque=torque, units=spec.units)
     try:
         analysis = transmission.analyze_all(point=point)
-    except EpicyclicError as exc:  # name the gear
-        raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission, point)}'!r}") from None
+    except EpicyclicError as exc:  # name the gear, and the option that set the point where one did
+        gear = _failing_gear(transmission, point)
+        options = [o for o, source in (("--speed", point.speed_source), ("--torque", point.torque_source))
+                   if source == o]
+        if options:
+            from .options import OptionError
+
+            raise OptionError(" and ".join(options), f"in gear {gear} at {point.describe()}: {exc}") from None
+        raise located(exc, str(file), f"[transmission], key {f'schedule.{gear}'!r}") from None
     check_finite(analysis.to_dict(), file)
     if format is OutputFormat.html:
         emit(_gears_html(file, spec, transmission, analysis), out)
