@@ -147,6 +147,28 @@ def test_help_everywhere(command):
     assert result.exit_code == 0 and "Usage" in result.stdout
 
 
+def _commands():
+    import typer.main
+
+    group = typer.main.get_command(app)
+    return sorted(group.commands.items())
+
+
+@pytest.mark.parametrize("name, command", _commands(), ids=lambda v: v if isinstance(v, str) else "")
+def test_help_prints_every_table_name_as_written(name, command):
+    # Issue 30: rich markup read "[rating]" as a style tag, so `rate --help` said "with  and geometry tables".
+    import re
+
+    texts = [command.help or ""] + [getattr(p, "help", None) or "" for p in command.params]
+    named = {m for text in texts for m in re.findall(r"\[[a-z_.]+\]", text)}
+    result = run(name, "--help")
+    assert result.exit_code == 0, result.output
+    shown = " ".join(result.stdout.split())
+    missing = sorted(t for t in named if t not in shown)
+    assert not missing, f"{name} --help drops {missing}"
+    assert "\\[" not in shown
+
+
 def test_shell_completion_is_offered():
     assert "--install-completion" in run("--help").stdout
 

@@ -60,11 +60,27 @@ def test_hostile_cycle_files_are_exit_2(tmp_path, text, says):
     (["-o", "x.png"], "--out"),
     (["--gear-rule", "best", "--schedule", str(EXAMPLES / "schedules" / "zf_8hp70_upshift.csv")],
      "--schedule is read by --gear-rule schedule only"),
-    (["--min-dwell", "nan"], "min_dwell"),
-    (["--mass", "-3"], "mass"),
+    # issue 30: the vehicle and gear-rule options named the train file and a field ("mass"), not the option
+    (["--min-dwell", "nan"], "error: --min-dwell must be a finite number"),
+    (["--hysteresis", "-1"], "error: --hysteresis must be"),
+    (["--mass", "-3"], "error: --mass (kg) must be a number in (0, 1e+06]"),
+    (["--mass", "3 parsec"], "error: --mass: unknown mass unit 'parsec'"),
+    (["--axle-ratio", "0"], "error: --axle-ratio must be a number in [0.1, 50]"),
+    (["--air-density", "-1 kg/m^3"], "error: --air-density (kg/m^3) must be"),
 ])
 def test_bad_options_are_exit_2(args, says):
     result = runner.invoke(app, ["cycle", FILE, "--cycle", WLTC, *args] if "--wheel-radius" in args
                            else ["cycle", FILE, "--cycle", WLTC, *CAR, *args])
     assert result.exit_code == 2, result.output
     assert says in " ".join(result.output.split())
+    if says.startswith("error: --"):
+        assert FILE not in result.output  # an option's value, not the train file
+
+
+def test_vehicle_options_take_units():
+    # issue 30: `cycle --mass "1800 kg"` was refused as "not a valid float"; every quantity option takes units
+    plain = runner.invoke(app, ["cycle", FILE, "--cycle", WLTC, *CAR, "-q", "-f", "json"])
+    units = runner.invoke(app, ["cycle", FILE, "--cycle", WLTC, "--mass", "1.8 t", "--wheel-radius", "330 mm",
+                                "--axle-ratio", "2.8", "--drag-area", "0.7 m^2", "-q", "-f", "json"])
+    assert plain.exit_code == 0 and units.exit_code == 0, units.output
+    assert json.loads(units.stdout) == json.loads(plain.stdout)

@@ -45,3 +45,16 @@ def test_gears_without_transmission_table_is_bad_input():
     result = runner.invoke(app, ["gears", str(EXAMPLES / "toyota_prius_power_split.toml")])
     assert result.exit_code == 2
     assert "no [transmission] table" in " ".join(result.output.split())
+
+
+def test_a_point_given_by_an_option_that_no_gear_carries_names_the_option():
+    # issue 30: `gears --torque 1e12` blamed "[transmission], key 'schedule.1'" of the file, not the option
+    from typer.testing import CliRunner
+
+    from epicyclic.cli.main import app
+
+    result = CliRunner().invoke(app, ["gears", "examples/zf_8hp70_geometry.toml", "--torque", "1e12"])
+    assert result.exit_code == 2, result.output
+    text = " ".join(result.output.split())
+    assert text.startswith("error: --torque: in gear 1 at input") and "1e+12 N*m (from --torque)" in text
+    assert "schedule.1" not in text

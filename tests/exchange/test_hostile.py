@@ -232,3 +232,50 @@ def test_a_ring_gear_in_the_casing_is_held():
     f = read_document(loads_rexs_document(casing_ring, "casing.rexs"))
     assert f.train.elements[0].ring == "housing"
     assert f.solve().speed("carrier") == pytest.approx(3000 / 3.6)
+
+
+def test_a_relation_to_a_deleted_planetary_stage_is_an_error():
+    # issue 30: with the planetary_stage component deleted and its relations left, convert exited 0 and
+    # read the planets as fixed-axis [[gear]] stages: a different train.
+    bad = stage().replace(b' <component id="1" type="planetary_stage" name="P"/>\n', b"")
+    with pytest.raises(InputFileError, match=r"relation 1 \(central_shaft\), role 'planetary_stage' names component "
+                                             r"1, which the file does not have"):
+        loads_rexs_document(bad, "deleted.rexs")
+
+
+def test_a_control_character_in_the_version_converts_to_toml(tmp_path):
+    # issue 30: <model version="banana\x7f"> made `convert -o out.toml` fail with tomlkit's
+    # "Comment cannot contain control character" (exit 1); the comment is written without it.
+    from epicyclic.exchange.convert import toml_text
+
+    path = tmp_path / "v.rexs"
+    path.write_bytes(stage().replace(b'version="1.7"', b'version="1.7\x7f\xc2\x85"'))  # DEL and NEL: allowed in XML, control characters in TOML
+    text = toml_text(load_train_file(path))
+    assert "\x7f" not in text and "\x85" not in text and "(REXS 1.7," in text
+
+
+@pytest.mark.parametrize("call, says", [
+    (lambda: loads_rexs_document("<model/>"), "loads_rexs_document: data must be the file's bytes, got str"),
+    (lambda: loads_rexs_document(None), "got NoneType"),
+    (lambda: loads_rexs_document(5), "got int"),
+])
+def test_api_calls_with_a_wrong_type_get_a_clear_error(call, says):
+    # issue 30: these were AttributeError/TypeError tracebacks
+    from epicyclic.errors import ModelError
+
+    with pytest.raises(ModelError, match=says):
+        call()
+
+
+def test_api_writers_refuse_what_is_not_a_train_file():
+    from epicyclic.errors import ModelError
+    from epicyclic.exchange.convert import rexs_text, toml_text
+    from epicyclic.exchange.reading import is_rexs
+
+    with pytest.raises(ModelError, match="is_rexs: data must be the file's bytes, got str"):
+        is_rexs("<model/>")
+    for writer in (rexs_text, toml_text):
+        with pytest.raises(ModelError, match=f"{writer.__name__}: train_file must be a train file"):
+            writer(None)
+    with pytest.raises(ModelError, match="kind must be 'xml' or 'json', got 'yaml'"):  # quietly returned JSON
+        rexs_text(load_train_file("examples/brandenberger_1952.toml"), kind="yaml")

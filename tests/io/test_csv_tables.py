@@ -43,6 +43,9 @@ def test_units_in_the_header_are_converted():
     ("time,output_speed [N*m]\n0,1\n", UnitError, "column 'output_speed'.*not a speed"),
     ("time [ ]\n0\n", InputFileError, "unit of column 'time' is empty"),
     ("time,gear\n0,\n", InputFileError, "column 'gear': expected a name"),
+    # issue 30: one field of about 1 MiB gave csv's "field larger than field limit (131072)", exit 1
+    ("# c\ntime,gear\n0,a\n1,\"" + "x" * (1 << 20) + "\"\n", InputFileError,
+     "line 4: a value is longer than 131072 characters"),
 ])
 def test_hostile_tables(text, error, says):
     with pytest.raises(error, match=says):

@@ -93,3 +93,14 @@ def test_overridden_values_are_validated_like_the_file_and_named():
         load_train_file(BRANDENBERGER, overrides=["operating_point.sped.II=5"])
     with pytest.raises(OverrideError, match=r"brandenberger_1952.toml: --set 'planetary.x.planets=3'"):
         load_train_file(BRANDENBERGER, overrides=["planetary.x.planets=3"])
+
+
+def test_a_key_of_sixty_thousand_parts_is_refused_at_once():
+    # issue 30: `--set` with a dotted key of 60 000 parts hung past 20 s (tomllib on the whole key)
+    import time
+
+    start = time.perf_counter()
+    with pytest.raises(OverrideError, match="the key has 60001 parts; keys nest at most"):
+        parse_override("a." * 60000 + "b=1")
+    assert time.perf_counter() - start < 2.0  # a linear scan; generous for a loaded 2-core machine
+    assert parse_override('a."b.c".d=1') == (("a", "b.c", "d"), 1)  # dots inside a quoted part do not count

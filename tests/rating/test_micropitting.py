@@ -245,3 +245,17 @@ def test_tip_relief_unloads_the_tips_and_lowers_the_bulk_temperature():
     coarse = rated(400.0, accuracy_grade=8, mp=MicropittingSpec(oil_temperature=70.0, load_stage=9,
                                                                  profile_modification="both"))
     assert coarse.mode("micropitting")["X_Ca"] == 1.0                         # above grade 6: 1 (eq. (101))
+
+
+def test_sizing_counts_a_micropitting_shortfall():
+    from epicyclic import Brake, GearTrain, OperatingPoint, PlanetarySet, solve
+    from epicyclic.rating import smallest_module
+
+    pset = PlanetarySet.simple("P", sun="in", ring="r", carrier="out", z_sun=21, z_planet=39, z_ring=99)
+    sol = solve(GearTrain([pset, Brake("B", "r")]),
+                OperatingPoint(speeds={"in": 1500}, torques={"in": 600}, drives=["in"], loads=["out"]))
+    strict = spec(mp=MicropittingSpec(oil_temperature=70.0, lambda_GFP=50.0, roughness=0.5))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RatingWarning)
+        with pytest.raises(RatingError, match="failure modes rated: .*S_lambda"):
+            smallest_module(sol, "P", strict, face_width_ratio=0.6, max_module=4.0)

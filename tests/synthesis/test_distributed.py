@@ -135,3 +135,12 @@ def test_notebook_like_main_without_a_file_may_use_processes():
                           text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "found 12 True"
+
+
+def test_more_local_workers_than_cores_are_capped_and_said(monkeypatch, capsys):
+    # issue 30: `synthesize --workers 64` on a 2-core machine started 64 worker processes (a traceback, and
+    # hundreds of leaked semaphores); the local cluster now has at most one worker per core, and says so.
+    monkeypatch.setattr("os.cpu_count", lambda: 2)
+    result = synthesize_spec(SPEC, workers=64, processes=False)
+    assert result.stats["workers"] <= 2 and len(result) > 0
+    assert "64 local workers asked for on a machine with 2 core(s): using 2" in capsys.readouterr().err

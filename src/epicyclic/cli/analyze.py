@@ -28,7 +28,7 @@ def analyze(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     gear: Annotated[Optional[str], typer.Option(
-        "--gear", "-g", help="Solve in this gear of the \\[transmission] schedule.")] = None,
+        "--gear", "-g", help="Solve in this gear of the [transmission] schedule.")] = None,
     lang: Annotated[str, typer.Option(help="Language of the worked solution in HTML reports: en or de.")] = "en",
     set_: SetOption = None,
 ) -> None:

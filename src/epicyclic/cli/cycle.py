@@ -45,16 +45,37 @@ def _progress(quiet: bool, rows: int):
     return report
 
 
+#: Vehicle fields and the options that give them (in the order of Vehicle's arguments).
+_VEHICLE_OPTIONS = (("wheel_radius", "--wheel-radius", "length"), ("axle_ratio", "--axle-ratio", None),
+                    ("mass", "--mass", "mass"), ("rolling_coefficient", "--rolling-coefficient", None),
+                    ("drag_area", "--drag-area", "area"), ("air_density", "--air-density", "density"),
+                    ("rotating_mass_factor", "--rotating-mass-factor", None),
+                    ("axle_efficiency", "--axle-efficiency", None))
+
+
+def _vehicle(*values):
+    """The Vehicle of the options; a bad value is an OptionError naming its option (not the train file)."""
+    from ..transmission.vehicle import Vehicle
+    from .options import naming_options, quantity_option
+
+    read = [quantity_option(v, option, quantity) if quantity else v
+            for v, (_, option, quantity) in zip(values, _VEHICLE_OPTIONS)]
+    with naming_options("vehicle", {field: option for field, option, _ in _VEHICLE_OPTIONS}):
+        return Vehicle(*read)
+
+
 @guarded
 def cycle(
-    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a \\[transmission] table and losses.")],
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table and losses.")],
     cycle_file: Annotated[Path, typer.Option("--cycle", help="The drive cycle, CSV (docs/drive-cycles.md).")],
-    mass: Annotated[Optional[float], typer.Option("--mass", help="Vehicle mass, kg (road load).")] = None,
-    wheel_radius: Annotated[Optional[float], typer.Option("--wheel-radius", help="Dynamic wheel radius, m.")] = None,
+    mass: Annotated[Optional[str], typer.Option("--mass", help="Vehicle mass (road load): kg, or with a unit "
+                                                "('1.8 t').")] = None,
+    wheel_radius: Annotated[Optional[str], typer.Option("--wheel-radius", help="Dynamic wheel radius: m, or with a "
+                                                        "unit ('310 mm').")] = None,
     axle_ratio: Annotated[Optional[float], typer.Option("--axle-ratio", help="Final-drive ratio.")] = None,
     rolling_coefficient: Annotated[float, typer.Option("--rolling-coefficient", help="c_r.")] = 0.010,
-    drag_area: Annotated[float, typer.Option("--drag-area", help="c_d*A, m^2.")] = 0.0,
-    air_density: Annotated[float, typer.Option("--air-density", help="kg/m^3.")] = 1.204,
+    drag_area: Annotated[str, typer.Option("--drag-area", help="c_d*A: m^2, or with a unit.")] = "0 m^2",
+    air_density: Annotated[str, typer.Option("--air-density", help="kg/m^3, or with a unit.")] = "1.204 kg/m^3",
     rotating_mass_factor: Annotated[float, typer.Option("--rotating-mass-factor", help="lambda >= 1.")] = 1.0,
     axle_efficiency: Annotated[float, typer.Option("--axle-efficiency", help="Final-drive efficiency.")] = 1.0,
     gear_rule: Annotated[Optional[str], typer.Option(
@@ -79,8 +100,8 @@ def cycle(
     from ..io.output import refuse_input, write_atomic
     from ..transmission import Transmission
     from ..transmission.cycle_energy import GearRule, run_cycle
-    from ..transmission.vehicle import Vehicle
     from ._common import say
+    from .options import OptionError, naming_options
     from .shift_map import limits_from_options
 
     if out is not None:
@@ -93,9 +114,10 @@ def cycle(
     vehicle = None
     if wheel_radius is not None or axle_ratio is not None or mass is not None:
         if wheel_radius is None or axle_ratio is None:
-            raise ModelError("--wheel-radius and --axle-ratio go together (the vehicle's wheel and final drive).")
-        vehicle = Vehicle(wheel_radius, axle_ratio, mass, rolling_coefficient, drag_area, air_density,
-                          rotating_mass_factor, axle_efficiency)
+            raise OptionError("--wheel-radius", "and --axle-ratio go together (the vehicle's wheel and final drive).",
+                              joined=" ")
+        vehicle = _vehicle(wheel_radius, axle_ratio, mass, rolling_coefficient, drag_area, air_density,
+                           rotating_mass_factor, axle_efficiency)
     drive_cycle = read_drive_cycle(cycle_file, vehicle)
     given = None
     if schedule is not None:
@@ -109,7 +131,8 @@ def cycle(
         raise ModelError(f"--schedule is read by --gear-rule schedule only, not by --gear-rule {mode}; drop one.")
     if mode == "given" and drive_cycle.gear is None:
         raise ModelError(f"--gear-rule given: {cycle_file} has no 'gear' column; give one, or --gear-rule best.")
-    rule = GearRule(mode, given, min_dwell, hysteresis)
+    with naming_options("gear rule", {"min_dwell": "--min-dwell", "hysteresis": "--hysteresis"}):
+        rule = GearRule(mode, given, min_dwell, hysteresis)
     result = run_cycle(transmission, drive_cycle, rule=rule, limits=limits,
                        progress=_progress(quiet, drive_cycle.rows))
     check_finite(result.to_dict(), file)

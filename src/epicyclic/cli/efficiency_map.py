@@ -44,12 +44,12 @@ def parse_axis(text: str, name: str, unit: str):
 def efficiency_map(
     file: Annotated[Path, typer.Argument(help="Train description (.toml) with loss tables, see docs/losses.md.")],
     speed: Annotated[Optional[str], typer.Option(
-        "--speed", help="Input speeds A..B:N in the file's \\[units] (1/min without one), or with a unit: "
+        "--speed", help="Input speeds A..B:N in the file's [units] (1/min without one), or with a unit: "
                         "'50..600:50 rad/s'. Default: 500..6000 1/min, 50 values.")] = None,
     torque: Annotated[Optional[str], typer.Option(
-        "--torque", help="Input torques A..B:N in the file's \\[units] (N*m without one), or with a unit: "
+        "--torque", help="Input torques A..B:N in the file's [units] (N*m without one), or with a unit: "
                          "'1..50:50 kp*m'. Default: 10..500 N*m, 50 values.")] = None,
-    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
+    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the [transmission] schedule.")] = None,
     coast: Annotated[bool, typer.Option("--coast", help="Drive from the output (engine braking).")] = False,
     out: Annotated[Optional[Path], typer.Option(
         "--out", "-o", help="Write the map: .png, .svg, .pdf (figure), .csv or .json.")] = None,

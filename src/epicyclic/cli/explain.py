@@ -38,7 +38,7 @@ def explain(
     format: Annotated[ExplainFormat, typer.Option("--format", "-f", help="Output format.")] = ExplainFormat.text,
     out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write to this file instead of stdout.")] = None,
     gear: Annotated[Optional[str], typer.Option(
-        "--gear", "-g", help="Solve in this gear of the \\[transmission] schedule.")] = None,
+        "--gear", "-g", help="Solve in this gear of the [transmission] schedule.")] = None,
     set_: SetOption = None,
 ) -> None:
     """Show the worked solution of FILE: Willis, loss rule, torque balance, results, with numbers."""

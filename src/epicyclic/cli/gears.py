@@ -52,16 +52,16 @@ def _failing_gear(transmission: Transmission, point) -> str:
 
 @guarded
 def gears(
-    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a \\[transmission] table.")],
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table.")],
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     detail: Annotated[bool, typer.Option("--detail", help="Also list every shift element and set per gear.")] = False,
     speed: Annotated[Optional[str], typer.Option(
-        "--speed", help="Input speed of every gear, in the file's \\[units] or with a unit ('2000 U/min'). "
-                        "Default: the \\[operating_point]'s, else 1000 1/min.")] = None,
+        "--speed", help="Input speed of every gear, in the file's [units] or with a unit ('2000 U/min'). "
+                        "Default: the [operating_point]'s, else 1000 1/min.")] = None,
     torque: Annotated[Optional[str], typer.Option(
-        "--torque", help="Input torque in drive (coast: at the output, x |ratio|), in the file's \\[units] or "
-                         "with a unit ('15 kp*m'). Default: the \\[operating_point]'s, else 100 N*m.")] = None,
+        "--torque", help="Input torque in drive (coast: at the output, x |ratio|), in the file's [units] or "
+                         "with a unit ('15 kp*m'). Default: the [operating_point]'s, else 100 N*m.")] = None,
     set_: SetOption = None,
 ) -> None:
     """Per gear: ratio, step, efficiency drive/coast, shift-element loads, rolling sets; spread.
@@ -80,8 +80,15 @@ def gears(
     point = input_point(transmission.input, spec.operating_point, speed=speed, torque=torque, units=spec.units)
     try:
         analysis = transmission.analyze_all(point=point)
-    except EpicyclicError as exc:  # name the gear
-        raise located(exc, str(file), f"[transmission], key {f'schedule.{_failing_gear(transmission, point)}'!r}") from None
+    except EpicyclicError as exc:  # name the gear, and the option that set the point where one did
+        gear = _failing_gear(transmission, point)
+        options = [o for o, source in (("--speed", point.speed_source), ("--torque", point.torque_source))
+                   if source == o]
+        if options:
+            from .options import OptionError
+
+            raise OptionError(" and ".join(options), f"in gear {gear} at {point.describe()}: {exc}") from None
+        raise located(exc, str(file), f"[transmission], key {f'schedule.{gear}'!r}") from None
     check_finite(analysis.to_dict(), file)
     if format is OutputFormat.html:
         emit(_gears_html(file, spec, transmission, analysis), out)
@@ -101,7 +108,7 @@ def _gears_html(file: Path, spec, transmission, analysis) -> str:
 
 @guarded
 def explore(
-    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a \\[transmission] table.")],
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table.")],
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     redundant: Annotated[bool, typer.Option("--redundant", help="Also list states with a redundant element.")] = False,

@@ -122,7 +122,7 @@ def forces(
         help="Train description (.toml) with geometry tables and an operating point.")],
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
-    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
+    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the [transmission] schedule.")] = None,
     set_: SetOption = None,
 ) -> None:
     """Tooth, bearing and pin forces (× K_γ) at the file's operating point, for every element with geometry."""

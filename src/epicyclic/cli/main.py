@@ -19,6 +19,7 @@ app = typer.Typer(
     help="Analyse epicyclic (planetary) gear trains: speeds, torques, losses, efficiency, pictures.",
     no_args_is_help=True,
     add_completion=True,
+    rich_markup_mode=None,  # help texts name TOML tables: '[rating]' prints as written, never read as markup
 )
 
 

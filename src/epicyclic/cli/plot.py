@@ -70,7 +70,7 @@ def plot(
                                                                "gears of a transmission).")] = PlotKind.speed,
     out: Annotated[Optional[Path], typer.Option(
         "--out", "-o", help="Output file: .svg, .png or .pdf (default: FILE-KIND.png here).")] = None,
-    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule "
+    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the [transmission] schedule "
                                                 "(default: the operating point's, else the first gear).")] = None,
     dpi: Annotated[int, typer.Option(help="Resolution of .png output (20 … 600).")] = 150,
     set_: SetOption = None,
@@ -103,7 +103,7 @@ def animate(
         "--element", "-e", help="Name of the planetary set to animate (default: the first).")] = None,
     willis: Annotated[bool, typer.Option(
         "--willis", help="Show the three superposed motions of the Willis derivation in turn.")] = False,
-    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the \\[transmission] schedule.")] = None,
+    gear: Annotated[Optional[str], typer.Option("--gear", "-g", help="Gear of the [transmission] schedule.")] = None,
     frames: Annotated[int, typer.Option(help="Frames of one GIF loop (2 … 240).")] = 48,
     fps: Annotated[int, typer.Option(help="Frames per second (1 … 60).")] = 16,
     size: Annotated[int, typer.Option(help="Width of the SVG or GIF in pixels (120 … 2000).")] = 480,

@@ -111,7 +111,7 @@ def rate(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     gear: Annotated[str | None, typer.Option(
-        "--gear", "-g", help="Rate in this gear of the \\[transmission] schedule ('all': every gear).")] = None,
+        "--gear", "-g", help="Rate in this gear of the [transmission] schedule ('all': every gear).")] = None,
     explain: Annotated[str | None, typer.Option(
         "--explain", help="Print the worked rating of one mesh: ELEMENT:MESH[:GEAR], e.g. P1:sun-planet:planet.")]
         = None,

@@ -89,9 +89,9 @@ def limits_from_options(engine_speed: str | None, max_input_torque: str | None, 
 
 @guarded
 def shift_map(
-    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a \\[transmission] table and losses.")],
+    file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [transmission] table and losses.")],
     speed: Annotated[Optional[str], typer.Option(
-        "--speed", help="Output speeds A..B:N in the file's \\[units] or with a unit. Default: 50 1/min to the "
+        "--speed", help="Output speeds A..B:N in the file's [units] or with a unit. Default: 50 1/min to the "
                         "top gear's at the highest engine speed, 60 values.")] = None,
     torque: Annotated[Optional[str], typer.Option(
         "--torque", help="Output torques A..B:N. Default: 10 N*m to first gear's at the input torque limit "

@@ -53,8 +53,8 @@ def _eta(seconds: float) -> str:
 
 @guarded
 def synthesize(
-    spec: Annotated[Path, typer.Argument(help="Synthesis specification (.toml): \\[targets], \\[sets], "
-                                              "\\[elements], \\[bounds], \\[search].")],
+    spec: Annotated[Path, typer.Argument(help="Synthesis specification (.toml): [targets], [sets], "
+                                              "[elements], [bounds], [search].")],
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     scheduler: Annotated[Optional[str], typer.Option("--scheduler", help="Address of a running Dask scheduler "

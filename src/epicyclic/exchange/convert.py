@@ -49,6 +49,13 @@ def _cases_lines(document) -> list[str]:
     return lines
 
 
+def _expect_train_file(train_file, where: str) -> None:
+    """A ModelError unless ``train_file`` is a read train file (it has a source and maybe a REXS document)."""
+    if not (hasattr(train_file, "exchange") and hasattr(train_file, "source")):
+        raise ModelError(f"{where}: train_file must be a train file read by epicyclic.io.load_train_file(path), "
+                         f"got {type(train_file).__name__}.")
+
+
 def toml_text(train_file) -> str:
     """The train file as commented TOML text (a REXS file's origins, load cases and ignored parts in comments).
 
@@ -63,6 +70,7 @@ def toml_text(train_file) -> str:
     """
     from .toml_writer import document_toml
 
+    _expect_train_file(train_file, "toml_text")
     document = train_file.exchange
     if document is None:
         from ..io.source import parse_toml, read_source
@@ -97,6 +105,9 @@ def rexs_text(train_file, kind: str = "xml", date: str | None = None, document=N
     from .. import __version__
     from .writing import build_rexs
 
+    _expect_train_file(train_file, "rexs_text")
+    if kind not in ("xml", "json"):
+        raise ModelError(f"rexs_text: kind must be 'xml' or 'json', got {kind!r:.40}.")
     mapped = train_file.exchange
     if document is not None:
         data, cases = document, ()

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..io.source import read_bytes, sniff
+from ..io.source import expect_bytes, read_bytes, sniff
 from ..limits import max_rexs_bytes
 from .container import read_model
 from .mapping import RexsDocument, map_model
@@ -39,7 +39,7 @@ def is_rexs(data: bytes) -> bool:
     ----------
     data : bytes
     """
-    return sniff(data) is not None
+    return sniff(expect_bytes(data, "is_rexs")) is not None
 
 
 def load_rexs_document(path: str | Path, max_bytes: int | None = None) -> RexsDocument:
@@ -78,4 +78,4 @@ def loads_rexs_document(data: bytes, source: str = "<bytes>") -> RexsDocument:
     -------
     RexsDocument
     """
-    return map_model(read_model(data, source))
+    return map_model(read_model(expect_bytes(data, "loads_rexs_document"), source))

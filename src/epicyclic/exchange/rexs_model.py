@@ -132,6 +132,16 @@ class RexsModel:
     application: str = ""
     container: str = "xml"
 
+    def __post_init__(self) -> None:
+        # A relation that names a component the file does not have (one deleted, a typo) is an error here,
+        # before any mapping: read past, it makes another train (a planet read as a fixed-axis stage).
+        for relation in self.relations:
+            for ref in relation.refs:
+                if ref.id not in self.components:
+                    what = f"relation {relation.id} ({relation.type}), role {ref.role!r}"
+                    raise RexsValueError(f"{self.source}: {what} names component {ref.id}, which the file does not "
+                                         "have; restore the component or delete the relation.", self.source, what)
+
     # ---- messages
     def error(self, component: Component | None, attribute: str | None, message: str) -> RexsValueError:
         """A :class:`RexsValueError` ``"<file>: component <id> (<type> '<name>'), attribute '<a>': <message>"``."""

@@ -44,6 +44,15 @@ def _value(value: Any, inline: bool = False):
     return value
 
 
+def _comment(line: str):
+    """A TOML comment of ``line``: one line, no control characters (text from a REXS file may hold them)."""
+    import tomlkit
+
+    from ..text import terminal_text
+
+    return tomlkit.comment(" ".join(terminal_text(line).split()))
+
+
 def document_toml(data: Mapping[str, Any], origins: Mapping[str, str] | None = None, header: list[str] = (),
                   footer: list[str] = ()) -> str:
     """The TOML text of the train document ``data``, commented with the REXS ``origins``.
@@ -66,7 +75,7 @@ def document_toml(data: Mapping[str, Any], origins: Mapping[str, str] | None = N
     origins = origins or {}
     doc = tomlkit.document()
     for line in header:
-        doc.add(tomlkit.comment(line))
+        doc.add(_comment(line))
     if header:
         doc.add(tomlkit.nl())
     for key in ("title", "description"):
@@ -77,9 +86,9 @@ def document_toml(data: Mapping[str, Any], origins: Mapping[str, str] | None = N
     shafts = [(k.partition(".")[2], v) for k, v in origins.items() if k.startswith("shaft.")]
     if shafts:
         doc.add(tomlkit.nl())
-        doc.add(tomlkit.comment("Shafts (members) and the REXS components they are made of:"))
+        doc.add(_comment("Shafts (members) and the REXS components they are made of:"))
         for name, origin in shafts:
-            doc.add(tomlkit.comment(f"  {name!r}: {origin}"))
+            doc.add(_comment(f"  {name!r}: {origin}"))
     for key in ("units", "lubricant"):
         if key in data:
             doc.add(tomlkit.nl())
@@ -92,7 +101,7 @@ def document_toml(data: Mapping[str, Any], origins: Mapping[str, str] | None = N
             table = tomlkit.table()
             origin = origins.get(f"{kind}.{element.get('name')}")
             if origin:
-                table.add(tomlkit.comment(f"REXS {origin}"))
+                table.add(_comment(f"REXS {origin}"))
             for k, v in element.items():
                 if isinstance(v, Mapping) and k in ("geometry", "losses"):
                     continue

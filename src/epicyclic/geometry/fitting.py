@@ -54,7 +54,7 @@ from .checks import (
     NeighbourCheck,
     UndercutCheck,
 )
-from .errors import GeometryError, expect_type
+from .errors import GeometryError, expect_type, finite_number
 from .gear import MeshGeometry
 from .coaxiality import check_coaxiality, coaxiality_tolerance
 from .involute import inv
@@ -262,10 +262,10 @@ def max_planets(tip_diameter: float, center_distance: float, min_clearance: floa
     ----------
     SDP/SI D785, eq. (13-10) d_ab < 2 a_x sin θ; Drivetrain Hub l = 2a sin(π/N) > d_a2.
     """
-    if tip_diameter <= 0 or center_distance <= 0:
-        raise GeometryError(
-            f"max_planets: tip_diameter and center_distance must be > 0 mm, got {tip_diameter!r}, {center_distance!r}."
-        )
+    tip_diameter = finite_number(tip_diameter, "max_planets", "tip_diameter", minimum=0.0, above=True, unit="mm")
+    center_distance = finite_number(center_distance, "max_planets", "center_distance", minimum=0.0, above=True,
+                                    unit="mm")
+    min_clearance = finite_number(min_clearance, "max_planets", "min_clearance", unit="mm")
     n = 1
     while n < 1000 and 2 * center_distance * math.sin(math.pi / (n + 1)) - tip_diameter - min_clearance > _EPS_MM:
         n += 1

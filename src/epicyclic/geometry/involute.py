@@ -30,6 +30,8 @@ import math
 
 import numpy as np
 
+from .errors import GeometryError
+
 __all__ = [
     "inv",
     "inv_inverse",
@@ -75,8 +77,8 @@ def inv_inverse(value, tol: float = 1e-15, max_iter: int = 60):
 
     Raises
     ------
-    ValueError
-        A negative or non-finite ``value``.
+    GeometryError
+        A negative or non-finite ``value`` (a ValueError, as every project error).
 
     Examples
     --------
@@ -90,7 +92,7 @@ def inv_inverse(value, tol: float = 1e-15, max_iter: int = 60):
     """
     arr = np.asarray(value, dtype=float)
     if np.any(arr < 0) or not np.all(np.isfinite(arr)):
-        raise ValueError(f"inv_inverse needs finite values >= 0, got {value!r}")
+        raise GeometryError(f"inv_inverse: value (inv α = tan α − α) must be finite and >= 0, got {value!r}.")
     # Starting value from the series inverse alpha ≈ (3 v)^(1/3) (good for small v).
     alpha = np.cbrt(3.0 * arr)
     alpha = np.minimum(alpha, 1.5)

@@ -33,7 +33,7 @@ import numpy as np
 
 from ..model.planetary import PlanetarySet
 from ._render import html_table, text_table
-from .errors import GeometryError
+from .errors import GeometryError, finite_number
 from .fitting import check_fitting
 from .gear import BasicRack
 from .involute import inv
@@ -240,7 +240,7 @@ class ToothSearch:
         return f"ToothSearch(target={self.target:g}, mode={self.mode}, {len(self)} candidates{top})"
 
 
-def _validate(target, tolerance, bounds: dict[str, tuple[int, int]], planets) -> tuple[int, ...]:
+def _validate(target, tolerance, bounds: dict[str, tuple[int, int]], planets, min_clearance=0.0) -> tuple[int, ...]:
     if isinstance(target, bool) or not isinstance(target, (int, float)) or not math.isfinite(target) or target == 0:
         raise GeometryError(f"search_teeth: target_ratio must be a finite non-zero number, got {target!r}.")
     if isinstance(tolerance, bool) or not isinstance(tolerance, (int, float)) or not 0 <= tolerance < 1:
@@ -252,6 +252,7 @@ def _validate(target, tolerance, bounds: dict[str, tuple[int, int]], planets) ->
             raise GeometryError(f"search_teeth: {name} must be (low, high) whole numbers with 3 <= low <= high, "
                                 f"got ({lo!r}, {hi!r}).")
     counts = tuple(planets)
+    finite_number(min_clearance, "search_teeth", "min_clearance", unit="mm")
     if not counts or any(isinstance(n, bool) or not isinstance(n, int) or n < 1 for n in counts):
         raise GeometryError(f"search_teeth: planets must be whole numbers >= 1, got {planets!r}.")
     return counts
@@ -335,7 +336,7 @@ def search_teeth(
     [(21, 21, 63, 3), (21, 21, 63, 4)]
     """
     counts = _validate(target_ratio, tolerance, {"z_sun": z_sun, "z_planet": z_planet,
-                                                 **({"z_ring": z_ring} if z_ring else {})}, planets)
+                                                 **({"z_ring": z_ring} if z_ring else {})}, planets, min_clearance)
     two_shaft_ratio(-2.0, held, driver, driven)  # validates the mode
     rack = BasicRack(module, pressure_angle, 0.0, addendum)
     zs, zp, n = np.meshgrid(np.arange(z_sun[0], z_sun[1] + 1), np.arange(z_planet[0], z_planet[1] + 1),
@@ -427,7 +428,7 @@ def search_teeth_loops(
         numbers ≥ 3 in order, planets < 1, or an unknown mode.
     """
     counts = _validate(target_ratio, tolerance, {"z_sun": z_sun, "z_planet": z_planet,
-                                                 **({"z_ring": z_ring} if z_ring else {})}, planets)
+                                                 **({"z_ring": z_ring} if z_ring else {})}, planets, min_clearance)
     cands = []
     for s in range(z_sun[0], z_sun[1] + 1):
         for p in range(z_planet[0], z_planet[1] + 1):

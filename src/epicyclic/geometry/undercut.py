@@ -18,7 +18,7 @@ from typing import Literal
 
 from ..limits import MAX_TOOTH_HEIGHT_FACTOR
 from .checks import UndercutCheck
-from .errors import GeometryError
+from .errors import GeometryError, finite_number
 from .set_geometry import SetGeometry
 
 __all__ = ["undercut_limit", "min_profile_shift", "check_undercut"]
@@ -112,6 +112,10 @@ def min_profile_shift(teeth: int, pressure_angle: float = 20.0, addendum: float 
     DIN 3960; Niemann/Winter, practical limit z_g' = 5/6 z_g (14 for 20°, 26 for 14.5°,
     as quoted by easyengcalc.com "Gear Undercut & Profile Shift").
     """
+    if isinstance(teeth, bool) or not isinstance(teeth, int) or teeth < 1:
+        finite_number(teeth, "min_profile_shift", "teeth", minimum=1.0)  # NaN, infinity, < 1: the number's own message
+        if isinstance(teeth, bool) or not float(teeth).is_integer():
+            raise GeometryError(f"min_profile_shift: teeth must be a whole number >= 1, got {teeth!r}.")
     z_lim = undercut_limit(pressure_angle, addendum, helix_angle)
     if limit == "practical":
         z_lim *= 5.0 / 6.0

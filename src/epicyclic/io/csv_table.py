@@ -159,7 +159,13 @@ def read_csv_text(text: str, source: str, columns: Mapping[str, Column], *,
         raise InputFileError(f"{source}: the file is empty; the first line names the columns "
                              f"({', '.join(columns)}), the lines after it hold the values.", source)
     reader = csv.reader(io.StringIO("\n".join(line for _, line in lines)))
-    rows = list(reader)
+    try:
+        rows = list(reader)
+    except csv.Error as exc:  # a cell beyond csv's field limit (128 KiB), a NUL byte, an unclosed quote at the end
+        line = lines[min(max(reader.line_num, 1), len(lines)) - 1][0]
+        reason = (f"a value is longer than {csv.field_size_limit()} characters; a cell holds one number or name"
+                  if "field limit" in str(exc) else f"not readable as CSV ({exc})")
+        raise InputFileError(f"{source}: line {line}: {reason}.", source) from None
     head_line = lines[0][0]
     names, units = [], {}
     for cell in rows[0]:

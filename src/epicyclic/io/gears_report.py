@@ -24,6 +24,7 @@ from typing import Any
 
 from ..units import Units
 from .html_report import _CSS
+from ..transmission.results import efficiency_text
 from .tables import html_table
 
 __all__ = ["gears_html"]
@@ -66,8 +67,7 @@ def _detail(g: Any) -> str:
     sets = html_table("Planetary sets", ("set", "state", "rolling power", "loss"),
                       [(name, status, f"{_num(g.rolling_power[name], '+.4f')} × P_in",
                         f"{_num(g.set_losses[name], '.4f')} × P_in") for name, status in g.set_status.items()])
-    coast = "self-locking" if g.efficiency_coast is None else f"{g.efficiency_coast:.4f}"
-    drive = "self-locking" if g.efficiency_drive is None else f"{g.efficiency_drive:.4f}"
+    coast, drive = efficiency_text(g.efficiency_coast, g.coast), efficiency_text(g.efficiency_drive, g.drive)
     kpi = [("ratio", f"{g.ratio:.4f}"), ("η drive", drive), ("η coast", coast),
            ("circulating power", "indeterminate" if g.circulating_power_ratio is None
             else f"{g.circulating_power_ratio:.3f} × P_in")]

@@ -58,6 +58,10 @@ def parse_override(text: str) -> tuple[tuple[str, ...], Any]:
                             f"e.g. --set {_EXAMPLE}.")
     not_dotted = OverrideError(f"--set {text!r}: {key.strip()!r} is not one dotted key such as "
                                f"operating_point.speeds.sun (quote parts with dots or spaces).")
+    parts = _key_parts(key)
+    if parts > MAX_NESTING:  # before tomllib, which takes minutes (or the stack) on a key of 60 000 parts
+        raise OverrideError(f"--set {text[:60]!r}…: the key has {parts} parts; keys nest at most {MAX_NESTING} "
+                            "levels deep, as in a train file (docs/limits.md).")
     try:
         nested = tomllib.loads(f"{key.strip()} = 0")
     except tomllib.TOMLDecodeError:
@@ -88,6 +92,19 @@ def parse_override(text: str) -> tuple[tuple[str, ...], Any]:
     else:
         value = raw.strip()  # not a TOML value: a bare string such as 2000 rpm
     return tuple(path), value
+
+
+def _key_parts(key: str) -> int:
+    """How many dotted parts ``key`` has at most: the dots outside quoted parts, plus one (one linear pass)."""
+    dots, quote = 0, ""
+    for char in key:
+        if quote:
+            quote = "" if char == quote else quote
+        elif char in "\"'":
+            quote = char
+        elif char == ".":
+            dots += 1
+    return dots + 1
 
 
 def _depth(raw: str) -> int:

@@ -36,7 +36,7 @@ from typing import Any
 from ..errors import ModelError
 from ..limits import MAX_NESTING, MAX_STRING_CHARS, MAX_TOML_VALUES, max_file_bytes
 
-__all__ = ["InputFileError", "check_document", "decode_source", "parse_toml", "read_bytes", "read_source", "sniff"]
+__all__ = ["InputFileError", "check_document", "decode_source", "expect_bytes", "parse_toml", "read_bytes", "read_source", "sniff"]
 
 
 class InputFileError(ModelError):
@@ -60,6 +60,24 @@ def _size(n: int) -> str:
     return f"{n / 1048576:.3g} MiB ({n:,} bytes)" if n >= 1048576 else f"{n:,} bytes"
 
 
+def expect_bytes(data: object, where: str) -> bytes:
+    """``data`` as bytes (bytes, bytearray, memoryview), else a ModelError saying what to pass.
+
+    >>> expect_bytes(bytearray(b"<model/>"), "is_rexs")
+    b'<model/>'
+    >>> expect_bytes("<model/>", "is_rexs")
+    Traceback (most recent call last):
+    ...
+    epicyclic.errors.ModelError: is_rexs: data must be the file's bytes, got str; pass text.encode() or open(path, 'rb').read().
+    """
+    if isinstance(data, (bytes, bytearray, memoryview)):
+        return bytes(data)
+    from ..errors import ModelError
+
+    raise ModelError(f"{where}: data must be the file's bytes, got {type(data).__name__}; pass text.encode() or "
+                     "open(path, 'rb').read().")
+
+
 def sniff(data: bytes) -> str | None:
     """The REXS container of a file's bytes: ``"zip"``, ``"xml"``, ``"json"``, or None (a TOML train file).
 
@@ -80,6 +98,7 @@ def sniff(data: bytes) -> str | None:
     >>> sniff(b'<?xml version="1.0"?><model/>'), sniff(b'  {"model": {}}'), sniff(b'title = "x"')
     ('xml', 'json', None)
     """
+    data = expect_bytes(data, "sniff")
     if data.startswith((b"PK\x03\x04", b"PK\x05\x06")):  # an empty zip is a zip too
         return "zip"
     head = data[:4096].lstrip(b"\xef\xbb\xbf").lstrip(b" \t\r\n")

@@ -278,7 +278,8 @@ def _housing(reader, value) -> Housing:
                     _number(reader, table, "heat_transfer", where, None, unit="W/(m^2 K)", positive=True,
                             meaning="natural convection 1.32 (dT/L)^0.25 W/(m^2 K)"),
                     _number(reader, table, "height", where, 0.3, unit="m", positive=True),
-                    _number(reader, table, "emissivity", where, 0.9, unit="in (0, 1]", positive=True, maximum=1.0),
+                    _number(reader, table, "emissivity", where, 0.9, unit="in [0, 1]; 0: convection only", minimum=0.0,
+                            maximum=1.0),
                     _number(reader, table, "cooler", where, 0.0, unit="W/K", minimum=0.0),
                     _number(reader, table, "coolant", where, None, unit="degC", minimum=-40.0, maximum=150.0,
                             meaning="the ambient temperature"))

@@ -118,8 +118,9 @@ def summary_lines(solution: Solution, units: Units | None = None) -> list[tuple[
     if solution.oil_temperature is not None:
         lines.append(("oil temperature", f"{fmt(solution.oil_temperature, 4)} degC"))
     if solution.self_locking is not None:
-        lines.append(("efficiency", "— (self-locking)"))
-        lines.append(("self-locking", solution.self_locking.message))
+        label = solution.self_locking.label
+        lines.append(("efficiency", f"— ({label})"))
+        lines.append((label, solution.self_locking.message))
     else:
         lines.append(("efficiency", fmt(solution.efficiency, 4) if solution.efficiency is not None else "—"))
     if solution.ratio is not None:

@@ -12,7 +12,7 @@ import numpy as np
 
 from .errors import LossModelError
 
-__all__ = ["positive", "fraction", "non_negative_array", "positive_array"]
+__all__ = ["positive", "fraction", "finite_array", "non_negative_array", "positive_array"]
 
 
 def positive(value: object, name: str, owner: str, *, allow_zero: bool = False) -> float:
@@ -26,15 +26,16 @@ def positive(value: object, name: str, owner: str, *, allow_zero: bool = False) 
     return float(value)
 
 
-def fraction(value: object, name: str, owner: str) -> float:
-    """``value`` as a float in (0, 1], else a LossModelError."""
-    number = positive(value, name, owner)
+def fraction(value: object, name: str, owner: str, *, allow_zero: bool = False) -> float:
+    """``value`` as a float in (0, 1] ([0, 1] with ``allow_zero``), else a LossModelError."""
+    number = positive(value, name, owner, allow_zero=allow_zero)
     if number > 1.0:
-        raise LossModelError(f"{owner}: {name} must lie in (0, 1], got {value!r}.")
+        raise LossModelError(f"{owner}: {name} must lie in {'[' if allow_zero else '('}0, 1], got {value!r}.")
     return number
 
 
-def _array(value: object, name: str, owner: str) -> np.ndarray:
+def finite_array(value: object, name: str, owner: str) -> np.ndarray:
+    """``value`` as a float array of finite values, else a LossModelError naming it."""
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -46,7 +47,7 @@ def _array(value: object, name: str, owner: str) -> np.ndarray:
 
 def non_negative_array(value: object, name: str, owner: str) -> np.ndarray:
     """``value`` as a float array of finite values ≥ 0, else a LossModelError."""
-    arr = _array(value, name, owner)
+    arr = finite_array(value, name, owner)
     if np.any(arr < 0):
         raise LossModelError(f"{owner}: {name} must be >= 0, got {float(arr.min())!r}.")
     return arr
@@ -54,7 +55,7 @@ def non_negative_array(value: object, name: str, owner: str) -> np.ndarray:
 
 def positive_array(value: object, name: str, owner: str) -> np.ndarray:
     """``value`` as a float array of finite values > 0, else a LossModelError."""
-    arr = _array(value, name, owner)
+    arr = finite_array(value, name, owner)
     if np.any(arr <= 0):
         raise LossModelError(f"{owner}: {name} must be > 0, got {float(arr.min())!r}.")
     return arr

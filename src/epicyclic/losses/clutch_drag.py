@@ -73,7 +73,7 @@ from dataclasses import dataclass
 import numpy as np
 from ..limits import MAX_PLATE_GAPS
 from ..results.solution import RPM_TO_RAD_S
-from ._checks import positive
+from ._checks import finite_array, positive, positive_array
 from .errors import LossModelError
 
 __all__ = ["ClutchDrag", "LAMINAR_REYNOLDS", "AIR_VISCOSITY", "MIST_NODES"]
@@ -86,6 +86,7 @@ AIR_VISCOSITY = 0.01846
 #: to about 1e-12 relative for plates up to r_o/r_i = 4, tested against adaptive quadrature).
 MIST_NODES = 8
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(MIST_NODES)
+_BLOCK = 1 << 16  # points evaluated at once: the mist's (points, nodes) temporaries stay at a few MB
 #: Most Newton steps for the film edge (from above on a convex function: monotone, quadratic near the root).
 _NEWTON_STEPS = 60
 
@@ -176,6 +177,10 @@ class ClutchDrag:
             object.__setattr__(self, name, value)
 
     # ---------------------------------------------------------------- the model
+    @property
+    def _owner(self) -> str:
+        return f"ClutchDrag of {self.element!r}"
+
     def _si(self):
         return self.inner_radius * 1e-3, self.outer_radius * 1e-3, self.clearance * 1e-3
 
@@ -287,8 +292,13 @@ class ClutchDrag:
 
     def _parts(self, slip, viscosity, density) -> tuple[np.ndarray, np.ndarray]:
         """(film drag, mist drag), N·m, with the film edge found once."""
-        slip, viscosity, density = np.broadcast_arrays(*(np.asarray(v, dtype=float)
-                                                         for v in (slip, viscosity, density)))
+        slip, viscosity, density = np.broadcast_arrays(
+            finite_array(slip, "slip (1/min)", self._owner), positive_array(viscosity, "viscosity (mPa*s)", self._owner),
+            positive_array(density, "density (kg/m^3)", self._owner))
+        if slip.size > _BLOCK:  # the mist's (points, nodes) temporaries stay within a few MB
+            flat = [v.ravel() for v in (slip, viscosity, density)]
+            parts = [self._parts(*(v[i:i + _BLOCK] for v in flat)) for i in range(0, slip.size, _BLOCK)]
+            return tuple(np.concatenate([p[k] for p in parts]).reshape(slip.shape) for k in (0, 1))
         r_i, _, h = self._si()
         omega = np.abs(slip) * RPM_TO_RAD_S
         edge = self.film_radius(slip, viscosity, density)

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..results.solution import RPM_TO_RAD_S
+from ._checks import finite_array
 from .errors import LossModelError
 
 __all__ = ["DragTorque"]
@@ -79,13 +80,25 @@ class DragTorque:
 
     def torque(self, speed):
         """Drag torque magnitude (N·m) at relative speed ``speed`` (1/min; floats or arrays)."""
-        n = np.abs(np.asarray(speed, dtype=float))
+        n = np.abs(finite_array(speed, "speed (1/min)", f"DragTorque on {self.member!r}"))
         total = np.zeros_like(n)
-        for power, c in enumerate(self.coefficients):
-            if c:
-                total = total + c * n ** power
+        with np.errstate(over="ignore", invalid="ignore"):
+            for power, c in enumerate(self.coefficients):
+                if c:
+                    total = total + c * n ** power
+        if not np.all(np.isfinite(total)):
+            worst = float(n[~np.isfinite(total)].ravel()[0])
+            raise LossModelError(
+                f"DragTorque on {self.member!r}: the polynomial of degree {len(self.coefficients) - 1} overflows "
+                f"at {worst:g} 1/min (no finite drag torque); give coefficients of a lower degree."
+            )
         return np.where(n > 0, total, 0.0)
 
     def loss(self, speed):
         """Power lost, W: T_d |ω| ≥ 0."""
-        return self.torque(speed) * np.abs(np.asarray(speed, dtype=float)) * RPM_TO_RAD_S
+        with np.errstate(over="ignore"):
+            power = self.torque(speed) * np.abs(np.asarray(speed, dtype=float)) * RPM_TO_RAD_S
+        if not np.all(np.isfinite(power)):
+            raise LossModelError(f"DragTorque on {self.member!r}: the drag loss overflows (no finite power); "
+                                 "give coefficients of a lower degree or smaller values.")
+        return power

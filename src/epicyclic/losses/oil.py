@@ -39,7 +39,7 @@ from ._checks import positive
 from .errors import LossModelError
 from .friction import Lubricant
 
-__all__ = ["Oil", "KELVIN", "walther_constants"]
+__all__ = ["Oil", "KELVIN", "EXTRAPOLATION_MARGIN", "OIL_WARNING_START", "walther_constants"]
 
 #: 0 °C in kelvin.
 KELVIN = 273.15
@@ -47,6 +47,10 @@ KELVIN = 273.15
 _WALTHER_SHIFT = 0.7
 #: Temperatures (°C) the viscosity may be asked at: the equation's useful range for gear oils.
 TEMPERATURE_RANGE = OIL_TEMPERATURE_RANGE
+#: How far beyond its measured temperatures an oil's viscosity is used without a warning, K.
+EXTRAPOLATION_MARGIN = 20.0
+#: How :meth:`Oil.extrapolation_warning` begins (reports collect the oil's warnings by it).
+OIL_WARNING_START = "the oil temperature"
 
 
 def walther_constants(viscosity_40: float, viscosity_100: float) -> tuple[float, float]:
@@ -89,6 +93,10 @@ class Oil:
         c_p, J/(kg K) (mineral oils 1900–2100 at 80 °C).
     lubricant_factor : float, default 1.0
         X_L of Schlenk's mesh friction (1 for mineral oil).
+    data_range : (float, float), default (40, 100)
+        The temperatures, °C, the viscosities were measured at (a table's coldest and hottest); beyond
+        them by more than :data:`EXTRAPOLATION_MARGIN` the viscosity is an extrapolation, and
+        :meth:`extrapolation_warning` says so.
 
     Examples
     --------
@@ -105,6 +113,7 @@ class Oil:
     expansion: float = 6.5e-4
     specific_heat: float = 2000.0
     lubricant_factor: float = 1.0
+    data_range: tuple[float, float] = (40.0, 100.0)
 
     def __post_init__(self) -> None:
         owner = "Oil"
@@ -127,6 +136,14 @@ class Oil:
                             ("specific_heat", positive(self.specific_heat, "specific_heat (J/(kg K))", owner)),
                             ("lubricant_factor", positive(self.lubricant_factor, "lubricant_factor (X_L)", owner))):
             object.__setattr__(self, name, value)
+        try:
+            low, high = (float(t) for t in self.data_range)
+        except (TypeError, ValueError):
+            low = high = math.nan
+        if not (TEMPERATURE_RANGE[0] <= low <= high <= TEMPERATURE_RANGE[1]):
+            raise LossModelError(f"{owner}: data_range must be (coldest, hottest) measured temperatures in "
+                                 f"{TEMPERATURE_RANGE[0]:g} ... {TEMPERATURE_RANGE[1]:g} degC, got {self.data_range!r}.")
+        object.__setattr__(self, "data_range", (low, high))
 
     @classmethod
     def from_table(cls, table, **kwargs) -> Oil:
@@ -182,7 +199,33 @@ class Oil:
         def at(celsius: float) -> float:
             return 10.0 ** (10.0 ** (intercept + slope * math.log10(celsius + KELVIN))) - _WALTHER_SHIFT
 
-        return cls(at(40.0), at(100.0), **kwargs)
+        temperatures = [t for t, _ in points]
+        return cls(at(40.0), at(100.0), **kwargs, data_range=(min(temperatures), max(temperatures)))
+
+    def extrapolation_warning(self, temperature: float) -> str | None:
+        """A warning where ``temperature`` (°C) lies more than :data:`EXTRAPOLATION_MARGIN` beyond the data.
+
+        Walther's line (ASTM D341) is a fit of the measured points; far outside them (a cold start at
+        −20 °C from ν at 40 and 100 °C) the viscosity, and every drag and churning loss that follows
+        from it, is an extrapolation of unknown error.
+
+        Parameters
+        ----------
+        temperature : float
+            °C.
+
+        Returns
+        -------
+        str or None
+        """
+        low, high = self.data_range
+        if low - EXTRAPOLATION_MARGIN <= temperature <= high + EXTRAPOLATION_MARGIN:
+            return None
+        nu = float(self.kinematic_viscosity(temperature))
+        return (f"{OIL_WARNING_START} {temperature:.4g} degC lies outside the lubricant's viscosity data "
+                f"({low:g} ... {high:g} degC) by more than {EXTRAPOLATION_MARGIN:g} K: its viscosity "
+                f"{nu:.4g} mm^2/s is extrapolated by ASTM D341 (Walther), and so are the losses that follow "
+                "from it; give [lubricant] viscosity_table with a point near that temperature")
 
     def _temperature(self, temperature) -> np.ndarray:
         t = np.asarray(temperature, dtype=float)

@@ -202,7 +202,11 @@ def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses:
 
     for state, temperature in _fixed_point(models, oil, speeds, torques, run, tolerance, max_iterations, ""):
         pass
-    return state if oil is None else state.replace(oil_temperature=float(temperature))
+    if oil is None:
+        return state
+    warning = spin.oil.extrapolation_warning(float(temperature)) if spin.oil is not None else None
+    return state.replace(oil_temperature=float(temperature),
+                         **({"warnings": (*state.warnings, warning)} if warning else {}))
 
 
 class _OilState:

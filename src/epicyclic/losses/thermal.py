@@ -72,7 +72,7 @@ class Housing:
     height : float, default 0.3
         L of the natural-convection formula, m.
     emissivity : float, default 0.9
-        ε, (0, 1].
+        ε, [0, 1] (0: a housing that only convects).
     cooler : float, default 0
         k_cool, W/K (0: no cooler).
     coolant : float or None, default None
@@ -103,7 +103,7 @@ class Housing:
             object.__setattr__(self, "heat_transfer",
                                positive(self.heat_transfer, "heat_transfer (W/(m^2 K))", owner))
         object.__setattr__(self, "height", positive(self.height, "height (m)", owner))
-        object.__setattr__(self, "emissivity", fraction(self.emissivity, "emissivity", owner))
+        object.__setattr__(self, "emissivity", fraction(self.emissivity, "emissivity", owner, allow_zero=True))
         object.__setattr__(self, "cooler", positive(self.cooler, "cooler (W/K)", owner, allow_zero=True))
         if self.coolant is not None:
             coolant = self.coolant
@@ -153,6 +153,17 @@ class Housing:
         return self.area * (self.convection(t) * delta + radiation) + self.cooler * (t - coolant)
 
 
+def _finite_balance(balance: np.ndarray, temperature: np.ndarray) -> np.ndarray:
+    """``balance`` (P_V − P_Q, W) unchanged if finite everywhere, else the LossModelError naming the temperature."""
+    bad = ~np.isfinite(balance)
+    if np.any(bad):
+        raise LossModelError(
+            f"thermal balance: the losses at {float(np.broadcast_to(temperature, bad.shape)[bad][0]):.4g} degC are not "
+            "finite numbers (NaN or infinity); check the loss model's inputs (speeds, torques, lubricant data)."
+        )
+    return balance
+
+
 def steady_temperature(housing: Housing, loss: Callable[[np.ndarray], np.ndarray], shape: tuple[int, ...],
                        *, ceiling: float = MAX_SUMP_TEMPERATURE) -> np.ndarray:
     """The sump temperature ϑ at which P_Q(ϑ) = P_V(ϑ), at every operating point.
@@ -188,6 +199,11 @@ def steady_temperature(housing: Housing, loss: Callable[[np.ndarray], np.ndarray
     low = np.full(shape, coolest)
     high = np.full(shape, float(ceiling))
     f_high = loss(high) - housing.dissipated(high)
+    if not np.all(np.isfinite(f_high)):
+        raise LossModelError(
+            f"thermal balance: the losses at {ceiling:g} degC are not finite numbers (NaN or infinity) at some "
+            "operating points; check the loss model's inputs (speeds, torques, lubricant data)."
+        )
     if np.any(f_high > 0):
         worst = float(np.max(loss(high)))
         raise LossModelError(
@@ -195,7 +211,7 @@ def steady_temperature(housing: Housing, loss: Callable[[np.ndarray], np.ndarray
             f"({float(np.min(housing.dissipated(high))):.4g} W) at some operating points: no steady sump "
             "temperature below that; enlarge [housing] area or add a cooler, or give a fixed temperature."
         )
-    f_low = loss(low) - housing.dissipated(low)  # > 0: the losses exceed what a cold housing sheds
+    f_low = _finite_balance(loss(low) - housing.dissipated(low), low)  # > 0: the losses exceed what a cold housing sheds
     cold = f_low <= 0  # even the coldest sump sheds the losses: it stays at the coolest temperature
     # regula falsi with the Illinois rule (superlinear, always bracketed), vectorised over the points
     x = np.where(cold, low, 0.5 * (low + high))
@@ -208,7 +224,7 @@ def steady_temperature(housing: Housing, loss: Callable[[np.ndarray], np.ndarray
         x = guess
         if np.all(cold | (step <= TOLERANCE) | (high - low <= TOLERANCE)):
             break
-        f_x = loss(x) - housing.dissipated(x)
+        f_x = _finite_balance(loss(x) - housing.dissipated(x), x)
         hotter = f_x > 0  # the root lies above x
         low, high = np.where(hotter, x, low), np.where(hotter, high, x)
         f_low = np.where(hotter, f_x, np.where(side == -1, 0.5 * f_low, f_low))   # Illinois: halve the stale end

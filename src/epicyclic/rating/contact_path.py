@@ -206,7 +206,7 @@ class ContactPath:
                               f"(ρ_E = {rho_e:.4f} mm ≥ a_w sin α_wt = {common:.4f} mm): the teeth interfere; raise "
                               "x2 or shorten gear 1's tips.")
         p_bt = math.pi * g1.base_diameter / g1.teeth
-        eps_a = (rho_e - rho_a) / p_bt
+        eps_a = mesh.contact_ratio  # = (ρ_E − ρ_A)/p_bt, ISO 21771
         if eps_a < 1.0:
             raise RatingError(f"contact path of {name}: transverse contact ratio ε_α = {eps_a:.4f} < 1, the mesh "
                               "cannot run; lengthen the tips or change the profile shifts.")

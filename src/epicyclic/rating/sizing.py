@@ -134,7 +134,7 @@ def smallest_module(solution, set_name: str, spec: RatingSpec, *, face_width: fl
                           f"{max_module:g} mm.")
     state = solution.elements[set_name]
     torques, speeds = dict(state.torques), dict(state.speeds)
-    tried = []
+    tried, modes_short = [], ""
     for m in series:
         b = face_width if face_width is not None else face_width_ratio * element.teeth.sun * m
         try:
@@ -148,12 +148,14 @@ def smallest_module(solution, set_name: str, spec: RatingSpec, *, face_width: fl
         tried.append((m, s_h, s_f))
         if rating.ok:
             return SizingResult(m, float(b), shape, rating, tuple(tried), (series[0], series[-1]))
+        modes_short = "; ".join(f"{x.mesh}: {s}" for x in meshes for s in (y.below_minimum() for y in x.modes) if s)
     best = max(tried, key=lambda t: min(t[1] / spec.S_Hmin, t[2] / spec.S_Fmin), default=None)
     detail = (f"; the best was m = {best[0]:g} mm with S_H {best[1]:.3f}, S_F {best[2]:.3f}" if best else
               "; no module gave a valid geometry")
     raise RatingError(f"smallest_module: no module of {series[0]:g} ... {series[-1]:g} mm meets S_Hmin "
-                      f"{spec.S_Hmin:g} and S_Fmin {spec.S_Fmin:g} for {set_name!r}{detail}. Raise max_module, "
-                      "the face width, or the material.")
+                      f"{spec.S_Hmin:g} and S_Fmin {spec.S_Fmin:g} for {set_name!r}{detail}"
+                      + (f" (and the failure modes rated: at m = {series[-1]:g} mm {modes_short})" if modes_short
+                         else "") + ". Raise max_module, the face width, or the material.")
 
 
 def rate_one(item, torques, speeds):

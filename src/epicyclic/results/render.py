@@ -121,6 +121,7 @@ def solution_to_dict(sol: Any) -> dict[str, Any]:
         if sol.self_locking is None
         else {
             "message": sol.self_locking.message,
+            "cause": sol.self_locking.cause,
             "formal_efficiency": sol.self_locking.formal_efficiency,
             "thresholds": dict(sol.self_locking.thresholds),
         },
@@ -166,7 +167,8 @@ def _summary(sol: Any, u: Units) -> list[str]:
              ("output power", f"{power(sol.output_power):.6g} {u.power}"),
              ("total loss", f"{power(sol.loss):.6g} {u.power}")]
     if sol.self_locking is not None:
-        pairs += [("efficiency", "— (self-locking)"), ("self-locking", sol.self_locking.message)]
+        label = sol.self_locking.label
+        pairs += [("efficiency", f"— ({label})"), (label, sol.self_locking.message)]
     else:
         pairs.append(("efficiency", _num(sol.efficiency)))
     pairs += _circulation_pairs(sol.circulation, u)

@@ -138,6 +138,10 @@ class SelfLocking:
     thresholds : mapping element → η0
         For each lossy element, the value of its stationary efficiency below
         which the train self-locks (others unchanged); absent if none in (0, 1].
+    cause : {"self-locking", "no-load losses"}
+        ``"no-load losses"``: the torques given as no-load (spin) losses — drag, churning, pump,
+        seals — take more power than the input gives, so no power reaches the load although the
+        gearing itself does not lock (ISO/TR 14179-2: the loss as load-dependent plus no-load parts).
 
     References
     ----------
@@ -147,6 +151,13 @@ class SelfLocking:
     message: str
     formal_efficiency: float | None
     thresholds: Mapping[str, float] = field(default_factory=dict)
+    cause: str = "self-locking"
+
+    @property
+    def label(self) -> str:
+        """What a table shows in place of the efficiency: ``"self-locking"``, or ``"losses > input"``
+        where the no-load (spin) losses alone exceed the input power (no self-locking of the gearing)."""
+        return "losses > input" if self.cause == "no-load losses" else "self-locking"
 
 
 class _Deferred:

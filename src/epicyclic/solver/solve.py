@@ -38,7 +38,7 @@ from ..model.operating_point import OperatingPoint
 from ..model.planetary import PlanetarySet
 from ..model.train import GearTrain
 from ..results.circulation import circulation, indeterminate_circulation
-from ..results.solution import RPM_TO_RAD_S, ElementState, ShaftState, Solution
+from ..results.solution import RPM_TO_RAD_S, ElementState, SelfLocking, ShaftState, Solution
 from ..results.zero import clean, scale_of
 from .assembly import TrainMatrices, matrices
 from .evaluate import Evaluation
@@ -247,9 +247,25 @@ def solve(train: GearTrain, operating_point: OperatingPoint, *, lossless: bool =
         solution = _build(train, op, mats, ev, solver, roles, ideal, extra=extra, other=other)
     locked = self_locking(solution, consistent is not None, mats, given, values, n, ideal_pattern,
                           singular=singular)
+    if locked is not None and dragged is not None:
+        locked = _no_load_cause(locked, solution, -math.fsum(float(t) * v for t, v in zip(dragged[:, 0], n)) * RPM_TO_RAD_S)
     if locked is not None:
         solution = solution.replace(self_locking=locked, efficiency=None)
     return solution
+
+
+def _no_load_cause(locked: SelfLocking, solution: Solution, no_load: float) -> SelfLocking:
+    """``locked``, or — where the no-load losses alone take at least the input power — what it really is.
+
+    Such a point is no self-locking of the gearing (a larger input torque moves the train): the
+    speed-dependent losses (drag, churning, pump, seals) exceed what the input gives.
+    """
+    if not no_load >= solution.input_power > 0.0:
+        return locked
+    return replace(locked, cause="no-load losses", thresholds=MappingProxyType({}), message=(
+        f"no power reaches the load: the no-load (spin) losses, {no_load:.6g} W, exceed the input power, "
+        f"{solution.input_power:.6g} W, at this point (not a self-locking of the gearing). Give a larger input "
+        "torque, or check the oil temperature and the drag inputs."))
 
 
 def _at_limit(error, ideal_solver: TorqueSolver, mats: TrainMatrices, given, pattern) -> bool:

@@ -300,8 +300,13 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
     size = count(spec, (m for t in tasks for m in t.mechanisms))
     check(spec, size)
     local = client is None and not scheduler
-    n = (workers or os.cpu_count() or 1) if local else None
+    cores = os.cpu_count() or 1
+    n = min(workers or cores, cores) if local else None
     with_processes, note = use_processes(processes, size.worker_seconds, n) if local else (False, None)
+    if local and workers and workers > cores:  # more local workers than cores only compete (and 64 processes
+        # on 2 cores exhaust the machine's semaphores): capped, and said so
+        note = (f"synthesize: {workers} local workers asked for on a machine with {cores} core(s): using {n}"
+                + (f"; {note}" if note else ""))
     limit = f", stopped after {spec.time_limit:g} s" if spec.time_limit else ""
     where = (f"{n} local worker {'process' if with_processes else 'thread'}{'es' * with_processes if n > 1 else ''}"
              f"{'s' * (not with_processes) if n > 1 else ''}" if local

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Protocol
 
+from ..losses.oil import OIL_WARNING_START
 from ..model.elements import Clutch
 from ..model.planetary import PlanetarySet
 from ..results.solution import Solution
@@ -36,7 +37,7 @@ class Scheduled(Protocol):
     output: str
     schedule: Any
 
-__all__ = ["GearResult", "TransmissionAnalysis", "gear_result"]
+__all__ = ["GearResult", "TransmissionAnalysis", "gear_result", "efficiency_text"]
 
 #: Loss sources in report order (as :data:`epicyclic.losses.spin.ALL_SOURCES`).
 _SOURCE_ORDER = ("mesh", "bearing", "drag", "clutch_drag", "pump", "churning", "windage", "seals")
@@ -49,6 +50,13 @@ def _fmt(value: float | None, digits: int = 4) -> str:
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return "—"
     return f"{value:.{digits}f}"
+
+
+def efficiency_text(value: float | None, solution: Solution) -> str:
+    """An efficiency to 4 decimals, else why there is none: ``"self-locking"``, ``"losses > input"`` or ``"—"``."""
+    if value is not None:
+        return _fmt(value)
+    return solution.self_locking.label if solution.self_locking is not None else "—"
 
 
 @dataclass(frozen=True)
@@ -304,7 +312,7 @@ class TransmissionAnalysis:
             rolling = [s for s, st in g.set_status.items() if st == "rolling"]
             rows.append([
                 g.gear, "+".join(g.engaged), f"{g.ratio:.4f}", _fmt(step_of.get(g.gear), 3),
-                _fmt(g.efficiency_drive), _fmt(g.efficiency_coast) if g.efficiency_coast is not None else "self-locking",
+                efficiency_text(g.efficiency_drive, g.drive), efficiency_text(g.efficiency_coast, g.coast),
                 _fmt(g.circulating_power_ratio, 3),
                 f"{top[0]} {top[1]:+.3f}" if top else "—",
                 ",".join(rolling) or "—",
@@ -337,7 +345,13 @@ class TransmissionAnalysis:
         lines = ["drive losses by source, × P_in" + (f" (oil at {oil:.1f} degC)" if oil is not None else "") + ":"]
         for g in self.gears:
             lines.append(f"  {g.gear}: " + (", ".join(f"{k} {v:.4f}" for k, v in g.loss_sources.items()) or "none"))
-        return lines
+        return lines + [f"warning: {w}" for w in self.oil_warnings]
+
+    @property
+    def oil_warnings(self) -> tuple[str, ...]:
+        """The warnings of the gears' solutions about the oil (a viscosity extrapolated far from its data), once."""
+        seen = dict.fromkeys(w for g in self.gears for w in g.drive.warnings if w.startswith(OIL_WARNING_START))
+        return tuple(seen)
 
     def _footer(self) -> str:
         at = f"; analysed at {self.point.describe()}" if self.point is not None else ""
@@ -369,13 +383,14 @@ class TransmissionAnalysis:
         dict
             ``name``, ``input``, ``output``, ``operating_point`` (:meth:`InputPoint.to_dict`, or None),
             ``gears`` (each gear's ``to_dict()``: ratio, efficiencies in drive and coast, element
-            torques, ...), ``steps`` (φ = i_k/i_(k+1), keyed ``"k→k+1"``), ``spread`` and ``mean_step``.
+            torques, ...), ``steps`` (φ = i_k/i_(k+1), keyed ``"k→k+1"``), ``spread``, ``mean_step`` and ``warnings`` (:attr:`oil_warnings`).
         """
         return {
             "name": self.name, "input": self.input, "output": self.output,
             "operating_point": self.point.to_dict() if self.point is not None else None,
             "gears": [g.to_dict() for g in self.gears],
             "steps": self.steps, "spread": self.spread, "mean_step": self.mean_step,
+            "warnings": list(self.oil_warnings),
         }
 
     def __str__(self) -> str:
