@@ -29,7 +29,8 @@ Justified differences (not widened tolerances):
   463.6 °C, 1.9 % above the print; the report's extrapolation of the torque is not known).
   S_intS and S_SL are therefore checked with the printed θ_intS given.
 * **Flash temperature along the path**: the printed μ_m = 0.041 and θ_B,max = 169.50 °C are not
-  reproduced (here μ_m = μ_mC = 0.0297, θ_B,max = 141.8 °C): the friction formula of
+  reproduced (here, the pinion driving: μ_m = μ_mC = 0.0297, θ_B,max = 145.1 °C at Γ_A with X_J = 1.062,
+  where the report has its maximum at Γ_E with X_J = 1): the friction formula of
   ISO/TR 13989-1 was not reachable, and the ratio θ_fl,E/θ_flm = 2.49 of the report (independent of
   μ_m and w_Bt) differs from the ratio 2.40 of the Blok distribution with X_Γ of
   :mod:`epicyclic.rating.contact_path`.  What the report does fix is checked: X_Γ at E = 0.889,
