@@ -111,3 +111,16 @@ def test_power_equals_torque_times_speed_in_the_units_shown(name, lang):
         assert float(k) * float(torque) * (float(n1) - float(n3)) == pytest.approx(float(power), rel=2e-5, abs=1e-9)
     if name.startswith("brandenberger"):
         assert float(products[0][0]) == pytest.approx(0.0980665 * math.pi / 30 / 735.49875, rel=1e-5)
+
+
+@pytest.mark.parametrize("lang, says", [("en", "stationary efficiency η0 from its loss models at this point (step 6)"),
+                                        ("de", "Standwirkungsgrad η0 aus seinen Verlustmodellen")])
+def test_a_set_with_geometry_losses_does_not_open_with_eta0_of_one(lang, says):
+    # issue 30: `explain` on a set with geometry losses opened with "stationary efficiency η0 = 1" before
+    # step 6 computed η0 = 0.991944 at the point
+    from epicyclic.io import load_train_file
+
+    f = load_train_file("examples/geometry_simple_set.toml")
+    text = str(explain(f.solve(), f.units, lang, losses=f.losses, spin=f.spin))
+    assert says in text and "η0 = 1\n" not in text and "η0 = 1," not in text
+    assert ("0.991944" in text) and text.index(says) < text.index("0.991944")

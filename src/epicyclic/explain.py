@@ -67,6 +67,7 @@ _T = {
         "housing": "housing", "first_central": "first central gear", "second_central": "second central gear",
         "set": "planetary set", "stage": "gear stage", "clutch": "clutch", "brake": "brake",
         "i0": "stationary ratio i0", "eta0": "stationary efficiency η0", "ratio": "ratio i", "eta": "efficiency η",
+        "from_losses": "from its loss models at this point (step 6)",
         "engaged": "engaged", "open": "open",
         "speeds": "given speeds", "torques": "given torques", "powers": "given powers",
         "drives": "drives", "loads": "loads",
@@ -111,6 +112,7 @@ _T = {
         "housing": "Gehäuse", "first_central": "erstes Zentralrad", "second_central": "zweites Zentralrad",
         "set": "Umlaufradsatz", "stage": "Standgetriebe", "clutch": "Kupplung", "brake": "Bremse",
         "i0": "Standübersetzung i0", "eta0": "Standwirkungsgrad η0", "ratio": "Übersetzung i",
+        "from_losses": "aus seinen Verlustmodellen in diesem Betriebspunkt (Schritt 6)",
         "eta": "Wirkungsgrad η",
         "engaged": "geschlossen", "open": "offen",
         "speeds": "gegebene Drehzahlen", "torques": "gegebene Drehmomente", "powers": "gegebene Leistungen",
@@ -287,18 +289,23 @@ def explain(solution: Solution, units: Units | None = None, lang: str = "en", ti
     heading = f"{t['title']}: {title or train.name}"
 
     given: list[str] = []
+    # η0 of these comes from their loss models at the point (mesh friction, bearing factor), not from the file
+    modelled = {name for name, model in (losses or {}).items()
+                if model.has_mesh_model or model.bearing_efficiency != 1.0}
     for element in train.elements:
         if isinstance(element, PlanetarySet):
             given.append(
                 f"{t['set']} {element.name!r}: 1 = {t[_central(element, 'sun')]} {element.sun!r}, "
                 f"2 = {t[_central(element, 'ring')]} {element.ring!r}, "
                 f"3 = {t['carrier']} {element.carrier!r}; {t['i0']} = (n1 − n3)/(n2 − n3) = "
-                f"{fmt(element.stationary_ratio)}, {t['eta0']} = {fmt(element.stationary_efficiency)}"
+                f"{fmt(element.stationary_ratio)}, {t['eta0']} "
+                + (t["from_losses"] if element.name in modelled else f"= {fmt(element.stationary_efficiency)}")
             )
         elif isinstance(element, GearStage):
             given.append(
                 f"{t['stage']} {element.name!r}: 1 = {element.first!r}, 2 = {element.second!r}, 3 = {t['housing']}; "
-                f"{t['ratio']} = n1/n2 = {fmt(element.ratio)}, {t['eta']} = {fmt(element.efficiency)}"
+                f"{t['ratio']} = n1/n2 = {fmt(element.ratio)}, {t['eta']} "
+                + (t["from_losses"] if element.name in modelled else f"= {fmt(element.efficiency)}")
             )
         elif isinstance(element, Clutch):
             state = t["engaged"] if element.engaged else t["open"]

@@ -193,3 +193,18 @@ def test_a_set_instead_of_its_geometry_is_named():
     with pytest.raises(GeometryError, match=r"check_fitting: geometry must be a SetGeometry, got a PlanetarySet; "
                                             r"make one with SetGeometry\.create"):
         check_fitting(p)
+
+
+def test_a_slight_undercut_is_a_warning_not_a_failure():
+    # issue 30: the FVA reference planetary stage (REXS example, z = 17/22/61, x = 0, m = 4) failed `fit`
+    # for a theoretical undercut of 0.0057 module; commercial tools warn there.  Between the theoretical
+    # limit z_g = 17.10 and the practical 5/6 z_g = 14.25 (DIN 3960; easyengcalc.com) it is a warning.
+    g = SetGeometry.create(simple(17, 22, 61, planets=3), module=4)
+    sun = check_undercut(g)[0]
+    assert not sun.passed and sun.severity == "warning" and "slightly undercut" in sun.message
+    assert sun.min_profile_shift == pytest.approx(0.0057, abs=5e-5)
+    assert check_fitting(g).passed and sun in check_fitting(g).warnings
+    # below the practical limit it stays an error: z = 12 needs x >= 0.158 even with slight undercut
+    twelve = check_undercut(SetGeometry.create(simple(12, 18, 48, planets=3), module=2))[0]
+    assert not twelve.passed and twelve.severity == "error"
+    assert not check_fitting(SetGeometry.create(simple(12, 18, 48, planets=3), module=2)).passed

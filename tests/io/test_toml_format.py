@@ -198,3 +198,28 @@ def test_load_train_file_reports_missing_and_unreadable_files(tmp_path):
     binary.write_bytes(b"\xff\xfe\x00")
     with pytest.raises(InputFileError, match="cannot read the file"):
         load_train_file(binary)
+
+
+@pytest.mark.parametrize("override, says", [
+    ("transmission.input_speed_range=[800]", r"expected \[lowest, highest\] rated input speed"),
+    ("transmission.input_speed_range=[6000, 800]", "expected 0 <= lowest < highest speed"),
+    ('transmission.input_speed_range=[800, "6 m"]', "not a speed"),
+    ("transmission.max_input_torque=-5", "expected a positive torque"),
+    ('transmission.max_input_torque="70 kW"', "not a torque"),
+])
+def test_the_rated_range_of_a_transmission_is_checked(override, says):
+    from epicyclic.errors import EpicyclicError
+    from epicyclic.io import load_train_file
+
+    with pytest.raises(EpicyclicError, match=says) as caught:
+        load_train_file("examples/zf_8hp70_8speed.toml", overrides=[override])
+    assert "[transmission]" in str(caught.value)
+
+
+def test_the_rated_range_reads_units():
+    from epicyclic.io import load_train_file
+
+    f = load_train_file("examples/zf_8hp70_8speed.toml", overrides=[
+        'transmission.input_speed_range=["800 rpm", "6500 U/min"]', 'transmission.max_input_torque="70 kp*m"'])
+    assert f.transmission.input_speed_range == (800.0, 6500.0)
+    assert f.transmission.max_input_torque == pytest.approx(70 * 9.80665)

@@ -125,3 +125,17 @@ def test_compiled_equals_numpy_with_four_engaged():
     lay = layout(9, 1, 4, 4)
     kept = _same(mechs[3], lay, np.full(4, -4.0), np.full(4, -1.5), np.array([3.2, 1.9, 1.0]), [-2.6], 0.01, 1)
     assert kept > 1000
+
+
+@needs_numba
+def test_the_compiled_loops_are_cached_in_the_user_cache_folder(tmp_path):
+    """Issue 30: numba's cache went into the installed package's folder (fails on a read-only install)."""
+    code = "from epicyclic.synthesis import kernel; import numba; print(kernel.cache_directory(), numba.config.CACHE_DIR)"
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env["XDG_CACHE_HOME"] = str(tmp_path)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True).stdout
+    folder, used = out.split()
+    assert folder == used == str(tmp_path / "epicyclic" / "numba")
+    env["EPICYCLIC_CACHE_DIR"] = str(tmp_path / "mine")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True).stdout
+    assert out.split() == [str(tmp_path / "mine" / "numba")] * 2

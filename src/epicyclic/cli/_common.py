@@ -135,15 +135,19 @@ def check_finite(data: Any, file: Path | str | None, what: str = "") -> None:
 _NOTES: list[str] = []
 
 
+def note(line: str) -> None:
+    """One line for stderr once the command has done its work (a warning about an option's value, ...)."""
+    if line not in _NOTES:
+        _NOTES.append(line)
+
+
 def note_exchange(train_file) -> None:
     """For a REXS file: one line for stderr, after the command's work, saying what was read and what was
     ignored (stdout stays the report; a command that fails prints only its error)."""
     if getattr(train_file, "exchange", None) is not None:
         from ..text import terminal_text
 
-        line = " ".join(terminal_text(train_file.exchange.summary).split())
-        if line not in _NOTES:
-            _NOTES.append(line)
+        note(" ".join(terminal_text(train_file.exchange.summary).split()))
 
 
 def note_rexs(file: Path) -> None:

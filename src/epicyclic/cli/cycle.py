@@ -110,7 +110,7 @@ def cycle(
         refuse_input(out, [cycle_file, schedule])
     spec = load_train_file(file, overrides=set_ or ())
     transmission = Transmission.from_train_file(spec)  # the file read once
-    limits = limits_from_options(engine_speed, max_input_torque, capacity, spec.units)
+    limits = limits_from_options(engine_speed, max_input_torque, capacity, spec.units, spec.transmission)
     vehicle = None
     if wheel_radius is not None or axle_ratio is not None or mass is not None:
         if wheel_radius is None or axle_ratio is None:

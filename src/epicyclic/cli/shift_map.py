@@ -29,9 +29,11 @@ __all__ = ["shift_map", "DEFAULT_MAP_INPUT_TORQUE", "limits_from_options", "Engi
 
 #: The carrying limits of ``shiftmap`` and ``cycle`` (:func:`limits_from_options`).
 EngineSpeedOption = Annotated[Optional[str], typer.Option(
-    "--engine-speed", help="Input speeds a gear may run at, LOW..HIGH. Default: 800..6000 1/min.")]
+    "--engine-speed", help="Input speeds a gear may run at, LOW..HIGH. Default: the file's [transmission] "
+                           "input_speed_range, else 800..6000 1/min.")]
 MaxInputTorqueOption = Annotated[Optional[str], typer.Option(
-    "--max-input-torque", help="Most input (engine) torque. Default: no limit.")]
+    "--max-input-torque", help="Most input (engine) torque. Default: the file's [transmission] "
+                               "max_input_torque, else none (cycle) or 500 N*m (shiftmap).")]
 CapacityOption = Annotated[Optional[list[str]], typer.Option(
     "--capacity", help="Torque capacity of a shift element, NAME=TORQUE (repeatable).")]
 
@@ -52,9 +54,17 @@ def _capacities(values: list[str] | None) -> dict[str, str]:
     return out
 
 
+#: Input speeds beyond this (1/min) are beyond any road vehicle's engine or traction motor: warned.
+PLAUSIBLE_INPUT_SPEED = 20000.0
+
+
 def limits_from_options(engine_speed: str | None, max_input_torque: str | None, capacity: list[str] | None,
-                        units=None):
+                        units=None, rated=None, default_torque: float | None = None):
     """The :class:`~epicyclic.transmission.gear_points.CarryLimits` of the options (shared with ``cycle``).
+
+    Defaults are the file's rated range (``[transmission] input_speed_range``, ``max_input_torque``), else
+    800 … 6000 1/min and ``default_torque``; an option beyond the file's rated range, or speeds beyond
+    :data:`PLAUSIBLE_INPUT_SPEED`, are used and warned on stderr.
 
     Parameters
     ----------
@@ -66,6 +76,10 @@ def limits_from_options(engine_speed: str | None, max_input_torque: str | None, 
         ``NAME=TORQUE`` items.
     units : Units, optional
         The file's ``[units]``.
+    rated : epicyclic.io.Transmission, optional
+        The file's ``[transmission]`` (its rated input speeds and torque).
+    default_torque : float, optional
+        The input torque limit, N·m, where neither the option nor the file gives one (None: no limit).
 
     Returns
     -------
@@ -74,14 +88,28 @@ def limits_from_options(engine_speed: str | None, max_input_torque: str | None, 
     from ..io.ranges import parse_axis
     from ..transmission.gear_points import DEFAULT_INPUT_SPEED_RANGE, CarryLimits
     from ..units import Units, to_core
+    from ._common import note
 
     units = units or Units()
-    speed_range = DEFAULT_INPUT_SPEED_RANGE
+    file_speeds = getattr(rated, "input_speed_range", None)
+    file_torque = getattr(rated, "max_input_torque", None)
+    speed_range = file_speeds or DEFAULT_INPUT_SPEED_RANGE
     if engine_speed is not None:
         axis = parse_axis(engine_speed, "--engine-speed", units.speed, "speed")
         speed_range = (float(axis[0]), float(axis[-1]))
-    torque = None if max_input_torque is None else to_core(max_input_torque, "torque", field="--max-input-torque",
-                                                          default_unit=units.torque)
+        if file_speeds and (speed_range[0] < file_speeds[0] or speed_range[1] > file_speeds[1]):
+            note(f"warning: --engine-speed {speed_range[0]:g}..{speed_range[1]:g} 1/min is outside the file's rated "
+                 f"input_speed_range {file_speeds[0]:g}..{file_speeds[1]:g} 1/min ([transmission]).")
+        elif speed_range[1] > PLAUSIBLE_INPUT_SPEED:
+            note(f"warning: --engine-speed up to {speed_range[1]:g} 1/min is beyond any road vehicle's engine or "
+                 f"motor (> {PLAUSIBLE_INPUT_SPEED:g} 1/min); state the rated range as [transmission] "
+                 "input_speed_range.")
+    torque = file_torque if file_torque is not None else default_torque
+    if max_input_torque is not None:
+        torque = to_core(max_input_torque, "torque", field="--max-input-torque", default_unit=units.torque)
+        if file_torque is not None and torque > file_torque:
+            note(f"warning: --max-input-torque {torque:g} N*m exceeds the file's rated max_input_torque "
+                 f"{file_torque:g} N*m ([transmission]).")
     capacities = {k: to_core(v, "torque", field=f"--capacity {k}", default_unit=units.torque)
                   for k, v in _capacities(capacity).items()}
     return CarryLimits(speed_range, torque, capacities)
@@ -95,7 +123,7 @@ def shift_map(
                         "top gear's at the highest engine speed, 60 values.")] = None,
     torque: Annotated[Optional[str], typer.Option(
         "--torque", help="Output torques A..B:N. Default: 10 N*m to first gear's at the input torque limit "
-                         "(500 N*m without one), 50 values.")] = None,
+                         "(the file's max_input_torque, else 500 N*m), 50 values.")] = None,
     engine_speed: EngineSpeedOption = None,
     max_input_torque: MaxInputTorqueOption = None,
     capacity: CapacityOption = None,
@@ -125,7 +153,8 @@ def shift_map(
         refuse_input(out, [schedule])
     spec = load_train_file(file, overrides=set_ or ())
     transmission = Transmission.from_train_file(spec)  # the file read once
-    limits = limits_from_options(engine_speed, max_input_torque, capacity, spec.units)
+    limits = limits_from_options(engine_speed, max_input_torque, capacity, spec.units, spec.transmission,
+                                 DEFAULT_MAP_INPUT_TORQUE)
     chosen = tuple(g.strip() for g in gears.split(",")) if gears else forward_gears(transmission)
     given = None
     if schedule is not None:
@@ -140,7 +169,7 @@ def shift_map(
         speeds = parse_axis(speed, "--speed", spec.units.speed, "speed")
     if torque is None:
         first = max(ratios) if ratios else 1.0
-        torques = np.linspace(10.0, (limits.max_input_torque or DEFAULT_MAP_INPUT_TORQUE) * first, 50)
+        torques = np.linspace(10.0, limits.max_input_torque * first, 50)
     else:
         torques = parse_axis(torque, "--torque", spec.units.torque, "torque")
     if speeds.size * torques.size > MAX_MAP_POINTS:

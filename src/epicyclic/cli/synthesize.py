@@ -10,8 +10,6 @@ table, ``--plot`` the speed chart across gears (or lever diagram) of the best ca
 
 from __future__ import annotations
 
-import sys
-import time
 from pathlib import Path
 from typing import Annotated, Optional
 
@@ -24,31 +22,9 @@ __all__ = ["synthesize"]
 
 
 def _progress(quiet: bool):
-    if quiet:
-        return None
-    state = {"last": -1, "start": time.monotonic(), "first": None}
+    from ..synthesis.progress import ProgressLine
 
-    def report(done: int, total: int) -> None:
-        if state["first"] is None:  # tasks done before (a checkpoint) do not count for the rate
-            state["first"] = done
-        percent = 100 * done // max(total, 1)
-        elapsed = time.monotonic() - state["start"]
-        ran = done - state["first"]
-        eta = f", about {_eta(elapsed / ran * (total - done))} left" if 0 < ran and done < total else ""
-        if sys.stderr.isatty():
-            typer.echo(f"\rsynthesize: {done}/{total} tasks ({percent} %){eta}   ", err=True, nl=done == total)
-        elif percent // 10 != state["last"] // 10 or done == total:
-            typer.echo(f"synthesize: {done}/{total} tasks ({percent} %){eta}", err=True)
-        state["last"] = percent
-
-    return report
-
-
-def _eta(seconds: float) -> str:
-    if seconds < 1:
-        return "under 1 s"
-    return f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.0f} min" if seconds < 7200 else \
-        f"{seconds / 3600:.1f} h"
+    return None if quiet else ProgressLine()
 
 
 @guarded

@@ -127,7 +127,9 @@ def min_profile_shift(teeth: int, pressure_angle: float = 20.0, addendum: float 
 def check_undercut(geometry: SetGeometry, limit: Literal["theoretical", "practical"] = "theoretical") -> tuple[UndercutCheck, ...]:
     """Undercut of every external gear of the set (internal gears do not undercut this way).
 
-    A gear passes when its profile shift is at least :func:`min_profile_shift`.
+    A gear passes when its profile shift is at least :func:`min_profile_shift`.  Between the theoretical
+    and the practical limit (``limit="theoretical"``) it fails as a *warning*: slightly undercut, as
+    commercial tools warn there; below the practical limit it fails as an error.
 
     Parameters
     ----------
@@ -159,9 +161,19 @@ def check_undercut(geometry: SetGeometry, limit: Literal["theoretical", "practic
         r = gear.rack
         z_lim = undercut_limit(r.pressure_angle, r.addendum, r.helix_angle) * (5 / 6 if limit == "practical" else 1)
         x_min = min_profile_shift(gear.teeth, r.pressure_angle, r.addendum, r.helix_angle, limit)
+        x_practical = min_profile_shift(gear.teeth, r.pressure_angle, r.addendum, r.helix_angle, "practical")
         passed = gear.profile_shift >= x_min - 1e-9
+        severity = "error"
         if passed:
             message = f"{name}: z = {gear.teeth}, x = {gear.profile_shift:+.4f} >= x_min = {x_min:+.4f} ({limit} z_g = {z_lim:.2f})"
+        elif gear.profile_shift >= x_practical - 1e-9:  # the warning band: undercut in theory, within practice
+            severity = "warning"
+            message = (
+                f"{name} is slightly undercut: x = {gear.profile_shift:+.4f} is below the theoretical x_min = "
+                f"{x_min:+.4f} (z_g = {z_lim:.2f}) by {x_min - gear.profile_shift:.4f}, but not below the practical "
+                f"limit x = {x_practical:+.4f} (z_g' = 5/6 z_g = {z_lim * 5 / 6:.2f}, slight undercut accepted): "
+                f"check the root form, or raise x to {x_min:+.4f} for none"
+            )
         else:
             message = (
                 f"{name} is undercut: its profile shift x = {gear.profile_shift:+.4f} is below the least "
@@ -169,7 +181,7 @@ def check_undercut(geometry: SetGeometry, limit: Literal["theoretical", "practic
                 f"raise x by {x_min - gear.profile_shift:.4f} to x >= {x_min:+.4f}, "
                 f"or use at least {math.ceil(z_lim * (1 - gear.profile_shift / r.addendum) - 1e-9)} teeth"
             )
-        out.append(UndercutCheck("undercut", passed, message, "error", name, gear.teeth, gear.profile_shift,
+        out.append(UndercutCheck("undercut", passed, message, severity, name, gear.teeth, gear.profile_shift,
                                  z_lim, x_min, limit))
     return tuple(out)
 

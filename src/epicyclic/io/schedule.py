@@ -16,8 +16,10 @@ from types import MappingProxyType
 from ..errors import ModelError
 from ..model import GearTrain
 from ..text import short
+from ..units import to_core
+from .reader import at_key
 
-__all__ = ["Transmission"]
+__all__ = ["Transmission", "rated_limits"]
 
 
 @dataclass(frozen=True)
@@ -30,11 +32,18 @@ class Transmission:
         The input and output shafts.
     schedule : mapping gear name → tuple of str
         For each gear, the clutches and brakes engaged in it (all others open).
+    input_speed_range : (float, float) or None
+        The rated input (engine) speeds, 1/min (``[transmission] input_speed_range``): what a gear may run
+        at, the default of ``shiftmap`` and ``cycle``; None: not stated.
+    max_input_torque : float or None
+        The rated input torque, N·m (``[transmission] max_input_torque``); None: not stated.
     """
 
     input: str
     output: str
     schedule: Mapping[str, tuple[str, ...]]
+    input_speed_range: tuple[float, float] | None = None
+    max_input_torque: float | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "schedule", MappingProxyType({k: tuple(v) for k, v in self.schedule.items()}))
@@ -71,3 +80,41 @@ class Transmission:
                 f"{', '.join(repr(g) for g in self.schedule) or 'none'}."
             )
         return train.with_engaged(self.schedule[gear])
+
+
+def rated_limits(reader, table: Mapping, where: str) -> tuple[tuple[float, float] | None, float | None]:
+    """``input_speed_range`` and ``max_input_torque`` of a ``[transmission]`` table, in 1/min and N·m.
+
+    Plain numbers are in the file's ``[units]``; strings carry their unit (``"6500 rpm"``, ``"70 kp*m"``).
+
+    Parameters
+    ----------
+    reader : the file reader (its ``units``, ``error`` and ``checked``)
+    table : mapping
+        The ``[transmission]`` table.
+    where : str
+        ``"[transmission]"``, for messages.
+
+    Returns
+    -------
+    (speed range or None, torque or None)
+    """
+    speeds = torque = None
+    if "input_speed_range" in table:
+        key = at_key(where, "input_speed_range")
+        value = table["input_speed_range"]
+        if not isinstance(value, list) or len(value) != 2:
+            raise reader.error(key, "expected [lowest, highest] rated input speed, e.g. [800, 6500] or "
+                                    f"[\"800 rpm\", \"6500 rpm\"], got {short(value)}.")
+        low, high = (reader.checked(key, "input_speed_range", to_core, v, "speed", field="input_speed_range",
+                                    default_unit=reader.units.speed) for v in value)
+        if not 0.0 <= low < high:
+            raise reader.error(key, f"expected 0 <= lowest < highest speed, got {low:g} and {high:g} 1/min.")
+        speeds = (low, high)
+    if "max_input_torque" in table:
+        key = at_key(where, "max_input_torque")
+        torque = reader.checked(key, "max_input_torque", to_core, table["max_input_torque"], "torque",
+                                field="max_input_torque", default_unit=reader.units.torque)
+        if not torque > 0.0:
+            raise reader.error(key, f"expected a positive torque, got {torque:g} N*m.")
+    return speeds, torque

@@ -55,7 +55,7 @@ from ..units import Units, to_core
 from .located import locate_error, operating_point_where
 from .overrides import OverrideError, apply_overrides
 from .reader import TableReader, at_key, kind_of
-from .schedule import Transmission
+from .schedule import Transmission, rated_limits
 from .source import InputFileError, check_document, decode_source, parse_toml, read_bytes, sniff
 
 __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "loads_train_file", "read_document"]
@@ -75,7 +75,7 @@ _CLUTCH_KEYS = {"name", "first", "second", "engaged", "drag"}
 _BRAKE_KEYS = {"name", "shaft", "engaged", "drag"}
 _UNIT_KEYS = {"speed", "torque", "power"}
 _OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
-_TRANSMISSION_KEYS = {"input", "output", "schedule"}
+_TRANSMISSION_KEYS = {"input", "output", "schedule", "input_speed_range", "max_input_torque"}
 
 
 @dataclass(frozen=True)
@@ -592,4 +592,5 @@ class _Reader(TableReader):
             schedule[gear] = names
         if not schedule:
             raise self.error(at_key(where, "schedule"), "expected at least one gear, got none.")
-        return Transmission(ends["input"], ends["output"], schedule)
+        return Transmission(ends["input"], ends["output"], schedule, *rated_limits(self, table, where))
+

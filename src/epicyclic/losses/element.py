@@ -36,7 +36,7 @@ from .errors import LossModelError
 from .friction import ConstantFriction, SchlenkFriction
 from .mesh import MeshLoss, meshes_efficiency, set_meshes, stage_meshes
 
-__all__ = ["ElementLosses", "LossState", "SOURCES"]
+__all__ = ["ElementLosses", "LossState", "SOURCES", "friction_at_viscosity"]
 
 #: Names of the loss sources, in report order.
 SOURCES = ("mesh", "bearing", "drag")
@@ -274,8 +274,8 @@ class ElementLosses:
             friction, meshes = self.friction, self.meshes
             if viscosity is not None:  # Schlenk's μ at the oil's viscosity of each point, per mesh too
                 at = np.broadcast_to(np.asarray(viscosity, dtype=float), shape)
-                friction = _at_viscosity(friction, at)
-                meshes = tuple(replace(m, friction=_at_viscosity(m.friction, at)) if m.friction is not None else m
+                friction = friction_at_viscosity(friction, at)
+                meshes = tuple(replace(m, friction=friction_at_viscosity(m.friction, at)) if m.friction is not None else m
                                for m in meshes)
             factors["mesh"], mus = meshes_efficiency(meshes, friction,
                                                      {p: np.asarray(torques[p], dtype=float) for p in self.ports
@@ -325,6 +325,6 @@ def _with_friction(meshes: tuple[MeshLoss, ...], mesh_friction: Mapping[str, Fri
     return tuple(replace(m, friction=mesh_friction.get(m.mesh.name)) for m in meshes)
 
 
-def _at_viscosity(friction, viscosity):
+def friction_at_viscosity(friction, viscosity):
     """Schlenk's friction at the given oil viscosity (an array over the points); other models unchanged."""
     return friction.at_viscosity(viscosity) if isinstance(friction, SchlenkFriction) else friction

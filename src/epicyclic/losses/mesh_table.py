@@ -25,7 +25,7 @@ from typing import Any
 
 from ..geometry._render import html_table, text_table
 from ..geometry.contact import overlap_ratio
-from .element import ElementLosses
+from .element import ElementLosses, friction_at_viscosity
 from .tooth_loss import tooth_loss_factor_method
 
 __all__ = ["MeshLossRow", "MeshLossTable", "mesh_loss_table"]
@@ -119,6 +119,8 @@ def mesh_loss_table(solution, losses: Mapping[str, ElementLosses]) -> MeshLossTa
         relative = speed[a] - speed[c]
         for item in model.meshes:
             friction = item.friction if item.friction is not None else model.friction
+            if solution.oil_viscosity is not None:  # the oil's at this point (thermal balance), not the nominal
+                friction = friction_at_viscosity(friction, solution.oil_viscosity)
             torque = state.torques[item.force_port]
             eta, mu = item.efficiency(friction, torque, relative)
             if item.force_port == "first":

@@ -205,7 +205,8 @@ def solve_with_losses(train: GearTrain, operating_point: OperatingPoint, losses:
     if oil is None:
         return state
     warning = spin.oil.extrapolation_warning(float(temperature)) if spin.oil is not None else None
-    return state.replace(oil_temperature=float(temperature),
+    viscosity = float(spin.oil.dynamic_viscosity(float(temperature))) if spin.oil is not None else None
+    return state.replace(oil_temperature=float(temperature), oil_viscosity=viscosity,
                          **({"warnings": (*state.warnings, warning)} if warning else {}))
 
 

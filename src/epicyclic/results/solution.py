@@ -212,6 +212,8 @@ class Solution:
         part of ``loss`` and of :attr:`loss_sources`.
     oil_temperature : float or None
         The oil temperature the spin losses were evaluated at, °C (None without spin losses).
+    oil_viscosity : float or None
+        The oil's dynamic viscosity there, mPa·s (what Schlenk's mesh friction used at this point).
 
     ``circulation``, ``warnings`` and ``ideal`` may be given as callables that make them: the solver
     does so, and each is made on first access (many callers never read them).  A pickled or copied
@@ -233,6 +235,7 @@ class Solution:
     ideal: Solution | None = field(default=_Deferred(), compare=False, repr=False)
     housing_loss_sources: Mapping[str, float] = field(default_factory=dict)
     oil_temperature: float | None = None
+    oil_viscosity: float | None = None
 
     def __getstate__(self) -> dict[str, Any]:  # pickled and copied with the deferred fields built
         return {**self.__dict__, **{"_" + name: getattr(self, name) for name in _DEFERRED}}

@@ -14,7 +14,8 @@ steps that numpy does in several passes over large temporary arrays:
   input/output pair over the whole box (``ratio_ranges(det[..., xs], det[..., ys])``: temporaries
   of corners × combinations × pairs).
 
-Here each is one loop over the output, compiled with ``numba.njit(cache=True, nogil=True)`` (no
+Here each is one loop over the output, compiled with ``numba.njit(cache=True, nogil=True)`` (cached in
+the user's cache folder, :func:`cache_directory`; no
 GIL held: threads of one worker scale).  Every operation is the numpy path's, in the same order
 on the same (finite) IEEE doubles (no ``fastmath``): the results are bit-equal (``tests/synthesis/test_kernel.py``
 on random and published spaces).  numba is optional: without it (or with ``EPICYCLIC_NUMBA=0``)
@@ -33,11 +34,40 @@ import os
 
 import numpy as np
 
-__all__ = ["AVAILABLE", "four_cofactors", "group_tests", "passes_matched", "use_kernel", "whole_box"]
+__all__ = ["AVAILABLE", "cache_directory", "four_cofactors", "group_tests", "passes_matched", "use_kernel", "whole_box"]
+
+def cache_directory() -> str:
+    """Where the compiled loops are cached: ``$EPICYCLIC_CACHE_DIR/numba``, else the user's cache folder.
+
+    The user's cache folder is ``$XDG_CACHE_HOME`` (default ``~/.cache``) on Linux, ``~/Library/Caches``
+    on macOS and ``%LOCALAPPDATA%`` on Windows, each with ``epicyclic/numba`` below it — never the
+    installed package's folder, which may be read-only.  numba's own ``NUMBA_CACHE_DIR``, where set, wins.
+
+    Returns
+    -------
+    str
+    """
+    import sys
+
+    base = os.environ.get("EPICYCLIC_CACHE_DIR")
+    if base:
+        return os.path.join(base, "numba")
+    if sys.platform == "win32":
+        root = os.environ.get("LOCALAPPDATA") or os.path.join(os.path.expanduser("~"), "AppData", "Local")
+    elif sys.platform == "darwin":
+        root = os.path.join(os.path.expanduser("~"), "Library", "Caches")
+    else:
+        root = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return os.path.join(root, "epicyclic", "numba")
+
 
 try:  # optional: pip install epicyclic[fast]
     if os.environ.get("EPICYCLIC_NUMBA", "1").strip() in ("0", "false", "no", "off"):
         raise ImportError("switched off by EPICYCLIC_NUMBA")
+    import sys as _sys
+
+    if "numba" not in _sys.modules:  # numba reads its cache folder once, when it is first imported
+        os.environ.setdefault("NUMBA_CACHE_DIR", cache_directory())
     import numba
 except ImportError:  # pragma: no cover - exercised where numba is absent
     numba = None

@@ -227,7 +227,7 @@ def search_task(task: Task) -> TaskResult:
 
 def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str | None = None,
                     workers: int | None = None, processes: bool | None = None,
-                    progress: Callable[[int, int], None] | None = None, chunk: int | None = None,
+                    progress: Callable[[int, int], None] | bool | None = None, chunk: int | None = None,
                     announce: Callable[[str], None] | bool = True, checkpoint: str | None = None,
                     on_candidates: Callable[[tuple[Candidate, ...]], None] | None = None,
                     on_task: Callable[[int, TaskResult], None] | None = None):
@@ -255,8 +255,10 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
         Local workers as processes (True) or threads of this process (False); default: threads
         for a small search, processes for a big one where the main script allows it
         (:func:`~epicyclic.synthesis.distributed.use_processes`).
-    progress : callable (done, total), optional
-        Called after each finished task.
+    progress : callable (done, total), bool or None, optional
+        Called after each finished task; True: a progress line on stderr
+        (:class:`~epicyclic.synthesis.progress.ProgressLine`: tasks, percent, time left); None (default):
+        that line where stderr is a terminal and ``announce`` is True; False: none.
     chunk : int, optional
         Mechanisms per task (default: about 8).
     announce : callable (str) or bool, default True
@@ -290,6 +292,12 @@ def synthesize_spec(spec: SynthesisSpec, *, client: Any = None, scheduler: str |
     from .estimate import check, count, estimate
 
     say = (lambda text: print(text, file=sys.stderr)) if announce is True else (announce or (lambda text: None))
+    if progress is True or (progress is None and announce is True and sys.stderr.isatty()):
+        from .progress import ProgressLine
+
+        progress = ProgressLine()
+    elif progress is False:
+        progress = None
     workers = check_workers(workers)
     if chunk is not None and (isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1):
         raise SynthesisError(f"synthesize: chunk must be a whole number of mechanisms >= 1, got {chunk!r:.40}.")
@@ -406,7 +414,7 @@ def assemble(spec: SynthesisSpec, results: Sequence[TaskResult | None], estimate
 def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping[str, int] = 2,
                elements: Mapping[str, int] | None = None, constraints: Mapping[str, Any] | None = None, *,
                client: Any = None, scheduler: str | None = None, workers: int | None = None,
-               processes: bool | None = None, progress: Callable[[int, int], None] | None = None,
+               processes: bool | None = None, progress: Callable[[int, int], None] | bool | None = None,
                chunk: int | None = None, announce: Callable[[str], None] | bool = True,
                checkpoint: str | None = None, on_candidates: Callable[[tuple[Candidate, ...]], None] | None = None):
     """Find transmissions (architecture, shift schedule, tooth counts) that give the target ratios.
@@ -437,8 +445,10 @@ def synthesize(targets: Sequence[float] | Mapping[str, Any], sets: int | Mapping
         threads for small searches, processes for big ones where the script allows (a plain
         script needs its call under ``if __name__ == "__main__":`` for processes; without it
         the search runs on threads, or, with processes=True, is refused with that advice).
-    progress : callable (done, total), optional
-        Called after each finished task.
+    progress : callable (done, total), bool or None, optional
+        Called after each finished task; True: a progress line on stderr
+        (:class:`~epicyclic.synthesis.progress.ProgressLine`: tasks, percent, time left); None (default):
+        that line where stderr is a terminal and ``announce`` is True; False: none.
     chunk : int, optional
         Mechanisms per Dask task (default: about 8, fewer for small searches).
     announce : callable (str) or bool, default True
