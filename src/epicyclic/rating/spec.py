@@ -20,6 +20,7 @@ long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``
 pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
 tip_relief              running-in C_ay             C_a for K_v, µm (without one: C_ay of the pair)
 rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
+tool                    none (ISO's closed form)    the tool per gear: the tooth form it generates
 ======================  ==========================  =============================================
 
 Required (an error names the key and the value it would suggest): ``material`` (a
@@ -41,6 +42,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Any
 
+from ..geometry.tooth_generation import PinionCutter, RackTool
 from .errors import RatingError
 from .materials import Material, material
 from .standard import DEFAULT_EDITION, edition
@@ -132,6 +134,10 @@ class RatingSpec:
     rim_thickness : mapping gear → float, optional
         Rim thickness s_R below the root per gear name (``ring``, ``"P1:ring"``), mm, for Y_B;
         gears not named are solid (Y_B = 1).
+    tools : mapping gear → RackTool or PinionCutter, optional
+        The tool that cuts each gear (keys as for ``material``): Y_F, Y_S from the root fillet it
+        generates (:mod:`~epicyclic.rating.generated_form`).  Gears without one: ISO's closed form
+        with the basic rack (``tool_tip_radius``), internal gears the ``cutter`` if given.
 
     Raises
     ------
@@ -165,6 +171,7 @@ class RatingSpec:
     tip_relief: float | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
     rim_thickness: Mapping[str, float] | None = None
+    tools: Mapping[str, RackTool | PinionCutter] | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "standard", edition(self.standard))
@@ -199,6 +206,12 @@ class RatingSpec:
             for key, value in rims.items():
                 rims[key] = _number(value, f"rim_thickness.{key}")
             object.__setattr__(self, "rim_thickness", MappingProxyType(rims))
+        if self.tools is not None:
+            for key, tool in dict(self.tools).items():
+                if not isinstance(tool, (RackTool, PinionCutter)):
+                    raise RatingError(f"rating.tool.{key} must be a RackTool or a PinionCutter, got "
+                                      f"{type(tool).__name__}.")
+            object.__setattr__(self, "tools", MappingProxyType(dict(self.tools)))
         if isinstance(self.material, str):
             object.__setattr__(self, "material", material(self.material))
         elif isinstance(self.material, Mapping):
@@ -248,6 +261,44 @@ class RatingSpec:
         """
         rims = self.rim_thickness or {}
         return rims.get(f"{element}:{gear}", rims.get(gear))
+
+    def tool_of(self, element: str, gear: str, internal: bool) -> RackTool | PinionCutter | None:
+        """The tool that cuts ``gear`` of ``element`` (``"P1:ring"``, then ``"ring"``, then ``"all"``), or None.
+
+        An internal gear without a tool of its own is cut by ``cutter`` where one is given.
+
+        Parameters
+        ----------
+        element : str
+            The set or stage.
+        gear : str
+            The gear's name in it.
+        internal : bool
+            The gear is internal (a pinion-type cutter cuts it).
+
+        Returns
+        -------
+        RackTool or PinionCutter or None
+            None: no tool given (the rating takes ISO's closed form of the basic rack).
+
+        Raises
+        ------
+        RatingError
+            A rack-type tool for an internal gear or a pinion-type cutter for an external one.
+        """
+        tools = self.tools or {}
+        for key in (f"{element}:{gear}", gear, "all"):
+            if key in tools:
+                tool = tools[key]
+                if isinstance(tool, PinionCutter) != internal:
+                    need = "a pinion-type cutter (give teeth = z0)" if internal else "a rack-type tool (no teeth)"
+                    raise RatingError(f"rating.tool.{key}: the {'internal' if internal else 'external'} gear "
+                                      f"{gear!r} of {element!r} is cut by {need}.")
+                return tool
+        if internal and self.cutter is not None:
+            c = self.cutter
+            return PinionCutter(c.teeth, c.profile_shift, c.addendum, c.tip_radius)
+        return None
 
     def roughness_of(self, key: str, element: str, gear: str) -> float:
         """R_z of ``gear`` of ``element``: ``key`` is ``flank_roughness`` or ``root_roughness``, µm.
@@ -308,4 +359,5 @@ class RatingSpec:
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
                 "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,
                 "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,
-                "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None}
+                "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None,
+                "tool": {k: v.to_dict() for k, v in self.tools.items()} if self.tools else None}
