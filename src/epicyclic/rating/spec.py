@@ -295,10 +295,7 @@ class RatingSpec:
                     raise RatingError(f"rating.tool.{key}: the {'internal' if internal else 'external'} gear "
                                       f"{gear!r} of {element!r} is cut by {need}.")
                 return tool
-        if internal and self.cutter is not None:
-            c = self.cutter
-            return PinionCutter(c.teeth, c.profile_shift, c.addendum, c.tip_radius)
-        return None
+        return self.cutter if internal else None
 
     def roughness_of(self, key: str, element: str, gear: str) -> float:
         """R_z of ``gear`` of ``element``: ``key`` is ``flank_roughness`` or ``root_roughness``, µm.
