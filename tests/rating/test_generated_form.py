@@ -101,3 +101,33 @@ def test_a_cutter_that_cuts_another_root_circle_says_so():
     form = generated_tooth_form(ring, PinionCutter(24, addendum=1.25), 1.7)
     assert "not the basic rack's" in form.method
     assert "not the basic rack's" not in generated_tooth_form(ring, PinionCutter(24), 1.7).method
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(z_p=st.integers(15, 30), extra=st.integers(25, 80), z0=st.integers(14, 40), x=st.floats(-0.4, 0.3),
+       rho=st.floats(0.15, 0.35), torque=st.floats(200.0, 2000.0))
+def test_ring_safety_with_the_generated_root_is_at_least_the_rack_shaped_tooths(z_p, extra, z0, x, rho, torque):
+    # The hypothesis: S_F of the ring with its generated root >= S_F with the rack-shaped tooth
+    # (same ρ, same loads, Y_δrelT from each q_s): the rack approximation is conservative.
+    from epicyclic.geometry import MeshGeometry
+    from epicyclic.rating import MeshInput, RatingSpec, rate_mesh
+    from epicyclic.rating.materials import Material
+
+    rack = BasicRack(3.0)
+    z = z_p + extra
+    assume(z0 <= z - 15)
+    mesh = MeshGeometry(GearGeometry(z_p, rack, 0.0), GearGeometry(z, rack, x, internal=True), "planet-ring")
+    steel = Material("42CrMo4", "V", 700.0, 290.0, hardness=300.0, yield_strength=900.0)
+    common = {"material": steel, "flank_roughness": 3.0, "root_roughness": 10.0, "viscosity_40": 150.0,
+              "tool_tip_radius": rho}
+    safeties = []
+    for tools in ({"ring": PinionCutter(z0, 0.0, None, rho)}, None):
+        spec = RatingSpec(tools=tools, **common)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            try:
+                inp = MeshInput("P", mesh, 30.0, ("planet", "ring"), spec)
+            except RatingError:
+                assume(False)
+            safeties.append(rate_mesh(inp, torque, 1000.0).gears[1].S_F)
+    assert safeties[0] >= safeties[1]

@@ -65,13 +65,19 @@ class FilletCurve:
         t = np.atleast_1d(np.asarray(t, dtype=float))
         return _rotate(self.generation.curve(self.segment, t), self.offset)
 
-    def _derivatives(self, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """First and second derivative at ``t`` by five-point central differences (error ~ h⁴)."""
+    def _derivatives(self, t) -> tuple[np.ndarray, np.ndarray]:
+        """First and second derivatives at ``t`` (float or array) by five-point central differences (error ~ h⁴)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
         h = 2e-3 * max(1e-3, abs(self.high - self.low))
-        p = self.points(t + h * np.array([-2.0, -1.0, 0.0, 1.0, 2.0]))
-        first = (p[0] - 8 * p[1] + 8 * p[3] - p[4]) / (12 * h)
-        second = (-p[0] + 16 * p[1] - 30 * p[2] + 16 * p[3] - p[4]) / (12 * h * h)
+        offsets = h * np.array([-2.0, -1.0, 0.0, 1.0, 2.0])
+        p = self.points((t[:, None] + offsets[None, :]).ravel()).reshape(len(t), 5, 2)
+        first = (p[:, 0] - 8 * p[:, 1] + 8 * p[:, 3] - p[:, 4]) / (12 * h)
+        second = (-p[:, 0] + 16 * p[:, 1] - 30 * p[:, 2] + 16 * p[:, 3] - p[:, 4]) / (12 * h * h)
         return first, second
+
+    def _angles(self, t) -> np.ndarray:
+        d, _ = self._derivatives(t)
+        return np.arctan2(np.abs(d[:, 0]), np.abs(d[:, 1]))
 
     def tangent_angle(self, t: float) -> float:
         """The angle between the fillet's tangent at ``t`` and the tooth centreline, rad (0 … π/2).
@@ -85,8 +91,7 @@ class FilletCurve:
         -------
         float
         """
-        d, _ = self._derivatives(t)
-        return math.atan2(abs(d[0]), abs(d[1]))
+        return float(self._angles(t)[0])
 
     def curvature_radius(self, t: float) -> float:
         """The fillet's radius of curvature at ``t``, mm.
@@ -101,8 +106,8 @@ class FilletCurve:
         float
         """
         d, dd = self._derivatives(t)
-        cross = d[0] * dd[1] - d[1] * dd[0]
-        return float(np.hypot(*d) ** 3 / abs(cross)) if cross else math.inf
+        cross = float(d[0, 0] * dd[0, 1] - d[0, 1] * dd[0, 0])
+        return float(np.hypot(*d[0]) ** 3 / abs(cross)) if cross else math.inf
 
     def at_tangent_angle(self, angle: float) -> float:
         """The parameter where the tangent makes ``angle`` (rad) with the tooth centreline.
@@ -125,7 +130,7 @@ class FilletCurve:
         """
         f = lambda t: self.tangent_angle(t) - angle  # noqa: E731
         ts = np.linspace(self.low, self.high, 201)
-        values = np.array([f(t) for t in ts])
+        values = self._angles(ts) - angle
         change = np.nonzero(np.sign(values[:-1]) != np.sign(values[1:]))[0]
         if not len(change):
             raise GeometryError(f"tooth profile: no point of the generated root fillet has its tangent at "
