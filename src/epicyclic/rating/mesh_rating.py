@@ -383,6 +383,9 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     ]
     method_c = (f"K_Hbeta by method C from F_betax = 1.33 f_sh + f_Hbeta "
                 f"(f_Hbeta = {s['f_Hbeta']:.1f} um, grade {spec.accuracy_grade})")
-    notes = tuple(spec.notes) + ((method_c,) if spec.K_Hbeta is None else ())
+    fallback = f", no tool given: ISO's closed form of the basic rack (rho_fP* = {spec.tool_tip_radius:g})"
+    forms = tuple(f"Y_F, Y_S of the {name}: {form.method if tool else form.method + fallback}"
+                  for name, form, tool in zip(inp.gears, s["forms"], s["form_tools"]))
+    notes = tuple(spec.notes) + ((method_c,) if spec.K_Hbeta is None else ()) + forms
     return MeshRating(inp.element, mesh.name, f"ISO 6336:{year}", "B", {x.symbol: x for x in mesh_factors},
                       (gears[0], gears[1]), mesh.internal, notes)
