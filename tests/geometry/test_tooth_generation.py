@@ -99,3 +99,29 @@ def test_bad_tools_are_refused_with_the_key():
         generate_tooth(12, 4.0, 20.0, RackTool(tip_radius=0.25), profile_shift=1.2, tip_diameter=12 * 4 + 2 * 4 * 2.2)
     with pytest.raises(GeometryError, match="teeth"):
         PinionCutter(5)
+
+
+@pytest.mark.parametrize(("teeth", "shift"), [(10, 0.0), (12, 0.1), (14, 0.0), (17, 0.0), (20, 0.0), (30, 0.0),
+                                              (12, 0.5), (10, 0.6)])
+def test_undercut_waist_exactly_where_the_rack_flank_runs_below_the_interference_point(teeth, shift):
+    # The tooth narrows below the form circle (an undercut waist) iff the rack's straight flank reaches below the
+    # interference point: x < h_a0* − ρ_a0*(1 − sin α_n) − z sin²α_n / 2 (the classical limit, e.g. ISO 21771 /
+    # Litvin & Fuentes 2004, 10.4 with the tip round).
+    rho = 0.25
+    gear = GearGeometry(teeth, BasicRack(4.0), shift)
+    p = generate_profile(gear, RackTool(tip_radius=rho))
+    a = math.radians(20)
+    undercut = shift < 1.25 - rho * (1 - math.sin(a)) - teeth * math.sin(a) ** 2 / 2
+    d = np.linspace(gear.root_diameter + 1e-6, p.form_diameter, 400)
+    half = p.half_angle(d)
+    waist = bool(np.any(np.diff(half) > 1e-12))   # the half angle grows again somewhere below d_Ff
+    assert waist == undercut
+    if not undercut:   # without undercut the involute starts at the rack flank's lower end
+        r_b, r = gear.base_diameter / 2, gear.reference_diameter / 2
+        depth = (1.25 - shift - rho * (1 - math.sin(a))) * 4.0
+        assert p.form_diameter / 2 == pytest.approx(math.hypot(r_b, r * math.sin(a) - depth / math.sin(a)), rel=1e-4)
+
+
+def test_a_cutter_whose_involute_cannot_reach_the_rings_tip_is_refused():
+    with pytest.raises(GeometryError, match="cannot cut the internal gear's tip"):
+        generate_profile(GearGeometry(30, BasicRack(2.0), internal=True), PinionCutter(24))
