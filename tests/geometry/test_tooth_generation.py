@@ -119,7 +119,7 @@ def test_undercut_waist_exactly_where_the_rack_flank_runs_below_the_interference
     if not undercut:   # without undercut the involute starts at the rack flank's lower end
         r_b, r = gear.base_diameter / 2, gear.reference_diameter / 2
         depth = (1.25 - shift - rho * (1 - math.sin(a))) * 4.0
-        assert p.form_diameter / 2 == pytest.approx(math.hypot(r_b, r * math.sin(a) - depth / math.sin(a)), rel=1e-4)
+        assert p.form_diameter / 2 == pytest.approx(math.hypot(r_b, r * math.sin(a) - depth / math.sin(a)), rel=1e-12)
 
 
 def test_a_cutter_whose_involute_cannot_reach_the_rings_tip_is_refused():
