@@ -42,7 +42,7 @@ def _iso_thickness(gear: GearGeometry, diameter: float) -> float:
 
 @pytest.mark.parametrize(("teeth", "shift", "helix", "internal"), [
     (19, 0.5, 0.0, False), (17, 0.8021, 0.0, False), (40, -0.3, 15.0, False), (12, 0.4, 0.0, False),
-    (56, -0.5013, 0.0, True), (96, 0.2, 0.0, True),
+    (56, -0.5013, 0.0, True), (96, 0.2, 0.0, True), (80, -0.2, 12.0, True),
 ])
 def test_generated_flank_is_the_iso_21771_involute(teeth, shift, helix, internal):
     rack = BasicRack(4.0, helix_angle=helix)
