@@ -125,3 +125,28 @@ def test_undercut_waist_exactly_where_the_rack_flank_runs_below_the_interference
 def test_a_cutter_whose_involute_cannot_reach_the_rings_tip_is_refused():
     with pytest.raises(GeometryError, match="cannot cut the internal gear's tip"):
         generate_profile(GearGeometry(30, BasicRack(2.0), internal=True), PinionCutter(24))
+
+
+def test_thickness_allowance_cuts_with_the_generating_profile_shift():
+    # ISO 21771: the tool fed in by A_sn/(2 tan α_n) cuts s_n + A_sn and the root circle of x_E.
+    rack = BasicRack(4.0, helix_angle=10.0)
+    gear = GearGeometry(23, rack, 0.3, thickness_allowance=-0.12)
+    p = generate_profile(gear, RackTool(tip_radius=0.3))
+    s_n = 4.0 * (math.pi / 2 + 2 * 0.3 * math.tan(rack.alpha_n)) - 0.12
+    assert p.tooth_thickness(gear.reference_diameter, normal=True) == pytest.approx(s_n, abs=1e-8)
+    x_e = gear.generating_profile_shift
+    assert p.profile_shift == x_e and p.root_diameter == pytest.approx(gear.reference_diameter - 2 * 4.0 * (1.25 - x_e))
+    nominal = generate_profile(gear, RackTool(tip_radius=0.3), profile_shift=0.3)
+    assert nominal.root_diameter == pytest.approx(gear.root_diameter)
+
+
+def test_profile_is_an_immutable_value_that_renders_itself():
+    gear = GearGeometry(19, BasicRack(4.0), 0.5)
+    p = generate_profile(gear, RackTool(tip_radius=0.25))
+    assert p == generate_profile(gear, RackTool(tip_radius=0.25)) and hash(p.tool)
+    with pytest.raises(ValueError):
+        p.points[0, 0] = 1.0
+    assert "ToothProfile (external gear)" in repr(p) and "<table>" in p._repr_html_()
+    data = p.to_dict()
+    assert data["tool"]["tip_radius"] == 0.25 and len(data["points"]) == len(p.segment)
+    assert np.all(np.isfinite(p.points))

@@ -182,7 +182,7 @@ def rack_generation(teeth: float, module: float, alpha_n: float, beta: float, pr
 
     def line(angle, x_of):
         def f(t):  # t: height Y
-            return transverse(np.vectorize(x_of)(t), t, np.full_like(t, math.cos(angle)),
+            return transverse(x_of(t), t, np.full_like(t, math.cos(angle)),
                               np.full_like(t, -math.sin(angle)))
         return f
 

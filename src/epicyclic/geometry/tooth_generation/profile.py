@@ -299,8 +299,8 @@ class ToothProfile:
     ISO 21771:2007; Litvin & Fuentes 2004, ch. 10–11.
     """
 
-    points: np.ndarray = field(repr=False)
-    segment: np.ndarray = field(repr=False)
+    points: np.ndarray = field(repr=False, compare=False)
+    segment: np.ndarray = field(repr=False, compare=False)
     teeth: float
     module: float
     pressure_angle: float
