@@ -365,3 +365,55 @@ def test_nrel_ring_generated_root_is_safer_than_the_rack_shaped_tooth():
     assert "no tool given" in rack.factors["Y_F"].name
     assert rack["Y_F"] == pytest.approx(1.76, abs=0.005)   # the 1.76
     assert generated.S_F >= rack.S_F
+
+
+# Both planetary stages of the NREL 5 MW gearbox (KISSsoft reports stage_01.rtf and stage_02.rtf of
+# gfsReboucas/Drivetrain; the stage-2 report: m_n = 21 mm, planet z = 36, x = 0.5039, k m_n = −1.750 mm, ring
+# z = −93, x = 0.1171, reference profile 1.25 / 0.30, cutter z_0 = 30, x_0 = 0).  Printed for each ring: d_f, d_Ff
+# ("Calculation dFf with pinion type cutter"), and in section 3 α_Fen, d_sFn, s_Fn, h_F, ρ_F, Y_F, Y_S.
+RINGS = {
+    "stage 1": dict(module=45.0, planet=(17, 0.8021, 10.861 / 45.0), ring=(56, -0.5013), z0=36, d_f=2677.618,
+                    d_Ff=2662.682, alpha_Fen=19.59, d_sFn=2673.522, s_Fn=129.40, h_F=78.40, rho_F=22.24, Y_F=1.27,
+                    Y_S=2.13, generated=(132.15, 13.57)),
+    "stage 2": dict(module=21.0, planet=(36, 0.5039, 1.750 / 21.0), ring=(93, 0.1171), z0=30, d_f=2000.581,
+                    d_Ff=1987.879, alpha_Fen=18.63, d_sFn=1998.168, s_Fn=56.76, h_F=30.32, rho_F=8.78, Y_F=1.20,
+                    Y_S=2.34, generated=(57.53, 7.78)),
+}
+
+
+@pytest.mark.parametrize("stage", sorted(RINGS))
+def test_nrel_rings_against_both_reports(stage):
+    from epicyclic.rating.generated_form import bending_load_point, generated_tooth_form
+    from epicyclic.rating.tooth_form import stress_correction
+
+    r = RINGS[stage]
+    rack = BasicRack(r["module"], addendum=1.0, dedendum=1.25)
+    planet = GearGeometry(r["planet"][0], rack, r["planet"][1], tip_shortening=r["planet"][2])
+    ring = GearGeometry(r["ring"][0], rack, r["ring"][1], internal=True)
+    eps = MeshGeometry(planet, ring, "planet-ring").contact_ratio
+    cutter = PinionCutter(r["z0"], 0.0, None, 0.30)
+    profile = virtual_profile(ring, cutter, profile_shift=ring.profile_shift)
+    # what is the report's: the generated tooth (root and root form circle), the load point and direction; the
+    # diameters to their printed 0.001 mm and the 2 m_n · 5e-5 that the shift x, printed to 4 decimals, allows
+    shift_rounding = 2 * r["module"] * 5e-5
+    assert profile.root_diameter == pytest.approx(r["d_f"], abs=5e-4 + shift_rounding)
+    assert profile.form_diameter == pytest.approx(r["d_Ff"], abs=5e-4 + shift_rounding)
+    form = generated_tooth_form(ring, cutter, eps)
+    assert math.degrees(form.alpha_Fen) == pytest.approx(r["alpha_Fen"], abs=0.005)
+    _, _, lever = bending_load_point(profile, eps)
+    y_s = math.sqrt((r["d_sFn"] / 2) ** 2 - (r["s_Fn"] / 2) ** 2)
+    assert y_s - lever == pytest.approx(r["h_F"], abs=0.005)            # its h_F from its own section
+    m = r["module"]
+    y_f = 6 * (r["h_F"] / m) * math.cos(math.radians(r["alpha_Fen"])) / ((r["s_Fn"] / m) ** 2 * math.cos(math.radians(20)))
+    assert y_f == pytest.approx(r["Y_F"], abs=0.005)
+    assert stress_correction(r["s_Fn"], r["h_F"], r["rho_F"]) == pytest.approx(r["Y_S"], abs=0.005)
+    # what is not: its section is not on the tooth it generates (see the stage-1 case above): in both reports the
+    # generated tooth is thicker at the report's d_sFn, and its fillet's radius there is 0.9 mm (stage 2) to 8.7 mm
+    # (stage 1) below the report's ρ_F
+    from scipy.optimize import brentq
+
+    assert profile.chordal_thickness(r["d_sFn"]) > r["s_Fn"] + 0.4
+    assert (form.s_Fn, form.rho_F) == pytest.approx(r["generated"], abs=0.005)
+    fillet = profile.fillet
+    at = brentq(lambda t: math.hypot(*fillet.points(t)[0]) - r["d_sFn"] / 2, fillet.low, fillet.high)
+    assert fillet.curvature_radius(at) < r["rho_F"] - 0.9
