@@ -372,12 +372,12 @@ def test_nrel_ring_generated_root_is_safer_than_the_rack_shaped_tooth():
 # z = −93, x = 0.1171, reference profile 1.25 / 0.30, cutter z_0 = 30, x_0 = 0).  Printed for each ring: d_f, d_Ff
 # ("Calculation dFf with pinion type cutter"), and in section 3 α_Fen, d_sFn, s_Fn, h_F, ρ_F, Y_F, Y_S.
 RINGS = {
-    "stage 1": dict(module=45.0, planet=(17, 0.8021, 10.861 / 45.0), ring=(56, -0.5013), z0=36, d_f=2677.618,
-                    d_Ff=2662.682, alpha_Fen=19.59, d_sFn=2673.522, s_Fn=129.40, h_F=78.40, rho_F=22.24, Y_F=1.27,
-                    Y_S=2.13, generated=(132.15, 13.57)),
-    "stage 2": dict(module=21.0, planet=(36, 0.5039, 1.750 / 21.0), ring=(93, 0.1171), z0=30, d_f=2000.581,
-                    d_Ff=1987.879, alpha_Fen=18.63, d_sFn=1998.168, s_Fn=56.76, h_F=30.32, rho_F=8.78, Y_F=1.20,
-                    Y_S=2.34, generated=(57.53, 7.78)),
+    "stage 1": {"module": 45.0, "planet": (17, 0.8021, 10.861 / 45.0), "ring": (56, -0.5013), "z0": 36,
+                "d_f": 2677.618, "d_Ff": 2662.682, "alpha_Fen": 19.59, "d_sFn": 2673.522, "s_Fn": 129.40,
+                "h_F": 78.40, "rho_F": 22.24, "Y_F": 1.27, "Y_S": 2.13, "generated": (132.15, 13.57)},
+    "stage 2": {"module": 21.0, "planet": (36, 0.5039, 1.750 / 21.0), "ring": (93, 0.1171), "z0": 30,
+                "d_f": 2000.581, "d_Ff": 1987.879, "alpha_Fen": 18.63, "d_sFn": 1998.168, "s_Fn": 56.76,
+                "h_F": 30.32, "rho_F": 8.78, "Y_F": 1.20, "Y_S": 2.34, "generated": (57.53, 7.78)},
 }
 
 

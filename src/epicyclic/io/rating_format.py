@@ -41,9 +41,9 @@ from collections.abc import Mapping
 from typing import Any
 
 from ..errors import EpicyclicError
+from ..geometry.tooth_generation import PinionCutter, RackTool
 from ..rating.materials import DEFAULT_QUALITY, Material, material, material_names
 from ..rating.spec import RatingSpec
-from ..geometry.tooth_generation import PinionCutter, RackTool
 from ..rating.tooth_form import Cutter
 from .reader import at_key
 

@@ -32,7 +32,12 @@ from dataclasses import replace
 
 from ..geometry.errors import GeometryError
 from ..geometry.gear import GearGeometry
-from ..geometry.tooth_generation import PinionCutter, RackTool, ToothProfile, virtual_profile
+from ..geometry.tooth_generation import (
+    PinionCutter,
+    RackTool,
+    ToothProfile,
+    virtual_profile,
+)
 from .errors import RatingError
 from .tooth_form import ToothForm, stress_correction
 

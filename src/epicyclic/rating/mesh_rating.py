@@ -39,12 +39,12 @@ import numpy as np
 from ..geometry.gear import MeshGeometry
 from . import flank, load_factors, root
 from .errors import RatingError
+from .generated_form import generated_tooth_form
 from .life_factors import bending_curve, pitting_curve
 from .materials import Material
 from .results import Factor, GearRating, MeshRating
 from .spec import RatingSpec
 from .standard import clause
-from .generated_form import generated_tooth_form
 from .tooth_form import ToothForm, external_tooth_form, internal_tooth_form
 
 __all__ = ["MeshInput", "rate_mesh"]

@@ -58,8 +58,16 @@ from .envelope import cutter_generation, rack_generation
 from .profile import SEGMENT_NAMES, FilletCurve, ToothProfile, assemble
 from .tools import PinionCutter, RackTool
 
-__all__ = ["FilletCurve", "PinionCutter", "RackTool", "SEGMENT_NAMES", "ToothProfile", "generate_profile",
-           "generate_tooth", "virtual_profile"]
+__all__ = [
+    "SEGMENT_NAMES",
+    "FilletCurve",
+    "PinionCutter",
+    "RackTool",
+    "ToothProfile",
+    "generate_profile",
+    "generate_tooth",
+    "virtual_profile",
+]
 
 
 def _number(value: object, key: str, positive: bool = True) -> float:

@@ -154,8 +154,8 @@ def rack_generation(teeth: float, module: float, alpha_n: float, beta: float, pr
                             f"{math.degrees(a):g}°), below the pressure angle, for the protuberance flank to "
                             "rejoin the main flank.")
     h_pr = pr / (math.cos(a) * (math.tan(a) - math.tan(a_pr))) if pr > 0 else 0.0
-    x_main = lambda y: math.pi * m / 4 + (y - y_d) * math.tan(a)                     # noqa: E731
-    x_side = lambda y: x_main(y_tip) + pr / math.cos(a) + (y - y_tip) * math.tan(a_pr)  # noqa: E731
+    x_main = lambda y: math.pi * m / 4 + (y - y_d) * math.tan(a)
+    x_side = lambda y: x_main(y_tip) + pr / math.cos(a) + (y - y_tip) * math.tan(a_pr)
     y_c = y_tip + rho
     u_c = x_side(y_c) - rho / math.cos(a_pr)
     if u_c < -1e-12 * m:

@@ -25,7 +25,7 @@ from ..errors import GeometryError
 from .envelope import Generation, Segment
 from .tools import PinionCutter, RackTool
 
-__all__ = ["FilletCurve", "SEGMENT_NAMES", "ToothProfile", "assemble"]
+__all__ = ["SEGMENT_NAMES", "FilletCurve", "ToothProfile", "assemble"]
 
 #: The segments a profile's points belong to, from the root to the tip.
 SEGMENT_NAMES = ("root", "fillet", "protuberance", "involute", "tip")
@@ -128,7 +128,7 @@ class FilletCurve:
             No point of the fillet has that tangent (the fillet is too short: an undercut flank, or a
             tooth whose flank starts steeper).
         """
-        f = lambda t: self.tangent_angle(t) - angle  # noqa: E731
+        f = lambda t: self.tangent_angle(t) - angle
         ts = np.linspace(self.low, self.high, 201)
         values = self._angles(ts) - angle
         change = np.nonzero(np.sign(values[:-1]) != np.sign(values[1:]))[0]
@@ -426,7 +426,7 @@ class ToothProfile:
         """
         if abs(self.teeth - round(self.teeth)) > 1e-9:
             raise GeometryError(f"ToothProfile: a virtual gear of z = {self.teeth:g} teeth has no whole outline.")
-        z = int(round(self.teeth))
+        z = round(self.teeth)
         return np.concatenate([_rotate(self.points[:-1], -2 * math.pi * k / z) for k in range(z)])
 
     def to_dict(self) -> dict[str, Any]:
