@@ -150,3 +150,18 @@ def test_profile_is_an_immutable_value_that_renders_itself():
     data = p.to_dict()
     assert data["tool"]["tip_radius"] == 0.25 and len(data["points"]) == len(p.segment)
     assert np.all(np.isfinite(p.points))
+
+
+@pytest.mark.parametrize("teeth", [60, 120])
+def test_protuberance_relieves_the_root_below_an_unchanged_involute(teeth):
+    gear = GearGeometry(teeth, BasicRack(4.0), 0.0)
+    plain = generate_profile(gear, RackTool(tip_radius=0.3))
+    relieved = generate_profile(gear, RackTool(tip_radius=0.3, protuberance=0.1, protuberance_angle=10.0))
+    assert relieved.form_diameter > plain.form_diameter + 1.0      # the involute starts higher ...
+    d = (relieved.form_diameter + gear.tip_diameter) / 2
+    assert relieved.tooth_thickness(d) == pytest.approx(plain.tooth_thickness(d), abs=1e-8)   # ... and is the same
+    below = (plain.form_diameter + relieved.form_diameter) / 2
+    assert relieved.tooth_thickness(below) < plain.tooth_thickness(below)                     # relief below it
+    # the protuberance flank's own envelope (an involute of the base circle d cos α_pr) shows where it lies above
+    # the tip round's trochoid: on the larger gear
+    assert (len(relieved.segment_points("protuberance")) > 0) == (teeth == 120)
