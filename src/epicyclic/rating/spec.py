@@ -15,7 +15,7 @@ K_v                     method B                    a given dynamic factor
 shaft_deflection        0                           f_sh for method C, µm
 load_sharing            of the geometry, else by    K_γ (AGMA 6123/ISO values may be given)
                         number of planets
-tool_tip_radius         0.25                        ρ_fP* of the basic rack (ISO 53 A)
+tool_tip_radius         0.25                        ρ_fP* of the basic rack (ISO 53 C; A: 0.38)
 long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``"optimum"``: 1.0)
 pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
 tip_relief              running-in C_ay             C_a for K_v, µm (without one: C_ay of the pair)

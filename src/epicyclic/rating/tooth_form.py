@@ -177,8 +177,8 @@ def external_tooth_form(teeth: int, profile_shift: float, module: float, pressur
     contact_ratio : float
         ε_α of the mesh (transverse).
     dedendum, tip_radius : float
-        h_fP* and ρ_fP* of the basic rack that cuts the gear (ISO 53 A: 1.25, 0.25; B: 1.25, 0.3;
-        C: 1.25, 0.25 ... ).
+        h_fP* and ρ_fP* of the basic rack that cuts the gear (ISO 53:1998 A: 1.25, 0.38; B: 1.25, 0.3;
+        C: 1.25, 0.25; D: 1.4, 0.39).
     protuberance : float, default 0
         Residual undercut s_pr of a protuberance tool, mm.
 
