@@ -123,7 +123,7 @@ def test_a_thin_ring_rim_raises_the_root_stress():
 def test_internal_mesh_uses_the_difference_of_curvatures():
     r = rated(500.0, 30.0, RING)
     assert r.internal and r.gears[1]["Z_D"] == 1.0
-    assert r.gears[1].factors["Y_F"].name.endswith("(rack (basic rack))")
+    assert r.gears[1].factors["Y_F"].name.endswith("(rack (basic rack), no tool given)")
 
 
 def test_damage_over_cases_is_miner_on_the_life_factor_curves():

@@ -18,6 +18,9 @@
     load_sharing = 1.15                   # K_γ of every set (default: the set geometry's, else by planets)
     cutter = { teeth = 24, profile_shift = 0.0, addendum = 1.25, tip_radius = 0.25 }   # internal gears
     rim_thickness = { ring = 12.0 }       # s_R below the root, mm (Y_B); others solid
+    tool = { ring = { teeth = 36, tip_radius = 0.3 }, sun = { tip_radius = 0.38 } }   # the tool per gear:
+                                          # teeth → pinion-type cutter (z0, profile_shift, addendum, tip_radius),
+                                          # else rack-type tool (addendum, tip_radius, protuberance, protuberance_angle)
     long_life = "standard"                # or "optimum"
     [rating.scuffing]                     # scuffing (flash and integral temperature): io/scuffing_format.py
     load_stage = 12
@@ -43,6 +46,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from ..errors import EpicyclicError
+from ..geometry.tooth_generation import PinionCutter, RackTool
 from ..rating.materials import DEFAULT_QUALITY, Material, material, material_names
 from ..rating.spec import RatingSpec
 from ..rating.tooth_form import Cutter
@@ -54,9 +58,11 @@ __all__ = ["RATING_KEYS", "read_rating"]
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
                "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
-               "rim_thickness", "micropitting", "scuffing"}
+               "rim_thickness", "micropitting", "scuffing", "tool"}
 _NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "K_Hbeta", "K_v",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
+_CUTTER_KEYS = {"teeth", "profile_shift", "addendum", "tip_radius"}
+_RACK_TOOL_KEYS = {"addendum", "tip_radius", "protuberance", "protuberance_angle"}
 _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
 
 
@@ -85,6 +91,23 @@ def _material(reader, value, users, quality, where: str) -> Material:
         return users[value]
     try:
         return material(value, quality=quality)
+    except EpicyclicError as exc:
+        raise reader.wrap(where, exc) from None
+
+
+def _tool(reader, value, where: str) -> RackTool | PinionCutter:
+    """One gear's tool: a pinion-type cutter where ``teeth`` is given, else a rack-type tool (hob)."""
+    entry = reader.table(value, where)
+    cutter = "teeth" in entry
+    if not cutter and "profile_shift" in entry:
+        raise reader.error(where, "profile_shift is the x0 of a pinion-type cutter: give its teeth = z0 too "
+                                  "(a rack-type tool has no profile shift).")
+    reader.check_keys(entry, _CUTTER_KEYS if cutter else _RACK_TOOL_KEYS, where)
+    numbers = {k: reader.number(entry[k], k, where) for k in entry if k != "teeth"}
+    try:
+        if cutter:
+            return PinionCutter(reader.integer(entry["teeth"], "teeth", where), **numbers)
+        return RackTool(**numbers)
     except EpicyclicError as exc:
         raise reader.wrap(where, exc) from None
 
@@ -161,6 +184,10 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
         from .scuffing_format import read_scuffing
 
         values["scuffing"] = read_scuffing(reader, table["scuffing"])
+    if "tool" in table:
+        t_where = at_key(where, "tool")
+        tools = reader.table(table["tool"], t_where)
+        values["tools"] = {k: _tool(reader, v, at_key(where, f"tool.{k}")) for k, v in tools.items()}
     oil = dict(lubricant or {})
     if "lubricant" in table:
         own = reader.table(table["lubricant"], "[rating.lubricant]")

@@ -40,6 +40,7 @@ from ..geometry.gear import MeshGeometry
 from . import flank, load_factors, root
 from .errors import RatingError
 from .failure_modes import failure_modes
+from .generated_form import generated_tooth_form
 from .life_factors import bending_curve, pitting_curve
 from .materials import Material
 from .results import Factor, GearRating, MeshRating
@@ -156,14 +157,17 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s: dict[str, Any] = {"materials": mats, "eps_alpha": eps_a, "eps_beta": eps_b, "eps_gamma": eps_g, "u": u,
                          "d1": g1.reference_diameter, "beta_b": beta_b}
     forms: list[ToothForm] = []
-    for g in (g1, g2):
+    tools = [spec.tool_of(inp.element, name, g.internal) for name, g in zip(inp.gears, (g1, g2))]
+    for tool, g in zip(tools, (g1, g2)):
         common = (g.teeth, g.profile_shift, rack.module, an, beta, g.tip_diameter, eps_a)
-        if g.internal:
-            forms.append(internal_tooth_form(*common, dedendum=rack.dedendum, tip_radius=spec.tool_tip_radius,
-                                             cutter=spec.cutter))
+        if tool is not None:
+            forms.append(generated_tooth_form(g, tool, eps_a))
+        elif g.internal:
+            forms.append(internal_tooth_form(*common, dedendum=rack.dedendum, tip_radius=spec.tool_tip_radius))
         else:
             forms.append(external_tooth_form(*common, dedendum=rack.dedendum, tip_radius=spec.tool_tip_radius))
     s["forms"] = forms
+    s["form_tools"] = [tool is not None for tool in tools]
     s["Z_H"] = flank.zone_factor(at, awt, beta_b)
     s["Z_E"] = flank.elasticity_factor(mats[0].E, mats[0].poisson, mats[1].E, mats[1].poisson)
     s["Z_eps"] = flank.contact_ratio_factor(eps_a, eps_b)
@@ -316,7 +320,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
             Factor("sigma_HP", _out(sigma_hg / spec.S_Hmin), "N/mm^2", p2("eq. (3)"), "permissible contact stress"),
             Factor("S_H", _out(_safety(sigma_hg, sigma_h)), "1", p2("eq. (4)"), "safety factor for pitting"),
             Factor("Y_F", form.Y_F, "1", p3("6.2" if not mesh.gear2.internal or i == 0 else "6.3"),
-                   f"tooth form factor ({form.method})"),
+                   f"tooth form factor ({form.method if s['form_tools'][i] else form.method + ', no tool given'})"),
             Factor("Y_S", form.Y_S, "1", p3("7.2, eq. (41)"), "stress correction factor"),
             Factor("Y_B", s["Y_B"][i], "1", p3("7.4"), "rim thickness factor"),
             Factor("s_Fn", form.s_Fn, "mm", p3("eq. (12)"), "tooth root chord at the critical section"),
@@ -380,7 +384,10 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     ]
     method_c = (f"K_Hbeta by method C from F_betax = 1.33 f_sh + f_Hbeta "
                 f"(f_Hbeta = {s['f_Hbeta']:.1f} um, grade {spec.accuracy_grade})")
-    notes = tuple(spec.notes) + ((method_c,) if spec.K_Hbeta is None else ())
+    fallback = f", no tool given: ISO's closed form of the basic rack (rho_fP* = {spec.tool_tip_radius:g})"
+    forms = tuple(f"Y_F, Y_S of the {name}: {form.method if tool else form.method + fallback}"
+                  for name, form, tool in zip(inp.gears, s["forms"], s["form_tools"]))
+    notes = tuple(spec.notes) + ((method_c,) if spec.K_Hbeta is None else ()) + forms
     rating = MeshRating(inp.element, mesh.name, f"ISO 6336:{year}", "B", {x.symbol: x for x in mesh_factors},
                         (gears[0], gears[1]), mesh.internal, notes)
     modes = failure_modes(inp, rating, t1, n1)

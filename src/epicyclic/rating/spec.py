@@ -15,13 +15,14 @@ K_v                     method B                    a given dynamic factor
 shaft_deflection        0                           f_sh for method C, µm
 load_sharing            of the geometry, else by    K_γ (AGMA 6123/ISO values may be given)
                         number of planets
-tool_tip_radius         0.25                        ρ_fP* of the basic rack (ISO 53 A)
+tool_tip_radius         0.25                        ρ_fP* of the basic rack (ISO 53 C; A: 0.38)
 long_life               ``"standard"``              Z_NT, Y_NT 0.85 at 10^10 (``"optimum"``: 1.0)
 pitting_permitted       False                       Z_NT curve without pitting (5·10^7)
 tip_relief              running-in C_ay             C_a for K_v, µm (without one: C_ay of the pair)
 rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
 micropitting            none (not rated)            :class:`~.micropitting.MicropittingSpec`
 scuffing                none (not rated)            :class:`~epicyclic.rating.scuffing.ScuffingSpec`
+tool                    none (ISO's closed form)    the tool per gear: the tooth form it generates
 ======================  ==========================  =============================================
 
 Required (an error names the key and the value it would suggest): ``material`` (a
@@ -43,6 +44,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Any
 
+from ..geometry.tooth_generation import PinionCutter, RackTool
 from .errors import RatingError
 from .materials import Material, material
 from .micropitting import MicropittingSpec
@@ -139,6 +141,10 @@ class RatingSpec:
         Rate micropitting (ISO/TS 6336-22 Method B) with these inputs.
     scuffing : ScuffingSpec, optional
         Inputs of the scuffing rating (``[rating.scuffing]``); without, scuffing is not rated.
+    tools : mapping gear → RackTool or PinionCutter, optional
+        The tool that cuts each gear (keys as for ``material``): Y_F, Y_S from the root fillet it
+        generates (:mod:`~epicyclic.rating.generated_form`).  Gears without one: ISO's closed form
+        with the basic rack (``tool_tip_radius``), internal gears the ``cutter`` if given.
 
     Raises
     ------
@@ -174,6 +180,7 @@ class RatingSpec:
     rim_thickness: Mapping[str, float] | None = None
     micropitting: MicropittingSpec | None = None
     scuffing: Any = None
+    tools: Mapping[str, RackTool | PinionCutter] | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "standard", edition(self.standard))
@@ -211,6 +218,12 @@ class RatingSpec:
         if self.scuffing is not None and not (hasattr(self.scuffing, "clauses") and hasattr(self.scuffing, "to_dict")):
             raise RatingError(f"rating.scuffing must be an epicyclic.rating.scuffing.ScuffingSpec, got "
                               f"{type(self.scuffing).__name__}.")
+        if self.tools is not None:
+            for key, tool in dict(self.tools).items():
+                if not isinstance(tool, (RackTool, PinionCutter)):
+                    raise RatingError(f"rating.tool.{key} must be a RackTool or a PinionCutter, got "
+                                      f"{type(tool).__name__}.")
+            object.__setattr__(self, "tools", MappingProxyType(dict(self.tools)))
         if isinstance(self.material, str):
             object.__setattr__(self, "material", material(self.material))
         elif isinstance(self.material, Mapping):
@@ -263,6 +276,41 @@ class RatingSpec:
         """
         rims = self.rim_thickness or {}
         return rims.get(f"{element}:{gear}", rims.get(gear))
+
+    def tool_of(self, element: str, gear: str, internal: bool) -> RackTool | PinionCutter | None:
+        """The tool that cuts ``gear`` of ``element`` (``"P1:ring"``, then ``"ring"``, then ``"all"``), or None.
+
+        An internal gear without a tool of its own is cut by ``cutter`` where one is given.
+
+        Parameters
+        ----------
+        element : str
+            The set or stage.
+        gear : str
+            The gear's name in it.
+        internal : bool
+            The gear is internal (a pinion-type cutter cuts it).
+
+        Returns
+        -------
+        RackTool or PinionCutter or None
+            None: no tool given (the rating takes ISO's closed form of the basic rack).
+
+        Raises
+        ------
+        RatingError
+            A rack-type tool for an internal gear or a pinion-type cutter for an external one.
+        """
+        tools = self.tools or {}
+        for key in (f"{element}:{gear}", gear, "all"):
+            if key in tools:
+                tool = tools[key]
+                if isinstance(tool, PinionCutter) != internal:
+                    need = "a pinion-type cutter (give teeth = z0)" if internal else "a rack-type tool (no teeth)"
+                    raise RatingError(f"rating.tool.{key}: the {'internal' if internal else 'external'} gear "
+                                      f"{gear!r} of {element!r} is cut by {need}.")
+                return tool
+        return self.cutter if internal else None
 
     def roughness_of(self, key: str, element: str, gear: str) -> float:
         """R_z of ``gear`` of ``element``: ``key`` is ``flank_roughness`` or ``root_roughness``, µm.
@@ -325,4 +373,5 @@ class RatingSpec:
                 "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,
                 "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None,
                 "micropitting": self.micropitting.to_dict() if self.micropitting else None,
-                "scuffing": self.scuffing.to_dict() if self.scuffing is not None else None}
+                "scuffing": self.scuffing.to_dict() if self.scuffing is not None else None,
+                "tool": {k: v.to_dict() for k, v in self.tools.items()} if self.tools else None}

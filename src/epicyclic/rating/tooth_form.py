@@ -44,14 +44,19 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from ..geometry.errors import GeometryError
+from ..geometry.tooth_generation import PinionCutter
 from .errors import RatingError, warn_validity
 
 __all__ = ["Cutter", "ToothForm", "external_tooth_form", "internal_tooth_form", "stress_correction"]
 
 
 @dataclass(frozen=True)
-class Cutter:
-    """A pinion-type cutter (shaper cutter) that cuts an internal gear.
+class Cutter(PinionCutter):
+    """A pinion-type cutter (shaper cutter) that cuts an internal gear: the ``cutter`` key.
+
+    The :class:`~epicyclic.geometry.tooth_generation.PinionCutter` with the addendum 1.25 of an
+    ISO 53 cutter by default, and :class:`RatingError` for bad values.
 
     Parameters
     ----------
@@ -69,20 +74,13 @@ class Cutter:
     ISO 6336-3:2006, 6.3 (internal gears cut by a pinion-type cutter).
     """
 
-    teeth: int
-    profile_shift: float = 0.0
-    addendum: float = 1.25
-    tip_radius: float = 0.25
+    addendum: float | None = 1.25
 
     def __post_init__(self) -> None:
-        if isinstance(self.teeth, bool) or not isinstance(self.teeth, int) or self.teeth < 8:
-            raise RatingError(f"cutter: teeth (z0) must be a whole number >= 8, got {self.teeth!r}.")
-        for key in ("profile_shift", "addendum", "tip_radius"):
-            value = getattr(self, key)
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-                raise RatingError(f"cutter: {key} must be a number, got {value!r}.")
-        if self.addendum <= 0 or self.tip_radius < 0:
-            raise RatingError("cutter: addendum (h_a0*) must be > 0 and tip_radius (rho_a0*) >= 0.")
+        try:
+            super().__post_init__()
+        except GeometryError as exc:
+            raise RatingError(str(exc).replace("PinionCutter:", "cutter:")) from None
 
 
 @dataclass(frozen=True)
@@ -179,8 +177,8 @@ def external_tooth_form(teeth: int, profile_shift: float, module: float, pressur
     contact_ratio : float
         ε_α of the mesh (transverse).
     dedendum, tip_radius : float
-        h_fP* and ρ_fP* of the basic rack that cuts the gear (ISO 53 A: 1.25, 0.25; B: 1.25, 0.3;
-        C: 1.25, 0.25 ... ).
+        h_fP* and ρ_fP* of the basic rack that cuts the gear (ISO 53:1998 A: 1.25, 0.38; B: 1.25, 0.3;
+        C: 1.25, 0.25; D: 1.4, 0.39).
     protuberance : float, default 0
         Residual undercut s_pr of a protuberance tool, mm.
 
