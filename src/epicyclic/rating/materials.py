@@ -118,6 +118,13 @@ def allowable_stress_numbers(treatment: str, hardness: float, quality: str = DEF
     return round(a_h * hardness + b_h, 6), round(a_f * hardness + b_f, 6)
 
 
+#: Upper bounds of a material's numbers, far beyond every material of ISO 6336-5 (σ_Hlim ≤ about 1650,
+#: σ_Flim ≤ about 525 N/mm²; steel E 206 000 N/mm²): a value past them is a typing error, and would
+#: overflow the rating's arithmetic.
+_MATERIAL_BOUNDS = {"sigma_Hlim": (5000.0, "N/mm^2"), "sigma_Flim": (3000.0, "N/mm^2"), "E": (1e6, "N/mm^2"),
+                    "density": (1e-4, "kg/mm^3"), "yield_strength": (1e4, "N/mm^2")}
+
+
 @dataclass(frozen=True)
 class Material:
     """A gear material with its treatment and allowable stress numbers.
@@ -162,8 +169,11 @@ class Material:
                               f"{', '.join(TREATMENTS)} (ISO 6336-5 symbols).")
         for key in ("sigma_Hlim", "sigma_Flim", "E", "density", "yield_strength"):
             value = getattr(self, key)
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
-                raise RatingError(f"material {self.name!r}: {key} must be a positive number, got {value!r}.")
+            high, unit = _MATERIAL_BOUNDS[key]
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+                    or not 0 < value <= high:
+                raise RatingError(f"material {self.name!r}: {key} must be a number in (0, {high:g}] {unit}, got "
+                                  f"{value!r} (beyond any gear steel or iron; see ISO 6336-5).")
             object.__setattr__(self, key, float(value))
         if not 0.0 <= self.poisson < 0.5:
             raise RatingError(f"material {self.name!r}: poisson must lie in [0, 0.5), got {self.poisson!r}.")

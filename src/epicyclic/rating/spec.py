@@ -277,6 +277,34 @@ class RatingSpec:
         rims = self.rim_thickness or {}
         return rims.get(f"{element}:{gear}", rims.get(gear))
 
+    def check_gear_keys(self, gears) -> None:
+        """Every key of a per-gear input names a rated gear (``"ring"``, ``"P1:ring"``) or is ``"all"``.
+
+        A key that names no gear (``rim_thickness = { moon = 12 }``) would be dropped silently while the
+        gear it meant is rated without it: an error naming the key and the gears.
+
+        Parameters
+        ----------
+        gears : iterable of (element, gear)
+            The rated gears.
+
+        Raises
+        ------
+        RatingError
+        """
+        pairs = set(gears)
+        known = {"all"} | {g for _, g in pairs} | {f"{e}:{g}" for e, g in pairs}
+        for key, given in (("material", self.material), ("flank_roughness", self.flank_roughness),
+                           ("root_roughness", self.root_roughness), ("rim_thickness", self.rim_thickness),
+                           ("tool", self.tools)):
+            if not isinstance(given, Mapping):
+                continue
+            unknown = sorted(k for k in given if k not in known)
+            if unknown:
+                names = ", ".join(sorted({g for _, g in pairs})) or "none"
+                raise RatingError(f"rating.{key}.{unknown[0]} names no gear of the rated train (gears: {names}); "
+                                  "write a gear's name, 'ELEMENT:GEAR' or 'all'.")
+
     def tool_of(self, element: str, gear: str, internal: bool) -> RackTool | PinionCutter | None:
         """The tool that cuts ``gear`` of ``element`` (``"P1:ring"``, then ``"ring"``, then ``"all"``), or None.
 

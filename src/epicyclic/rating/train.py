@@ -167,6 +167,7 @@ def mesh_inputs(geometry: Mapping[str, object], spec: RatingSpec) -> tuple[tuple
             if not isinstance(exc, EpicyclicError):
                 raise
             raise RatingError(f"rating of {name!r}: {exc}") from None
+    spec.check_gear_keys((item.input.element, gear) for item in planned for gear in item.input.gears)
     return tuple(planned), MappingProxyType(skipped)
 
 
