@@ -129,3 +129,33 @@ def test_roughness_per_gear_from_the_file():
     assert spec.roughness_of("root_roughness", "P", "sun") == 10.0
     with pytest.raises(RatingError, match=r"flank_roughness\.sun"):
         loads_train_file(RATING_FILE.format(lubricant="", rating="flank_roughness = { sun = -1.0 }"))
+
+
+@pytest.mark.parametrize("override, says", [
+    # issue 30: a unit in [rating] got the expression grammar's tooth-ratio hint ("e.g. '(24/50)*(42/30)'")
+    ('rating.life="20000 kg"', "key 'life': expected a number in h (e.g. 2 or '2 h'), got '20000 kg'"),
+    ('rating.S_Hmin="1 h"', "key 'S_Hmin': expected a plain number (no unit), got '1 h'"),
+    ('rating.flank_roughness="3 mm"', "key 'flank_roughness': expected a number in µm"),
+    # issue 30: a key naming no gear was accepted and dropped
+    ("rating.rim_thickness={moon=12}", "rating.rim_thickness.moon names no gear of the rated train"),
+    ("rating.tool={moon={tip_radius=0.3}}", "rating.tool.moon names no gear of the rated train"),
+    # issue 30: sigma_Hlim = 1e308 overflowed (internal error, exit 1)
+    ('rating.materials={own={treatment="Eh", sigma_Hlim=1e308, sigma_Flim=500, hardness=60}}',
+     "sigma_Hlim must be a number in (0, 5000] N/mm^2"),
+])
+def test_bad_rating_values_name_the_key_and_what_it_takes(override, says):
+    extra = ['rating.material={sun="own", planet="18CrNiMo7-6", ring="42CrMo4"}'] if "own" in override else []
+    args = ["rate", str(EXAMPLES / "rating" / "simple_set.toml"), "--set", override]
+    for item in extra:
+        args += ["--set", item]
+    result = CliRunner().invoke(app, args)
+    assert result.exit_code == 2, result.output
+    assert says in " ".join(result.output.split())
+
+
+def test_a_number_may_carry_its_keys_unit():
+    plain = CliRunner().invoke(app, ["rate", str(EXAMPLES / "rating" / "simple_set.toml"), "-f", "json"])
+    units = CliRunner().invoke(app, ["rate", str(EXAMPLES / "rating" / "simple_set.toml"), "-f", "json",
+                                     "--set", 'rating.life="20000 h"', "--set", 'rating.flank_roughness="3.0 um"'])
+    assert plain.exit_code == 0 and units.exit_code == 0, units.output
+    assert json.loads(plain.stdout) == json.loads(units.stdout)

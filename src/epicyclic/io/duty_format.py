@@ -194,7 +194,7 @@ def _case(reader, table, k: int, train, transmission, units, roles, total_given:
         raise reader.error(where, "missing key 'hours' or 'share': how long the case runs (h) or its time share "
                                   "of the cycle.")
     duration_key = "hours" if "hours" in table else "share"
-    duration = reader.number(table[duration_key], duration_key, where)
+    duration = reader.number(table[duration_key], duration_key, where, "h" if duration_key == "hours" else "1")
     if duration < 0:
         raise reader.error(at_key(where, duration_key), f"expected a duration >= 0, got {short(duration)}.")
     if duration_key == "hours" and total_given:
@@ -235,7 +235,7 @@ def read_duty_cycle(reader, value: object, train, transmission, operating_point,
     name = reader.string(table, "name", where, default="duty cycle")
     total = None
     if "hours" in table:
-        total = reader.number(table["hours"], "hours", where)
+        total = reader.number(table["hours"], "hours", where, "h")
         if not total > 0:
             raise reader.error(at_key(where, "hours"), f"expected the cycle's total hours > 0, got {short(total)}.")
     roles = _default_roles(table, operating_point, transmission)

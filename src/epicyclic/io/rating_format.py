@@ -59,6 +59,8 @@ RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "ac
                "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
                "rim_thickness", "micropitting", "scuffing", "tool"}
+#: The fixed unit of a [rating] number (the others are pure numbers).
+_UNITS = {"life": "h", "shaft_deflection": "µm", "tip_relief": "µm"}
 _NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "K_Hbeta", "K_v",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
 _CUTTER_KEYS = {"teeth", "profile_shift", "addendum", "tip_radius"}
@@ -140,13 +142,13 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
     where = "[rating]"
     table = reader.table(table, where)
     reader.check_keys(table, RATING_KEYS, where)
-    values: dict[str, Any] = {k: reader.number(table[k], k, where) for k in _NUMBERS if k in table}
+    values: dict[str, Any] = {k: reader.number(table[k], k, where, _UNITS.get(k, "1")) for k in _NUMBERS if k in table}
     for key in ("flank_roughness", "root_roughness"):  # one R_z, or one per gear: { sun = 4.8, ring = 8.0 }
         if isinstance(table.get(key), Mapping):
             k_where = at_key(where, key)
-            values[key] = {k: reader.number(v, k, k_where) for k, v in reader.table(table[key], k_where).items()}
+            values[key] = {k: reader.number(v, k, k_where, "µm") for k, v in reader.table(table[key], k_where).items()}
         elif key in table:
-            values[key] = reader.number(table[key], key, where)
+            values[key] = reader.number(table[key], key, where, "µm")
     if "standard" in table:
         values["standard"] = str(table["standard"])
     if "accuracy_grade" in table:
@@ -177,7 +179,7 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
     if "rim_thickness" in table:
         r_where = at_key(where, "rim_thickness")
         rims = reader.table(table["rim_thickness"], r_where)
-        values["rim_thickness"] = {k: reader.number(v, k, r_where) for k, v in rims.items()}
+        values["rim_thickness"] = {k: reader.number(v, k, r_where, "mm") for k, v in rims.items()}
     if "micropitting" in table:  # the failure modes beyond pitting and root: their own sub-tables
         values["micropitting"] = read_micropitting(reader, table["micropitting"])
     if "scuffing" in table:

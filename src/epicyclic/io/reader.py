@@ -126,8 +126,13 @@ class TableReader:
             raise self.error(at_key(where, key), f"expected a whole number, got {kind_of(value)} {short(value)}.")
         return value
 
-    def number(self, value: object, key: str, where: str) -> float:
-        """A plain number or an arithmetic expression string."""
+    def number(self, value: object, key: str, where: str, unit: str | None = None) -> float:
+        """A plain number or an arithmetic expression string.
+
+        With ``unit`` (the key's fixed unit, ``"h"``, ``"µm"``; ``"1"`` for a pure number) a string may end
+        in that unit (``"20000 h"``), and one that is neither is refused naming the unit, not with the
+        expression grammar's hint.
+        """
         if isinstance(value, bool):
             raise self.error(at_key(where, key), f"expected a number, got the boolean {value!r}.")
         if isinstance(value, (int, float)):
@@ -140,9 +145,17 @@ class TableReader:
                 raise self.error(at_key(where, key), f"expected a finite number, got {value!r}.")
             return number
         if isinstance(value, str):
+            text = value.strip()
+            for spelled in ((unit, "um") if unit == "µm" else (unit,)) if unit and unit != "1" else ():
+                if text.endswith(spelled):
+                    text = text[: -len(spelled)].strip()
+                    break
             try:
-                return evaluate(value, "expression")
+                return evaluate(text, "expression")
             except EpicyclicError as exc:
+                if unit:
+                    wanted = "a plain number (no unit)" if unit == "1" else f"a number in {unit} (e.g. 2 or '2 {unit}')"
+                    raise self.error(at_key(where, key), f"expected {wanted}, got {short(value)}.") from None
                 raise self.wrap(at_key(where, key), exc, "expression") from None
         raise self.error(at_key(where, key), f"expected a number or an expression such as '(24/50)*(42/30)', "
                                              f"got {kind_of(value)} {short(value)}.")
