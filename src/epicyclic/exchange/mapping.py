@@ -46,7 +46,7 @@ from .chains import chains
 from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES, custom as _custom
 from .gears import GearData, gear_data, gear_links
 from .operating import OperatingMapper, RexsLoadCase
-from .rating_map import rating_table
+from .rating_map import merge_rating, rating_table
 from .rexs_model import Component, RexsModel
 from .topology import GEAR_TYPES, Members, element_name
 
@@ -82,6 +82,9 @@ class RexsDocument:
         ``density_15`` (kg/dm³), ``temperature`` (°C).
     notes : tuple of str
         What the mapping assumed (a drive read from the sign of torque and speed, ...).
+    rating_inputs : mapping
+        The ISO 6336 inputs the file's standard attributes give (:func:`~epicyclic.exchange.rating_map.
+        rating_table`), also where they are incomplete: what ``epicyclic rate --rating`` completes.
     """
 
     source: str
@@ -95,6 +98,7 @@ class RexsDocument:
     materials: Mapping[str, str] = field(default_factory=dict)
     lubricant: Mapping[str, Any] | None = None
     notes: tuple[str, ...] = ()
+    rating_inputs: Mapping[str, Any] = field(default_factory=dict)
 
     def __repr__(self) -> str:
         return f"RexsDocument({self.summary!r})"
@@ -156,6 +160,7 @@ class _Mapper:
         self.notes: list[str] = []
         self.checked: set[tuple] = set()
         self.rating_gears: list[tuple[str, str, GearData]] = []
+        self.rating_meshes: list[tuple[str, Component]] = []
         self.operating = OperatingMapper(model, self.members, self.used, self.notes)
         self.members.preferred = self.operating.preferred_shafts()
         self.stage_owner: dict[int, int] = {}  # cylindrical_stage id → planetary_stage id
@@ -255,10 +260,13 @@ class _Mapper:
         for key in ("description", "units", "shafts", "rating", "duty_cycle", *SPIN_TABLES):
             if key in extras:
                 data[key] = extras.pop(key)
-        if "rating" not in data and not gears:  # fixed-axis stages: their gears are not named for [rating]
-            rating = rating_table(self.rating_gears, data.get("lubricant"))
-            if rating is not None:
-                data["rating"] = rating
+        rating_inputs: dict[str, Any] = {}
+        if not gears:  # fixed-axis stages: their gears are not named for [rating]
+            rating_inputs, complete = rating_table(model, self.rating_gears, self.rating_meshes, data.get("lubricant"))
+            if "rating" in data:  # the standard attributes win over epicyclic's custom copy
+                data["rating"] = merge_rating(data["rating"], rating_inputs, self.notes)
+            elif complete:
+                data["rating"] = rating_inputs
         cases = self.operating.load_cases(members - {None})
         schedule = self.schedule(unit, [t for t, _ in clutches + brakes], cases, extras)
         if schedule is not None:
@@ -280,7 +288,7 @@ class _Mapper:
                     data["operating_point"]["gear"] = gear
         return RexsDocument(model.source, data, MappingProxyType(self.origins), tuple(cases), self.ignored(),
                             model.version, model.application, model.container, MappingProxyType(self.materials),
-                            self.operating.lubricant_data, tuple(self.notes))
+                            self.operating.lubricant_data, tuple(self.notes), MappingProxyType(rating_inputs))
 
     def ignored(self) -> str:
         left = Counter(c.type for c in self.model.components.values() if c.id not in self.used)
@@ -350,6 +358,7 @@ class _Mapper:
         table.update(sun=self.member(on[first]), ring=self.member(on[second]),
                      carrier=self.member(("carrier", stage.id)), teeth=teeth, planets=planets)
         geometry = self.set_geometry(kind, names, gear, stage, meshes)
+        self.rating_meshes.extend((name, s) for s, _, _ in meshes)
         for role, gid in names.items():
             self.rating_gears.append((name, role, gear[gid]))
             if gear[gid].material:

@@ -29,6 +29,7 @@ from typing import Any
 from ..io.expressions import evaluate
 from ..model import HOUSING
 from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES
+from .rating_write import RatingWriter
 from .serialize import RexsBuilder
 
 __all__ = ["build_rexs"]
@@ -89,6 +90,7 @@ class _Writer:
         self.b = RexsBuilder("epicyclic", version or "0", date)
         self.shafts: dict[str, int] = {}
         self.loads: dict[str, int] = {}
+        self.rating = RatingWriter(self.b, getattr(train_file, "rating", None))
 
     # ---- shafts
     def shaft(self, name: str) -> int:
@@ -231,6 +233,8 @@ class _Writer:
                              _iso(shift.get(gear_name[c1]), int1, g), w(c1))
         central2 = self.gear(ring, f"{name} {c2}", teeth[c2], int2, g, mod2, -1 if int2 else 1,
                              _iso(shift.get(gear_name[c2]), int2, g), w(c2))
+        self.rating.gear(central1, name, c1)
+        self.rating.gear(central2, name, c2)
         for k in range(planets):
             if kind == "double":
                 inner = b.component("shaft", f"{name} planet {k + 1} (sun side)")
@@ -241,16 +245,22 @@ class _Writer:
                                shift.get("planet1"), w("planet1"))
                 p2 = self.gear(outer, f"{name} planet {k + 1} ring side", teeth["planet_ring"], False, g, m1, 1,
                                shift.get("planet2"), w("planet2"))
-                self.mesh(stage, f"{name} sun-planet {k + 1}", central1, p1, w("sun"), a[0])
-                self.mesh(stage, f"{name} planets {k + 1}", p1, p2, w("planet1"), a[1] if len(a) > 2 else None)
-                self.mesh(stage, f"{name} planet {k + 1}-ring", p2, central2, w("ring"), a[-1])
+                self.rating.gear(p1, name, "planet1")
+                self.rating.gear(p2, name, "planet2")
+                for sid in (self.mesh(stage, f"{name} sun-planet {k + 1}", central1, p1, w("sun"), a[0]),
+                            self.mesh(stage, f"{name} planets {k + 1}", p1, p2, w("planet1"),
+                                      a[1] if len(a) > 2 else None),
+                            self.mesh(stage, f"{name} planet {k + 1}-ring", p2, central2, w("ring"), a[-1])):
+                    self.rating.mesh(sid)
                 continue
             pshaft = b.component("shaft", f"{name} planet {k + 1}")
             b.relation("planet_shaft", [(stage, "planetary_stage"), (pshaft, "shaft")])
             made = [self.gear(pshaft, f"{name} planet {k + 1} {key}", teeth[key], False, g, module, -1,
                               shift.get(geo), w(geo)) for key, geo, module in planet_gears]
-            self.mesh(stage, f"{name} {c1}-planet {k + 1}", central1, made[0], None, a[0])
-            self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2, None, a[-1])
+            for gid, (_, geo, _) in zip(made, planet_gears):
+                self.rating.gear(gid, name, geo)
+            self.rating.mesh(self.mesh(stage, f"{name} {c1}-planet {k + 1}", central1, made[0], None, a[0]))
+            self.rating.mesh(self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2, None, a[-1]))
 
     def stage(self, t: Mapping[str, Any]) -> None:
         b = self.b

@@ -19,6 +19,7 @@
     cutter = { teeth = 24, profile_shift = 0.0, addendum = 1.25, tip_radius = 0.25 }   # internal gears
     rim_thickness = { ring = 12.0 }       # s_R below the root, mm (Y_B); others solid
     long_life = "standard"                # or "optimum"
+    ignored = ["..."]                     # inputs given but not used (the REXS reader lists them), reported
     [rating.lubricant]
     viscosity_40 = 35.0                   # mm²/s (or in the top-level [lubricant])
     viscosity_100 = 7.0
@@ -43,12 +44,12 @@ from ..rating.spec import RatingSpec
 from ..rating.tooth_form import Cutter
 from .reader import at_key
 
-__all__ = ["RATING_KEYS", "read_rating"]
+__all__ = ["RATING_KEYS", "read_rating", "side_rating"]
 
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
                "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
-               "rim_thickness"}
+               "rim_thickness", "ignored", "notes"}
 _NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "K_Hbeta", "K_v",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
 _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
@@ -149,6 +150,12 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
         r_where = at_key(where, "rim_thickness")
         rims = reader.table(table["rim_thickness"], r_where)
         values["rim_thickness"] = {k: reader.number(v, k, r_where) for k, v in rims.items()}
+    for key in ("ignored", "notes"):  # what a REXS file gave that the rating does not use; the reader's notes
+        if key in table:
+            items = table[key]
+            if not isinstance(items, list) or not all(isinstance(i, str) for i in items):
+                raise reader.error(at_key(where, key), f"expected a list of strings, got {items!r:.60}.")
+            values[key] = tuple(items)
     oil = dict(lubricant or {})
     if "lubricant" in table:
         own = reader.table(table["lubricant"], "[rating.lubricant]")
@@ -161,3 +168,53 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
         return RatingSpec(**values)
     except EpicyclicError as exc:
         raise reader.wrap(where, exc) from None
+
+
+def side_rating(train_file, path):
+    """``train_file`` with the ``[rating]`` of the side file ``path`` over its own rating inputs.
+
+    The side file's ``[rating]`` (and ``[lubricant]``) keys replace those a REXS model's standard
+    attributes give (:attr:`~epicyclic.exchange.mapping.RexsDocument.rating_inputs`); its ``ignored``
+    list joins the model's.  For a TOML train file the side file's ``[rating]`` replaces the file's.
+
+    Parameters
+    ----------
+    train_file : TrainFile
+    path : str or Path
+        A TOML file with a ``[rating]`` table.
+
+    Returns
+    -------
+    TrainFile
+
+    Raises
+    ------
+    InputFileError
+        The side file cannot be read, is not TOML, has no ``[rating]`` table or a bad key (the message
+        names the side file and the key).
+
+    References
+    ----------
+    ``docs/rating.md`` (the side file); ISO 6336-1:2019.
+    """
+    from dataclasses import replace
+
+    from .reader import TableReader
+    from .source import parse_toml, read_source
+
+    source = str(path)
+    reader = TableReader(source)
+    side = parse_toml(read_source(path), source)
+    reader.check_keys(side, {"rating", "lubricant"}, "the side file")
+    if "rating" not in side:
+        raise reader.error("[rating]", "the side file has no [rating] table; give material, flank_roughness, "
+                                       "root_roughness (and [lubricant] viscosity_40) there (see docs/rating.md).")
+    document = getattr(train_file.exchange, "data", None) or {}
+    base = dict(getattr(train_file.exchange, "rating_inputs", None) or document.get("rating") or {})
+    table = {**base, **reader.table(side["rating"], "[rating]")}
+    for key in ("ignored", "notes"):
+        if key in base and key in side["rating"]:
+            table[key] = list(base[key]) + [i for i in side["rating"][key] if i not in base[key]]
+    lubricant = {**(document.get("lubricant") or {}), **reader.table(side.get("lubricant", {}), "[lubricant]")}
+    return replace(train_file, rating=read_rating(reader, table, {k: v for k, v in lubricant.items()
+                                                                  if k in ("viscosity_40", "viscosity_100")}))

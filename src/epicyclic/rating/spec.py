@@ -132,6 +132,9 @@ class RatingSpec:
     rim_thickness : mapping gear → float, optional
         Rim thickness s_R below the root per gear name (``ring``, ``"P1:ring"``), mm, for Y_B;
         gears not named are solid (Y_B = 1).
+    ignored : tuple of str, default ()
+        Inputs the source gave that the rating does not use although they change a safety (a REXS
+        file's crowning, ...): listed in the report, never dropped silently.
 
     Raises
     ------
@@ -165,6 +168,7 @@ class RatingSpec:
     tip_relief: float | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
     rim_thickness: Mapping[str, float] | None = None
+    ignored: tuple[str, ...] = field(default=(), compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "standard", edition(self.standard))
@@ -308,4 +312,5 @@ class RatingSpec:
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
                 "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,
                 "pitting_permitted": self.pitting_permitted, "tip_relief": self.tip_relief, "material": mats,
-                "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None}
+                "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None,
+                "ignored": list(self.ignored)}

@@ -1,0 +1,133 @@
+"""The rating travels with the design: ISO 6336 inputs read from and written to REXS standard attributes.
+
+The FVA planetary stage exported by FVA-Workbench 7.1 (``FVA_Planetary_stage_-_Minus_gearing_1.1_vers2.rexsj``,
+github.com/fva-net/rexs-api-java, Apache-2.0; REXS 1.4) gives on every ``cylindrical_stage``
+``application_factor_iso_6336_2006 = 1.25`` and ``mesh_load_factor_iso_6336_2019 = 1.0``; on the gears
+``endurance_limit_flank``/``_root`` (sun and planets 1500/461 N/mm², ring 740.64/306 N/mm²), R_z 5/20 µm; on the
+materials ``surface_hardness_vickers = 750``; on the gear unit ``operating_time = 100 000 h``; and a helix and a
+profile crowning of 5 µm on the sun's flanks.  Attribute names: REXS 1.7 database (``rexs_schema_1.7.xml``).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from epicyclic.cli.main import app
+from epicyclic.exchange import loads_rexs_document
+from epicyclic.exchange.convert import rexs_text
+from epicyclic.exchange.validate import validate_rexs
+from epicyclic.io import InputFileError, load_train_file
+from epicyclic.io.rating_format import side_rating
+
+FIXTURES = Path(__file__).parent / "fixtures"
+ROOT = Path(__file__).resolve().parents[2]
+VERS2 = FIXTURES / "FVA_Planetary_stage_-_Minus_gearing_1.1_vers2.rexsj"
+STAGE = ROOT / "examples" / "rexs" / "FVA_Planetary_stage_-_Minus_gearing_1.1.rexs"
+DATE = "2026-01-01T00:00:00+00:00"
+
+
+def _rate(*argv):
+    result = CliRunner().invoke(app, ["rate", *[str(a) for a in argv]])
+    return result
+
+
+def test_the_files_application_factor_is_used():
+    # defect: K_A = 1.25 on every mesh was rated with K_A = 1.0 "(given)"
+    result = _rate(VERS2, "-f", "json")
+    data = json.loads(result.stdout)
+    assert data["inputs"]["application_factor"] == 1.25
+    for mesh in data["ratings"][0]["meshes"]:
+        assert mesh["factors"]["K_A"]["value"] == 1.25
+
+
+def test_the_files_materials_are_used_not_the_table():
+    # defect: the file's hardness and sigma_Flim were replaced by the data file's values (700 HV, 425 N/mm^2)
+    spec = load_train_file(VERS2).rating
+    sun, ring = spec.material_of("Planetary stage [9]", "sun"), spec.material_of("Planetary stage [9]", "ring")
+    assert (sun.treatment, sun.hardness, sun.sigma_Hlim, sun.sigma_Flim, sun.E) == ("Eh", 750.0, 1500.0, 461.0, 210000.0)
+    assert (ring.treatment, ring.sigma_Hlim, ring.sigma_Flim) == ("V", 740.64, 306.0)
+    assert spec.life == 100000.0 and spec.load_sharing == 1.0
+
+
+def test_crowning_is_listed_as_ignored():
+    # defect: the crowning was dropped silently while K_Hbeta came from method C
+    result = _rate(VERS2)
+    assert "Inputs given but not used" in result.stdout
+    assert "helix crowning" in result.stdout and "helix_crowning_amount_datum_face = 5 µm" in result.stdout
+    data = json.loads(_rate(VERS2, "-f", "json").stdout)
+    assert any("profile crowning" in item for item in data["inputs"]["ignored"])
+
+
+def test_k_a_scales_the_stresses_as_the_standard_says(tmp_path):
+    # closed form (ISO 6336-2:2019, eq. (1); -3, eq. (3)): sigma_H / sqrt(K_A K_v K_Hbeta K_Halpha) and
+    # sigma_F / (K_A K_v K_Fbeta K_Falpha) do not depend on K_A
+    side = tmp_path / "rating.toml"
+    side.write_text("[rating]\napplication_factor = 1.0\n", encoding="utf-8")
+    f = load_train_file(VERS2)
+    from epicyclic.rating.train import rate_solution
+
+    def stresses(spec):
+        out = []
+        for m in rate_solution(f.solve(), f.geometry, spec).meshes:
+            k = {key: float(m.factors[key].value) for key in ("K_A", "K_v", "K_Hbeta", "K_Halpha", "K_Fbeta",
+                                                            "K_Falpha")}
+            for g in m.gears:
+                h, r = float(g.factors["sigma_H"].value), float(g.factors["sigma_F"].value)
+                out.extend((h / math.sqrt(k["K_A"] * k["K_v"] * k["K_Hbeta"] * k["K_Halpha"]),
+                            r / (k["K_A"] * k["K_v"] * k["K_Fbeta"] * k["K_Falpha"])))
+        return out
+
+    given, unit = stresses(f.rating), stresses(side_rating(f, side).rating)
+    assert side_rating(f, side).rating.application_factor == 1.0
+    assert given == pytest.approx(unit, rel=1e-9)
+
+
+def test_standard_attributes_win_over_the_custom_copy():
+    f = load_train_file(ROOT / "examples" / "rating" / "simple_set.toml")
+    text = rexs_text(f, "xml", DATE)
+    assert validate_rexs(text, "xml") == []
+    assert 'id="application_factor_iso_6336_2019" unit="none">1.25<' in text
+    assert 'id="allowable_stress_number_tooth_root_iso_6336_2016"' in text
+    edited = text.replace('id="application_factor_iso_6336_2019" unit="none">1.25<',
+                          'id="application_factor_iso_6336_2019" unit="none">1.5<')
+    doc = loads_rexs_document(edited.encode(), "edited.rexs")
+    assert doc.data["rating"]["application_factor"] == 1.5
+    assert any("application_factor" in n and "standard attributes are used" in n for n in doc.notes)
+
+
+def test_written_rating_reads_back_the_same():
+    f = load_train_file(ROOT / "examples" / "rating" / "simple_set.toml")
+    for kind in ("xml", "json"):
+        text = rexs_text(f, kind, DATE)
+        assert validate_rexs(text, kind) == []
+        doc = loads_rexs_document(text.encode(), f"written.{kind}")
+        assert doc.rating_inputs["application_factor"] == f.rating.application_factor
+        assert doc.rating_inputs["flank_roughness"] == f.rating.flank_roughness
+        assert doc.rating_inputs["accuracy_grade"] == f.rating.accuracy_grade
+        assert doc.rating_inputs["material"]["P:ring"] == "42CrMo4"
+
+
+def test_a_model_without_rating_inputs_is_rated_with_a_side_file(tmp_path):
+    result = _rate(STAGE)
+    assert result.exit_code == 2 and "--rating RATING.toml" in result.stderr
+    side = tmp_path / "rating.toml"
+    side.write_text('[rating]\nmaterial = "18CrNiMo7-6"\nflank_roughness = 4.0\nroot_roughness = 12.0\n',
+                    encoding="utf-8")
+    result = _rate(STAGE, "--rating", side)
+    assert result.exit_code == 0, result.stderr
+    assert "Planetenstufe [9]" in result.stdout
+
+
+def test_a_side_file_without_rating_is_refused(tmp_path):
+    side = tmp_path / "rating.toml"
+    side.write_text('[lubricant]\nviscosity_40 = 100.0\n', encoding="utf-8")
+    with pytest.raises(InputFileError, match=r"rating\.toml: \[rating\]: the side file has no \[rating\] table"):
+        side_rating(load_train_file(STAGE), side)
+    side.write_text('[rating]\nmaterial = "18CrNiMo7-6"\nflank_roughnes = 4.0\n', encoding="utf-8")
+    with pytest.raises(InputFileError, match="did you mean 'flank_roughness'"):
+        side_rating(load_train_file(STAGE), side)
