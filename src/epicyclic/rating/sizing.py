@@ -30,6 +30,7 @@ from typing import Any
 
 import numpy as np
 
+from ..geometry._render import html_table, text_table
 from ..geometry.errors import GeometryError
 from ..geometry.fitting import check_fitting
 from ..geometry.set_geometry import SetGeometry
@@ -81,6 +82,43 @@ class SizingResult:
     def profile_shifts(self) -> dict[str, float]:
         """x of sun, planet(s) and ring (the ring's in the ISO 21771 sign)."""
         return {name: float(gear.profile_shift) for name, gear in self.geometry.gears.items()}
+
+    def _sections(self) -> list[tuple[str, list[str], list[list[object]]]]:
+        s_h = min(float(np.min(m.S_H)) for m in self.rating.meshes)
+        s_f = min(float(np.min(m.S_F)) for m in self.rating.meshes)
+        a_w = self.geometry.meshes[0].center_distance
+        shifts = self.profile_shifts
+        summary = [["normal module", "m_n", "mm", f"{self.module:g}"], ["face width", "b", "mm", f"{self.face_width:.4g}"],
+                   *[[f"profile shift of the {g}", f"x_{g}", "1", f"{x:+.4f}"] for g, x in shifts.items()],
+                   ["working centre distance", "a_w", "mm", f"{a_w:.4f}"],
+                   ["lowest safety for pitting", "S_H", "1", f"{s_h:.4g}"],
+                   ["lowest safety for bending", "S_F", "1", f"{s_f:.4g}"],
+                   ["fitting conditions", "", "", "pass" if self.fitting is None or self.fitting.passed else "FAIL"]]
+        if self.shifts is not None:
+            summary.append(["specific sliding at the roots (sun, planet)", "zeta", "1",
+                            f"{self.shifts.sliding[0]:.4f}, {self.shifts.sliding[1]:.4f}"])
+        tried = [[f"{m:g}", f"{h:.4g}", f"{f:.4g}"] for m, h, f in self.tried]
+        return [(f"smallest module of {self.geometry.planetary_set.name!r}: searched {self.bound[0]:g} ... "
+                 f"{self.bound[1]:g} mm (ISO 54)", ["quantity", "symbol", "unit", "value"], summary),
+                ("modules rated (each set buildable)", ["m_n [mm]", "min S_H", "min S_F"], tried)]
+
+    def table(self) -> str:
+        """The module, face width, profile shifts and safeties, and every module rated, as text."""
+        return "\n\n".join(text_table(h, r, title=t) for t, h, r in self._sections())
+
+    def markdown(self) -> str:
+        """The same tables in Markdown."""
+        parts = []
+        for title, head, rows in self._sections():
+            parts.append(f"## {title}\n\n| " + " | ".join(head) + " |\n|" + "---|" * len(head) + "\n"
+                         + "\n".join("| " + " | ".join(str(v).replace("|", "\\|") for v in r) + " |" for r in rows))
+        return "\n\n".join(parts) + "\n"
+
+    def _repr_html_(self) -> str:
+        return "".join(html_table(h, r, title=t) for t, h, r in self._sections())
+
+    def __repr__(self) -> str:
+        return f"<SizingResult m_n {self.module:g} mm, b {self.face_width:.4g} mm, shifts {self.profile_shifts}>"
 
     def to_dict(self) -> dict:
         """Plain data: module, face width (mm), profile shifts, bound, tried modules, fitting, the rating."""
