@@ -131,3 +131,37 @@ def test_a_side_file_without_rating_is_refused(tmp_path):
     side.write_text('[rating]\nmaterial = "18CrNiMo7-6"\nflank_roughnes = 4.0\n', encoding="utf-8")
     with pytest.raises(InputFileError, match="did you mean 'flank_roughness'"):
         side_rating(load_train_file(STAGE), side)
+
+
+def test_a_toml_duty_cycle_is_written_as_a_load_spectrum():
+    from epicyclic.exchange.container import read_model
+    from epicyclic.io.duty_format import analyse_file_duty_cycle
+
+    f = load_train_file(ROOT / "examples" / "rating" / "simple_set_duty_cycle.toml")
+    text = rexs_text(f, "xml", DATE)
+    assert validate_rexs(text, "xml") == []
+    model = read_model(text.encode(), "cycle.rexs")
+    assert len(model.load_cases) == 4  # one load_case per [[duty_cycle.case]]
+    doc = loads_rexs_document(text.encode(), "cycle.rexs")
+    assert [c.duration_fraction for c in doc.load_cases] == pytest.approx([0.05, 0.25, 0.5, 0.2])
+    assert doc.data["operating_point"]["torques"] == {"in": "600 N*m"}  # the file's point, not the first case
+    back = analyse_file_duty_cycle(load_train_file_from(doc))
+    given = analyse_file_duty_cycle(f)
+    assert back.to_dict()["cycle"] == given.to_dict()["cycle"]
+    assert [d["D_H"] for d in back.to_dict()["damage"]] == pytest.approx([d["D_H"] for d in given.to_dict()["damage"]])
+
+
+def test_the_load_cases_win_over_the_custom_duty_cycle():
+    f = load_train_file(ROOT / "examples" / "rating" / "simple_set_duty_cycle.toml")
+    text = rexs_text(f, "xml", DATE)
+    peak = 'id="torque_around_u_axis" unit="N m">750.0<'
+    assert peak in text
+    doc = loads_rexs_document(text.replace(peak, 'id="torque_around_u_axis" unit="N m">900.0<', 1).encode(), "e.rexs")
+    assert doc.data["duty_cycle"]["case"][0]["name"] == "peak"
+    assert "900" in json.dumps(doc.data["duty_cycle"]["case"][0]["torques"])
+
+
+def load_train_file_from(doc):
+    from epicyclic.io.toml_format import read_document
+
+    return read_document(doc)

@@ -46,6 +46,7 @@ from .chains import chains
 from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES, custom as _custom
 from .gears import GearData, gear_data, gear_links
 from .operating import OperatingMapper, RexsLoadCase
+from .operating import standard_cases
 from .rating_map import merge_rating, rating_table
 from .rexs_model import Component, RexsModel
 from .topology import GEAR_TYPES, Members, element_name
@@ -257,7 +258,7 @@ class _Mapper:
         lubricant = self.operating.lubricant(extras.pop("lubricant", None))
         if lubricant is not None:
             data["lubricant"] = lubricant
-        for key in ("description", "units", "shafts", "rating", "duty_cycle", *SPIN_TABLES):
+        for key in ("description", "units", "shafts", "rating", "duty_cycle", "operating_point", *SPIN_TABLES):
             if key in extras:
                 data[key] = extras.pop(key)
         rating_inputs: dict[str, Any] = {}
@@ -280,7 +281,9 @@ class _Mapper:
             duty = self.duty_cycle(unit, cases)
             if duty is not None:
                 data["duty_cycle"] = duty
-        if cases:
+        if "duty_cycle" in data and len(cases) == len(data["duty_cycle"].get("case", [])) > 1:
+            data["duty_cycle"] = standard_cases(data["duty_cycle"], cases)  # the load cases win over the copy
+        if cases and "operating_point" not in data:
             data["operating_point"] = dict(cases[0].operating_point)
             if schedule is not None and unit is not None:
                 gear = self.current_gear(unit, schedule)

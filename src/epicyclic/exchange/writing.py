@@ -146,9 +146,12 @@ class _Writer:
         if transmission:
             extras["gears"] = gears
             extras["transmission"] = {"input": transmission.input, "output": transmission.output}
+        if load_cases and getattr(load_cases[0], "from_duty_cycle", False) and "operating_point" in doc:
+            extras["operating_point"] = doc["operating_point"]  # the spectrum's cases replace the model's point
         self.unit = b.component("gear_unit", self.file.title, [
             ("number_of_gears", "integer", max(len(gears), 1), "none"), ("gear_shift_index", "integer", index, "none"),
-            (CUSTOM_DOCUMENT, "string", _json(extras), "none")])
+            (CUSTOM_DOCUMENT, "string", _json(extras), "none")]
+            + ([_f("operating_time", self.file.rating.life, "h")] if getattr(self.file, "rating", None) else []))
         self.casing = b.component("gear_casing", "casing")
         b.relation("assembly", [(self.unit, "assembly"), (self.casing, "part")])
         if "lubricant" in doc:
