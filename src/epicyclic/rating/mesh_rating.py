@@ -220,8 +220,8 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["Y_X"] = [root.size_factor(rack.module, m.treatment) for m in mats]
     s["Y_M"] = [root.REVERSED_BENDING if r else 1.0 for r in inp.reversed_bending]
     s["Z_curves"] = [pitting_curve(m.treatment, pitting_permitted=spec.pitting_permitted,
-                                   long_life=spec.long_life) for m in mats]
-    s["Y_curves"] = [bending_curve(m.treatment, long_life=spec.long_life) for m in mats]
+                                   long_life=spec.long_life, edition=year) for m in mats]
+    s["Y_curves"] = [bending_curve(m.treatment, long_life=spec.long_life, edition=year) for m in mats]
     return s
 
 
