@@ -196,7 +196,8 @@ SUN = GearGeometry(19, RACK_NREL, 0.6170, tip_shortening=K_NREL)
 PLANET = GearGeometry(17, RACK_NREL, 0.8021, tip_shortening=K_NREL)
 RING = GearGeometry(56, RACK_NREL, -0.5013, internal=True)  # printed in the ISO 21771 sign (z = -56)
 CASE = Material("18CrNiMo7-6", "Eh", 1500.0, 430.0, hardness=720.0, yield_strength=850.0)
-THROUGH = Material("34CrNiMo6", "V", 700.0, 290.0, hardness=240.0, yield_strength=1000.0)
+THROUGH = Material("34CrNiMo6", "V", 700.0, 290.0, hardness=240.0, yield_strength=1000.0,
+                   hardness_scale="HB")  # printed 240 HBW
 SUN_SPEED = 5.0e6 / 999650.9 * 30.0 / math.pi - 12.1  # relative to the carrier, 1/min (P / T_sun − n_carrier)
 SUN_TORQUE = 999650.9 / 3  # per planet, N·m
 

@@ -30,6 +30,8 @@
     treatment = "Eh"                      # ISO 6336-5 symbol
     sigma_Hlim = 1550.0
     sigma_Flim = 480.0
+    hardness = 300.0                      # with its scale: "HB", "HV" or "HRC" (Z_W takes HB)
+    hardness_scale = "HV"
 
 References
 ----------
@@ -57,7 +59,8 @@ _NUMBERS = ("life", "S_Hmin", "S_Fmin", "shaft_deflection", "tool_tip_radius", "
 #: Given per mesh (a table by mesh) or per gear (a table by gear), or one number for all.
 _TABLES = ("application_factor", "K_Hbeta", "K_v", "load_sharing", "K_Fbeta", "K_Halpha", "K_Falpha", "f_pb",
            "f_falpha", "f_Hbeta", "flank_roughness", "root_roughness")
-_USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
+_USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "hardness_scale", "E", "poisson", "density",
+                  "yield_strength"}
 
 
 def _user_materials(reader, table, where: str, quality: str) -> dict[str, Material]:
@@ -66,7 +69,9 @@ def _user_materials(reader, table, where: str, quality: str) -> dict[str, Materi
         w = f"{where}.{name}"
         entry = reader.table(entry, w)
         reader.check_keys(entry, _USER_MATERIAL, w)
-        values = {k: reader.number(entry[k], k, w) for k in entry if k != "treatment"}
+        values = {k: reader.number(entry[k], k, w) for k in entry if k not in ("treatment", "hardness_scale")}
+        if "hardness_scale" in entry:
+            values["hardness_scale"] = reader.string(entry, "hardness_scale", w)
         for key in ("sigma_Hlim", "sigma_Flim"):
             reader.require(entry, key, w)
         treatment = reader.string(entry, "treatment", w)
