@@ -117,11 +117,6 @@ def _stage_spec(spec: RatingSpec, element: str, mesh: str) -> RatingSpec:
     return replace(spec, load_sharing=rest)
 
 
-def _stage_tips(geometry: StageGeometry, index: int, mesh):
-    del geometry, index
-    return mesh
-
-
 def _stage_meshes(name: str, geometry: StageGeometry, spec: RatingSpec) -> list[PlannedMesh]:
     out = []
     torque_ratio, speed_ratio = 1.0, 1.0
@@ -138,7 +133,7 @@ def _stage_meshes(name: str, geometry: StageGeometry, spec: RatingSpec) -> list[
             n_k = np.asarray(speeds["first"]) * sr
             n1 = n_k if driving_first else n_k * z_drive / z1
             return f_tw * d_w1 / 2000.0, n1
-        inp = MeshInput(name, _stage_tips(geometry, k, mesh), geometry.mesh_face_width(k), labels,
+        inp = MeshInput(name, mesh, geometry.mesh_face_width(k), labels,
                         _stage_spec(spec, name, mesh.name), load_sharing_source="one load path")
         out.append(PlannedMesh(inp, loads))
         torque_ratio *= z_driven / z_drive
