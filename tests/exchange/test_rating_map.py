@@ -49,8 +49,11 @@ def test_the_files_materials_are_used_not_the_table():
     # defect: the file's hardness and sigma_Flim were replaced by the data file's values (700 HV, 425 N/mm^2)
     spec = load_train_file(VERS2).rating
     sun, ring = spec.material_of("Planetary stage [9]", "sun"), spec.material_of("Planetary stage [9]", "ring")
-    assert (sun.treatment, sun.hardness, sun.sigma_Hlim, sun.sigma_Flim, sun.E) == ("Eh", 750.0, 1500.0, 461.0, 210000.0)
-    assert (ring.treatment, ring.sigma_Hlim, ring.sigma_Flim) == ("V", 740.64, 306.0)
+    # with sigma_Hlim and sigma_Flim given, the hardness serves Z_W, which takes HB: the file's surface_hardness_brinell
+    assert (sun.treatment, sun.hardness, sun.hardness_scale, sun.sigma_Hlim, sun.sigma_Flim, sun.E) == (
+        "Eh", 693.5, "HB", 1500.0, 461.0, 210000.0)
+    assert (ring.treatment, ring.hardness, ring.hardness_scale, ring.sigma_Hlim, ring.sigma_Flim) == (
+        "V", 266.0, "HB", 740.64, 306.0)
     assert spec.life == 100000.0 and spec.load_sharing == 1.0
 
 
@@ -165,3 +168,21 @@ def load_train_file_from(doc):
     from epicyclic.io.toml_format import read_document
 
     return read_document(doc)
+
+
+def test_factors_that_differ_between_meshes_are_read_per_mesh():
+    f = load_train_file(ROOT / "examples" / "rating" / "simple_set.toml")
+    data = json.loads(rexs_text(f, "json", DATE))
+    for c in data["model"]["components"]:
+        if c["type"] == "cylindrical_stage" and c["name"].endswith("-ring"):
+            for a in c["attributes"]:
+                if a["id"] == "application_factor_iso_6336_2019":
+                    a["floating_point"] = 1.5
+    doc = loads_rexs_document(json.dumps(data).encode(), "meshes.rexsj")
+    assert doc.data["rating"]["application_factor"] == {"P:sun-planet": 1.25, "P:planet-ring": 1.5}
+    from epicyclic.io.toml_format import read_document
+    from epicyclic.rating.train import rate_solution
+
+    g = read_document(doc)
+    rating = rate_solution(g.solve(), g.geometry, g.rating)
+    assert {m.mesh: float(m.factors["K_A"].value) for m in rating.meshes} == {"sun-planet": 1.25, "planet-ring": 1.5}

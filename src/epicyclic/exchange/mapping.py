@@ -161,7 +161,7 @@ class _Mapper:
         self.notes: list[str] = []
         self.checked: set[tuple] = set()
         self.rating_gears: list[tuple[str, str, GearData]] = []
-        self.rating_meshes: list[tuple[str, Component]] = []
+        self.rating_meshes: list[tuple[str, Component, str | None]] = []  # (element, stage, mesh name)
         self.operating = OperatingMapper(model, self.members, self.used, self.notes)
         self.members.preferred = self.operating.preferred_shafts()
         self.stage_owner: dict[int, int] = {}  # cylindrical_stage id → planetary_stage id
@@ -361,7 +361,9 @@ class _Mapper:
         table.update(sun=self.member(on[first]), ring=self.member(on[second]),
                      carrier=self.member(("carrier", stage.id)), teeth=teeth, planets=planets)
         geometry = self.set_geometry(kind, names, gear, stage, meshes)
-        self.rating_meshes.extend((name, s) for s, _, _ in meshes)
+        role = {gid: r for r, gid in names.items() if gid in (first, second)}
+        self.rating_meshes.extend((name, s, (f"{role[first]}-planet" if first in (g1, g2) else f"planet-{role[second]}")
+                                   if kind == "simple" else None) for s, g1, g2 in meshes)
         for role, gid in names.items():
             self.rating_gears.append((name, role, gear[gid]))
             if gear[gid].material:

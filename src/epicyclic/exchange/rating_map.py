@@ -7,7 +7,8 @@ rating key                      REXS attribute (component)
 ==============================  =====================================================================
 ``material``                    ``material_designation`` (``material``, via a ``reference``); with the
                                 file's ``heat_treated_material_type_iso_6336_2019``/``_2006``,
-                                ``surface_hardness_vickers``/``_brinell``/``_rockwell`` (HV/HB/HRC),
+                                ``surface_hardness_vickers``/``_brinell``/``_rockwell`` (HV/HB/HRC, with
+                                its scale: the line's where given),
                                 ``allowable_stress_number_contact_iso_6336_2016`` (σ_Hlim) and
                                 ``allowable_stress_number_tooth_root_iso_6336_2016`` (σ_Flim) — REXS
                                 1.4 writes ``endurance_limit_flank``/``_root`` on material or gear —,
@@ -16,18 +17,20 @@ rating key                      REXS attribute (component)
 ``application_factor``          ``application_factor_iso_6336_2019``/``_2006`` (``cylindrical_stage``)
 ``K_v``, ``K_Hbeta``            ``dynamic_factor_iso_6336_2019``/``_2006``,
                                 ``face_load_factor_contact_stress_iso_6336_2019``/``_2006``
+``K_Fbeta``, ``K_Halpha``,      ``face_load_factor_root_stress_…``,
+``K_Falpha``                    ``transverse_load_factor_contact_stress_…``/``_root_stress_…``
 ``load_sharing``                ``mesh_load_factor_iso_6336_2019``/``_2006`` (K_γ)
-``accuracy_grade``              ``tolerance_class_according_to_iso_1328_2013`` (gear)
+``accuracy_grade``              ``tolerance_class_according_to_iso_1328_2013`` (per gear)
 ``cutter``                      ``cutter_wheel_tool`` of an internal gear: ``number_of_teeth``,
                                 ``addendum_modification_coefficient``,
                                 ``addendum_coefficient_reference_profile``, ``tip_radius_factor``
 ``life``                        ``operating_time`` (``gear_unit``), h
 ==============================  =====================================================================
 
-A factor that differs between the meshes is taken at its largest (the rating has one per file) and
-said so in a note.  What the rating cannot use but that changes a safety — crowning
-(``profile_crowning``, ``helix_crowning``, ``helix_slope``), given K_Fβ, K_Hα, K_Fα, a hardness in a
-scale the material's ISO 6336-5 line does not use — is listed in the table's ``ignored`` (the report
+A factor is one value where every mesh gives the same, else one per rating mesh (``"P:sun-planet"``);
+the planets' meshes of one rating mesh that differ are taken at their largest and said so in a note.
+What the rating cannot use but that changes a safety — crowning (``profile_crowning``,
+``helix_crowning``, ``helix_slope``), a separate K_A of the root — is listed in the table's ``ignored`` (the report
 prints it).  The table is complete (and so becomes the model's ``[rating]``) when every gear has a
 material and both roughnesses and the lubricant a ``viscosity_40``; otherwise it is kept as the
 partial inputs that a side file (``epicyclic rate MODEL.rexs --rating RATING.toml``) completes.
@@ -71,12 +74,13 @@ MESH_FACTORS = {
     "K_v": ("dynamic_factor_iso_6336_2019", "dynamic_factor_iso_6336_2006"),
     "K_Hbeta": ("face_load_factor_contact_stress_iso_6336_2019", "face_load_factor_contact_stress_iso_6336_2006"),
     "load_sharing": ("mesh_load_factor_iso_6336_2019", "mesh_load_factor_iso_6336_2006"),
+    "K_Fbeta": ("face_load_factor_root_stress_iso_6336_2019", "face_load_factor_root_stress_iso_6336_2006"),
+    "K_Halpha": ("transverse_load_factor_contact_stress_iso_6336_2019",
+                 "transverse_load_factor_contact_stress_iso_6336_2006"),
+    "K_Falpha": ("transverse_load_factor_root_stress_iso_6336_2019", "transverse_load_factor_root_stress_iso_6336_2006"),
 }
-#: Given factors the rating computes itself (listed as ignored where a file gives them).
-_NOT_GIVEN = ("face_load_factor_root_stress_iso_6336_2019", "face_load_factor_root_stress_iso_6336_2006",
-              "transverse_load_factor_contact_stress_iso_6336_2019", "transverse_load_factor_contact_stress_iso_6336_2006",
-              "transverse_load_factor_root_stress_iso_6336_2019", "transverse_load_factor_root_stress_iso_6336_2006",
-              "application_factor_tooth_root_iso_6336_2019", "application_factor_tooth_root_iso_6336_2006")
+#: Given factors the rating has no input for (listed as ignored where a file gives them).
+_NOT_GIVEN = ("application_factor_tooth_root_iso_6336_2019", "application_factor_tooth_root_iso_6336_2006")
 _MODIFICATIONS = {"profile_crowning": "profile crowning", "helix_crowning": "helix crowning",
                   "helix_slope": "helix slope (helix angle modification)"}
 
@@ -100,20 +104,23 @@ class _Reader:
                 return attribute, self.model.number(c, attribute, quantity)
         return None
 
-    def factor(self, key: str, meshes: list[tuple[str, Component]]) -> float | None:
-        found = {}
-        for element, stage in meshes:
+    def factor(self, key: str, meshes: list[tuple[str, Component, str | None]]) -> float | dict | None:
+        """One value where every mesh gives the same, else one per rating mesh (``"P:sun-planet"``); the
+        planets' meshes of one rating mesh (or of an element whose meshes are not named) at their largest."""
+        found: dict[str, set[float]] = {}
+        for element, stage, mesh in meshes:
             hit = self.first(stage, MESH_FACTORS[key])
             if hit is not None:
-                found[f"{element} {self.label(stage)}"] = hit
+                found.setdefault(f"{element}:{mesh}" if mesh else element, set()).add(hit[1])
         if not found:
             return None
-        values = {v for _, v in found.values()}
-        if len(values) > 1:
-            self.notes.append(f"{key}: the meshes give {', '.join(f'{v:g}' for v in sorted(values))} "
-                              f"({found[next(iter(found))][0]}); the rating takes one per file, the largest "
-                              f"{max(values):g}")
-        return max(values)
+        for where, values in found.items():
+            if len(values) > 1:
+                self.notes.append(f"{key}: the planets' meshes of {where} give "
+                                  f"{', '.join(f'{v:g}' for v in sorted(values))}; the largest, {max(values):g}, is used")
+        table = {where: max(values) for where, values in found.items()}
+        distinct = set(table.values())
+        return distinct.pop() if len(distinct) == 1 else table
 
     def material(self, element: str, role: str, data) -> dict[str, Any] | None:
         """The gear's material: its designation and the values the file gives (None without one)."""
@@ -168,11 +175,16 @@ def _user_material(entry: dict[str, Any], reader: _Reader, where: str) -> tuple[
     unit = _data()["treatment"].get(treatment, {}).get("hardness_unit")
     values: dict[str, Any] = {}
     hardnesses = entry.get("hardnesses", {})
-    if unit in hardnesses:
-        values["hardness"] = hardnesses[unit]
-    elif hardnesses:
-        reader.ignored.append(f"{where}: surface hardness {', '.join(f'{v:g} {k}' for k, v in hardnesses.items())} - "
-                              f"not used: the ISO 6336-5 line of {treatment!r} is drawn in {unit}")
+    # with sigma_Hlim and sigma_Flim given only Z_W needs the hardness, in HB; otherwise the ISO 6336-5 line, in
+    # its unit: that scale first where the file gives it (the rating converts the others by ASTM E140)
+    first = "HB" if "sigma_Hlim" in entry and "sigma_Flim" in entry else unit
+    scale = first if first in hardnesses else next((k for k in (unit, "HV", "HB", "HRC") if k in hardnesses), None)
+    if scale is not None:
+        values["hardness"], values["hardness_scale"] = hardnesses[scale], scale
+        others = {k: v for k, v in hardnesses.items() if k != scale}
+        if others:
+            reader.notes.append(f"{where}: surface hardness {hardnesses[scale]:g} {scale} used; the file also gives "
+                                + ", ".join(f"{v:g} {k}" for k, v in others.items()))
     for key in ("sigma_Hlim", "sigma_Flim", "E", "poisson"):
         if key in entry:
             values[key] = entry[key]
@@ -181,13 +193,17 @@ def _user_material(entry: dict[str, Any], reader: _Reader, where: str) -> tuple[
 
         table = material(name).to_dict()
         if known["treatment"] == treatment and all(
-                abs(float(table[k]) - float(v)) <= 1e-9 * max(1.0, abs(float(v))) for k, v in values.items()):
+                table.get(k) == v if isinstance(v, str) else abs(float(table[k]) - float(v)) <= 1e-9 * max(
+                    1.0, abs(float(v))) for k, v in values.items()):
             return name, None
-        fill = {"hardness": known["hardness"], "E": known["E"], "poisson": known["poisson"],
+        fill = {"hardness": known["hardness"], "hardness_scale": unit, "E": known["E"], "poisson": known["poisson"],
                 "density": known["density"], "yield_strength": known["yield_strength"]}
         values = {**fill, **values}
         if "sigma_Hlim" not in values or "sigma_Flim" not in values:
-            line = material(name, hardness=values["hardness"])
+            from ..rating.hardness import convert_hardness
+
+            line = material(name, hardness=convert_hardness(values["hardness"], values["hardness_scale"], unit)
+                            if values["hardness_scale"] != unit else values["hardness"])
             values.setdefault("sigma_Hlim", line.sigma_Hlim)
             values.setdefault("sigma_Flim", line.sigma_Flim)
     if "sigma_Hlim" not in values or "sigma_Flim" not in values:
@@ -260,18 +276,15 @@ def rating_table(model: RexsModel, gears: list[tuple[str, str, Any]], meshes: li
         value = reader.factor(key, meshes)
         if value is not None:
             table[key] = value
-    for element, stage in meshes:
+    for element, stage, _ in meshes:
         for attribute in _NOT_GIVEN:
             if model.has(stage, attribute):
                 reader.ignored.append(f"{element} {reader.label(stage)}: {attribute} = "
                                       f"{model.number(stage, attribute):g} - not used: the rating computes it")
-    grades = {int(str(d.component.attributes["tolerance_class_according_to_iso_1328_2013"].value))
-              for _, _, d in gears if model.has(d.component, "tolerance_class_according_to_iso_1328_2013")}
-    if grades:
-        table["accuracy_grade"] = max(grades)
-        if len(grades) > 1:
-            reader.notes.append(f"accuracy_grade: the gears give ISO 1328 classes {sorted(grades)}; the largest "
-                                f"{max(grades)} is used for every mesh")
+    grades = {f"{e}:{r}": int(str(d.component.attributes["tolerance_class_according_to_iso_1328_2013"].value))
+              for e, r, d in gears if model.has(d.component, "tolerance_class_according_to_iso_1328_2013")}
+    if grades:  # one ISO 1328 class, or one per gear
+        table["accuracy_grade"] = next(iter(grades.values())) if len(set(grades.values())) == 1 else grades
     cutters = set()
     for _, _, data in gears:
         for tid in data.tools if data.internal else ():

@@ -5,7 +5,8 @@ Per gear of a planetary set: R_z of flank and root (``averaged_peak_to_valley_he
 (``material_designation``, ``heat_treated_material_type_iso_6336_2019``, the surface hardness in
 the scale of its ISO 6336-5 line, σ_Hlim and σ_Flim as ``allowable_stress_number_contact_iso_6336_2016``
 and ``_tooth_root_``, ``elastic_modulus``, ``poisson_ratio``, ``density``); per mesh
-(``cylindrical_stage``) K_A and the given K_v, K_Hβ, K_γ in the attributes of the rating's edition.
+(``cylindrical_stage``) K_A and the given K_v, K_Hβ, K_Fβ, K_Hα, K_Fα, K_γ in the attributes of the
+rating's edition.
 The attribute names are those :mod:`~epicyclic.exchange.rating_map` reads.
 
 References
@@ -24,7 +25,8 @@ from .rating_map import MESH_FACTORS, TREATMENT_ENUM
 __all__ = ["RatingWriter"]
 
 _ENUM = {symbol: value for value, symbol in TREATMENT_ENUM.items()}
-_HARDNESS = {"HV": ("surface_hardness_vickers", "HV"), "HB": ("surface_hardness_brinell", "HB")}
+_HARDNESS = {"HV": ("surface_hardness_vickers", "HV"), "HB": ("surface_hardness_brinell", "HB"),
+             "HRC": ("surface_hardness_rockwell", "HRC")}
 
 
 class RatingWriter:
@@ -58,7 +60,9 @@ class RatingWriter:
             value = self._try(lambda key=key: spec.roughness_of(key, element, role))
             if value is not None:
                 attrs.append((attribute, "floating_point", float(value), "mum"))
-        attrs.append(("tolerance_class_according_to_iso_1328_2013", "enum", str(spec.accuracy_grade), "none"))
+        grade = self._try(lambda: spec.grade_of(element, role))
+        if grade is not None:
+            attrs.append(("tolerance_class_according_to_iso_1328_2013", "enum", str(int(grade)), "none"))
         self.b.add(gid, attrs)
         material = self._try(lambda: spec.material_of(element, role))
         if material is not None:
@@ -73,7 +77,7 @@ class RatingWriter:
         attrs: list[tuple[str, str, Any, str]] = [("material_designation", "string", m.name, "none")]
         if m.treatment in _ENUM:
             attrs.append(("heat_treated_material_type_iso_6336_2019", "enum", _ENUM[m.treatment], "none"))
-        unit = _data()["treatment"].get(m.treatment, {}).get("hardness_unit")
+        unit = getattr(m, "hardness_scale", None) or _data()["treatment"].get(m.treatment, {}).get("hardness_unit")
         if unit in _HARDNESS and m.hardness > 0:
             attribute, symbol = _HARDNESS[unit]
             attrs.append((attribute, "floating_point", float(m.hardness), symbol))
@@ -85,13 +89,15 @@ class RatingWriter:
         self.materials[m] = cid = self.b.component("material", m.name, attrs)
         return cid
 
-    def mesh(self, sid: int) -> None:
-        """K_A and the given factors of the mesh ``sid`` (the edition's attributes)."""
+    def mesh(self, sid: int, element: str, name: str) -> None:
+        """K_A and the given factors of the mesh ``sid`` (``name`` of ``element``; the edition's attributes)."""
         spec = self.spec
         if spec is None:
             return
         index = 0 if spec.standard == "2019" else 1
-        values = {"application_factor": spec.application_factor, "K_v": spec.K_v, "K_Hbeta": spec.K_Hbeta,
-                  "load_sharing": spec.load_sharing}
-        self.b.add(sid, [(MESH_FACTORS[key][index], "floating_point", float(value), "none")
-                         for key, value in values.items() if value is not None])
+        attrs = []
+        for key, attributes in MESH_FACTORS.items():
+            value = self._try(lambda key=key: spec.given_factor(key, element, name))
+            if value is not None:
+                attrs.append((attributes[index], "floating_point", float(value), "none"))
+        self.b.add(sid, attrs)

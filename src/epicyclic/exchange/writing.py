@@ -250,11 +250,13 @@ class _Writer:
                                shift.get("planet2"), w("planet2"))
                 self.rating.gear(p1, name, "planet1")
                 self.rating.gear(p2, name, "planet2")
-                for sid in (self.mesh(stage, f"{name} sun-planet {k + 1}", central1, p1, w("sun"), a[0]),
-                            self.mesh(stage, f"{name} planets {k + 1}", p1, p2, w("planet1"),
-                                      a[1] if len(a) > 2 else None),
-                            self.mesh(stage, f"{name} planet {k + 1}-ring", p2, central2, w("ring"), a[-1])):
-                    self.rating.mesh(sid)
+                for sid, mesh in ((self.mesh(stage, f"{name} sun-planet {k + 1}", central1, p1, w("sun"), a[0]),
+                                   "sun-planet1"),
+                                  (self.mesh(stage, f"{name} planets {k + 1}", p1, p2, w("planet1"),
+                                             a[1] if len(a) > 2 else None), "planet1-planet2"),
+                                  (self.mesh(stage, f"{name} planet {k + 1}-ring", p2, central2, w("ring"), a[-1]),
+                                   "planet2-ring")):
+                    self.rating.mesh(sid, name, mesh)
                 continue
             pshaft = b.component("shaft", f"{name} planet {k + 1}")
             b.relation("planet_shaft", [(stage, "planetary_stage"), (pshaft, "shaft")])
@@ -262,8 +264,11 @@ class _Writer:
                               shift.get(geo), w(geo)) for key, geo, module in planet_gears]
             for gid, (_, geo, _) in zip(made, planet_gears):
                 self.rating.gear(gid, name, geo)
-            self.rating.mesh(self.mesh(stage, f"{name} {c1}-planet {k + 1}", central1, made[0], None, a[0]))
-            self.rating.mesh(self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2, None, a[-1]))
+            first, last = planet_gears[0][1], planet_gears[-1][1]
+            self.rating.mesh(self.mesh(stage, f"{name} {c1}-planet {k + 1}", central1, made[0], None, a[0]), name,
+                             f"{c1}-{first}")
+            self.rating.mesh(self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2, None, a[-1]), name,
+                             f"{last}-{c2}")
 
     def stage(self, t: Mapping[str, Any]) -> None:
         b = self.b
