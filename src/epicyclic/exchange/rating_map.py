@@ -298,8 +298,9 @@ def rating_table(model: RexsModel, gears: list[tuple[str, str, Any]], meshes: li
                         cutter[key] = model.number(tool, attribute)
                 if cutter.get("tip_radius", 0.25) <= 0.0:  # a sharp corner: the rack approximation's rho_F = 0
                     reader.ignore(f"{reader.label(tool)}: z0 = {cutter['teeth']}, tip_radius_factor = 0 - not used: "
-                                  "a sharp cutter tip gives the rack approximation of the root no fillet; the "
-                                  "basic rack's tool_tip_radius is used (give [rating] cutter to rate with it)")
+                                  "a sharp cutter tip (rho_a0* = 0) leaves the rack-shaped root without a fillet "
+                                  "radius; the root is rated with the basic rack's tool_tip_radius (give [rating] "
+                                  "cutter to rate with a cutter)")
                     continue
                 cutters.add(tuple(sorted(cutter.items())))
     if len(cutters) == 1:
