@@ -186,3 +186,26 @@ def test_factors_that_differ_between_meshes_are_read_per_mesh():
     g = read_document(doc)
     rating = rate_solution(g.solve(), g.geometry, g.rating)
     assert {m.mesh: float(m.factors["K_A"].value) for m in rating.meshes} == {"sun-planet": 1.25, "planet-ring": 1.5}
+
+
+def test_planet_bearings_travel_as_catalogue_bearings():
+    from epicyclic.exchange.container import read_model
+    from epicyclic.io.toml_format import read_document
+
+    f = load_train_file(ROOT / "examples" / "rating" / "simple_set_duty_cycle.toml")
+    text = rexs_text(f, "xml", DATE)
+    bearings = [c for c in read_model(text.encode(), "b.rexs").components.values()
+                if c.type == "rolling_bearing_with_catalog_geometry"]
+    assert len(bearings) == 3  # one per planet
+    assert float(bearings[0].attributes["radial_dynamic_load_rating"].value) == 120.0  # kN
+    assert bearings[0].attributes["bearing_type"].value == "radial_roller_bearing"
+    doc = loads_rexs_document(text.encode(), "b.rexs")
+    planet = doc.data["planetary"][0]["bearings"]["planet"]
+    # the same REXS enum as the set's losses.bearing type: that (finer) type stays the planet bearing's
+    assert planet["dynamic_load_rating"] == 120000.0 and "type" not in planet
+    assert read_document(doc).bearings["P"]["planet"].type == "cylindrical roller full complement"
+    edited = text.replace('id="radial_dynamic_load_rating" unit="kN">120.0<', 'id="radial_dynamic_load_rating" unit="kN">'
+                          '90.0<')
+    doc = loads_rexs_document(edited.encode(), "b.rexs")
+    assert doc.data["planetary"][0]["bearings"]["planet"]["dynamic_load_rating"] == 90000.0
+    assert read_document(doc).bearings["P"]["planet"].dynamic_load_rating == 90000.0

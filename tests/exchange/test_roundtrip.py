@@ -127,7 +127,7 @@ def test_attributes_written_are_rexs_1_7_attributes():
     database = json.loads((FIXTURES / "rexs_1.7_database_excerpt.json").read_text(encoding="utf-8"))
     units = {"none": "none", "mm": "mm", "deg": "deg", "1 / min": "1 / min", "N m": "N m", "kW": "kW",
              "%": "%", "C": "C", "mm^2 / s": "mm^2 / s", "mum": "mum", "N / mm^2": "N / mm^2", "HV": "HV",
-             "HB": "HB", "kg / dm^3": "kg / dm^3", "h": "h"}
+             "HB": "HB", "kg / dm^3": "kg / dm^3", "h": "h", "kN": "kN"}
     for example in ("zf_8hp70_geometry.toml", "brandenberger_1952.toml", "geometry_simple_set.toml",
                     "wolfrom_drive.toml", "rexs/FVA-Industriegetriebe_2stufig_1-4.rexs",
                     "rating/simple_set_duty_cycle.toml"):

@@ -46,6 +46,7 @@ from .chains import chains
 from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES, custom as _custom
 from .gears import GearData, gear_data, gear_links
 from .operating import OperatingMapper, RexsLoadCase
+from .bearing_map import planet_bearings
 from .operating import standard_cases
 from .rating_map import merge_rating, rating_table
 from .rexs_model import Component, RexsModel
@@ -374,6 +375,13 @@ class _Mapper:
             table["geometry"] = geometry
         for key, value in extras.items():
             table[key] = value
+        bearings = table.get("bearings") if isinstance(table.get("bearings"), dict) else {}
+        planet = planet_bearings(model, {p for p in planet_shafts if p is not None}, self.used, self.notes,
+                                 bearings.get("planet") if isinstance(bearings.get("planet"), dict) else None,
+                                 ((table.get("losses") or {}).get("bearing") or {}).get("type")
+                                 if isinstance(table.get("losses"), dict) else None)
+        if planet is not None:
+            table["bearings"] = {**bearings, "planet": planet}
         return table, None
 
     def kind(self, stage, gear: dict[int, GearData], first: int, second: int, links, doubles, on, extras):

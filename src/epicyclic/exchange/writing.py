@@ -28,6 +28,7 @@ from typing import Any
 
 from ..io.expressions import evaluate
 from ..model import HOUSING
+from .bearing_map import planet_bearing_attributes
 from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES
 from .rating_write import RatingWriter
 from .serialize import RexsBuilder
@@ -260,6 +261,7 @@ class _Writer:
                 continue
             pshaft = b.component("shaft", f"{name} planet {k + 1}")
             b.relation("planet_shaft", [(stage, "planetary_stage"), (pshaft, "shaft")])
+            self.planet_bearing(name, k, arm, pshaft)
             made = [self.gear(pshaft, f"{name} planet {k + 1} {key}", teeth[key], False, g, module, -1,
                               shift.get(geo), w(geo)) for key, geo, module in planet_gears]
             for gid, (_, geo, _) in zip(made, planet_gears):
@@ -269,6 +271,15 @@ class _Writer:
                              f"{c1}-{first}")
             self.rating.mesh(self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2, None, a[-1]), name,
                              f"{last}-{c2}")
+
+    def planet_bearing(self, name: str, k: int, carrier: int, planet: int) -> None:
+        """The planet's rolling bearing (``bearings.planet`` of the set) between carrier and planet shaft."""
+        rating = (getattr(self.file, "bearings", None) or {}).get(name, {}).get("planet")
+        if rating is None:
+            return
+        bid = self.b.component("rolling_bearing_with_catalog_geometry", f"{name} planet {k + 1} bearing",
+                               planet_bearing_attributes(rating))
+        self.b.relation("side", [(bid, "assembly"), (carrier, "inner_part"), (planet, "outer_part")])
 
     def stage(self, t: Mapping[str, Any]) -> None:
         b = self.b
