@@ -113,6 +113,11 @@ def test_written_rating_reads_back_the_same():
         assert doc.rating_inputs["flank_roughness"] == f.rating.flank_roughness
         assert doc.rating_inputs["accuracy_grade"] == f.rating.accuracy_grade
         assert doc.rating_inputs["material"]["P:ring"] == "42CrMo4"
+        assert doc.rating_inputs["tool_tip_radius"] == f.rating.tool_tip_radius
+        assert doc.rating_inputs["cutter"]["teeth"] == f.rating.cutter.teeth == 25  # the ring's cutter_wheel_tool
+        from epicyclic.io.toml_format import read_document
+
+        assert read_document(doc).rating.cutter == f.rating.cutter
 
 
 def test_a_model_without_rating_inputs_is_rated_with_a_side_file(tmp_path):

@@ -351,6 +351,8 @@ def merge_rating(custom: Any, standard: dict[str, Any], notes: list[str]) -> Any
         if key in ("ignored", "notes"):
             merged[key] = list(custom.get(key, [])) + [v for v in value if v not in custom.get(key, [])]
             continue
+        if isinstance(value, dict) and isinstance(custom.get(key), dict) and key in ("cutter", "materials"):
+            value = {**custom[key], **value}  # what the standard does not give (a cutter's addendum) stays
         if key in custom and custom[key] != value and _differs(key, custom[key], value, standard):
             notes.append(f"[rating] {key}: the REXS attributes give {value!r}, epicyclic's custom copy "
                          f"{custom[key]!r}; the standard attributes are used")

@@ -6,7 +6,9 @@ Per gear of a planetary set: R_z of flank and root (``averaged_peak_to_valley_he
 the scale of its ISO 6336-5 line, σ_Hlim and σ_Flim as ``allowable_stress_number_contact_iso_6336_2016``
 and ``_tooth_root_``, ``elastic_modulus``, ``poisson_ratio``, ``density``); per mesh
 (``cylindrical_stage``) K_A and the given K_v, K_Hβ, K_Fβ, K_Hα, K_Fα, K_γ in the attributes of the
-rating's edition.
+rating's edition; the basic rack's tip radius ρ_fP* (``tip_radius_factor`` of a ``rack_shaped_tool``)
+and the ring's pinion-type cutter (``cutter_wheel_tool``: ``number_of_teeth``,
+``addendum_modification_coefficient``, ``addendum_coefficient_reference_profile``, ``tip_radius_factor``).
 The attribute names are those :mod:`~epicyclic.exchange.rating_map` reads.
 
 References
@@ -42,6 +44,40 @@ class RatingWriter:
     def __init__(self, builder, spec):
         self.b, self.spec = builder, spec
         self.materials: dict[Any, int] = {}
+        self.flanks: dict[int, tuple[int, int]] = {}  # gear → its left and right flank
+        self.tools: dict[int, list[tuple[int, str]]] = {}  # gear → (tool, type) in manufacturing order
+
+    def tool(self, gid: int, tool: int, name: str, order: int) -> None:
+        """Relate ``tool`` to both flanks of gear ``gid`` as manufacturing step ``order``."""
+        settings = self.b.component("cylindrical_gear_manufacturing_settings", name)
+        for flank_id in self.flanks[gid]:
+            self.b.relation("manufacturing_step", [(flank_id, "workpiece"), (tool, "tool"),
+                                                   (settings, "manufacturing_settings")], order=order)
+        self.tools.setdefault(gid, []).append((tool, "rack" if order == 1 and not self.tools.get(gid) else "step"))
+
+    def _tools(self, gid: int, internal: bool) -> None:
+        """The rack's tip radius ρ_fP* on an external gear's rack tool; an internal gear's pinion-type cutter."""
+        spec = self.spec
+        if gid not in self.flanks:
+            return
+        made = self.tools.get(gid, [])
+        if not internal:
+            attrs = [("tip_radius_factor", "floating_point", float(spec.tool_tip_radius), "none")]
+            if made:
+                self.b.add(made[0][0], attrs)
+            else:
+                self.tool(gid, self.b.component("rack_shaped_tool", "rack-type tool", attrs), "rack manufacturing", 1)
+            return
+        cutter = spec.cutter
+        if cutter is None:
+            return
+        attrs = [("number_of_teeth", "integer", int(cutter.teeth), "none"),
+                 ("addendum_modification_coefficient", "floating_point", float(cutter.profile_shift), "none"),
+                 ("tip_radius_factor", "floating_point", float(cutter.tip_radius), "none")]
+        if made:  # the gear's dedendum is its rack tool's: the cutter's addendum may stand beside it
+            attrs.append(("addendum_coefficient_reference_profile", "floating_point", float(cutter.addendum), "none"))
+        tid = self.b.component("cutter_wheel_tool", "pinion-type cutter", attrs)
+        self.tool(gid, tid, "cutter manufacturing", len(made) + 1)
 
     def _try(self, pick):
         try:
@@ -67,6 +103,7 @@ class RatingWriter:
         material = self._try(lambda: spec.material_of(element, role))
         if material is not None:
             self.b.relation("reference", [(gid, "origin"), (self.material(material), "referenced")])
+        self._tools(gid, role == "ring")
 
     def material(self, m) -> int:
         """The ``material`` component of ``m`` (one per distinct material)."""

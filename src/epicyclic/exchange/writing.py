@@ -120,13 +120,11 @@ class _Writer:
             left = self.b.component("cylindrical_gear_flank", f"{name} (left flank)", flank)
             right = self.b.component("cylindrical_gear_flank", f"{name} (right flank)", flank)
             self.b.relation("flank", [(gid, "gear"), (left, "left"), (right, "right")])
+            self.rating.flanks[gid] = (left, right)
             if "dedendum" in g:
                 tool = self.b.component("rack_shaped_tool", f"{name} tool", [
                     _f("addendum_coefficient_reference_profile", g["dedendum"])])
-                settings = self.b.component("cylindrical_gear_manufacturing_settings", f"{name} manufacturing")
-                for flank_id in (left, right):
-                    self.b.relation("manufacturing_step", [(flank_id, "workpiece"), (tool, "tool"),
-                                                           (settings, "manufacturing_settings")], order=1)
+                self.rating.tool(gid, tool, f"{name} manufacturing", order=1)
         return gid
 
     def mesh(self, owner: int | None, name: str, g1: int, g2: int, width: Any = None, distance: float | None = None):
