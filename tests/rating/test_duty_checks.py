@@ -135,3 +135,15 @@ def test_no_viscosity_and_no_temperature_names_the_key(tmp_path):
     assert result.exit_code == 2
     assert "bearings.planet.viscosity" in result.stderr and "[lubricant] viscosity_40, viscosity_100 and " \
         "temperature" in result.stderr
+
+
+def test_a_typed_viscosity_far_from_the_lubricants_is_noted(tmp_path):
+    text = EXAMPLE.read_text(encoding="utf-8").replace("viscosity_100 = 19.0\n", "viscosity_100 = 19.0\ntemperature = 90.0\n")
+    planet = analyse_file_duty_cycle(load_train_file(_variant(tmp_path, text))).bearings[0]
+    nu = float(Oil(220.0, 19.0).kinematic_viscosity(90.0))
+    assert planet.rating.viscosity == 55.0 and planet.oil_viscosity == pytest.approx([nu] * 4)
+    assert any(n.startswith("nu typed 55 mm^2/s; [lubricant] gives") for n in planet.notes)
+    at_70 = text.replace("temperature = 90.0", "temperature = 70.0")  # 51.7 mm^2/s: 6 % from the typed 55, noted
+    near = analyse_file_duty_cycle(load_train_file(_variant(tmp_path, at_70, "c70.toml"))).bearings[0]
+    assert abs(55.0 / float(Oil(220.0, 19.0).kinematic_viscosity(70.0)) - 1) > 0.05
+    assert any(n.startswith("nu typed") for n in near.notes)

@@ -368,8 +368,11 @@ def _bearing_lives(duty, solved, where, geometry, bearings, oil=(None, None)) ->
                     radial[at][idx] = np.hypot(central[role][:, 0], central[role][:, 1]) + ratings[role].external_load
                     speeds[at][idx] = np.abs(n[getattr(pset, role)])
     def from_oil(rating) -> dict:
-        return {"temperature": oil[0], "viscosity": oil[1]} if rating.modified and rating.viscosity is None \
-            and oil[1] is not None else {}
+        if not rating.modified or oil[1] is None:
+            return {}
+        if rating.viscosity is None:
+            return {"temperature": oil[0], "viscosity": oil[1]}
+        return {"temperature": oil[0], "oil_viscosity": oil[1]}  # typed by hand: compared in the notes
 
     return tuple(BearingLife(s, label, role, bearings[s][role], radial[(s, label)], axial[(s, label)],
                              speeds[(s, label)], duty.shares, **from_oil(bearings[s][role])) for s, label, role in order)

@@ -113,6 +113,9 @@ class BearingLife:
         temperature, :attr:`temperature`).
     temperature : ndarray, optional
         The oil temperature per case, °C, that ``viscosity`` is taken at.
+    oil_viscosity : ndarray, optional
+        The lubricant's ν at that temperature where the rating's ``viscosity`` is typed by hand (a
+        note where the two differ by more than 5 %).
     """
 
     element: str
@@ -125,6 +128,7 @@ class BearingLife:
     shares: np.ndarray
     viscosity: np.ndarray | None = None
     temperature: np.ndarray | None = None
+    oil_viscosity: np.ndarray | None = None
     factors: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -192,6 +196,10 @@ class BearingLife:
             out.append(f"axial force up to {float(np.max(np.abs(self.axial))):.0f} N not in P (give axial_factor Y)")
         if not math.isfinite(self.life_hours):
             out.append("no load or no rotation in any case: no fatigue")
+        typed, oil = self.rating.viscosity, self.oil_viscosity
+        if typed is not None and oil is not None and float(np.max(np.abs(oil / typed - 1.0))) > 0.05:
+            out.append(f"nu typed {typed:.3g} mm^2/s; [lubricant] gives {float(np.min(oil)):.3g}-"
+                       f"{float(np.max(oil)):.3g} mm^2/s at the oil temperature (leave viscosity out to use it)")
         if self.viscosity is not None and self.temperature is not None:
             t, nu = self.temperature, self.viscosity
             out.append(f"nu {float(np.min(nu)):.3g}-{float(np.max(nu)):.3g} mm^2/s: the lubricant at "
