@@ -6,7 +6,11 @@ the schedule, ``--gear all`` in every gear; ``--explain MESH`` prints the worked
 one mesh (``P1:sun-planet``, the gear after a second colon: ``P1:sun-planet:planet``).
 Formats: table, json (``epicyclic-rating/1``), markdown, html.  A mesh below its
 minimum safety is marked (``!``, red in HTML) and named on stderr.  Values outside the
-standard's range of validity are warned about on stderr with the clause.
+standard's range of validity are warned about on stderr with the clause.  ``--rating
+RATING.toml`` takes the ``[rating]`` (and ``[lubricant]``) table of a side file, over what a
+REXS model's standard attributes give (a model without rating inputs is rated this way).
+Inputs given but not used although they change a safety (a REXS file's crowning, ...) are
+listed under the report and in the JSON's ``inputs.ignored``.
 """
 
 from __future__ import annotations
