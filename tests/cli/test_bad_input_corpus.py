@@ -807,6 +807,15 @@ CORPUS: list[Bad] = [
     Bad("synthesize: --workers 1000", "synthesize", SYNTH, "--workers", ("{file}", "--workers", "1000"), usage=True),
     Bad("synthesize: spec named candidate_01.toml in --out-dir", "synthesize", named("candidate_01.toml", SYNTH),
         "--out-dir", ("{file}", "--out-dir", "{tmp}")),
+    # ---- rate --rating: the rating inputs in a side file
+    Bad("rate: --rating file is no rating file", "rate", GEO, "the side file: unknown key",
+        ("{file}", "--rating", "{file}")),
+    # ---- size (one set: the module, face width and profile shifts)
+    Bad("size: no [rating] table", "size", GEO, "has no [rating] table"),
+    Bad("size: unknown --shifts", "size", GEO, "--shifts must be 'given' or 'balanced', got 'even' (default 'given')",
+        ("{file}", "--shifts", "even")),
+    Bad("size: width and ratio", "size", GEO, "--face-width and --face-width-ratio",
+        ("{file}", "--face-width", "30", "--face-width-ratio", "0.5")),
 ]
 
 IDS = [case.id for case in CORPUS]

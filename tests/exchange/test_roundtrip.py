@@ -74,7 +74,10 @@ def same(a, b) -> None:
         elif a[key] is None or isinstance(a[key], tuple) and None in a[key]:
             assert b[key] == a[key], key  # no efficiency: self-locking, or no power flows
         else:
-            assert b[key] == pytest.approx(a[key], rel=1e-9, abs=1e-9), key
+            # the forces are compared as sorted values rounded to 1e-6 (a stable order): a value on a rounding
+            # boundary (917.8429565) may round either way after a round trip, so their unit is 1e-6 there
+            step = 1.01e-6 if key == "forces" else 1e-9
+            assert b[key] == pytest.approx(a[key], rel=1e-9, abs=step), key
 
 
 @pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.name)
@@ -126,7 +129,8 @@ def test_the_schema_validation_can_fail():
 def test_attributes_written_are_rexs_1_7_attributes():
     database = json.loads((FIXTURES / "rexs_1.7_database_excerpt.json").read_text(encoding="utf-8"))
     units = {"none": "none", "mm": "mm", "deg": "deg", "1 / min": "1 / min", "N m": "N m", "kW": "kW",
-             "%": "%", "C": "C", "mm^2 / s": "mm^2 / s"}
+             "%": "%", "C": "C", "mm^2 / s": "mm^2 / s", "mum": "mum", "N / mm^2": "N / mm^2", "HV": "HV",
+             "HB": "HB", "kg / dm^3": "kg / dm^3", "h": "h", "kN": "kN"}
     for example in ("zf_8hp70_geometry.toml", "brandenberger_1952.toml", "geometry_simple_set.toml",
                     "wolfrom_drive.toml", "rexs/FVA-Industriegetriebe_2stufig_1-4.rexs",
                     "rating/simple_set_duty_cycle.toml"):

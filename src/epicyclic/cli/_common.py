@@ -21,13 +21,15 @@ from typer.core import TyperGroup
 
 from ..errors import EpicyclicError
 
-__all__ = ["EXIT_OK", "EXIT_INTERNAL", "EXIT_BAD_INPUT", "OutputFormat", "FormatOption", "OutOption",
+__all__ = ["EXIT_OK", "EXIT_INTERNAL", "EXIT_BAD_INPUT", "EXIT_BELOW_MINIMUM", "OutputFormat", "FormatOption", "OutOption",
            "SetOption", "guarded", "emit", "say", "fail", "check_finite", "load", "solved", "report_title",
            "OneLineErrors"]
 
 EXIT_OK = 0
 EXIT_INTERNAL = 1
 EXIT_BAD_INPUT = 2
+#: ``--strict``: the design is below a minimum (a safety, a damage sum, a required life).
+EXIT_BELOW_MINIMUM = 3
 
 F = TypeVar("F", bound=Callable[..., Any])
 

@@ -5,8 +5,11 @@ gear) with the file's loss models and prints, per case and for the cycle, the
 energy in, out and lost by source, the cycle efficiency Σ E_out / Σ E_in, the
 energy lost by element and source, and the ISO 281 rating life of every bearing
 that the sets' ``bearings`` tables rate.  ``--format json`` gives every number
-with its unit (an infinite life is ``null``).  Exit codes: 0, 2 bad input, 1
-internal error.
+with its unit (an infinite life is ``null``).  Every case and every sum below its
+minimum — a case's S_H or S_F below S_Hmin/S_Fmin, a damage sum D >= 1, a bearing
+life below the required life (the cycle's hours, else ``[rating] life``) — is
+marked ``!`` and named on stderr.  Exit codes: 0, 2 bad input, 1 internal error,
+3 with ``--strict`` when something is below its minimum.
 """
 
 from __future__ import annotations
@@ -18,6 +21,7 @@ from typing import Annotated
 import typer
 
 from ._common import (
+    EXIT_BELOW_MINIMUM,
     FormatOption,
     OutOption,
     OutputFormat,
@@ -36,10 +40,13 @@ def duty(
     file: Annotated[Path, typer.Argument(help="Train description (.toml) with a [duty_cycle] table.")],
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
+    strict: Annotated[bool, typer.Option(
+        "--strict", help="Exit with code 3 when a case or a sum is below its minimum (marked !).")] = False,
     set_: SetOption = None,
 ) -> None:
     """Energies per load case and over the duty cycle, losses by element and source, bearing lives (ISO 281)."""
     from ..io.duty_format import analyse_file_duty_cycle
+    from ..text import terminal_text
 
     result = analyse_file_duty_cycle(load(file, None, set_))
     data = result.to_dict()
@@ -53,3 +60,11 @@ def duty(
     else:
         text = result.table() + "\n"
     emit(text, out)
+    missed = result.shortfalls
+    for shortfall in missed:
+        typer.echo(terminal_text(shortfall.text()), err=True)
+    if result.bearings and result.required_life is None:
+        typer.echo("note: no required life (give [duty_cycle] hours or [rating] life): the bearing lives are not "
+                   "checked.", err=True)
+    if strict and missed:
+        raise typer.Exit(EXIT_BELOW_MINIMUM)

@@ -85,6 +85,10 @@ from . import duty as _duty  # noqa: E402
 
 app.command("duty")(_duty.duty)
 
+from . import size as _size  # noqa: E402
+
+app.command("size")(_size.size)
+
 from . import convert as _convert  # noqa: E402
 
 app.command("convert")(_convert.convert)

@@ -6,7 +6,11 @@ the schedule, ``--gear all`` in every gear; ``--explain MESH`` prints the worked
 one mesh (``P1:sun-planet``, the gear after a second colon: ``P1:sun-planet:planet``).
 Formats: table, json (``epicyclic-rating/1``), markdown, html.  A mesh below its
 minimum safety is marked (``!``, red in HTML) and named on stderr.  Values outside the
-standard's range of validity are warned about on stderr with the clause.
+standard's range of validity are warned about on stderr with the clause.  ``--rating
+RATING.toml`` takes the ``[rating]`` (and ``[lubricant]``) table of a side file, over what a
+REXS model's standard attributes give (a model without rating inputs is rated this way).
+Inputs given but not used although they change a safety (a REXS file's crowning, ...) are
+listed under the report and in the JSON's ``inputs.ignored``.
 """
 
 from __future__ import annotations
@@ -38,8 +42,12 @@ def _spec(train_file, file):
     from ..rating.errors import RatingError
 
     if train_file.rating is None:
-        raise RatingError(f"{file}: the file has no [rating] table; add one with material, flank_roughness, "
-                          "root_roughness and the lubricant's viscosity_40 (see docs/rating.md).")
+        given = dict(getattr(train_file.exchange, "rating_inputs", None) or {})
+        rexs = (f" (the REXS model gives {', '.join(k for k in given if k not in ('ignored', 'notes')) or 'none'} "
+                "of them)") if train_file.exchange is not None else ""
+        raise RatingError(f"{file}: the file has no [rating] table{rexs}; add one with material, flank_roughness, "
+                          "root_roughness and the lubricant's viscosity_40 (see docs/rating.md), or give them in a "
+                          f"side file: epicyclic rate {file} --rating RATING.toml.")
     if not train_file.geometry:
         raise RatingError(f"{file}: no element has a geometry table; the rating needs module, face width and "
                           "tooth counts (see docs/file-format.md).")
@@ -115,12 +123,19 @@ def rate(
     explain: Annotated[str | None, typer.Option(
         "--explain", help="Print the worked rating of one mesh: ELEMENT:MESH[:GEAR], e.g. P1:sun-planet:planet.")]
         = None,
+    rating: Annotated[Path | None, typer.Option(
+        "--rating", help="A TOML file whose [rating] (and [lubricant]) table gives the rating inputs, over the "
+                         "model's own (a REXS model without them).")] = None,
     set_: SetOption = None,
 ) -> None:
     """Rate FILE's meshes by ISO 6336 Method B: safeties S_H (pitting) and S_F (tooth root) of every gear."""
     from ..rating import report
 
     train_file = load(file, None if gear == "all" else gear, set_)
+    if rating is not None:
+        from ..io.rating_format import side_rating
+
+        train_file = side_rating(train_file, rating)
     if gear == "all":
         if train_file.transmission is None:
             from ..errors import ModelError
@@ -151,6 +166,17 @@ def rate(
             + "".join(report.html_section(r) for _, r in ratings) + "</body></html>")
     else:
         text = "\n\n".join(report.text_report(r) for _, r in ratings)
+    ignored = train_file.rating.ignored
+    if ignored and format is not OutputFormat.json:
+        lines = ["Inputs given but not used (they change a safety):", *(f"- {item}" for item in ignored)]
+        if format is OutputFormat.html:
+            from html import escape
+
+            block = "<section class='ignored'><h2>" + escape(lines[0]) + "</h2><ul>" + "".join(
+                f"<li>{escape(i)}</li>" for i in ignored) + "</ul></section>"
+            text = text.replace("</body>", block + "</body>", 1) if "</body>" in text else text + block
+        else:
+            text = text.rstrip("\n") + "\n\n" + "\n".join(lines) + "\n"
     emit(text, out)
     _stderr(caught, ratings)
 

@@ -15,6 +15,9 @@ REXS file formats (FVA GmbH, github.com/BearinxSimulationSuite/REXSapi, Apache-2
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Any
+
 import io
 import zipfile
 from pathlib import Path
@@ -85,6 +88,38 @@ def toml_text(train_file) -> str:
     return document_toml(document.data, document.origins, header, _cases_lines(document))
 
 
+@dataclass(frozen=True)
+class DutyLoadCase:
+    """A ``[[duty_cycle.case]]`` as a REXS ``load_case``: its operating point, time share and gear."""
+
+    point: Any
+    duration_fraction: float
+    gear: str | None = None
+    lubricant_temperature: float | None = None
+    from_duty_cycle: bool = True
+
+    def to_operating_point(self):
+        """The case's operating point."""
+        return self.point
+
+
+def duty_load_cases(train_file) -> tuple[DutyLoadCase, ...]:
+    """The cases of the file's ``[duty_cycle]`` as REXS load cases (() without one or with one case).
+
+    Parameters
+    ----------
+    train_file : TrainFile
+
+    Returns
+    -------
+    tuple of DutyLoadCase
+    """
+    duty = train_file.duty_cycle
+    if duty is None or len(duty) < 2:
+        return ()
+    return tuple(DutyLoadCase(c.operating_point, float(share), c.gear) for c, share in zip(duty.cases, duty.shares))
+
+
 def rexs_text(train_file, kind: str = "xml", date: str | None = None, document=None) -> str:
     """The train file as REXS 1.7 text: ``kind`` ``"xml"`` or ``"json"``.
 
@@ -114,7 +149,8 @@ def rexs_text(train_file, kind: str = "xml", date: str | None = None, document=N
     elif mapped is None:
         from ..io.source import parse_toml, read_source
 
-        data, cases = parse_toml(read_source(train_file.source), train_file.source), ()
+        data = parse_toml(read_source(train_file.source), train_file.source)
+        cases = duty_load_cases(train_file)
     else:
         data, cases = mapped.data, mapped.load_cases if len(mapped.load_cases) > 1 else ()
     builder = build_rexs(train_file, data, cases, application_version=__version__, date=date)

@@ -49,6 +49,9 @@ class GearData:
     material: str | None = None
     flank_roughness: float | None = None
     root_roughness: float | None = None
+    material_id: int | None = None
+    flanks: tuple[int, ...] = ()
+    tools: tuple[int, ...] = ()
 
 
 def gear_links(model: RexsModel) -> tuple[dict[int, list[int]], dict[int, list[int]], dict[int, int]]:
@@ -140,6 +143,9 @@ def gear_data(model: RexsModel, gear: Component, links, used: set[int]) -> GearD
         material=material,
         flank_roughness=_micrometres(optional(gear, "averaged_peak_to_valley_height_flank", "length")),
         root_roughness=_micrometres(optional(gear, "averaged_peak_to_valley_height_root", "length")),
+        material_id=materials.get(gear.id),
+        flanks=tuple(f.id for f in flank),
+        tools=tuple(t.id for t in tool),
     )
 
 

@@ -46,7 +46,9 @@ from .chains import chains
 from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES, custom as _custom
 from .gears import GearData, gear_data, gear_links
 from .operating import OperatingMapper, RexsLoadCase
-from .rating_map import rating_table
+from .bearing_map import planet_bearings
+from .operating import standard_cases
+from .rating_map import merge_rating, rating_table
 from .rexs_model import Component, RexsModel
 from .topology import GEAR_TYPES, Members, element_name
 
@@ -82,6 +84,9 @@ class RexsDocument:
         ``density_15`` (kg/dm³), ``temperature`` (°C).
     notes : tuple of str
         What the mapping assumed (a drive read from the sign of torque and speed, ...).
+    rating_inputs : mapping
+        The ISO 6336 inputs the file's standard attributes give (:func:`~epicyclic.exchange.rating_map.
+        rating_table`), also where they are incomplete: what ``epicyclic rate --rating`` completes.
     """
 
     source: str
@@ -95,6 +100,7 @@ class RexsDocument:
     materials: Mapping[str, str] = field(default_factory=dict)
     lubricant: Mapping[str, Any] | None = None
     notes: tuple[str, ...] = ()
+    rating_inputs: Mapping[str, Any] = field(default_factory=dict)
 
     def __repr__(self) -> str:
         return f"RexsDocument({self.summary!r})"
@@ -156,6 +162,7 @@ class _Mapper:
         self.notes: list[str] = []
         self.checked: set[tuple] = set()
         self.rating_gears: list[tuple[str, str, GearData]] = []
+        self.rating_meshes: list[tuple[str, Component, str | None]] = []  # (element, stage, mesh name)
         self.operating = OperatingMapper(model, self.members, self.used, self.notes)
         self.members.preferred = self.operating.preferred_shafts()
         self.stage_owner: dict[int, int] = {}  # cylindrical_stage id → planetary_stage id
@@ -252,13 +259,16 @@ class _Mapper:
         lubricant = self.operating.lubricant(extras.pop("lubricant", None))
         if lubricant is not None:
             data["lubricant"] = lubricant
-        for key in ("description", "units", "shafts", "rating", "duty_cycle", *SPIN_TABLES):
+        for key in ("description", "units", "shafts", "rating", "duty_cycle", "operating_point", *SPIN_TABLES):
             if key in extras:
                 data[key] = extras.pop(key)
-        if "rating" not in data and not gears:  # fixed-axis stages: their gears are not named for [rating]
-            rating = rating_table(self.rating_gears, data.get("lubricant"))
-            if rating is not None:
-                data["rating"] = rating
+        rating_inputs: dict[str, Any] = {}
+        if not gears:  # fixed-axis stages: their gears are not named for [rating]
+            rating_inputs, complete = rating_table(model, self.rating_gears, self.rating_meshes, data.get("lubricant"))
+            if "rating" in data:  # the standard attributes win over epicyclic's custom copy
+                data["rating"] = merge_rating(data["rating"], rating_inputs, self.notes)
+            elif complete:
+                data["rating"] = rating_inputs
         cases = self.operating.load_cases(members - {None})
         schedule = self.schedule(unit, [t for t, _ in clutches + brakes], cases, extras)
         if schedule is not None:
@@ -272,7 +282,9 @@ class _Mapper:
             duty = self.duty_cycle(unit, cases)
             if duty is not None:
                 data["duty_cycle"] = duty
-        if cases:
+        if "duty_cycle" in data and len(cases) == len(data["duty_cycle"].get("case", [])) > 1:
+            data["duty_cycle"] = standard_cases(data["duty_cycle"], cases)  # the load cases win over the copy
+        if cases and "operating_point" not in data:
             data["operating_point"] = dict(cases[0].operating_point)
             if schedule is not None and unit is not None:
                 gear = self.current_gear(unit, schedule)
@@ -280,7 +292,7 @@ class _Mapper:
                     data["operating_point"]["gear"] = gear
         return RexsDocument(model.source, data, MappingProxyType(self.origins), tuple(cases), self.ignored(),
                             model.version, model.application, model.container, MappingProxyType(self.materials),
-                            self.operating.lubricant_data, tuple(self.notes))
+                            self.operating.lubricant_data, tuple(self.notes), MappingProxyType(rating_inputs))
 
     def ignored(self) -> str:
         left = Counter(c.type for c in self.model.components.values() if c.id not in self.used)
@@ -350,6 +362,9 @@ class _Mapper:
         table.update(sun=self.member(on[first]), ring=self.member(on[second]),
                      carrier=self.member(("carrier", stage.id)), teeth=teeth, planets=planets)
         geometry = self.set_geometry(kind, names, gear, stage, meshes)
+        role = {gid: r for r, gid in names.items() if gid in (first, second)}
+        self.rating_meshes.extend((name, s, (f"{role[first]}-planet" if first in (g1, g2) else f"planet-{role[second]}")
+                                   if kind == "simple" else None) for s, g1, g2 in meshes)
         for role, gid in names.items():
             self.rating_gears.append((name, role, gear[gid]))
             if gear[gid].material:
@@ -360,6 +375,13 @@ class _Mapper:
             table["geometry"] = geometry
         for key, value in extras.items():
             table[key] = value
+        bearings = table.get("bearings") if isinstance(table.get("bearings"), dict) else {}
+        planet = planet_bearings(model, {p for p in planet_shafts if p is not None}, self.used, self.notes,
+                                 bearings.get("planet") if isinstance(bearings.get("planet"), dict) else None,
+                                 ((table.get("losses") or {}).get("bearing") or {}).get("type")
+                                 if isinstance(table.get("losses"), dict) else None)
+        if planet is not None:
+            table["bearings"] = {**bearings, "planet": planet}
         return table, None
 
     def kind(self, stage, gear: dict[int, GearData], first: int, second: int, links, doubles, on, extras):

@@ -319,3 +319,32 @@ class OperatingMapper:
         nu = walther_viscosity(nu40, nu100, temperature)
         density = data["density_15"] * (1.0 - OIL_EXPANSION * (temperature - 15.0))
         return {"viscosity": round(nu * density, 6), **table}
+
+
+def standard_cases(duty: Any, cases: list[RexsLoadCase]) -> Any:
+    """epicyclic's custom copy of ``[duty_cycle]`` with each case's speeds and loads from the REXS load case.
+
+    Parameters
+    ----------
+    duty : mapping
+        The ``duty_cycle`` of ``custom_epicyclic_document`` (names, gears, hours).
+    cases : list of RexsLoadCase
+        The file's load cases, one per case of ``duty``, in order.
+
+    Returns
+    -------
+    mapping
+        ``duty`` with ``speeds``, ``torques``, ``powers``, ``drives``, ``loads`` of each case replaced by the
+        load case's (the standard attributes win over the custom copy).
+    """
+    if not isinstance(duty, dict) or not isinstance(duty.get("case"), list):
+        return duty
+    out = dict(duty)
+    merged = []
+    for table, case in zip(duty["case"], cases):
+        if not isinstance(table, dict):
+            return duty
+        kept = {k: v for k, v in table.items() if k not in ("speeds", "torques", "powers", "drives", "loads")}
+        merged.append({**kept, **{k: v for k, v in dict(case.operating_point).items() if v}})
+    out["case"] = merged
+    return out

@@ -62,6 +62,11 @@ REXS_UNITS: dict[str, tuple[str, float, float]] = {
     "mPa s": ("dynamic viscosity", 1.0, 0.0),
     "%": ("fraction", 0.01, 0.0),
     "h": ("time", 1.0, 0.0),
+    "N / mm^2": ("stress", 1.0, 0.0),
+    "MPa": ("stress", 1.0, 0.0),
+    "HV": ("hardness", 1.0, 0.0),
+    "HB": ("hardness", 1.0, 0.0),
+    "HRC": ("hardness", 1.0, 0.0),
     "none": ("number", 1.0, 0.0),
     "": ("number", 1.0, 0.0),
 }
@@ -69,12 +74,14 @@ REXS_UNITS: dict[str, tuple[str, float, float]] = {
 #: The train file's unit of each quantity (what :func:`to_file_unit` returns).
 FILE_UNITS = {"length": "mm", "angle": "deg", "speed": "1/min", "torque": "N*m", "power": "W", "force": "N",
               "temperature": "degC", "kinematic viscosity": "mm^2/s", "density": "kg/dm^3",
-              "dynamic viscosity": "mPa*s", "fraction": "1", "time": "h", "number": "1"}
+              "dynamic viscosity": "mPa*s", "fraction": "1", "time": "h", "number": "1", "stress": "N/mm^2",
+              "hardness": "HV, HB or HRC (the attribute's scale)"}
 
 #: The unit the writer gives each quantity (REXS 1.7 spelling).
 _WRITTEN = {"length": "mm", "angle": "deg", "speed": "1 / min", "torque": "N m", "power": "kW", "force": "N",
             "temperature": "C", "kinematic viscosity": "mm^2 / s", "density": "kg / dm^3",
-            "dynamic viscosity": "mPa s", "fraction": "%", "time": "h", "number": "none"}
+            "dynamic viscosity": "mPa s", "fraction": "%", "time": "h", "number": "none",
+            "stress": "N / mm^2"}
 
 def _spoken(units: list[str]) -> str:
     return units[0] if len(units) == 1 else ", ".join(units[:-1]) + " or " + units[-1]

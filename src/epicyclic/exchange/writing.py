@@ -28,7 +28,9 @@ from typing import Any
 
 from ..io.expressions import evaluate
 from ..model import HOUSING
+from .bearing_map import planet_bearing_attributes
 from .custom import CUSTOM_DOCUMENT, CUSTOM_ELEMENT, SPIN_TABLES
+from .rating_write import RatingWriter
 from .serialize import RexsBuilder
 
 __all__ = ["build_rexs"]
@@ -89,6 +91,7 @@ class _Writer:
         self.b = RexsBuilder("epicyclic", version or "0", date)
         self.shafts: dict[str, int] = {}
         self.loads: dict[str, int] = {}
+        self.rating = RatingWriter(self.b, getattr(train_file, "rating", None))
 
     # ---- shafts
     def shaft(self, name: str) -> int:
@@ -117,13 +120,11 @@ class _Writer:
             left = self.b.component("cylindrical_gear_flank", f"{name} (left flank)", flank)
             right = self.b.component("cylindrical_gear_flank", f"{name} (right flank)", flank)
             self.b.relation("flank", [(gid, "gear"), (left, "left"), (right, "right")])
+            self.rating.flanks[gid] = (left, right)
             if "dedendum" in g:
                 tool = self.b.component("rack_shaped_tool", f"{name} tool", [
                     _f("addendum_coefficient_reference_profile", g["dedendum"])])
-                settings = self.b.component("cylindrical_gear_manufacturing_settings", f"{name} manufacturing")
-                for flank_id in (left, right):
-                    self.b.relation("manufacturing_step", [(flank_id, "workpiece"), (tool, "tool"),
-                                                           (settings, "manufacturing_settings")], order=1)
+                self.rating.tool(gid, tool, f"{name} manufacturing", order=1)
         return gid
 
     def mesh(self, owner: int | None, name: str, g1: int, g2: int, width: Any = None, distance: float | None = None):
@@ -144,9 +145,12 @@ class _Writer:
         if transmission:
             extras["gears"] = gears
             extras["transmission"] = {"input": transmission.input, "output": transmission.output}
+        if load_cases and getattr(load_cases[0], "from_duty_cycle", False) and "operating_point" in doc:
+            extras["operating_point"] = doc["operating_point"]  # the spectrum's cases replace the model's point
         self.unit = b.component("gear_unit", self.file.title, [
             ("number_of_gears", "integer", max(len(gears), 1), "none"), ("gear_shift_index", "integer", index, "none"),
-            (CUSTOM_DOCUMENT, "string", _json(extras), "none")])
+            (CUSTOM_DOCUMENT, "string", _json(extras), "none")]
+            + ([_f("operating_time", self.file.rating.life, "h")] if getattr(self.file, "rating", None) else []))
         self.casing = b.component("gear_casing", "casing")
         b.relation("assembly", [(self.unit, "assembly"), (self.casing, "part")])
         if "lubricant" in doc:
@@ -231,6 +235,8 @@ class _Writer:
                              _iso(shift.get(gear_name[c1]), int1, g), w(c1))
         central2 = self.gear(ring, f"{name} {c2}", teeth[c2], int2, g, mod2, -1 if int2 else 1,
                              _iso(shift.get(gear_name[c2]), int2, g), w(c2))
+        self.rating.gear(central1, name, c1)
+        self.rating.gear(central2, name, c2)
         for k in range(planets):
             if kind == "double":
                 inner = b.component("shaft", f"{name} planet {k + 1} (sun side)")
@@ -241,16 +247,37 @@ class _Writer:
                                shift.get("planet1"), w("planet1"))
                 p2 = self.gear(outer, f"{name} planet {k + 1} ring side", teeth["planet_ring"], False, g, m1, 1,
                                shift.get("planet2"), w("planet2"))
-                self.mesh(stage, f"{name} sun-planet {k + 1}", central1, p1, w("sun"), a[0])
-                self.mesh(stage, f"{name} planets {k + 1}", p1, p2, w("planet1"), a[1] if len(a) > 2 else None)
-                self.mesh(stage, f"{name} planet {k + 1}-ring", p2, central2, w("ring"), a[-1])
+                self.rating.gear(p1, name, "planet1")
+                self.rating.gear(p2, name, "planet2")
+                for sid, mesh in ((self.mesh(stage, f"{name} sun-planet {k + 1}", central1, p1, w("sun"), a[0]),
+                                   "sun-planet1"),
+                                  (self.mesh(stage, f"{name} planets {k + 1}", p1, p2, w("planet1"),
+                                             a[1] if len(a) > 2 else None), "planet1-planet2"),
+                                  (self.mesh(stage, f"{name} planet {k + 1}-ring", p2, central2, w("ring"), a[-1]),
+                                   "planet2-ring")):
+                    self.rating.mesh(sid, name, mesh)
                 continue
             pshaft = b.component("shaft", f"{name} planet {k + 1}")
             b.relation("planet_shaft", [(stage, "planetary_stage"), (pshaft, "shaft")])
+            self.planet_bearing(name, k, arm, pshaft)
             made = [self.gear(pshaft, f"{name} planet {k + 1} {key}", teeth[key], False, g, module, -1,
                               shift.get(geo), w(geo)) for key, geo, module in planet_gears]
-            self.mesh(stage, f"{name} {c1}-planet {k + 1}", central1, made[0], None, a[0])
-            self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2, None, a[-1])
+            for gid, (_, geo, _) in zip(made, planet_gears):
+                self.rating.gear(gid, name, geo)
+            first, last = planet_gears[0][1], planet_gears[-1][1]
+            self.rating.mesh(self.mesh(stage, f"{name} {c1}-planet {k + 1}", central1, made[0], None, a[0]), name,
+                             f"{c1}-{first}")
+            self.rating.mesh(self.mesh(stage, f"{name} planet {k + 1}-{c2}", made[-1], central2, None, a[-1]), name,
+                             f"{last}-{c2}")
+
+    def planet_bearing(self, name: str, k: int, carrier: int, planet: int) -> None:
+        """The planet's rolling bearing (``bearings.planet`` of the set) between carrier and planet shaft."""
+        rating = (getattr(self.file, "bearings", None) or {}).get(name, {}).get("planet")
+        if rating is None:
+            return
+        bid = self.b.component("rolling_bearing_with_catalog_geometry", f"{name} planet {k + 1} bearing",
+                               planet_bearing_attributes(rating))
+        self.b.relation("side", [(bid, "assembly"), (carrier, "inner_part"), (planet, "outer_part")])
 
     def stage(self, t: Mapping[str, Any]) -> None:
         b = self.b

@@ -28,8 +28,9 @@ A duty cycle of load cases, each an operating point for a time::
     name = "launch"
     gear = "1"                         # a gear of the [transmission] schedule
     share = 0.1                        # or hours = 800
-    speeds = { in = "1500 rpm" }
-    torques = { in = "250 N*m" }       # powers = {...} as in [operating_point]
+    speeds = { in = "1500 rpm" }       # default: [operating_point] speeds
+    torques = { in = "250 N*m" }       # powers = {...} as in [operating_point]; without both:
+                                       # [operating_point] torques and powers
 
 Every problem names the file, the table, the key, what was expected and what
 was given (``docs/file-format.md``).
@@ -161,7 +162,21 @@ def _default_roles(data: Mapping[str, Any], op: OperatingPoint | None, transmiss
     return (), ()
 
 
-def _case(reader, table, k: int, train, transmission, units, roles, total_given: bool) -> LoadCase:
+def _inherited(values: dict[str, dict[str, float]], table, operating_point) -> dict[str, dict[str, float]]:
+    """A case's speeds and loads, the file's ``[operating_point]`` where the case gives none: its speeds
+    without ``speeds``, its torques and powers without ``torques`` and ``powers``."""
+    if operating_point is None:
+        return values
+    out = dict(values)
+    if "speeds" not in table:
+        out["speeds"] = dict(operating_point.speeds)
+    if "torques" not in table and "powers" not in table:
+        out["torques"], out["powers"] = dict(operating_point.torques), dict(operating_point.powers)
+    return out
+
+
+def _case(reader, table, k: int, train, transmission, units, roles, total_given: bool,
+          operating_point=None) -> LoadCase:
     name = table.get("name", f"case {k + 1}")
     where = f"[[duty_cycle.case]] #{k + 1}" + (f" {short(name, 40)}" if isinstance(name, str) else "")
     reader.check_keys(table, CASE_KEYS, where)
@@ -177,6 +192,7 @@ def _case(reader, table, k: int, train, transmission, units, roles, total_given:
                 raise reader.error(key, "the housing is the frame; remove this entry.")
             values[group][shaft] = reader.checked(key, f"{group}.{shaft}", to_core, value, quantity,
                                                   field=f"{group}.{shaft}", default_unit=units.of(quantity))
+    values = _inherited(values, table, operating_point)
     drives = reader.names(table["drives"], "drives", where) if "drives" in table else roles[0]
     loads = reader.names(table["loads"], "loads", where) if "loads" in table else roles[1]
     for shaft in (*drives, *loads):
@@ -246,7 +262,7 @@ def read_duty_cycle(reader, value: object, train, transmission, operating_point,
         raise reader.error(where, "expected at least one [[duty_cycle.case]] table (name, gear, hours or share, "
                                   f"speeds, torques), got {short(cases_raw)}.")
     reader.checked(where, "", check_count, len(cases_raw), "duty_cycle.case", MAX_LOAD_CASES, "load cases")
-    cases = [_case(reader, c, k, train, transmission, units, roles, total is not None)
+    cases = [_case(reader, c, k, train, transmission, units, roles, total is not None, operating_point)
              for k, c in enumerate(cases_raw)]
     try:
         return DutyCycle(tuple(cases), total, name)

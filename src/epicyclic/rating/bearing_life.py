@@ -398,7 +398,8 @@ class BearingRating:
     pitch_diameter : float, optional
         d_m = (d + D)/2, mm.
     viscosity : float, optional
-        Kinematic viscosity of the oil at operating temperature, mm²/s.
+        Kinematic viscosity of the oil at operating temperature, mm²/s; without one (and with the
+        other three) a duty cycle takes it from the lubricant at each case's oil temperature.
     contamination : float, optional
         e_C in [0, 1] (ISO 281:2007, clause 9: typical values by cleanliness).
     reliability : float, default 90
@@ -448,15 +449,15 @@ class BearingRating:
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v < 0:
                 raise BearingLifeError(f"bearing: {name} must be a number >= 0, got {v!r}.")
-        given = [k for k in ("fatigue_load_limit", "pitch_diameter", "viscosity", "contamination")
-                 if getattr(self, k) is not None]
-        if given and len(given) < 4:
-            missing = [k for k in ("fatigue_load_limit", "pitch_diameter", "viscosity", "contamination")
-                       if getattr(self, k) is None]
+        keys = ("fatigue_load_limit", "pitch_diameter", "viscosity", "contamination")
+        given = [k for k in keys if getattr(self, k) is not None]
+        if given and len(given) < 4 and given != ["fatigue_load_limit", "pitch_diameter", "contamination"]:
+            missing = [k for k in keys if getattr(self, k) is None]
             raise BearingLifeError(
                 f"bearing: the modified life L_nm needs fatigue_load_limit, pitch_diameter, viscosity and "
                 f"contamination; {', '.join(given)} given, {', '.join(missing)} missing (give all four, or none "
-                "for the basic life L10 only).")
+                "for the basic life L10 only; without viscosity a duty cycle takes the lubricant's at the oil "
+                "temperature).")
 
     @property
     def kind(self) -> str:
@@ -488,13 +489,15 @@ class BearingRating:
         return self.radial_factor * np.abs(np.asarray(radial, float)) + self.axial_factor * np.abs(
             np.asarray(axial, float))
 
-    def life_factor(self, load: object, speed: object) -> np.ndarray:
+    def life_factor(self, load: object, speed: object, viscosity: object = None) -> np.ndarray:
         """a_1 a_ISO at loads P (N) and speeds n (1/min); ones without the modified-life inputs.
 
         Parameters
         ----------
         load, speed : array_like
             P, N and n, 1/min.
+        viscosity : array_like, optional
+            ν at operating temperature, mm²/s (per point); default the rating's ``viscosity``.
 
         Returns
         -------
@@ -506,11 +509,17 @@ class BearingRating:
         shape = np.broadcast(p, n).shape
         if not self.modified:
             return np.ones(shape)
+        nu = self.viscosity if viscosity is None else viscosity
+        if nu is None:
+            raise BearingLifeError("bearing: the modified life L_nm needs the oil's viscosity at operating "
+                                   "temperature: give viscosity, or [lubricant] viscosity_40, viscosity_100 and "
+                                   "temperature.")
         active = (p > 0) & (n > 0)
         out = np.ones(shape)
         if np.any(active):
             pa, na = np.broadcast_to(p, shape)[active], np.broadcast_to(n, shape)[active]
-            kappa = self.viscosity / reference_viscosity(na, self.pitch_diameter)  # type: ignore[operator]
+            nu_a = np.broadcast_to(np.asarray(nu, dtype=float), shape)[active]
+            kappa = nu_a / reference_viscosity(na, self.pitch_diameter)  # type: ignore[operator]
             ratio = self.contamination * self.fatigue_load_limit / pa  # type: ignore[operator]
             out[active] = reliability_factor(self.reliability) * life_modification_factor(kappa, ratio, self.kind)
         return out

@@ -244,7 +244,8 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
         lost=MappingProxyType({e: MappingProxyType({s: v * hours / 1000.0 for s, v in parts.items()})
                                for e, parts in sources.items()}),
     )
-    lives = _bearing_lives(duty, solved, where, geometry, bearings) if bearings else ()
+    lives = _bearing_lives(duty, solved, where, geometry, bearings, _oil_state(duty, solved, where, spin)) \
+        if bearings else ()
     damage: tuple = ()
     if rating is not None:
         if not geometry:
@@ -257,7 +258,9 @@ def analyse_duty_cycle(train: GearTrain, duty: DutyCycle, *, schedule=None,
         case_hours = duty.hours if duty.hours is not None else duty.shares * rating.life
         damage = gear_damages([(solved[key][1], m) for key, m in members.items()], count, case_hours, geometry,
                               rating)
-    return DutyCycleResult(duty, energy, lives, per_hour=per_hour, title=title or train.name, damage=damage)
+    required = duty.total_hours if duty.total_hours is not None else (rating.life if rating is not None else None)
+    return DutyCycleResult(duty, energy, lives, per_hour=per_hour, title=title or train.name, damage=damage,
+                           required_life=required)
 
 
 def _shared_sets(train_g, present, geometry) -> set[str]:
@@ -282,7 +285,25 @@ def _case_by_case(train_g, batch, members, shared, geometry):
     return out
 
 
-def _bearing_lives(duty, solved, where, geometry, bearings) -> tuple[BearingLife, ...]:
+def _oil_state(duty, solved, where, spin) -> tuple[np.ndarray | None, np.ndarray | None]:
+    """(oil temperature °C, ν mm²/s) per case from the spin losses' oil: the thermal balance's temperature of
+    each case, else the given one; (None, None) without an oil or a temperature."""
+    oil = getattr(spin, "oil", None)
+    if oil is None:
+        return None, None
+    t = np.full(len(duty), np.nan)
+    for k, (key, j) in enumerate(where):  # type: ignore[misc]
+        temps = getattr(solved[key][1], "oil_temperature", None)
+        if temps is not None:
+            t[k] = float(np.asarray(temps).reshape(-1)[j])
+        elif spin.temperature is not None:
+            t[k] = float(spin.temperature)
+    if not np.all(np.isfinite(t)):
+        return None, None
+    return t, np.asarray(oil.kinematic_viscosity(t), dtype=float)
+
+
+def _bearing_lives(duty, solved, where, geometry, bearings, oil=(None, None)) -> tuple[BearingLife, ...]:
     count = len(duty)
     sets = [name for name in geometry if isinstance(geometry[name], SetGeometry)]
     radial: dict[tuple[str, str], np.ndarray] = {}
@@ -346,5 +367,12 @@ def _bearing_lives(duty, solved, where, geometry, bearings) -> tuple[BearingLife
                     at = slot(s, role, role)
                     radial[at][idx] = np.hypot(central[role][:, 0], central[role][:, 1]) + ratings[role].external_load
                     speeds[at][idx] = np.abs(n[getattr(pset, role)])
+    def from_oil(rating) -> dict:
+        if not rating.modified or oil[1] is None:
+            return {}
+        if rating.viscosity is None:
+            return {"temperature": oil[0], "viscosity": oil[1]}
+        return {"temperature": oil[0], "oil_viscosity": oil[1]}  # typed by hand: compared in the notes
+
     return tuple(BearingLife(s, label, role, bearings[s][role], radial[(s, label)], axial[(s, label)],
-                             speeds[(s, label)], duty.shares) for s, label, role in order)
+                             speeds[(s, label)], duty.shares, **from_oil(bearings[s][role])) for s, label, role in order)

@@ -69,6 +69,10 @@ class GearDamage:
         σ_H/σ_H,ref and σ_F/σ_F,ref per case (the life factor each case needs).
     flank_curve, root_curve : SNCurve
         The material's Z_NT and Y_NT curves.
+    S_H, S_F : ndarray, optional
+        Safety for pitting and tooth root per case (ISO 6336-2, eq. (4); -3, eq. (5)).
+    S_Hmin, S_Fmin : float, default 1.0, 1.4
+        The rating's minimum safeties.
     """
 
     element: str
@@ -81,6 +85,10 @@ class GearDamage:
     root_ratio: np.ndarray
     flank_curve: SNCurve
     root_curve: SNCurve
+    S_H: np.ndarray | None = None
+    S_F: np.ndarray | None = None
+    S_Hmin: float = 1.0
+    S_Fmin: float = 1.4
 
     @property
     def flank_damage(self) -> float:
@@ -93,8 +101,11 @@ class GearDamage:
         return miner_damage(zip(self.root_ratio.tolist(), self.cycles.tolist()), self.root_curve, 1.0)
 
     def row(self) -> list[object]:
-        """A row of :data:`DAMAGE_HEAD`."""
-        return [self.element, self.mesh, self.gear, f"{self.flank_damage:.4g}", f"{self.root_damage:.4g}",
+        """A row of :data:`DAMAGE_HEAD` (a sum D >= 1 marked ``!``)."""
+        def mark(d: float) -> str:
+            return f"{d:.4g}" + (" !" if not d < 1.0 else "")
+
+        return [self.element, self.mesh, self.gear, mark(self.flank_damage), mark(self.root_damage),
                 f"{float(np.max(self.sigma_H)):.1f}", f"{float(np.max(self.sigma_F)):.1f}",
                 f"{float(np.sum(self.cycles)):.4g}"]
 
@@ -103,8 +114,10 @@ class GearDamage:
         return {"element": self.element, "mesh": self.mesh, "gear": self.gear,
                 "D_H": _finite(self.flank_damage), "D_F": _finite(self.root_damage),
                 "cases": [{"sigma_H": {"value": float(h), "unit": "N/mm^2"},
-                           "sigma_F": {"value": float(f), "unit": "N/mm^2"}, "N": float(n)}
-                          for h, f, n in zip(self.sigma_H, self.sigma_F, self.cycles)]}
+                           "sigma_F": {"value": float(f), "unit": "N/mm^2"}, "N": float(n),
+                           **({} if self.S_H is None else {"S_H": _finite(float(self.S_H[k])),
+                                                           "S_F": _finite(float(self.S_F[k]))})}
+                          for k, (h, f, n) in enumerate(zip(self.sigma_H, self.sigma_F, self.cycles))]}
 
 
 def _values(factor, count: int) -> np.ndarray:
@@ -179,6 +192,7 @@ def gear_damages(groups, count: int, hours: np.ndarray, geometry, spec) -> tuple
                 "rr": sigma_f / (_values(f["sigma_FG"], count) / _values(f["Y_NT"], count)),
                 # N_L = 60 L_h n c over the rating's life: per hour N_L / L_h, times the case's hours
                 "cycles": _values(f["N_L"], count) / spec.life * hours,
+                "S_H": _values(f["S_H"], count), "S_F": _values(f["S_F"], count),
             }
             order.append(key)
     out = []
@@ -187,5 +201,5 @@ def gear_damages(groups, count: int, hours: np.ndarray, geometry, spec) -> tuple
         k = int(d["k"])  # type: ignore[arg-type]
         z_curves, y_curves = curves[(element, mesh)]
         out.append(GearDamage(element, mesh, gear, d["cycles"], d["sigma_H"], d["sigma_F"], d["fr"], d["rr"],
-                              z_curves[k], y_curves[k]))
+                              z_curves[k], y_curves[k], d["S_H"], d["S_F"], spec.S_Hmin, spec.S_Fmin))
     return tuple(out)

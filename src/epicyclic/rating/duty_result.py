@@ -108,6 +108,14 @@ class BearingLife:
         Speed of the rotating ring relative to the stationary one per case, 1/min.
     shares : ndarray
         Time shares of the cases.
+    viscosity : ndarray, optional
+        ν of the oil per case, mm²/s, where the rating gives none (the lubricant at the case's oil
+        temperature, :attr:`temperature`).
+    temperature : ndarray, optional
+        The oil temperature per case, °C, that ``viscosity`` is taken at.
+    oil_viscosity : ndarray, optional
+        The lubricant's ν at that temperature where the rating's ``viscosity`` is typed by hand (a
+        note where the two differ by more than 5 %).
     """
 
     element: str
@@ -118,20 +126,27 @@ class BearingLife:
     axial: np.ndarray
     speeds: np.ndarray
     shares: np.ndarray
+    viscosity: np.ndarray | None = None
+    temperature: np.ndarray | None = None
+    oil_viscosity: np.ndarray | None = None
     factors: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
         # a1 a_ISO per case, now: a viscosity ratio below the standard's range is an input error of this
         # bearing, named here (not when the result is rendered)
         try:
-            factors = self.rating.life_factor(self.loads, self.speeds)
+            factors = self.rating.life_factor(self.loads, self.speeds, self.viscosity)
         except BearingLifeError as exc:
+            nu = self.rating.viscosity if self.rating.viscosity is not None else self.viscosity
+            if nu is None:  # no viscosity at all: the key and where it may come from
+                raise BearingLifeError(f"bearing {self.position} of {self.element!r} (key "
+                                       f"'bearings.{self.role}.viscosity'): {exc}") from None
             n = np.abs(self.speeds)[(np.abs(self.loads) > 0) & (np.abs(self.speeds) > 0)]
             slowest = float(np.min(n))  # the smallest kappa: nu1 grows as the speed falls
             raise BearingLifeError(
                 f"bearing {self.position} of {self.element!r} (key 'bearings.{self.role}.viscosity'): {exc} At "
                 f"{slowest:.0f} 1/min nu1 = {float(reference_viscosity(slowest, self.rating.pitch_diameter)):.3g} "
-                f"mm^2/s (ISO 281 9.3.3), nu = {self.rating.viscosity:g} mm^2/s.") from None
+                f"mm^2/s (ISO 281 9.3.3), nu = {float(np.min(nu)):.3g} mm^2/s.") from None
         object.__setattr__(self, "factors", factors)
 
     @property
@@ -181,6 +196,14 @@ class BearingLife:
             out.append(f"axial force up to {float(np.max(np.abs(self.axial))):.0f} N not in P (give axial_factor Y)")
         if not math.isfinite(self.life_hours):
             out.append("no load or no rotation in any case: no fatigue")
+        typed, oil = self.rating.viscosity, self.oil_viscosity
+        if typed is not None and oil is not None and float(np.max(np.abs(oil / typed - 1.0))) > 0.05:
+            out.append(f"nu typed {typed:.3g} mm^2/s; [lubricant] gives {float(np.min(oil)):.3g}-"
+                       f"{float(np.max(oil)):.3g} mm^2/s at the oil temperature (leave viscosity out to use it)")
+        if self.viscosity is not None and self.temperature is not None:
+            t, nu = self.temperature, self.viscosity
+            out.append(f"nu {float(np.min(nu)):.3g}-{float(np.max(nu)):.3g} mm^2/s: the lubricant at "
+                       f"{float(np.min(t)):.1f}-{float(np.max(t)):.1f} degC")
         return tuple(out)
 
     def to_dict(self) -> dict[str, Any]:
@@ -213,6 +236,8 @@ class DutyCycleResult:
     damage : tuple of GearDamage
         Flank and root damage sums per gear of every mesh
         (:class:`~epicyclic.rating.duty_damage.GearDamage`), empty without a tooth rating.
+    required_life : float or None
+        The life the bearings must reach, h (the cycle's hours, else the rating's ``life``).
     """
 
     duty: DutyCycle
@@ -221,6 +246,19 @@ class DutyCycleResult:
     per_hour: bool = False
     title: str = ""
     damage: tuple[Any, ...] = field(default_factory=tuple)
+    required_life: float | None = None
+
+    @property
+    def shortfalls(self) -> tuple[Any, ...]:
+        """Every case and sum below its minimum (:func:`~epicyclic.rating.duty_checks.shortfalls`)."""
+        from .duty_checks import shortfalls
+
+        return shortfalls(self, self.required_life)
+
+    @property
+    def ok(self) -> bool:
+        """Whether nothing is below its minimum."""
+        return not self.shortfalls
 
     @property
     def input_energy(self) -> float:
@@ -262,20 +300,32 @@ class DutyCycleResult:
     def _case_rows(self) -> tuple[list[str], list[list[object]]]:
         sources = self.energy.sources()
         by_source = self.energy.by_source()
+        safeties = self._case_safeties()
         head = ["case", "gear", "hours" if not self.per_hour else "share", "E_in", "E_out",
-                *[f"lost {s}" for s in sources], "eta"]
+                *[f"lost {s}" for s in sources], "eta", *(["min S_H", "min S_F"] if safeties else [])]
         durations = self.duty.shares if self.per_hour else self.duty.hours
         rows: list[list[object]] = []
         for k, case in enumerate(self.duty.cases):
             eta = self.case_efficiency[k]
             rows.append([case.name, case.gear or "-", f"{durations[k]:.6g}", f"{self.energy.input[k]:.4g}",
                          f"{self.energy.output[k]:.4g}", *[f"{by_source[s][k]:.4g}" for s in sources],
-                         "-" if not math.isfinite(eta) else f"{eta:.4f}"])
+                         "-" if not math.isfinite(eta) else f"{eta:.4f}", *[column[k] for column in safeties]])
         eta = self.cycle_efficiency
         rows.append(["cycle", "", f"{np.sum(durations):.6g}", f"{self.input_energy:.4g}",
                      f"{self.output_energy:.4g}", *[f"{float(np.sum(by_source[s])):.4g}" for s in sources],
-                     "-" if not math.isfinite(eta) else f"{eta:.4f}"])
+                     "-" if not math.isfinite(eta) else f"{eta:.4f}", *([""] * len(safeties))])
         return head, rows
+
+    def _case_safeties(self) -> list[list[str]]:
+        """Per case the smallest S_H and S_F over the gears, marked ``!`` below S_Hmin/S_Fmin ([] without)."""
+        rated = [d for d in self.damage if getattr(d, "S_H", None) is not None]
+        if not rated:
+            return []
+        out = []
+        for key, limit in (("S_H", rated[0].S_Hmin), ("S_F", rated[0].S_Fmin)):
+            low = np.min(np.vstack([getattr(d, key) for d in rated]), axis=0)
+            out.append([f"{v:.4g}" + (" !" if not v >= limit else "") for v in low])
+        return out
 
     def _element_rows(self) -> tuple[list[str], list[list[object]]]:
         sources = self.energy.sources()
@@ -288,10 +338,16 @@ class DutyCycleResult:
                      "L10h [h]", "Lnmh [h]", "notes")
 
     def _bearing_rows(self) -> list[list[object]]:
+        def life(value: float | None, checked: bool) -> str:
+            if value is None:
+                return "-"
+            short = checked and self.required_life is not None and not value >= self.required_life
+            return _hours_text(value) + (" !" if short else "")
+
         return [[b.element, b.position, b.rating.type, f"{b.rating.dynamic_load_rating:.0f}",
                  f"{b.rating.life_exponent:.4g}", f"{b.equivalent_load:.1f}", f"{b.mean_speed:.1f}",
-                 _hours_text(b.life), _hours_text(b.life_hours),
-                 "-" if b.modified_life_hours is None else _hours_text(b.modified_life_hours), "; ".join(b.notes)]
+                 _hours_text(b.life), life(b.life_hours, b.modified_life_hours is None),
+                 life(b.modified_life_hours, True), "; ".join(b.notes)]
                 for b in self.bearings]
 
     def _sections(self) -> list[tuple[str, list[str], list[list[object]]]]:
@@ -301,7 +357,8 @@ class DutyCycleResult:
         if rows:
             out.append((f"energy lost by element and source, {self._energy_unit}", head, rows))
         if self.bearings:
-            out.append(("bearing rating life over the cycle (ISO 281:2007)", list(self._BEARING_HEAD),
+            required = "" if self.required_life is None else f", required {self.required_life:.6g} h"
+            out.append((f"bearing rating life over the cycle (ISO 281:2007){required}", list(self._BEARING_HEAD),
                         self._bearing_rows()))
         if self.damage:
             from .duty_damage import DAMAGE_HEAD
@@ -312,7 +369,9 @@ class DutyCycleResult:
 
     def table(self) -> str:
         """Text tables: per case and cycle energies, losses by element and source, bearing lives, damage."""
-        return "\n\n".join(text_table(h, r, title=t) for t, h, r in self._sections())
+        text = "\n\n".join(text_table(h, r, title=t) for t, h, r in self._sections())
+        missed = self.shortfalls
+        return text + (f"\n\nBELOW MINIMUM: {len(missed)} value(s), marked !" if missed else "")
 
     def markdown(self) -> str:
         """The same tables in Markdown."""
@@ -362,6 +421,8 @@ class DutyCycleResult:
                       "efficiency": _finite(self.cycle_efficiency)},
             "bearings": [b.to_dict() for b in self.bearings],
             "damage": [d.to_dict() for d in self.damage],
+            "required_life": None if self.required_life is None else _quantity(self.required_life, "h"),
+            "shortfalls": [m.to_dict() for m in self.shortfalls], "ok": self.ok,
         }
 
     def __repr__(self) -> str:

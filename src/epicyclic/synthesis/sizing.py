@@ -14,7 +14,8 @@ loads it, found by the rating's own search :func:`~epicyclic.rating.sizing.small
 * a last pass rates every loaded gear at the final module and keeps the lowest S_H and
   S_F over gears and meshes (what the candidate's ``rate --gear all`` reports);
 * the face width grows with the module, b = ``face_width_ratio`` · d_sun (b/d1, default
-  0.5), the gears are unshifted (x = 0) with the ISO 53 A basic rack;
+  0.5), the gears are unshifted (x = 0) with the ISO 53 A basic rack, and the set must fit at the
+  module (:func:`~epicyclic.geometry.check_fitting`'s error-level conditions, which the search enforces);
 * the rating inputs are the spec's ``[rating]`` table (material, R_z of flank and root,
   ν_40, life, minimum safeties, K_A), by default case-carburised 18CrNiMo7-6, R_z 3 / 10 µm,
   ν_40 = 100 mm²/s, 20 000 h, S_Hmin 1.0, S_Fmin 1.4, K_A 1.0 (stated in
