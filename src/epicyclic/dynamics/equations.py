@@ -1,0 +1,429 @@
+"""Equations of motion of a gear train whose shift elements stick or slip.
+
+The state is the vector ω of the moving shafts' angular velocities (rad/s).  With the mass
+matrix J of the train's kinetic energy (:class:`~epicyclic.dynamics.Inertias`), the external
+torques M (drive, load, the slipping elements' friction) and the reactions of the constraints,
+
+    J ω̇ + G λ = M,        C ω̇ = 0,
+
+where C holds one Willis row per planetary set or stage (the solver's constraint matrix, see
+:attr:`epicyclic.solver.assembly.TrainMatrices.kinematics`), one row ω_first − ω_second per
+sticking clutch or brake, and a row for an output held at its speed; λ are the torques the
+shafts exert on the constraints (a set's sun torque, a sticking element's torque, the
+dynamometer's torque).  The column of G of a set is its torque split, (1, −i0 η0^w, −(1 − i0 η0^w))
+on (sun, ring, carrier): the engine's loss rule (Brandenberger 1952, eq. 7) with w the direction of
+the rolling power λ (ω_sun − ω_carrier), found so that it agrees with its own solution (the quasi-
+static rule of :mod:`epicyclic.solver`, applied at each instant).  Without losses G = Cᵀ and the
+constraints do no work; with losses the power a set absorbs, λ (ω_a − k_b ω_b − k_c ω_c) ≥ 0, is
+its mesh loss.  The number of degrees of freedom is the number of shafts less the rank of C: it
+changes as elements lock or slip, and so does the system (one factorisation per mode and loss
+pattern, cached).
+
+A slipping element carries its torque T against its slip, −T sgn(Δω) on the first shaft and
++T sgn(Δω) on the second; at Δω = 0 the direction is the one it breaks away in.
+
+References
+----------
+Brandenberger 1952, eq. 7 (losses by the direction of rolling power); Benford, H. L., Leising,
+M. B.: *The lever analogy: a new tool in transmission analysis*, SAE 810102 (1981) (a shift as a
+change of the lever's constraints); Hairer, E., Wanner, G.: *Solving Ordinary Differential
+Equations II*, 2nd ed., Springer 1996, §VII.1 (index-1 form of constrained mechanical systems,
+the saddle-point system of accelerations and multipliers).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+import scipy.linalg
+
+from ..model.elements import HOUSING, Brake
+from ..model.train import GearTrain
+from ..solver.assembly import matrices
+from .drive import HeldSpeed
+from .errors import DynamicsError
+from .friction import Freewheel, WetElement
+from .inertia import Inertias
+from .pressure import PressureProfile
+
+__all__ = ["TrainDynamics", "Mode", "Evaluation", "RELATIVE_SPEED_ZERO"]
+
+#: A set's speed relative to its carrier below this share of the largest shaft speed is round-off of a set
+#: that turns as a block: it rolls no power (w = 0), as the static solver's exact speed classes say.
+RELATIVE_SPEED_ZERO = 1e-9
+
+
+@dataclass(frozen=True)
+class Mode:
+    """Which elements stick, and the direction each slipping element slips (or breaks away) in."""
+
+    locked: frozenset[str]
+    signs: Mapping[str, float] = field(default_factory=dict)
+    #: Sets held at zero rolling speed by their mesh friction (they turn as a block; the torque ratio lies
+    #: between its two loss directions' values).
+    blocked: frozenset[str] = frozenset()
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "signs", MappingProxyType(dict(self.signs)))
+        object.__setattr__(self, "blocked", frozenset(self.blocked))
+
+
+@dataclass(frozen=True, eq=False)
+class Evaluation:
+    """Accelerations, reactions and powers of one state (SI units)."""
+
+    accelerations: np.ndarray  # ω̇ per moving shaft, rad/s²
+    lever_torques: np.ndarray  # λ per set or stage (its sun/first torque), N·m
+    element_torques: dict  # element → torque the first shaft exerts on it (sticking: the reaction), N·m
+    element_slips: dict  # element → ω_first − ω_second, rad/s
+    element_powers: dict  # element → slip power T |Δω| ≥ 0, W
+    drive_torque: float
+    load_torque: float  # torque the output exerts on the load (held: the dynamometer's), N·m
+    input_power: float
+    load_power: float
+    mesh_power: float
+    pattern: tuple[int, ...]
+    blocked_torques: dict = field(default_factory=dict)  # blocked set → (λ = sun torque, μ = k λ), N·m
+    relative_speeds: tuple = ()  # ω_sun − ω_carrier per set or stage, rad/s
+
+
+@dataclass(frozen=True, eq=False)
+class TrainDynamics:
+    """A train with its inertias, shift elements, pressures, drive and load: the right-hand side of the motion.
+
+    Parameters
+    ----------
+    train : GearTrain
+        Its engaged flags are ignored (a :class:`Mode` says which elements stick).
+    input, output : str
+        The driven and the loaded shaft.
+    inertias : Inertias
+    elements : mapping name → WetElement or Freewheel
+        Models of the clutches and brakes; an element without a model is open and carries nothing.
+    pressures : mapping name → PressureProfile
+        The pressure of every wet element (missing: 0).
+    drive : Engine or TorqueTrace
+    load : OutputTorque, HeldSpeed or VehicleLoad
+
+    Raises
+    ------
+    DynamicsError
+        A model for an element the train does not have, a freewheel on a planetary set, or a shaft that
+        can move with no inertia (the motion would be undetermined).
+    """
+
+    train: GearTrain
+    input: str
+    output: str
+    inertias: Inertias
+    elements: Mapping[str, Any]
+    pressures: Mapping[str, PressureProfile]
+    drive: Any
+    load: Any
+
+    def __post_init__(self) -> None:
+        shift = {e.name: e for e in self.train.shift_elements}
+        for name, model in self.elements.items():
+            if name not in shift:
+                raise DynamicsError(f"dynamics: {name!r} is not a clutch or brake of the train; shift elements are "
+                                    f"{', '.join(repr(s) for s in shift) or 'none'}.")
+            if not isinstance(model, (WetElement, Freewheel)):
+                raise DynamicsError(f"dynamics: element {name!r} must be a WetElement or Freewheel model.")
+        for name in self.pressures:
+            if not isinstance(self.elements.get(name), WetElement):
+                raise DynamicsError(f"dynamics: a pressure is given for {name!r}, which has no wet clutch model "
+                                    "([clutch.capacity]).")
+        object.__setattr__(self, "elements", MappingProxyType(dict(self.elements)))
+        object.__setattr__(self, "pressures", MappingProxyType(dict(self.pressures)))
+        moving = self.train.moving_shafts
+        index = {s: k for k, s in enumerate(moving)}
+        for role in ("input", "output"):
+            if getattr(self, role) not in index:
+                raise DynamicsError(f"dynamics: {role} {getattr(self, role)!r} is not a moving shaft of the train.")
+        open_train = self.train.with_engaged([])
+        mats = matrices(open_train, [self.input, self.output])
+        self._set("levers", mats.levers)
+        self._set("index", index)
+        self._set("gear_rows", np.array(mats.kinematics, dtype=float).reshape(len(mats.levers), len(moving)))
+        self._set("lever_index", {lever.element.name: k for k, lever in enumerate(mats.levers)})
+        self._set("lever_columns", [tuple(index.get(s, -1) for s in lever.shafts) for lever in mats.levers])
+        self._set("element_columns", {name: (index[e.first], index.get(e.second, -1)) if not isinstance(e, Brake)
+                                      else (index[e.shaft], -1) for name, e in shift.items()})
+        mass = self.inertias.matrix(self.train)
+        mass[index[self.input], index[self.input]] += getattr(self.drive, "inertia", 0.0)
+        mass[index[self.output], index[self.output]] += getattr(self.load, "inertia", 0.0)
+        self._set("mass", mass)
+        self._set("held", isinstance(self.load, HeldSpeed))
+        self._set("cache", {})
+        self._check_inertia()
+
+    def _set(self, name: str, value: Any) -> None:
+        object.__setattr__(self, name, value)
+
+    def _check_inertia(self) -> None:
+        rows = self.gear_rows
+        basis = scipy.linalg.null_space(rows) if rows.size else np.eye(len(self.index))
+        if basis.shape[1] == 0:
+            return
+        reduced = basis.T @ self.mass @ basis
+        eig = np.linalg.eigvalsh(reduced)
+        if eig[0] <= 1e-12 * max(1.0, float(np.max(np.abs(self.mass)))):
+            vector = basis @ np.linalg.eigh(reduced)[1][:, 0]
+            moving = [s for s, k in self.index.items() if abs(vector[k]) > 1e-6]
+            raise DynamicsError(
+                "dynamics: the train can move without kinetic energy (shaft(s) "
+                f"{', '.join(repr(s) for s in moving)} have no inertia); give [dynamics.inertia] for them "
+                "(kg m^2), e.g. 0.001.")
+
+    # ------------------------------------------------------------------ structure
+    @property
+    def shafts(self) -> tuple[str, ...]:
+        """The moving shafts, in the order of ω."""
+        return tuple(self.index)
+
+    def kinetic_energy(self, omega: np.ndarray) -> float:
+        """½ ωᵀ J ω, J."""
+        return 0.5 * float(omega @ self.mass @ omega)
+
+    def constraints(self, locked: frozenset[str], blocked: frozenset[str] = frozenset()) -> np.ndarray:
+        """C of a mode: the Willis rows, one row per sticking element, per blocked set, the held output's row."""
+        rows = [self.gear_rows]
+        for name in sorted(locked):
+            row = np.zeros(len(self.index))
+            first, second = self.element_columns[name]
+            row[first] = 1.0
+            if second >= 0:
+                row[second] = -1.0
+            rows.append(row[None, :])
+        for name in sorted(blocked):
+            rows.append(self.block_row(name)[None, :])
+        if self.held:
+            row = np.zeros(len(self.index))
+            row[self.index[self.output]] = 1.0
+            rows.append(row[None, :])
+        return np.vstack(rows)
+
+    def block_row(self, name: str) -> np.ndarray:
+        """ω_sun − ω_carrier of the set or stage ``name`` as a row."""
+        k = self.lever_index[name]
+        a, _, c = self.lever_columns[k]
+        row = np.zeros(len(self.index))
+        if a >= 0:
+            row[a] += 1.0
+        if c >= 0:
+            row[c] -= 1.0
+        return row
+
+    def can_block(self, name: str, locked: frozenset[str], blocked: frozenset[str] = frozenset()) -> bool:
+        """The set is lossy and the mode does not already hold its rolling speed at zero."""
+        lever = self.levers[self.lever_index[name]]
+        if lever.efficiency == 1.0:
+            return False
+        key = ("blockable", name, locked, blocked)
+        if key not in self.cache:
+            c = self.constraints(locked, blocked)
+            self.cache[key] = bool(np.linalg.matrix_rank(np.vstack([c, self.block_row(name)])) > np.linalg.matrix_rank(c))
+        return self.cache[key]
+
+    def ratio_bounds(self, name: str) -> tuple[tuple[float, int], tuple[float, int]]:
+        """((k, w), (k, w)) of the set ``name``: its torque ratio k = −T_ring/T_sun in both loss directions, lower first.
+
+        References
+        ----------
+        Brandenberger 1952, eq. 7 (k = i0 η0^w).
+        """
+        lever = self.levers[self.lever_index[name]]
+        pairs = sorted((lever.factors(w)[0], w) for w in (1, -1))
+        return pairs[0], pairs[1]
+
+    def degrees_of_freedom(self, locked: frozenset[str], blocked: frozenset[str] = frozenset()) -> int:
+        """Speeds still free in the mode (the held output counts as a constraint)."""
+        c = self.constraints(locked, blocked)
+        return len(self.index) - int(np.linalg.matrix_rank(c))
+
+    def _system(self, locked: frozenset[str], pattern: tuple[int, ...], blocked: frozenset[str] = frozenset()):
+        key = (locked, pattern, blocked)
+        found = self.cache.get(key)
+        if found is not None:
+            return found
+        n = len(self.index)
+        c = self.constraints(locked, blocked)
+        g = c.T.copy()
+        first_block = len(self.levers) + len(locked)
+        order = sorted(blocked)
+        for k, (lever, w) in enumerate(zip(self.levers, pattern)):
+            a_col, b_col, c_col = self.lever_columns[k]
+            column = np.zeros(n)
+            if lever.element.name in blocked:  # λ on (sun, carrier), μ = k λ on (ring, carrier)
+                mu = np.zeros(n)
+                for col, coef, target in ((a_col, 1.0, column), (c_col, -1.0, column), (b_col, -1.0, mu),
+                                          (c_col, 1.0, mu)):
+                    if col >= 0:
+                        target[col] += coef
+                g[:, first_block + order.index(lever.element.name)] = mu
+            else:
+                k_b, k_c = lever.factors(w)
+                for col, coef in zip((a_col, b_col, c_col), (1.0, -k_b, -k_c)):
+                    if col >= 0:
+                        column[col] += coef
+            g[:, k] = column
+        m = c.shape[0]
+        a = np.zeros((n + m, n + m))
+        a[:n, :n] = self.mass
+        a[:n, n:] = g
+        a[n:, :n] = c
+        if np.linalg.matrix_rank(c) < m:  # redundant locking: the torque split is statically indeterminate
+            # the split of least Σ (port torque)² as the static solver gives it: a set's ports carry
+            # λ (1, k_b, k_c), a clutch's or brake's λ (1, 1); the minimum-norm solution in those weights
+            weights = np.ones(m)
+            for k, lever in enumerate(self.levers):
+                k_b, k_c = lever.factors(pattern[k])
+                weights[k] = math.sqrt(1.0 + k_b * k_b + k_c * k_c)
+            weights[len(self.levers):len(self.levers) + len(locked)] = math.sqrt(2.0)
+            scaled = a.copy()
+            scaled[:, n:] /= weights
+            inverse = np.linalg.pinv(scaled)
+            inverse[n:, :] /= weights[:, None]
+            found = (inverse[:, :n].copy(), g)
+        else:
+            try:
+                inverse = np.linalg.inv(a)
+                if not np.all(np.isfinite(inverse)) or np.linalg.cond(a) > 1e12:
+                    raise np.linalg.LinAlgError
+            except np.linalg.LinAlgError:
+                inverse = np.linalg.pinv(a)
+            found = (inverse[:, :n].copy(), g)  # the right-hand side is zero in the constraint rows
+        self.cache[key] = found
+        return found
+
+    def breakpoints(self) -> tuple[float, ...]:
+        """The corners of every pressure profile and of time tables of the drive and load, s."""
+        times = {t for profile in self.pressures.values() for t, _ in profile.points}
+        for source in (self.drive, self.load):
+            if type(source).__name__ in ("TorqueTrace", "OutputTorque"):
+                times |= {x for x, _ in source.rows}
+        return tuple(sorted(times))
+
+    # ------------------------------------------------------------------ evaluation
+    def pressure(self, name: str, t: float) -> float:
+        profile = self.pressures.get(name)
+        return profile(t) if profile is not None else 0.0
+
+    def static_capacity(self, name: str, t: float) -> float:
+        """The torque a wet element holds while sticking at time t (infinite for a freewheel), N·m."""
+        model = self.elements.get(name)
+        if isinstance(model, WetElement):
+            return model.static_capacity(self.pressure(name, t))
+        return math.inf if isinstance(model, Freewheel) else 0.0
+
+    def slip(self, name: str, omega: np.ndarray) -> float:
+        first, second = self.element_columns[name]
+        return omega[first] - (omega[second] if second >= 0 else 0.0)
+
+    def evaluate(self, t: float, omega: np.ndarray, mode: Mode, pattern: tuple[int, ...] | None = None) -> Evaluation:
+        """The accelerations and reactions at time t in ``mode``, the loss pattern agreeing with its own torques.
+
+        Parameters
+        ----------
+        t : float
+            s.
+        omega : ndarray
+            rad/s per moving shaft.
+        mode : Mode
+        pattern : tuple of int, optional
+            The loss directions to start from (default: the last one used).
+
+        Returns
+        -------
+        Evaluation
+
+        References
+        ----------
+        Brandenberger 1952, eq. 7 (w = sign of the rolling power).
+        """
+        n = len(self.index)
+        rhs_torques = np.zeros(n)
+        i_in, i_out = self.index[self.input], self.index[self.output]
+        drive = float(self.drive.torque(omega[i_in], t))
+        rhs_torques[i_in] += drive
+        load = 0.0 if self.held else float(self.load.torque(omega[i_out], t))
+        rhs_torques[i_out] -= load
+        torques, slips, powers = {}, {}, {}
+        for name, model in self.elements.items():
+            if name in mode.locked:
+                continue
+            s = self.slip(name, omega)
+            slips[name] = s
+            if isinstance(model, Freewheel):
+                torques[name], powers[name] = 0.0, 0.0
+                continue
+            sign = mode.signs.get(name, 0.0)  # fixed within a mode: smooth up to the lock-up event
+            if sign == 0.0 and s != 0.0:
+                sign = math.copysign(1.0, s)
+            tau = model.torque(self.pressure(name, t), s) * sign
+            first, second = self.element_columns[name]
+            rhs_torques[first] -= tau
+            if second >= 0:
+                rhs_torques[second] += tau
+            torques[name] = tau
+            powers[name] = tau * s  # = T |Δω| within the mode, smooth through the lock-up event
+        key = ("pattern", mode.locked, mode.blocked)
+        if pattern is None:
+            pattern = self.cache.get(key, (0,) * len(self.levers))
+        levers = len(self.levers)
+        speed_floor = RELATIVE_SPEED_ZERO * float(np.max(np.abs(omega))) if omega.size else 0.0
+        seen: set = set()
+        relative = []
+        directions = []
+        for k, lever in enumerate(self.levers):
+            a, _, c = self.lever_columns[k]
+            rel = (omega[a] if a >= 0 else 0.0) - (omega[c] if c >= 0 else 0.0)
+            relative.append(rel)
+            name = lever.element.name
+            if name in mode.blocked:
+                directions.append(0.0)
+            elif mode.signs.get(name, 0.0) != 0.0:  # fixed within a mode: smooth up to the reversal event
+                directions.append(mode.signs[name])
+            else:  # a set turning as a block (or at rest) rolls nothing
+                directions.append(0.0 if abs(rel) <= speed_floor else math.copysign(1.0, rel))
+        for _ in range(2 * levers + 2):
+            inverse, g = self._system(mode.locked, pattern, mode.blocked)
+            x = inverse @ rhs_torques
+            lam = x[n:]
+            new = []
+            for k in range(levers):
+                direction = directions[k]
+                new.append(0 if direction == 0.0 or lam[k] == 0.0 else (1 if lam[k] * direction > 0 else -1))
+            new = tuple(new)
+            if new == pattern:
+                break
+            if new in seen:  # no pattern agrees with itself: the flipping sets carry (almost) no torque,
+                # at the reversal of their power (or in self-locking): take them lossless there
+                flipping = {k for old in seen for k in range(levers) if old[k] != new[k]}
+                pattern = tuple(0 if k in flipping else w for k, w in enumerate(new))
+                inverse, g = self._system(mode.locked, pattern, mode.blocked)
+                x = inverse @ rhs_torques
+                lam = x[n:]
+                break
+            seen.add(pattern)
+            pattern = new
+        self.cache[key] = pattern
+        accelerations = x[:n]
+        for j, name in enumerate(sorted(mode.locked)):
+            torques[name] = float(lam[levers + j])
+            slips[name] = 0.0
+            powers[name] = 0.0
+        first_block = levers + len(mode.locked)
+        columns = list(range(levers)) + list(range(first_block, first_block + len(mode.blocked)))
+        mesh = float(lam[columns] @ (g[:, columns].T @ omega)) if columns else 0.0
+        blocked = {name: (float(lam[self.lever_index[name]]), float(lam[first_block + j]))
+                   for j, name in enumerate(sorted(mode.blocked))}
+        if self.held:
+            load = float(lam[-1])
+        return Evaluation(accelerations, lam[:levers].copy(), torques, slips, powers, drive, load,
+                          drive * omega[i_in], load * omega[i_out], mesh, pattern, blocked, tuple(relative))

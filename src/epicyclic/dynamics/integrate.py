@@ -1,0 +1,367 @@
+"""Integration of the motion with exact lock-up and break-away: solve_ivp with terminal events.
+
+Between events the mode (which elements stick, which way the others slip) is fixed and the motion
+is smooth; :func:`scipy.integrate.solve_ivp` integrates it with events that end the segment where
+
+* a slipping wet element or an overrunning freewheel reaches zero slip (it would lock: the slip
+  changes sign in the direction it slipped),
+* a sticking wet element needs more torque than it holds (|λ| reaches its static capacity), or a
+  locked freewheel's torque reverses (it overruns).
+
+At each event the new mode is settled: the element that reached synchronism sticks (its slip set
+exactly to zero by projecting the speeds onto the new constraints), then every sticking element
+whose reaction exceeds its capacity is released, the worst first, slipping the way its reaction
+pushed (:func:`settle`), until the mode agrees with itself.  The integration restarts in that
+mode: no smoothing of the friction law, no stiff regularisation.  The energy of every source and
+sink is integrated with the motion (quadratures in the state), so the balance can be checked
+against the kinetic energy of the final speeds.
+
+The simulated time and the number of events are bounded before the run starts; a run that
+reaches either bound ends there and says so.
+
+References
+----------
+Virtanen, P. et al.: *SciPy 1.0*, Nature Methods 17 (2020) 261–272 (``solve_ivp`` with events);
+Dormand, J. R., Prince, P. J.: *A family of embedded Runge–Kutta formulae*, J. Comp. Appl. Math.
+6 (1980) 19–26; Pfeiffer, F., Glocker, C.: *Multibody Dynamics with Unilateral Contacts*, Wiley
+1996, ch. 6 (stick–slip transitions as switching of the constraint set, checked by the
+reaction's friction bound).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg
+from scipy.integrate import solve_ivp
+
+from .equations import RELATIVE_SPEED_ZERO, Mode, TrainDynamics
+from .errors import DynamicsError
+from .friction import Freewheel, WetElement
+
+__all__ = ["Run", "integrate", "project", "settle", "MAX_EVENTS", "MAX_DURATION"]
+
+#: Most mode changes in one run (a chattering run ends there, stated).
+MAX_EVENTS = 2000
+#: Longest simulated time, s.
+MAX_DURATION = 600.0
+
+
+@dataclass(frozen=True, eq=False)
+class Run:
+    """The raw result of an integration: output times, states and the modes with their start times."""
+
+    times: np.ndarray
+    states: np.ndarray  # (points, n + 3 + elements): ω, E_in, E_load, E_mesh, E per element
+    modes: tuple[tuple[float, Mode], ...]
+    element_names: tuple[str, ...]
+    ended: str  # "time" or a sentence saying why it stopped early
+    events: int
+
+
+def settle(dynamics: TrainDynamics, t: float, omega: np.ndarray, mode: Mode) -> Mode:
+    """The mode that agrees with itself at (t, ω): sticking elements within their capacity.
+
+    Parameters
+    ----------
+    dynamics : TrainDynamics
+    t : float
+    omega : ndarray
+    mode : Mode
+        The candidate.
+
+    Returns
+    -------
+    Mode
+
+    References
+    ----------
+    Pfeiffer & Glocker 1996, ch. 6 (the transition from stick to slip where the reaction leaves the
+    friction cone).
+    """
+    locked, signs, blocked = set(mode.locked), dict(mode.signs), set(mode.blocked)
+    for _ in range(len(dynamics.elements) + len(dynamics.levers) + 1):
+        for name in sorted(blocked):  # a set the sticking elements now hold as a block needs no friction to
+            if not dynamics.can_block(name, frozenset(locked), frozenset(blocked - {name})):
+                blocked.discard(name)
+        result = dynamics.evaluate(t, omega, Mode(frozenset(locked), signs, frozenset(blocked)))
+        worst, excess = None, 0.0
+        for name in blocked:
+            lam, mu = result.blocked_torques[name]
+            (low, w_low), (high, w_high) = dynamics.ratio_bounds(name)
+            if lam == 0.0:
+                continue
+            ratio = mu / lam
+            over = max(low - ratio, ratio - high)
+            if over > 1e-9 * (1.0 + abs(ratio)) and over > excess:
+                worst, excess = ("set", name, w_low if ratio < low else w_high, lam), over
+        if worst is not None:
+            _, name, w, lam = worst
+            blocked.discard(name)
+            signs[name] = w * math.copysign(1.0, lam)  # it rolls the way its power then flows
+            continue
+        for name in locked:
+            model = dynamics.elements[name]
+            lam = result.element_torques[name]
+            if isinstance(model, Freewheel):
+                over = lam * model.blocking  # > 0: the freewheel would have to pull the other way
+                scale = 1e-9 * (1.0 + abs(lam))
+            else:
+                cap = dynamics.static_capacity(name, t)
+                over = abs(lam) - cap
+                scale = 1e-9 * (1.0 + cap)
+            if over > scale and over / (1.0 + abs(lam)) > excess:
+                worst, excess = name, over / (1.0 + abs(lam))
+        if worst is None:
+            return Mode(frozenset(locked), signs, frozenset(blocked))
+        lam = result.element_torques[worst]
+        model = dynamics.elements[worst]
+        locked.discard(worst)
+        signs[worst] = model.blocking if isinstance(model, Freewheel) else math.copysign(1.0, lam)
+    raise DynamicsError("dynamics: no consistent stick/slip state found (every element released in turn); "
+                        "check the capacities and pressures.")
+
+
+def _with_signs(dynamics: TrainDynamics, t: float, omega: np.ndarray, mode: Mode) -> Mode:
+    """The mode with every slipping element's direction from its slip; a wet element with capacity at exact
+    synchronism (and no direction yet) is a candidate to stick."""
+    locked, signs = set(mode.locked), dict(mode.signs)
+    for name, model in dynamics.elements.items():
+        if name in locked:
+            continue
+        s = dynamics.slip(name, omega)
+        if s != 0.0:
+            signs[name] = math.copysign(1.0, s)
+        elif signs.get(name, 0.0) == 0.0 and (isinstance(model, Freewheel)
+                                              or dynamics.static_capacity(name, t) > 0.0):
+            locked.add(name)
+    blocked = set(mode.blocked)
+    floor = RELATIVE_SPEED_ZERO * float(np.max(np.abs(omega))) if omega.size else 0.0
+    for k, lever in enumerate(dynamics.levers):
+        name = lever.element.name
+        if lever.efficiency == 1.0 or name in blocked:
+            continue
+        a, _, c = dynamics.lever_columns[k]
+        rel = (omega[a] if a >= 0 else 0.0) - (omega[c] if c >= 0 else 0.0)
+        if abs(rel) > floor:
+            signs[name] = math.copysign(1.0, rel)
+        elif signs.get(name, 0.0) == 0.0 and dynamics.can_block(name, frozenset(locked), frozenset(blocked)):
+            blocked.add(name)
+    return Mode(frozenset(locked), signs, frozenset(blocked))
+
+
+def project(dynamics: TrainDynamics, omega: np.ndarray, locked: frozenset[str],
+            blocked: frozenset[str] = frozenset()) -> np.ndarray:
+    """ω moved onto C ω = 0 (least change); the held output keeps its speed."""
+    c = dynamics.constraints(locked, blocked)
+    target = np.zeros(c.shape[0])
+    if dynamics.held:
+        target[-1] = omega[dynamics.index[dynamics.output]]
+    residual = c @ omega - target
+    if not np.any(residual):
+        return omega
+    return omega - np.linalg.lstsq(c, residual, rcond=None)[0]
+
+
+def integrate(dynamics: TrainDynamics, omega0, mode: Mode, t_end: float, *, step: float = 1e-3,
+              rtol: float = 1e-9, atol: float = 1e-9, max_events: int = MAX_EVENTS,
+              method: str = "DOP853", breakpoints=()) -> Run:
+    """Integrate from t = 0 with speeds ``omega0`` (rad/s) in ``mode`` (settled first) to ``t_end``.
+
+    Parameters
+    ----------
+    dynamics : TrainDynamics
+    omega0 : array_like
+        rad/s per moving shaft (projected onto the mode's constraints).
+    mode : Mode
+    t_end : float
+        s, at most :data:`MAX_DURATION` (the bound, stated before the run).
+    step : float, default 1e-3
+        Output step, s.
+    rtol, atol : float
+        Tolerances of ``solve_ivp``.
+    max_events : int, default 2000
+        Most mode changes.
+    method : str, default "DOP853"
+    breakpoints : sequence of float, default ()
+        Times where the right-hand side has a kink or a step (the corners of pressure profiles): each
+        segment ends there, so no step straddles one.
+
+    Returns
+    -------
+    Run
+
+    Raises
+    ------
+    DynamicsError
+        A duration or step out of range.
+    """
+    if not (isinstance(t_end, (int, float)) and math.isfinite(t_end) and 0.0 < t_end <= MAX_DURATION):
+        raise DynamicsError(f"dynamics: the simulated time must be in (0, {MAX_DURATION:g}] s, got {t_end!r}.")
+    if not (isinstance(step, (int, float)) and math.isfinite(step) and 1e-6 <= step <= t_end):
+        raise DynamicsError(f"dynamics: the output step must be in [1e-6 s, duration], got {step!r}.")
+    points = int(round(t_end / step))
+    if points > 2_000_000:
+        raise DynamicsError(f"dynamics: {points} output points; at most 2000000 (a longer step or a shorter run).")
+    grid = np.linspace(0.0, t_end, points + 1)
+    names = tuple(dynamics.elements)
+    n = len(dynamics.shafts)
+    omega = np.asarray(omega0, dtype=float).copy()
+    mode = _with_signs(dynamics, 0.0, project(dynamics, omega, mode.locked), mode)
+    mode = settle(dynamics, 0.0, project(dynamics, omega, mode.locked, mode.blocked), mode)
+    omega = project(dynamics, omega, mode.locked, mode.blocked)
+    y = np.concatenate([omega, np.zeros(3 + len(names))])
+    t = 0.0
+    times, states, modes = [], [], [(0.0, mode)]
+    events = 0
+    ended = "time"
+    stops = sorted({float(b) for b in breakpoints if 0.0 < b < t_end} | {t_end})
+    while True:
+        fun, event_list, meaning = _segment(dynamics, mode, names, n)
+        t_stop = next(b for b in stops if b > t)
+        window = grid[(grid > t) & (grid <= t_stop)] if times else grid[grid <= t_stop]
+        extra = not window.size or window[-1] != t_stop
+        if extra:
+            window = np.append(window, t_stop)
+        sol = solve_ivp(fun, (t, t_stop), y, method=method, t_eval=window, events=event_list, rtol=rtol,
+                        atol=atol)
+        if sol.status < 0:
+            ended = f"the integrator stopped at t = {t:.6g} s: {sol.message}"
+            break
+        ts, ys = np.asarray(sol.t), np.asarray(sol.y).T
+        if sol.status == 0:
+            y = ys[-1].copy()
+            if extra:
+                ts, ys = ts[:-1], ys[:-1]
+        if ts.size:
+            times.append(ts)
+            states.append(ys)
+        if sol.status == 0:
+            t = t_stop
+            if t >= t_end:
+                break
+            omega = y[:n]
+            mode = settle(dynamics, t, omega, _with_signs(dynamics, t, omega, mode))  # a step in a profile
+            if mode != modes[-1][1]:
+                y[:n] = project(dynamics, omega, mode.locked, mode.blocked)
+                modes.append((t, mode))
+            continue
+        fired = [(sol.t_events[k][0], k) for k in range(len(event_list)) if sol.t_events[k].size]
+        t_event, k = min(fired)
+        y = sol.y_events[k][0].copy()
+        t = float(t_event)
+        events += 1
+        if events > max_events:
+            ended = (f"stopped after {max_events} stick/slip changes at t = {t:.6g} s (the element(s) chatter); "
+                     "the run is not complete")
+            break
+        kind, name = meaning[k]
+        locked, signs, blocked = set(mode.locked), dict(mode.signs), set(mode.blocked)
+        if kind == "lock":
+            locked.add(name)
+        elif kind == "release":
+            locked.discard(name)
+            result = dynamics.evaluate(t, y[:n], mode)
+            model = dynamics.elements[name]
+            signs[name] = model.blocking if isinstance(model, Freewheel) \
+                else math.copysign(1.0, result.element_torques[name])
+        elif kind == "block":
+            signs.pop(name, None)
+            if dynamics.can_block(name, frozenset(locked), frozenset(blocked)):
+                blocked.add(name)
+        else:  # unblock: the set rolls the way of the loss direction whose ratio it reached
+            result = dynamics.evaluate(t, y[:n], mode)
+            lam, mu = result.blocked_torques[name]
+            (low, w_low), (high, w_high) = dynamics.ratio_bounds(name)
+            ratio = mu / lam if lam else 0.5 * (low + high)
+            w = w_low if abs(ratio - low) < abs(ratio - high) else w_high
+            blocked.discard(name)
+            signs[name] = w * math.copysign(1.0, lam if lam else 1.0)
+        omega = project(dynamics, y[:n], frozenset(locked), frozenset(blocked))
+        candidate = Mode(frozenset(locked), signs, frozenset(blocked))
+        mode = settle(dynamics, t, omega, candidate if kind in ("unblock", "block")
+                      else _with_signs(dynamics, t, omega, candidate))
+        y[:n] = project(dynamics, omega, mode.locked, mode.blocked)
+        modes.append((t, mode))
+        if t >= t_end:
+            break
+    if times:
+        all_t = np.concatenate(times)
+        all_y = np.vstack(states)
+    else:
+        all_t, all_y = np.array([0.0]), y[None, :]
+    return Run(all_t, all_y, tuple(modes), names, ended, events)
+
+
+def _segment(dynamics: TrainDynamics, mode: Mode, names: tuple[str, ...], n: int):
+    """The right-hand side and the terminal events of one mode."""
+    column = {name: k for k, name in enumerate(names)}
+    last: dict = {}
+
+    def evaluate(t, y):
+        key = (t, y[:n].tobytes())
+        if last.get("key") != key:
+            last["key"] = key
+            last["value"] = dynamics.evaluate(t, y[:n], mode)
+        return last["value"]
+
+    def fun(t, y):
+        r = evaluate(t, y)
+        dy = np.empty(n + 3 + len(names))
+        dy[:n] = r.accelerations
+        dy[n] = r.input_power
+        dy[n + 1] = r.load_power
+        dy[n + 2] = r.mesh_power
+        for name, k in column.items():
+            dy[n + 3 + k] = r.element_powers.get(name, 0.0)
+        return dy
+
+    events, meaning = [], []
+    for name, model in dynamics.elements.items():
+        if name in mode.locked:
+            if isinstance(model, Freewheel):
+                def release(t, y, name=name, blocking=model.blocking):
+                    return evaluate(t, y).element_torques[name] * blocking
+            else:
+                def release(t, y, name=name):
+                    return abs(evaluate(t, y).element_torques[name]) - dynamics.static_capacity(name, t)
+            release.terminal, release.direction = True, 1.0
+            events.append(release)
+            meaning.append(("release", name))
+        else:
+            if isinstance(model, Freewheel):
+                sign = model.blocking
+            elif isinstance(model, WetElement):
+                sign = mode.signs.get(name, 0.0)
+            else:
+                continue
+            if sign == 0.0:
+                continue
+
+            def lock(t, y, name=name, sign=sign):
+                return dynamics.slip(name, y[:n]) * sign
+            lock.terminal, lock.direction = True, -1.0
+            events.append(lock)
+            meaning.append(("lock", name))
+    for k, lever in enumerate(dynamics.levers):
+        name = lever.element.name
+        if name in mode.blocked:
+            (low, _), (high, _) = dynamics.ratio_bounds(name)
+
+            def unblock(t, y, name=name, low=low, high=high):
+                lam, mu = evaluate(t, y).blocked_torques[name]
+                return (mu - low * lam) * (mu - high * lam) / (1.0 + lam * lam + mu * mu)
+            unblock.terminal, unblock.direction = True, 1.0
+            events.append(unblock)
+            meaning.append(("unblock", name))
+        elif lever.efficiency != 1.0 and mode.signs.get(name, 0.0) != 0.0:
+            row = dynamics.block_row(name)
+
+            def reverse(t, y, row=row, sign=mode.signs[name]):
+                return float(row @ y[:n]) * sign
+            reverse.terminal, reverse.direction = True, -1.0
+            events.append(reverse)
+            meaning.append(("block", name))
+    return fun, events, meaning
