@@ -51,11 +51,14 @@ from .friction import Freewheel, WetElement
 from .inertia import Inertias
 from .pressure import PressureProfile
 
-__all__ = ["TrainDynamics", "Mode", "Evaluation", "RELATIVE_SPEED_ZERO"]
+__all__ = ["TrainDynamics", "Mode", "Evaluation", "RELATIVE_SPEED_ZERO", "REVERSAL_BAND"]
 
 #: A set's speed relative to its carrier below this share of the largest shaft speed is round-off of a set
 #: that turns as a block: it rolls no power (w = 0), as the static solver's exact speed classes say.
 RELATIVE_SPEED_ZERO = 1e-9
+#: Speed of a set relative to its carrier (rad/s) below which its loss exponent w goes linearly through zero
+#: (continuous across the reversal of its rolling power): 0.5 rad/s ≈ 5 1/min, stated default.
+REVERSAL_BAND = 0.5
 
 
 @dataclass(frozen=True)
@@ -64,13 +67,9 @@ class Mode:
 
     locked: frozenset[str]
     signs: Mapping[str, float] = field(default_factory=dict)
-    #: Sets held at zero rolling speed by their mesh friction (they turn as a block; the torque ratio lies
-    #: between its two loss directions' values).
-    blocked: frozenset[str] = frozenset()
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "signs", MappingProxyType(dict(self.signs)))
-        object.__setattr__(self, "blocked", frozenset(self.blocked))
 
 
 @dataclass(frozen=True, eq=False)
@@ -87,9 +86,7 @@ class Evaluation:
     input_power: float
     load_power: float
     mesh_power: float
-    pattern: tuple[int, ...]
-    blocked_torques: dict = field(default_factory=dict)  # blocked set → (λ = sun torque, μ = k λ), N·m
-    relative_speeds: tuple = ()  # ω_sun − ω_carrier per set or stage, rad/s
+    pattern: tuple[float, ...]  # the loss exponent w of every set or stage (fractional inside the reversal band)
 
 
 @dataclass(frozen=True, eq=False)
@@ -125,8 +122,12 @@ class TrainDynamics:
     pressures: Mapping[str, PressureProfile]
     drive: Any
     load: Any
+    reversal_band: float = REVERSAL_BAND
 
     def __post_init__(self) -> None:
+        if isinstance(self.reversal_band, bool) or not isinstance(self.reversal_band, (int, float)) \
+                or not 0 < self.reversal_band <= 100:
+            raise DynamicsError(f"dynamics: reversal_band must be in (0, 100] rad/s, got {self.reversal_band!r:.40}.")
         shift = {e.name: e for e in self.train.shift_elements}
         for name, model in self.elements.items():
             if name not in shift:
@@ -190,8 +191,8 @@ class TrainDynamics:
         """½ ωᵀ J ω, J."""
         return 0.5 * float(omega @ self.mass @ omega)
 
-    def constraints(self, locked: frozenset[str], blocked: frozenset[str] = frozenset()) -> np.ndarray:
-        """C of a mode: the Willis rows, one row per sticking element, per blocked set, the held output's row."""
+    def constraints(self, locked: frozenset[str]) -> np.ndarray:
+        """C of a mode: the Willis rows, one row per sticking element, the held output's row."""
         rows = [self.gear_rows]
         for name in sorted(locked):
             row = np.zeros(len(self.index))
@@ -200,77 +201,39 @@ class TrainDynamics:
             if second >= 0:
                 row[second] = -1.0
             rows.append(row[None, :])
-        for name in sorted(blocked):
-            rows.append(self.block_row(name)[None, :])
         if self.held:
             row = np.zeros(len(self.index))
             row[self.index[self.output]] = 1.0
             rows.append(row[None, :])
         return np.vstack(rows)
 
-    def block_row(self, name: str) -> np.ndarray:
-        """ω_sun − ω_carrier of the set or stage ``name`` as a row."""
-        k = self.lever_index[name]
-        a, _, c = self.lever_columns[k]
-        row = np.zeros(len(self.index))
-        if a >= 0:
-            row[a] += 1.0
-        if c >= 0:
-            row[c] -= 1.0
-        return row
-
-    def can_block(self, name: str, locked: frozenset[str], blocked: frozenset[str] = frozenset()) -> bool:
-        """The set is lossy and the mode does not already hold its rolling speed at zero."""
-        lever = self.levers[self.lever_index[name]]
-        if lever.efficiency == 1.0:
-            return False
-        key = ("blockable", name, locked, blocked)
-        if key not in self.cache:
-            c = self.constraints(locked, blocked)
-            self.cache[key] = bool(np.linalg.matrix_rank(np.vstack([c, self.block_row(name)])) > np.linalg.matrix_rank(c))
-        return self.cache[key]
-
-    def ratio_bounds(self, name: str) -> tuple[tuple[float, int], tuple[float, int]]:
-        """((k, w), (k, w)) of the set ``name``: its torque ratio k = −T_ring/T_sun in both loss directions, lower first.
-
-        References
-        ----------
-        Brandenberger 1952, eq. 7 (k = i0 η0^w).
-        """
-        lever = self.levers[self.lever_index[name]]
-        pairs = sorted((lever.factors(w)[0], w) for w in (1, -1))
-        return pairs[0], pairs[1]
-
-    def degrees_of_freedom(self, locked: frozenset[str], blocked: frozenset[str] = frozenset()) -> int:
+    def degrees_of_freedom(self, locked: frozenset[str]) -> int:
         """Speeds still free in the mode (the held output counts as a constraint)."""
-        c = self.constraints(locked, blocked)
+        c = self.constraints(locked)
         return len(self.index) - int(np.linalg.matrix_rank(c))
 
-    def _system(self, locked: frozenset[str], pattern: tuple[int, ...], blocked: frozenset[str] = frozenset()):
-        key = (locked, pattern, blocked)
+    def _factors(self, k: int, w: float) -> tuple[float, float]:
+        """(k_b, k_c) = (i0 η0^w, 1 − i0 η0^w) of lever k; w may be fractional inside the reversal band."""
+        lever = self.levers[k]
+        if w in (-1.0, 0.0, 1.0):
+            return lever.factors(int(w))
+        k_b = lever.ratio * lever.efficiency ** w
+        return k_b, 1.0 - k_b
+
+    def _system(self, locked: frozenset[str], pattern: tuple[float, ...]):
+        key = (locked, pattern)
         found = self.cache.get(key)
         if found is not None:
             return found
         n = len(self.index)
-        c = self.constraints(locked, blocked)
+        c = self.constraints(locked)
         g = c.T.copy()
-        first_block = len(self.levers) + len(locked)
-        order = sorted(blocked)
-        for k, (lever, w) in enumerate(zip(self.levers, pattern)):
-            a_col, b_col, c_col = self.lever_columns[k]
+        for k, w in enumerate(pattern):
+            k_b, k_c = self._factors(k, w)
             column = np.zeros(n)
-            if lever.element.name in blocked:  # λ on (sun, carrier), μ = k λ on (ring, carrier)
-                mu = np.zeros(n)
-                for col, coef, target in ((a_col, 1.0, column), (c_col, -1.0, column), (b_col, -1.0, mu),
-                                          (c_col, 1.0, mu)):
-                    if col >= 0:
-                        target[col] += coef
-                g[:, first_block + order.index(lever.element.name)] = mu
-            else:
-                k_b, k_c = lever.factors(w)
-                for col, coef in zip((a_col, b_col, c_col), (1.0, -k_b, -k_c)):
-                    if col >= 0:
-                        column[col] += coef
+            for col, coef in zip(self.lever_columns[k], (1.0, -k_b, -k_c)):
+                if col >= 0:
+                    column[col] += coef
             g[:, k] = column
         m = c.shape[0]
         a = np.zeros((n + m, n + m))
@@ -281,8 +244,8 @@ class TrainDynamics:
             # the split of least Σ (port torque)² as the static solver gives it: a set's ports carry
             # λ (1, k_b, k_c), a clutch's or brake's λ (1, 1); the minimum-norm solution in those weights
             weights = np.ones(m)
-            for k, lever in enumerate(self.levers):
-                k_b, k_c = lever.factors(pattern[k])
+            for k in range(len(self.levers)):
+                k_b, k_c = self._factors(k, pattern[k])
                 weights[k] = math.sqrt(1.0 + k_b * k_b + k_c * k_c)
             weights[len(self.levers):len(self.levers) + len(locked)] = math.sqrt(2.0)
             scaled = a.copy()
@@ -298,7 +261,8 @@ class TrainDynamics:
             except np.linalg.LinAlgError:
                 inverse = np.linalg.pinv(a)
             found = (inverse[:, :n].copy(), g)  # the right-hand side is zero in the constraint rows
-        self.cache[key] = found
+        if all(w in (-1.0, 0.0, 1.0) for w in pattern):  # the band's fractional systems are not kept
+            self.cache[key] = found
         return found
 
     def breakpoints(self) -> tuple[float, ...]:
@@ -325,7 +289,7 @@ class TrainDynamics:
         first, second = self.element_columns[name]
         return omega[first] - (omega[second] if second >= 0 else 0.0)
 
-    def evaluate(self, t: float, omega: np.ndarray, mode: Mode, pattern: tuple[int, ...] | None = None) -> Evaluation:
+    def evaluate(self, t: float, omega: np.ndarray, mode: Mode, pattern: tuple[float, ...] | None = None) -> Evaluation:
         """The accelerations and reactions at time t in ``mode``, the loss pattern agreeing with its own torques.
 
         Parameters
@@ -335,8 +299,8 @@ class TrainDynamics:
         omega : ndarray
             rad/s per moving shaft.
         mode : Mode
-        pattern : tuple of int, optional
-            The loss directions to start from (default: the last one used).
+        pattern : tuple of float, optional
+            The loss exponents to start from (their signs; default: the last ones used).
 
         Returns
         -------
@@ -346,6 +310,7 @@ class TrainDynamics:
         ----------
         Brandenberger 1952, eq. 7 (w = sign of the rolling power).
         """
+        omega = np.asarray(omega, dtype=float)
         n = len(self.index)
         rhs_torques = np.zeros(n)
         i_in, i_out = self.index[self.input], self.index[self.output]
@@ -372,58 +337,51 @@ class TrainDynamics:
                 rhs_torques[second] += tau
             torques[name] = tau
             powers[name] = tau * s  # = T |Δω| within the mode, smooth through the lock-up event
-        key = ("pattern", mode.locked, mode.blocked)
-        if pattern is None:
-            pattern = self.cache.get(key, (0,) * len(self.levers))
+        key = ("pattern", mode.locked)
         levers = len(self.levers)
+        # the rolling direction of each set: ±1 outside the reversal band, rel/band inside it (the loss
+        # exponent goes continuously through 0 where the set's speed relative to its carrier reverses)
         speed_floor = RELATIVE_SPEED_ZERO * float(np.max(np.abs(omega))) if omega.size else 0.0
-        seen: set = set()
-        relative = []
         directions = []
-        for k, lever in enumerate(self.levers):
+        for k in range(levers):
             a, _, c = self.lever_columns[k]
             rel = (omega[a] if a >= 0 else 0.0) - (omega[c] if c >= 0 else 0.0)
-            relative.append(rel)
-            name = lever.element.name
-            if name in mode.blocked:
+            if abs(rel) <= speed_floor:  # a set turning as a block (or at rest) rolls nothing
                 directions.append(0.0)
-            elif mode.signs.get(name, 0.0) != 0.0:  # fixed within a mode: smooth up to the reversal event
-                directions.append(mode.signs[name])
-            else:  # a set turning as a block (or at rest) rolls nothing
-                directions.append(0.0 if abs(rel) <= speed_floor else math.copysign(1.0, rel))
+            elif self.levers[k].efficiency == 1.0 or abs(rel) >= self.reversal_band:
+                directions.append(math.copysign(1.0, rel))
+            else:
+                directions.append(rel / self.reversal_band)
+        signs = self.cache.get(key, (0.0,) * levers) if pattern is None else tuple(
+            math.copysign(1.0, w) if w else 0.0 for w in pattern)  # the sign of each set's torque λ
+        seen: set = set()
         for _ in range(2 * levers + 2):
-            inverse, g = self._system(mode.locked, pattern, mode.blocked)
+            current = tuple(d * g_sign for d, g_sign in zip(directions, signs))
+            inverse, g = self._system(mode.locked, current)
             x = inverse @ rhs_torques
             lam = x[n:]
-            new = []
-            for k in range(levers):
-                direction = directions[k]
-                new.append(0 if direction == 0.0 or lam[k] == 0.0 else (1 if lam[k] * direction > 0 else -1))
-            new = tuple(new)
-            if new == pattern:
+            new = tuple(0.0 if lam[k] == 0.0 else math.copysign(1.0, lam[k]) for k in range(levers))
+            if new == signs:
                 break
-            if new in seen:  # no pattern agrees with itself: the flipping sets carry (almost) no torque,
-                # at the reversal of their power (or in self-locking): take them lossless there
+            if new in seen:  # no sign agrees with itself: the flipping sets carry (almost) no torque
                 flipping = {k for old in seen for k in range(levers) if old[k] != new[k]}
-                pattern = tuple(0 if k in flipping else w for k, w in enumerate(new))
-                inverse, g = self._system(mode.locked, pattern, mode.blocked)
+                signs = tuple(0.0 if k in flipping else w for k, w in enumerate(new))
+                current = tuple(d * g_sign for d, g_sign in zip(directions, signs))
+                inverse, g = self._system(mode.locked, current)
                 x = inverse @ rhs_torques
                 lam = x[n:]
                 break
-            seen.add(pattern)
-            pattern = new
-        self.cache[key] = pattern
+            seen.add(signs)
+            signs = new
+        self.cache[key] = signs
         accelerations = x[:n]
         for j, name in enumerate(sorted(mode.locked)):
             torques[name] = float(lam[levers + j])
             slips[name] = 0.0
             powers[name] = 0.0
-        first_block = levers + len(mode.locked)
-        columns = list(range(levers)) + list(range(first_block, first_block + len(mode.blocked)))
-        mesh = float(lam[columns] @ (g[:, columns].T @ omega)) if columns else 0.0
-        blocked = {name: (float(lam[self.lever_index[name]]), float(lam[first_block + j]))
-                   for j, name in enumerate(sorted(mode.blocked))}
+        mesh = float(lam[:levers] @ (g[:, :levers].T @ omega)) if levers else 0.0
         if self.held:
             load = float(lam[-1])
+        pattern = current
         return Evaluation(accelerations, lam[:levers].copy(), torques, slips, powers, drive, load,
-                          drive * omega[i_in], load * omega[i_out], mesh, pattern, blocked, tuple(relative))
+                          drive * omega[i_in], load * omega[i_out], mesh, pattern)

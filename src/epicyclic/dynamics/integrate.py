@@ -37,7 +37,7 @@ import numpy as np
 import scipy.linalg
 from scipy.integrate import solve_ivp
 
-from .equations import RELATIVE_SPEED_ZERO, Mode, TrainDynamics
+from .equations import Mode, TrainDynamics
 from .errors import DynamicsError
 from .friction import Freewheel, WetElement
 
@@ -45,6 +45,9 @@ __all__ = ["Run", "integrate", "project", "settle", "MAX_EVENTS", "MAX_DURATION"
 
 #: Most mode changes in one run (a chattering run ends there, stated).
 MAX_EVENTS = 2000
+#: The slip (rad/s) past synchronism at which a lock-up event fires: round-off of a slip that starts at
+#: exactly zero and runs the wrong way is still seen (the speeds are then projected onto exact lock-up).
+EVENT_SLIP = 1e-9
 #: Longest simulated time, s.
 MAX_DURATION = 600.0
 
@@ -81,27 +84,10 @@ def settle(dynamics: TrainDynamics, t: float, omega: np.ndarray, mode: Mode) -> 
     Pfeiffer & Glocker 1996, ch. 6 (the transition from stick to slip where the reaction leaves the
     friction cone).
     """
-    locked, signs, blocked = set(mode.locked), dict(mode.signs), set(mode.blocked)
-    for _ in range(len(dynamics.elements) + len(dynamics.levers) + 1):
-        for name in sorted(blocked):  # a set the sticking elements now hold as a block needs no friction to
-            if not dynamics.can_block(name, frozenset(locked), frozenset(blocked - {name})):
-                blocked.discard(name)
-        result = dynamics.evaluate(t, omega, Mode(frozenset(locked), signs, frozenset(blocked)))
+    locked, signs = set(mode.locked), dict(mode.signs)
+    for _ in range(len(dynamics.elements) + 1):
+        result = dynamics.evaluate(t, omega, Mode(frozenset(locked), signs))
         worst, excess = None, 0.0
-        for name in blocked:
-            lam, mu = result.blocked_torques[name]
-            (low, w_low), (high, w_high) = dynamics.ratio_bounds(name)
-            if lam == 0.0:
-                continue
-            ratio = mu / lam
-            over = max(low - ratio, ratio - high)
-            if over > 1e-9 * (1.0 + abs(ratio)) and over > excess:
-                worst, excess = ("set", name, w_low if ratio < low else w_high, lam), over
-        if worst is not None:
-            _, name, w, lam = worst
-            blocked.discard(name)
-            signs[name] = w * math.copysign(1.0, lam)  # it rolls the way its power then flows
-            continue
         for name in locked:
             model = dynamics.elements[name]
             lam = result.element_torques[name]
@@ -115,13 +101,28 @@ def settle(dynamics: TrainDynamics, t: float, omega: np.ndarray, mode: Mode) -> 
             if over > scale and over / (1.0 + abs(lam)) > excess:
                 worst, excess = name, over / (1.0 + abs(lam))
         if worst is None:
-            return Mode(frozenset(locked), signs, frozenset(blocked))
+            return _directions(dynamics, omega, Mode(frozenset(locked), signs), result)
         lam = result.element_torques[worst]
         model = dynamics.elements[worst]
         locked.discard(worst)
         signs[worst] = model.blocking if isinstance(model, Freewheel) else math.copysign(1.0, lam)
     raise DynamicsError("dynamics: no consistent stick/slip state found (every element released in turn); "
                         "check the capacities and pressures.")
+
+
+def _directions(dynamics: TrainDynamics, omega: np.ndarray, mode: Mode, result) -> Mode:
+    """Each wet element at exact synchronism and slipping slips the way its slip then accelerates."""
+    signs = dict(mode.signs)
+    changed = False
+    for name, model in dynamics.elements.items():
+        if name in mode.locked or not isinstance(model, WetElement) or dynamics.slip(name, omega) != 0.0:
+            continue
+        first, second = dynamics.element_columns[name]
+        rate = result.accelerations[first] - (result.accelerations[second] if second >= 0 else 0.0)
+        if rate != 0.0 and math.copysign(1.0, rate) != signs.get(name, 0.0):
+            signs[name] = math.copysign(1.0, rate)
+            changed = True
+    return Mode(mode.locked, signs) if changed else mode
 
 
 def _with_signs(dynamics: TrainDynamics, t: float, omega: np.ndarray, mode: Mode) -> Mode:
@@ -137,25 +138,12 @@ def _with_signs(dynamics: TrainDynamics, t: float, omega: np.ndarray, mode: Mode
         elif signs.get(name, 0.0) == 0.0 and (isinstance(model, Freewheel)
                                               or dynamics.static_capacity(name, t) > 0.0):
             locked.add(name)
-    blocked = set(mode.blocked)
-    floor = RELATIVE_SPEED_ZERO * float(np.max(np.abs(omega))) if omega.size else 0.0
-    for k, lever in enumerate(dynamics.levers):
-        name = lever.element.name
-        if lever.efficiency == 1.0 or name in blocked:
-            continue
-        a, _, c = dynamics.lever_columns[k]
-        rel = (omega[a] if a >= 0 else 0.0) - (omega[c] if c >= 0 else 0.0)
-        if abs(rel) > floor:
-            signs[name] = math.copysign(1.0, rel)
-        elif signs.get(name, 0.0) == 0.0 and dynamics.can_block(name, frozenset(locked), frozenset(blocked)):
-            blocked.add(name)
-    return Mode(frozenset(locked), signs, frozenset(blocked))
+    return Mode(frozenset(locked), signs)
 
 
-def project(dynamics: TrainDynamics, omega: np.ndarray, locked: frozenset[str],
-            blocked: frozenset[str] = frozenset()) -> np.ndarray:
+def project(dynamics: TrainDynamics, omega: np.ndarray, locked: frozenset[str]) -> np.ndarray:
     """ω moved onto C ω = 0 (least change); the held output keeps its speed."""
-    c = dynamics.constraints(locked, blocked)
+    c = dynamics.constraints(locked)
     target = np.zeros(c.shape[0])
     if dynamics.held:
         target[-1] = omega[dynamics.index[dynamics.output]]
@@ -210,8 +198,8 @@ def integrate(dynamics: TrainDynamics, omega0, mode: Mode, t_end: float, *, step
     n = len(dynamics.shafts)
     omega = np.asarray(omega0, dtype=float).copy()
     mode = _with_signs(dynamics, 0.0, project(dynamics, omega, mode.locked), mode)
-    mode = settle(dynamics, 0.0, project(dynamics, omega, mode.locked, mode.blocked), mode)
-    omega = project(dynamics, omega, mode.locked, mode.blocked)
+    mode = settle(dynamics, 0.0, project(dynamics, omega, mode.locked), mode)
+    omega = project(dynamics, omega, mode.locked)
     y = np.concatenate([omega, np.zeros(3 + len(names))])
     t = 0.0
     times, states, modes = [], [], [(0.0, mode)]
@@ -245,7 +233,7 @@ def integrate(dynamics: TrainDynamics, omega0, mode: Mode, t_end: float, *, step
             omega = y[:n]
             mode = settle(dynamics, t, omega, _with_signs(dynamics, t, omega, mode))  # a step in a profile
             if mode != modes[-1][1]:
-                y[:n] = project(dynamics, omega, mode.locked, mode.blocked)
+                y[:n] = project(dynamics, omega, mode.locked)
                 modes.append((t, mode))
             continue
         fired = [(sol.t_events[k][0], k) for k in range(len(event_list)) if sol.t_events[k].size]
@@ -258,32 +246,18 @@ def integrate(dynamics: TrainDynamics, omega0, mode: Mode, t_end: float, *, step
                      "the run is not complete")
             break
         kind, name = meaning[k]
-        locked, signs, blocked = set(mode.locked), dict(mode.signs), set(mode.blocked)
+        locked, signs = set(mode.locked), dict(mode.signs)
         if kind == "lock":
             locked.add(name)
-        elif kind == "release":
+        else:
             locked.discard(name)
             result = dynamics.evaluate(t, y[:n], mode)
             model = dynamics.elements[name]
             signs[name] = model.blocking if isinstance(model, Freewheel) \
                 else math.copysign(1.0, result.element_torques[name])
-        elif kind == "block":
-            signs.pop(name, None)
-            if dynamics.can_block(name, frozenset(locked), frozenset(blocked)):
-                blocked.add(name)
-        else:  # unblock: the set rolls the way of the loss direction whose ratio it reached
-            result = dynamics.evaluate(t, y[:n], mode)
-            lam, mu = result.blocked_torques[name]
-            (low, w_low), (high, w_high) = dynamics.ratio_bounds(name)
-            ratio = mu / lam if lam else 0.5 * (low + high)
-            w = w_low if abs(ratio - low) < abs(ratio - high) else w_high
-            blocked.discard(name)
-            signs[name] = w * math.copysign(1.0, lam if lam else 1.0)
-        omega = project(dynamics, y[:n], frozenset(locked), frozenset(blocked))
-        candidate = Mode(frozenset(locked), signs, frozenset(blocked))
-        mode = settle(dynamics, t, omega, candidate if kind in ("unblock", "block")
-                      else _with_signs(dynamics, t, omega, candidate))
-        y[:n] = project(dynamics, omega, mode.locked, mode.blocked)
+        omega = project(dynamics, y[:n], frozenset(locked))
+        mode = settle(dynamics, t, omega, _with_signs(dynamics, t, omega, Mode(frozenset(locked), signs)))
+        y[:n] = project(dynamics, omega, mode.locked)
         modes.append((t, mode))
         if t >= t_end:
             break
@@ -340,28 +314,9 @@ def _segment(dynamics: TrainDynamics, mode: Mode, names: tuple[str, ...], n: int
             if sign == 0.0:
                 continue
 
-            def lock(t, y, name=name, sign=sign):
-                return dynamics.slip(name, y[:n]) * sign
+            def lock(t, y, name=name, sign=sign):  # offset: a slip that starts at exactly 0 is seen reversing
+                return dynamics.slip(name, y[:n]) * sign + EVENT_SLIP
             lock.terminal, lock.direction = True, -1.0
             events.append(lock)
             meaning.append(("lock", name))
-    for k, lever in enumerate(dynamics.levers):
-        name = lever.element.name
-        if name in mode.blocked:
-            (low, _), (high, _) = dynamics.ratio_bounds(name)
-
-            def unblock(t, y, name=name, low=low, high=high):
-                lam, mu = evaluate(t, y).blocked_torques[name]
-                return (mu - low * lam) * (mu - high * lam) / (1.0 + lam * lam + mu * mu)
-            unblock.terminal, unblock.direction = True, 1.0
-            events.append(unblock)
-            meaning.append(("unblock", name))
-        elif lever.efficiency != 1.0 and mode.signs.get(name, 0.0) != 0.0:
-            row = dynamics.block_row(name)
-
-            def reverse(t, y, row=row, sign=mode.signs[name]):
-                return float(row @ y[:n]) * sign
-            reverse.terminal, reverse.direction = True, -1.0
-            events.append(reverse)
-            meaning.append(("block", name))
     return fun, events, meaning
