@@ -363,4 +363,5 @@ def _rest_output(dynamics: TrainDynamics, omega: np.ndarray, locked, transmissio
     if np.linalg.norm(a @ solution - b) > 1e-9 * (1.0 + abs(omega[i_in])):
         raise DynamicsError("launch: the gear without its launch element does not let the input turn while the "
                             "output stands still; choose another launch_element.")
+    solution[np.abs(solution) <= 1e-12 * np.max(np.abs(solution))] = 0.0  # round-off of shafts at rest
     return solution
