@@ -13,7 +13,8 @@ Loads (at the output shaft):
 * :class:`HeldSpeed`: a dynamometer that holds the output at its speed (the torque it takes is
   whatever the train delivers: a test bench at constant output speed);
 * :class:`VehicleLoad`: the vehicle of :class:`~epicyclic.transmission.Vehicle` on a grade: the
-  road load F = m g (c_r cos α + sin α) + ½ ρ c_d A v² at the wheel, and the vehicle's translating
+  road load F = m g (c_r cos α + sin α) + ½ ρ c_d A v² at the wheel (the rolling part building up over the
+  first :data:`ROLLING_ONSET` m/s from standstill, against the motion), and the vehicle's translating
   mass λ m r²/i_A² as inertia on the output; the axle efficiency acts on the road load only
   (stated).
 
@@ -35,7 +36,11 @@ import numpy as np
 
 from .errors import DynamicsError
 
-__all__ = ["Engine", "TorqueTrace", "OutputTorque", "HeldSpeed", "VehicleLoad", "Table"]
+#: Vehicle speed (m/s) over which the rolling resistance builds up from standstill (it opposes the motion and
+#: is no driving force at rest): 0.1 m/s, stated; the vehicle's own inertia keeps this far from stiff.
+ROLLING_ONSET = 0.1
+
+__all__ = ["ROLLING_ONSET", "Engine", "TorqueTrace", "OutputTorque", "HeldSpeed", "VehicleLoad", "Table"]
 
 RPM = math.pi / 30.0
 
@@ -201,10 +206,11 @@ class VehicleLoad:
     def torque(self, omega: float, t: float) -> float:
         """Road load at the output, N·m, at the output speed ω (rad/s); the vehicle stands still at ω ≤ 0."""
         v = self.vehicle
-        speed = max(omega, 0.0) * v.wheel_radius / v.axle_ratio
-        force = float(v.tractive_force(speed, 0.0, self.grade))
-        if omega <= 0.0:  # at standstill the rolling resistance is no driving force
-            force = max(force, 0.0) if omega == 0.0 else force
+        speed = omega * v.wheel_radius / v.axle_ratio
+        alpha = math.atan(self.grade)
+        weight = v.mass * 9.80665
+        rolling = weight * v.rolling_coefficient * math.cos(alpha) * max(-1.0, min(1.0, speed / ROLLING_ONSET))
+        force = rolling + weight * math.sin(alpha) + 0.5 * v.air_density * v.drag_area * speed * abs(speed)
         return float(v.output_torque(force))
 
     def vehicle_speed(self, omega):
