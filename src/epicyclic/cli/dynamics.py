@@ -16,7 +16,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from ._common import OutOption, SetOption, emit, guarded, say
+from ._common import OutOption, SetOption, emit, guarded
 
 __all__ = ["shift", "launch"]
 
@@ -72,7 +72,9 @@ def _emit(result, format: TraceFormat, out, plot) -> None:
         from ..plotting._common import check_suffix, save_figure
 
         check_suffix(plot, (".png", ".svg", ".pdf"), "--plot")
-        say(f"wrote {save_figure(result.plot(), plot).resolve()}")
+        from ..text import terminal_text
+
+        typer.echo(terminal_text(f"wrote {save_figure(result.plot(), plot).resolve()}"), err=True)  # stdout: the data
     if format is TraceFormat.json:
         text = result.to_json()
     elif format is TraceFormat.csv:
