@@ -211,7 +211,8 @@ class VehicleLoad:
         weight = v.mass * 9.80665
         rolling = weight * v.rolling_coefficient * math.cos(alpha) * max(-1.0, min(1.0, speed / ROLLING_ONSET))
         force = rolling + weight * math.sin(alpha) + 0.5 * v.air_density * v.drag_area * speed * abs(speed)
-        return float(v.output_torque(force))
+        wheel = force * v.wheel_radius  # Vehicle.output_torque, for one number
+        return wheel / (v.axle_ratio * v.axle_efficiency) if wheel > 0 else wheel * v.axle_efficiency / v.axle_ratio
 
     def vehicle_speed(self, omega):
         """v = ω r / i_A, m/s."""

@@ -154,7 +154,7 @@ def project(dynamics: TrainDynamics, omega: np.ndarray, locked: frozenset[str]) 
 
 
 def integrate(dynamics: TrainDynamics, omega0, mode: Mode, t_end: float, *, step: float = 1e-3,
-              rtol: float = 1e-9, atol: float = 1e-9, max_events: int = MAX_EVENTS,
+              rtol: float = 1e-8, atol: float = 1e-8, max_events: int = MAX_EVENTS,
               method: str = "DOP853", breakpoints=()) -> Run:
     """Integrate from t = 0 with speeds ``omega0`` (rad/s) in ``mode`` (settled first) to ``t_end``.
 
