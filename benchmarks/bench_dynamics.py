@@ -1,4 +1,4 @@
-"""Benchmark: shifts as they happen on the ZF 8HP 70 (examples/zf_8hp70_shift.toml).
+"""Benchmark: shifts as they happen on the ZF 8HP 70 (examples/dynamics/zf_8hp70_shift.toml).
 
 Run:  .venv/bin/python benchmarks/bench_dynamics.py [shifts] [naive_step_s]
 
@@ -37,7 +37,7 @@ from epicyclic.io import loads_train_file  # noqa: E402
 from epicyclic.io.dynamics_format import dynamics_spec  # noqa: E402
 from epicyclic.transmission import Transmission  # noqa: E402
 
-EXAMPLE = ROOT / "examples" / "zf_8hp70_shift.toml"
+EXAMPLE = ROOT / "examples" / "dynamics" / "zf_8hp70_shift.toml"
 
 
 def naive(dynamics, omega0, locked, t_end, dt):

@@ -6,7 +6,7 @@ from typer.testing import CliRunner
 
 from epicyclic.cli.main import app
 
-EXAMPLE = "examples/zf_8hp70_shift.toml"
+EXAMPLE = "examples/dynamics/zf_8hp70_shift.toml"
 
 
 def test_shift_table_json_csv_and_picture(tmp_path):

@@ -128,7 +128,20 @@ class Engine:
             object.__setattr__(self, key, float(value))
 
     def torque(self, omega: float, t: float) -> float:
-        """T(n) = θ T_full(n) + (1 − θ) T_motoring(n), N·m, at ω (rad/s)."""
+        """T(n) = θ T_full(n) + (1 − θ) T_motoring(n), N·m, at ω (rad/s).
+
+        Parameters
+        ----------
+        omega : float
+            Speed of the shaft it acts on, rad/s.
+        t : float
+            Time, s.
+
+        Returns
+        -------
+        float
+            N·m.
+        """
         n = omega / RPM
         return self.throttle * self._full(n) + (1.0 - self.throttle) * self._motoring(n)
 
@@ -138,37 +151,50 @@ class Engine:
 
 
 @dataclass(frozen=True)
-class TorqueTrace:
-    """The input torque over time (s → N·m), a test bench's drive motor; ``inertia`` kg·m² on the input."""
+class _TorqueOverTime:
+    """A torque over time from a table (s → N·m) and an inertia (kg·m²) on its shaft."""
 
     rows: Any
     inertia: float = 0.0
+    _what = "torque over time"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "rows", Table(self.rows, "input torque trace").rows)
-        object.__setattr__(self, "_table", Table(self.rows, "input torque trace"))
+        table = Table(self.rows, self._what)
+        object.__setattr__(self, "rows", table.rows)
+        object.__setattr__(self, "_table", table)
         if isinstance(self.inertia, bool) or not isinstance(self.inertia, (int, float)) or not self.inertia >= 0:
-            raise DynamicsError(f"input torque trace: inertia must be ≥ 0 kg m^2, got {self.inertia!r:.40}.")
+            raise DynamicsError(f"{self._what}: inertia must be ≥ 0 kg m^2, got {self.inertia!r:.40}.")
 
     def torque(self, omega: float, t: float) -> float:
+        """The table's torque at time t, N·m (ω unused).
+
+        Parameters
+        ----------
+        omega : float
+            Speed of the shaft it acts on, rad/s.
+        t : float
+            Time, s.
+
+        Returns
+        -------
+        float
+            N·m.
+        """
         return self._table(t)
 
 
 @dataclass(frozen=True)
-class OutputTorque:
-    """A torque against the output over time (s → N·m, positive: it brakes the output)."""
+class TorqueTrace(_TorqueOverTime):
+    """The input torque over time (s → N·m), a test bench's drive motor; ``inertia`` kg·m² on the input."""
 
-    rows: Any
-    inertia: float = 0.0
+    _what = "input torque trace"
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "rows", Table(self.rows, "output torque").rows)
-        object.__setattr__(self, "_table", Table(self.rows, "output torque"))
-        if isinstance(self.inertia, bool) or not isinstance(self.inertia, (int, float)) or not self.inertia >= 0:
-            raise DynamicsError(f"output torque: inertia must be ≥ 0 kg m^2, got {self.inertia!r:.40}.")
 
-    def torque(self, omega: float, t: float) -> float:
-        return self._table(t)
+@dataclass(frozen=True)
+class OutputTorque(_TorqueOverTime):
+    """A torque against the output over time (s → N·m, positive: it brakes the output); ``inertia`` on it."""
+
+    _what = "output torque"
 
 
 @dataclass(frozen=True)
@@ -204,7 +230,20 @@ class VehicleLoad:
                            v.rotating_mass_factor * v.mass * v.wheel_radius ** 2 / v.axle_ratio ** 2)
 
     def torque(self, omega: float, t: float) -> float:
-        """Road load at the output, N·m, at the output speed ω (rad/s); the vehicle stands still at ω ≤ 0."""
+        """Road load at the output, N·m, at the output speed ω (rad/s), against the motion.
+
+        Parameters
+        ----------
+        omega : float
+            Speed of the shaft it acts on, rad/s.
+        t : float
+            Time, s.
+
+        Returns
+        -------
+        float
+            N·m.
+        """
         v = self.vehicle
         speed = omega * v.wheel_radius / v.axle_ratio
         alpha = math.atan(self.grade)

@@ -279,17 +279,52 @@ class TrainDynamics:
 
     # ------------------------------------------------------------------ evaluation
     def pressure(self, name: str, t: float) -> float:
+        """The pressure of element ``name`` at time t, Pa (0 without a profile).
+
+        Parameters
+        ----------
+        name : str
+        t : float
+            s.
+
+        Returns
+        -------
+        float
+        """
         profile = self.pressures.get(name)
         return profile(t) if profile is not None else 0.0
 
     def static_capacity(self, name: str, t: float) -> float:
-        """The torque a wet element holds while sticking at time t (infinite for a freewheel), N·m."""
+        """The torque a wet element holds while sticking at time t (infinite for a freewheel), N·m.
+
+        Parameters
+        ----------
+        name : str
+        t : float
+            s.
+
+        Returns
+        -------
+        float
+        """
         model = self.elements.get(name)
         if isinstance(model, WetElement):
             return model.static_capacity(self.pressure(name, t))
         return math.inf if isinstance(model, Freewheel) else 0.0
 
     def slip(self, name: str, omega: np.ndarray) -> float:
+        """ω_first − ω_second of element ``name``, rad/s.
+
+        Parameters
+        ----------
+        name : str
+        omega : ndarray
+            rad/s per moving shaft.
+
+        Returns
+        -------
+        float
+        """
         first, second = self.element_columns[name]
         return omega[first] - (omega[second] if second >= 0 else 0.0)
 

@@ -163,7 +163,14 @@ class FrictionCapacity:
         return max(0.0, pressure * self.piston_area - self.return_spring)
 
     def capacity(self, pressure: float, slip: float) -> float:
-        """T_cap = μ(slip) z r_m F_n, N·m (pressure in Pa, slip in rad/s).
+        """T_cap = μ(slip) z r_m F_n, N·m.
+
+        Parameters
+        ----------
+        pressure : float
+            Pa.
+        slip : float
+            rad/s.
 
         References
         ----------
@@ -204,7 +211,19 @@ class WetElement:
             raise DynamicsError(f"element {self.name!r}: drag must be a function of the slip speed (rad/s).")
 
     def torque(self, pressure: float, slip: float) -> float:
-        """Magnitude of the torque the element carries while slipping at ``slip`` (rad/s), N·m."""
+        """Magnitude of the torque the element carries while slipping, N·m: friction, or drag while open.
+
+        Parameters
+        ----------
+        pressure : float
+            Pa.
+        slip : float
+            rad/s.
+
+        Returns
+        -------
+        float
+        """
         force = self.capacity.normal_force(pressure)
         if force > 0.0:
             return self.capacity.capacity(pressure, slip)
@@ -217,6 +236,18 @@ class WetElement:
     @staticmethod
     def drag_function(model, viscosity: float, density: float):
         """Slip (rad/s) → drag (N·m) of a :class:`~epicyclic.losses.ClutchDrag` at η (mPa·s) and ρ (kg/m³).
+
+        Parameters
+        ----------
+        model : ClutchDrag
+        viscosity : float
+            mPa·s.
+        density : float
+            kg/m³.
+
+        Returns
+        -------
+        callable
 
         References
         ----------

@@ -70,7 +70,19 @@ class PressureProfile:
 
     @classmethod
     def constant(cls, pressure: float, name: str = "") -> PressureProfile:
-        """p(t) = ``pressure`` (Pa)."""
+        """p(t) = ``pressure`` (Pa).
+
+        Parameters
+        ----------
+        pressure : float
+            Pa.
+        name : str, default ""
+            The element it feeds.
+
+        Returns
+        -------
+        PressureProfile
+        """
         return cls(((0.0, pressure),), name)
 
     @classmethod
@@ -79,6 +91,21 @@ class PressureProfile:
         """From ``start`` (Pa) at ``t0``, each segment (duration s, end pressure Pa) a linear ramp.
 
         A segment of duration 0 is a step; one with its end equal to the level before is a hold.
+
+        Parameters
+        ----------
+        start : float
+            Pa at ``t0``.
+        segments : sequence of (float, float)
+            (duration s, end pressure Pa) of each ramp.
+        t0 : float, default 0
+            s.
+        name : str, default ""
+            The element it feeds.
+
+        Returns
+        -------
+        PressureProfile
 
         Examples
         --------

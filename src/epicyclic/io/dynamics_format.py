@@ -7,7 +7,7 @@ pressures in bar, as a transmission's data sheets give them.  Defaults are state
 
 Examples
 --------
->>> text = open("examples/zf_8hp70_shift.toml").read()
+>>> text = open("examples/dynamics/zf_8hp70_shift.toml").read()
 >>> from epicyclic.io import loads_train_file
 >>> from epicyclic.transmission import Transmission
 >>> t = Transmission.from_train_file(loads_train_file(text))
