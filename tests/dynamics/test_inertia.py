@@ -56,3 +56,18 @@ def test_unknown_shaft_or_set_is_named():
         Inertias({"y": 1.0}).matrix(train)
     with pytest.raises(DynamicsError, match="no such planetary set"):
         Inertias({}, (PlanetInertia("Q", 3, 0.001),)).matrix(train)
+
+
+def test_blanks_from_the_file():
+    from epicyclic.io import loads_train_file
+    from epicyclic.io.dynamics_format import dynamics_spec
+    from epicyclic.transmission import Transmission
+
+    path = "examples/dynamics/zf_8hp70_shift.toml"
+    text = open(path, encoding="utf-8").read().replace(
+        "s12 = 0.012", "s12 = [{diameter = 0.1, face_width = 0.02}, {diameter = 0.2, face_width = 0.03, "
+                       "rim_diameter = 0.15, web_width = 0.01, bore = 0.04}]")
+    t = Transmission.from_train_file(loads_train_file(text, path))
+    spec = dynamics_spec(text, path, t)
+    expected = solid_blank_inertia(0.1, 0.02) + rimmed_blank_inertia(0.2, 0.03, 0.15, 0.01, bore=0.04)
+    assert spec.inertias.shafts["s12"] == pytest.approx(expected, rel=1e-15)

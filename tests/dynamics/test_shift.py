@@ -153,3 +153,19 @@ def test_a_slower_torque_phase_never_raises_the_peak_clutch_power(hp8, fast, slo
         assert result.completed
         peaks.append(max(e.peak_power for e in result.elements.values()))
     assert peaks[1] <= peaks[0] * (1 + 1e-9)
+
+
+def test_a_tie_up_is_warned(hp8):
+    # the on-coming element at line pressure at once while the off-going one still holds at line pressure
+    spec = _spec(hp8, pressures={"C": PressureProfile(((0.0, 0.0), (0.1, 0.0), (0.11, 15e5)), "C"),
+                                 "A": PressureProfile(((0.0, 15e5), (0.3, 15e5), (0.31, 0.0)), "A")})
+    result = simulate_shift(hp8, spec, "2", "3")
+    assert any(w.startswith("tie-up") and "'A'" in w for w in result.warnings), result.warnings
+    assert result.balance.relative_residual < 1e-6
+
+
+def test_a_common_element_beyond_its_capacity_is_warned(hp8):
+    spec = _spec(hp8, pressures={"B": PressureProfile(((0.0, 15e5), (0.2, 15e5), (0.25, 1.6e5)), "B")})
+    result = simulate_shift(hp8, spec, "2", "3")
+    assert any(w.startswith("capacity exceeded: 'B'") for w in result.warnings), result.warnings
+    assert result.balance.relative_residual < 1e-6

@@ -112,7 +112,7 @@ def dynamics_spec(text: str, source: str, transmission, overrides: Sequence[str]
             if shaft not in moving:
                 raise r.error(f"[dynamics.inertia], key {shaft!r}", f"no such moving shaft; shafts are "
                                                                    f"{', '.join(moving)}.")
-        shafts = {s: r.num(given, s, "[dynamics.inertia]", default_inertia, 0.0, 1e3) for s in moving}
+        shafts = {s: _inertia(r, given, s, default_inertia) for s in moving}
         missing = [s for s in moving if s not in given]
         if missing:
             assumed.append(f"shaft inertia {default_inertia:g} kg m^2 for {', '.join(missing)} ([dynamics] "
@@ -163,6 +163,33 @@ def dynamics_spec(text: str, source: str, transmission, overrides: Sequence[str]
     except EpicyclicError:
         raise
     return spec
+
+
+_BLANK_KEYS = {"diameter", "face_width", "bore", "density", "rim_diameter", "web_width"}
+
+
+def _inertia(r, given, shaft: str, default: float) -> float:
+    """kg·m² of a shaft: a number, or a list of gear blanks on it (solid, or rimmed with rim_diameter and web_width)."""
+    from ..dynamics import rimmed_blank_inertia, solid_blank_inertia
+    from ..dynamics.inertia import STEEL_DENSITY
+
+    where = "[dynamics.inertia]"
+    value = given.get(shaft, default)
+    if not isinstance(value, list):
+        return r.num(given, shaft, where, default, 0.0, 1e3)
+    total = 0.0
+    for k, blank in enumerate(value):
+        w = f"{where}, key {shaft!r}, blank #{k + 1}"
+        blank = r.table(blank, w)
+        r.check_keys(blank, _BLANK_KEYS, w)
+        d, b = r.num(blank, "diameter", w), r.num(blank, "face_width", w)
+        bore, rho = r.num(blank, "bore", w, 0.0), r.num(blank, "density", w, STEEL_DENSITY)
+        if "rim_diameter" in blank or "web_width" in blank:
+            total += rimmed_blank_inertia(d, b, r.num(blank, "rim_diameter", w), r.num(blank, "web_width", w),
+                                          bore=bore, density=rho)
+        else:
+            total += solid_blank_inertia(d, b, bore=bore, density=rho)
+    return total
 
 
 def _elements(r, data, transmission, FrictionCapacity, WetElement, Freewheel, PressureProfile, assumed):
