@@ -47,6 +47,8 @@ def shift_bench_figure(result: Any, *, figsize: tuple[float, float] = (9.0, 9.0)
     t = tr.time
     fig, axes = plt.subplots(4, 1, sharex=True, figsize=figsize, constrained_layout=True)
     speeds, torques, pressures, powers = axes
+    cycle = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colour = {name: cycle[(k + 2) % len(cycle)] for k, name in enumerate(tr.elements)}  # the same in every panel
     bold = {input_shaft or result.__dict__.get("input_shaft", ""), output_shaft or ""}
     for shaft, values in tr.speeds.items():
         wide = shaft in bold or shaft in ("in", "out")
@@ -54,20 +56,20 @@ def shift_bench_figure(result: Any, *, figsize: tuple[float, float] = (9.0, 9.0)
     speeds.set_ylabel("speed [1/min]")
     speeds.legend(ncol=4, fontsize=7, loc="best")
     torques.plot(t, tr.input_torque, lw=2.0, color="black", label="input")
-    torques.plot(t, tr.output_torque, lw=2.0, color="tab:red", label="output")
+    torques.plot(t, tr.output_torque, lw=2.0, color="0.45", label="output")
     for name, e in tr.elements.items():
         if np.any(np.abs(e.torque) > 1e-9):
-            torques.plot(t, e.torque, lw=1.0, label=name)
+            torques.plot(t, e.torque, lw=1.0, label=name, color=colour[name])
     torques.set_ylabel("torque [N·m]")
     torques.legend(ncol=4, fontsize=7, loc="best")
     for name, e in tr.elements.items():
         if np.any(e.pressure > 0):
-            pressures.plot(t, e.pressure / 1e5, lw=1.2, label=name)
+            pressures.plot(t, e.pressure / 1e5, lw=1.2, label=name, color=colour[name])
     pressures.set_ylabel("pressure [bar]")
     pressures.legend(ncol=5, fontsize=7, loc="best")
     for name, e in tr.elements.items():
         if np.any(e.power > 1e-6):
-            powers.plot(t, e.power / 1e3, lw=1.2, label=name)
+            powers.plot(t, e.power / 1e3, lw=1.2, label=name, color=colour[name])
     powers.set_ylabel("slip power [kW]")
     powers.set_xlabel("time [s]")
     if powers.get_legend_handles_labels()[0]:
