@@ -127,6 +127,7 @@ def dynamics_spec(text: str, source: str, transmission, overrides: Sequence[str]
                                          r.num(p, "orbit_radius", w, 0.0),
                                          r.num(p, "spin_ratio", w) if "spin_ratio" in p else None))
         inertias = Inertias(shafts, tuple(planets))
+        assumed.extend(_ignored(transmission))
         elements, pressures = _elements(r, data, transmission, FrictionCapacity, WetElement, Freewheel,
                                         PressureProfile, assumed)
         drive = _engine(r, data, Engine, assumed)
@@ -163,6 +164,21 @@ def dynamics_spec(text: str, source: str, transmission, overrides: Sequence[str]
     except EpicyclicError:
         raise
     return spec
+
+
+def _ignored(transmission) -> list[str]:
+    """The file's loss models the transient does not use, each said (it uses η0 per set and the clutch drag)."""
+    out = []
+    if getattr(transmission, "losses", None):
+        out.append("ignored in the transient: the loss models of " + ", ".join(sorted(transmission.losses))
+                   + " (each set or stage transmits with its stationary efficiency η0 by the direction of power flow)")
+    spin = getattr(transmission, "spin", None)
+    if spin is not None:
+        parts = [name for name, present in (("oil pump", spin.pump), ("churning", spin.churning),
+                                            ("windage", spin.windage), ("seals", spin.seals)) if present]
+        if parts:
+            out.append("ignored in the transient: " + ", ".join(parts) + " (only the open elements' drag acts)")
+    return out
 
 
 _BLANK_KEYS = {"diameter", "face_width", "bore", "density", "rim_diameter", "web_width"}
