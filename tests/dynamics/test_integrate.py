@@ -113,3 +113,15 @@ def test_a_shaft_without_inertia_is_named():
     with pytest.raises(DynamicsError, match="'b'"):
         TrainDynamics(GearTrain([Clutch("C", "a", "b")]), "a", "b", Inertias({"a": 1.0}), {}, {},
                       TorqueTrace(((0, 1.0),)), OutputTorque(((0, 0.0),)))
+
+
+def test_a_run_that_exhausts_its_bounds_ends_and_says_so(monkeypatch):
+    import sys
+
+    d = _clutch(0.2, 0.5, 50.0, 20.0, 150.0)
+    run = integrate(d, np.array([300.0, 100.0]), Mode(frozenset()), 1.0, max_events=0)
+    assert run.ended.startswith("stopped after 0 stick/slip changes") and run.times[-1] < 1.0
+    module = sys.modules["epicyclic.dynamics.integrate"]
+    monkeypatch.setattr(module, "MAX_EVALUATIONS", 50)
+    run = integrate(d, np.array([300.0, 100.0]), Mode(frozenset()), 1.0)
+    assert run.ended.startswith("stopped after 50 evaluations")

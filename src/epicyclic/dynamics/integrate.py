@@ -41,13 +41,16 @@ from .equations import Mode, TrainDynamics
 from .errors import DynamicsError
 from .friction import Freewheel, WetElement
 
-__all__ = ["Run", "integrate", "project", "settle", "MAX_EVENTS", "MAX_DURATION"]
+__all__ = ["Run", "integrate", "project", "settle", "MAX_EVENTS", "MAX_EVALUATIONS", "MAX_DURATION"]
 
 #: Most mode changes in one run (a chattering run ends there, stated).
 MAX_EVENTS = 2000
 #: The slip (rad/s) past synchronism at which a lock-up event fires: round-off of a slip that starts at
 #: exactly zero and runs the wrong way is still seen (the speeds are then projected onto exact lock-up).
 EVENT_SLIP = 1e-9
+#: Most right-hand-side evaluations in one run (a run that would need more, e.g. a stiff or chattering model,
+#: ends there and says so: never a hang).
+MAX_EVALUATIONS = 500_000
 #: Longest simulated time, s.
 MAX_DURATION = 600.0
 
@@ -205,16 +208,22 @@ def integrate(dynamics: TrainDynamics, omega0, mode: Mode, t_end: float, *, step
     times, states, modes = [], [], [(0.0, mode)]
     events = 0
     ended = "time"
+    counter = [0]
     stops = sorted({float(b) for b in breakpoints if 0.0 < b < t_end} | {t_end})
     while True:
-        fun, event_list, meaning = _segment(dynamics, mode, names, n)
+        fun, event_list, meaning = _segment(dynamics, mode, names, n, counter)
         t_stop = next(b for b in stops if b > t)
         window = grid[(grid > t) & (grid <= t_stop)] if times else grid[grid <= t_stop]
         extra = not window.size or window[-1] != t_stop
         if extra:
             window = np.append(window, t_stop)
-        sol = solve_ivp(fun, (t, t_stop), y, method=method, t_eval=window, events=event_list, rtol=rtol,
-                        atol=atol)
+        try:
+            sol = solve_ivp(fun, (t, t_stop), y, method=method, t_eval=window, events=event_list, rtol=rtol,
+                            atol=atol)
+        except _Exhausted:
+            ended = (f"stopped after {MAX_EVALUATIONS} evaluations of the equations near t = {t:.6g} s (the "
+                     "motion needs ever smaller steps there); the run is not complete")
+            break
         if sol.status < 0:
             ended = f"the integrator stopped at t = {t:.6g} s: {sol.message}"
             break
@@ -269,7 +278,11 @@ def integrate(dynamics: TrainDynamics, omega0, mode: Mode, t_end: float, *, step
     return Run(all_t, all_y, tuple(modes), names, ended, events)
 
 
-def _segment(dynamics: TrainDynamics, mode: Mode, names: tuple[str, ...], n: int):
+class _Exhausted(Exception):
+    """The run used up :data:`MAX_EVALUATIONS`."""
+
+
+def _segment(dynamics: TrainDynamics, mode: Mode, names: tuple[str, ...], n: int, counter: list):
     """The right-hand side and the terminal events of one mode."""
     column = {name: k for k, name in enumerate(names)}
     last: dict = {}
@@ -282,6 +295,9 @@ def _segment(dynamics: TrainDynamics, mode: Mode, names: tuple[str, ...], n: int
         return last["value"]
 
     def fun(t, y):
+        counter[0] += 1
+        if counter[0] > MAX_EVALUATIONS:
+            raise _Exhausted
         r = evaluate(t, y)
         dy = np.empty(n + 3 + len(names))
         dy[:n] = r.accelerations
