@@ -231,10 +231,15 @@ class ShiftResult:
         def s(v):
             return "—" if v is None else f"{v:.4g} s"
         b = self.balance
-        title = f"{self.from_gear} → {self.to_gear}" if self.kind == "shift" else f"launch in {self.to_gear}"
-        return [("shift", title), ("status", self.status), ("simulated", f"{self.duration:g} s (bound)"),
-                ("shift time", s(self.shift_time)), ("torque phase", s(self.torque_phase)),
-                ("inertia phase", s(self.inertia_phase)), ("stick/slip changes", str(self.events)),
+        if self.kind == "shift":
+            rows = [("shift", f"{self.from_gear} → {self.to_gear}"), ("status", self.status),
+                    ("simulated", f"{self.duration:g} s (bound)"), ("shift time", s(self.shift_time)),
+                    ("torque phase", s(self.torque_phase)), ("inertia phase", s(self.inertia_phase))]
+        else:  # a launch: from the command to the lock-up, and the launch element's slip phase
+            rows = [("launch", f"in gear {self.to_gear}"), ("status", self.status),
+                    ("simulated", f"{self.duration:g} s (bound)"), ("launch time", s(self.shift_time)),
+                    ("slip phase", s(self.inertia_phase))]
+        return rows + [("stick/slip changes", str(self.events)),
                 ("energy in", f"{b.input:.6g} J"),
                 ("energy balance residual", f"{b.residual:.3g} J ({b.relative_residual:.2g} of {b.scale:.6g} J)")]
 
