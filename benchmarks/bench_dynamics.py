@@ -19,30 +19,29 @@ import os
 for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")
 
-import math  # noqa: E402
-import platform  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
+import math
+import platform
+import sys
+import time
+from pathlib import Path
 
-import numpy as np  # noqa: E402
+import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from epicyclic.dynamics import Mode  # noqa: E402
-from epicyclic.dynamics.integrate import project, settle  # noqa: E402
-from epicyclic.dynamics.shift import simulate_shift  # noqa: E402
-from epicyclic.io import loads_train_file  # noqa: E402
-from epicyclic.io.dynamics_format import dynamics_spec  # noqa: E402
-from epicyclic.transmission import Transmission  # noqa: E402
+from epicyclic.dynamics import Mode
+from epicyclic.dynamics.integrate import project, settle
+from epicyclic.dynamics.shift import simulate_shift
+from epicyclic.io import loads_train_file
+from epicyclic.io.dynamics_format import dynamics_spec
+from epicyclic.transmission import Transmission
 
 EXAMPLE = ROOT / "examples" / "dynamics" / "zf_8hp70_shift.toml"
 
 
 def naive(dynamics, omega0, locked, t_end, dt):
     """Fixed-step RK4 with stick–slip decided per step; returns (lock-up times, energy residual / energy in)."""
-    n = len(dynamics.shafts)
     mode = settle(dynamics, 0.0, omega0, Mode(frozenset(locked), {}))
     omega = project(dynamics, omega0, mode.locked)
     ke0 = dynamics.kinetic_energy(omega)
@@ -114,8 +113,8 @@ def main() -> None:
           f"{completed} completed, "
           f"worst energy residual {worst:.1e}")
     # the naive baseline: the same dynamics and pressures, a fixed-step loop
-    from epicyclic.dynamics.shift import _dynamics, shift_elements  # noqa: F401  (the run's own set-up)
     import epicyclic.dynamics.shift as shift_module
+    from epicyclic.dynamics.shift import _dynamics, shift_elements  # noqa: F401  (the run's own set-up)
 
     captured = {}
     original = shift_module.integrate

@@ -9,8 +9,17 @@ import numpy as np
 import pytest
 
 from epicyclic import Clutch, GearTrain
-from epicyclic.dynamics import (FrictionCapacity, Inertias, Mode, OutputTorque, PressureProfile, TorqueTrace,
-                                TrainDynamics, WetElement, integrate)
+from epicyclic.dynamics import (
+    FrictionCapacity,
+    Inertias,
+    Mode,
+    OutputTorque,
+    PressureProfile,
+    TorqueTrace,
+    TrainDynamics,
+    WetElement,
+    integrate,
+)
 from epicyclic.losses import ClutchDrag
 
 CAPACITY = ("[{kind}.capacity]\npiston_area = 0.012\nfaces = 8\nmean_radius = 0.08\nfriction = 0.12\n"

@@ -5,7 +5,12 @@ import math
 
 import pytest
 
-from epicyclic.dynamics import DynamicsError, FrictionCapacity, PressureProfile, WetElement
+from epicyclic.dynamics import (
+    DynamicsError,
+    FrictionCapacity,
+    PressureProfile,
+    WetElement,
+)
 
 
 def test_capacity_closed_form_and_inverse():

@@ -11,7 +11,13 @@ import numpy as np
 import pytest
 
 from epicyclic import Brake, GearTrain, PlanetarySet
-from epicyclic.dynamics import DynamicsError, Inertias, PlanetInertia, rimmed_blank_inertia, solid_blank_inertia
+from epicyclic.dynamics import (
+    DynamicsError,
+    Inertias,
+    PlanetInertia,
+    rimmed_blank_inertia,
+    solid_blank_inertia,
+)
 
 
 def test_solid_blank_is_a_tube():

@@ -12,14 +12,25 @@
   at exactly t = J (ω_b − ω_a0)/T and then carries T.
 """
 
-import math
 
 import numpy as np
 import pytest
 
 from epicyclic import Brake, Clutch, GearTrain
-from epicyclic.dynamics import (DynamicsError, Freewheel, FrictionCapacity, HeldSpeed, Inertias, Mode, OutputTorque,
-                                PressureProfile, TorqueTrace, TrainDynamics, WetElement, integrate)
+from epicyclic.dynamics import (
+    DynamicsError,
+    Freewheel,
+    FrictionCapacity,
+    HeldSpeed,
+    Inertias,
+    Mode,
+    OutputTorque,
+    PressureProfile,
+    TorqueTrace,
+    TrainDynamics,
+    WetElement,
+    integrate,
+)
 
 
 def _balance(d, run):

@@ -7,11 +7,21 @@ element's friction energy and the mesh loss are ≥ 0 (up to that tolerance).
 """
 
 import numpy as np
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from epicyclic import Brake, Clutch, GearTrain, PlanetarySet
-from epicyclic.dynamics import (FrictionCapacity, Inertias, Mode, OutputTorque, PressureProfile, TorqueTrace,
-                                TrainDynamics, WetElement, integrate)
+from epicyclic.dynamics import (
+    FrictionCapacity,
+    Inertias,
+    Mode,
+    OutputTorque,
+    PressureProfile,
+    TorqueTrace,
+    TrainDynamics,
+    WetElement,
+    integrate,
+)
 
 profile = st.lists(st.tuples(st.floats(0.0, 0.5), st.floats(0.0, 20e5)), min_size=1, max_size=4)
 

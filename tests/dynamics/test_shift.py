@@ -9,14 +9,28 @@ energy balance.
 
 import math
 
-import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from epicyclic import OperatingPoint
-from epicyclic.dynamics import (DynamicsError, Engine, FrictionCapacity, HeldSpeed, Inertias, PressureProfile,
-                                TorqueTrace, VehicleLoad, WetElement)
-from epicyclic.dynamics.shift import DynamicsSpec, ShiftController, simulate_launch, simulate_shift
+from epicyclic.dynamics import (
+    DynamicsError,
+    Engine,
+    FrictionCapacity,
+    HeldSpeed,
+    Inertias,
+    PressureProfile,
+    TorqueTrace,
+    VehicleLoad,
+    WetElement,
+)
+from epicyclic.dynamics.shift import (
+    DynamicsSpec,
+    ShiftController,
+    simulate_launch,
+    simulate_shift,
+)
 from epicyclic.transmission import Transmission, Vehicle
 
 EXAMPLE = "examples/zf_8hp70_8speed.toml"

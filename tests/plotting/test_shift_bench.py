@@ -4,14 +4,14 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import pytest  # noqa: E402
+import pytest
 
-from epicyclic.dynamics import PressureProfile  # noqa: E402
-from epicyclic.dynamics.shift import simulate_shift  # noqa: E402
-from epicyclic.io import load_train_file  # noqa: E402
-from epicyclic.io.dynamics_format import dynamics_spec  # noqa: E402
-from epicyclic.plotting.shift_bench import shift_bench_figure  # noqa: E402
-from epicyclic.transmission import Transmission  # noqa: E402
+from epicyclic.dynamics import PressureProfile
+from epicyclic.dynamics.shift import simulate_shift
+from epicyclic.io import load_train_file
+from epicyclic.io.dynamics_format import dynamics_spec
+from epicyclic.plotting.shift_bench import shift_bench_figure
+from epicyclic.transmission import Transmission
 
 PATH = "examples/dynamics/zf_8hp70_shift.toml"
 

@@ -40,13 +40,14 @@ PlotOption = Annotated[Optional[Path], typer.Option(
 
 def _throttle(text: str | None) -> float | None:
     from ..dynamics import DynamicsError
+    from ..errors import EpicyclicError
     from ..io.ranges import parse_tolerance
 
     if text is None:
         return None
     try:
         value = parse_tolerance(text) if text.strip().endswith("%") else float(text)
-    except (ValueError, Exception):
+    except (ValueError, EpicyclicError):
         raise DynamicsError(f"--throttle: expected 0 ... 100% or 0 ... 1, got {text!r:.40}.") from None
     if not 0.0 <= value <= 1.0:
         raise DynamicsError(f"--throttle: expected 0 ... 100% or 0 ... 1, got {text!r:.40}.")

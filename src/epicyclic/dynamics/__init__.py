@@ -9,7 +9,7 @@ and the shift's figures (:mod:`.results`, :mod:`.shift`).
 from .drive import Engine, HeldSpeed, OutputTorque, TorqueTrace, VehicleLoad
 from .equations import Mode, TrainDynamics
 from .errors import DynamicsError
-from .friction import FrictionCapacity, Freewheel, WetElement
+from .friction import Freewheel, FrictionCapacity, WetElement
 from .inertia import Inertias, PlanetInertia, rimmed_blank_inertia, solid_blank_inertia
 from .integrate import Run, integrate, settle
 from .pressure import PressureProfile

@@ -42,7 +42,7 @@ from typing import Any
 import numpy as np
 import scipy.linalg
 
-from ..model.elements import HOUSING, Brake
+from ..model.elements import Brake
 from ..model.train import GearTrain
 from ..solver.assembly import matrices
 from .drive import HeldSpeed
@@ -151,7 +151,6 @@ class TrainDynamics:
         self._set("levers", mats.levers)
         self._set("index", index)
         self._set("gear_rows", np.array(mats.kinematics, dtype=float).reshape(len(mats.levers), len(moving)))
-        self._set("lever_index", {lever.element.name: k for k, lever in enumerate(mats.levers)})
         self._set("lever_columns", [tuple(index.get(s, -1) for s in lever.shafts) for lever in mats.levers])
         self._set("element_columns", {name: (index[e.first], index.get(e.second, -1)) if not isinstance(e, Brake)
                                       else (index[e.shaft], -1) for name, e in shift.items()})

@@ -30,7 +30,7 @@ import numpy as np
 from .equations import Mode, TrainDynamics
 from .friction import WetElement
 from .integrate import Run
-from .results import ElementFigures, EnergyBalance, ShiftResult, Traces, ElementTrace
+from .results import ElementFigures, ElementTrace, EnergyBalance, ShiftResult, Traces
 
 __all__ = ["collect", "FLARE_TOLERANCE"]
 

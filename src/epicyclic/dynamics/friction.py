@@ -33,8 +33,6 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
 from .errors import DynamicsError
 
 __all__ = ["FrictionCapacity", "WetElement", "Freewheel"]

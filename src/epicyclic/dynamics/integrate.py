@@ -34,7 +34,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
 from scipy.integrate import solve_ivp
 
 from .equations import Mode, TrainDynamics

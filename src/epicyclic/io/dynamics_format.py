@@ -18,8 +18,7 @@ Examples
 
 from __future__ import annotations
 
-import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 from ..errors import EpicyclicError
@@ -85,8 +84,19 @@ def dynamics_spec(text: str, source: str, transmission, overrides: Sequence[str]
     InputFileError
         A missing ``[dynamics]`` table, an unknown or bad key (the message names table and key).
     """
-    from ..dynamics import (DynamicsError, Engine, Freewheel, FrictionCapacity, HeldSpeed, Inertias, OutputTorque,
-                            PlanetInertia, PressureProfile, VehicleLoad, WetElement)
+    from ..dynamics import (
+        DynamicsError,
+        Engine,
+        Freewheel,
+        FrictionCapacity,
+        HeldSpeed,
+        Inertias,
+        OutputTorque,
+        PlanetInertia,
+        PressureProfile,
+        VehicleLoad,
+        WetElement,
+    )
     from ..dynamics.shift import DEFAULT_LINE_PRESSURE, DynamicsSpec, ShiftController
     from ..transmission import Vehicle
 
