@@ -183,3 +183,19 @@ def test_a_common_element_beyond_its_capacity_is_warned(hp8):
     result = simulate_shift(hp8, spec, "2", "3")
     assert any(w.startswith("capacity exceeded: 'B'") for w in result.warnings), result.warnings
     assert result.balance.relative_residual < 1e-6
+
+
+@pytest.mark.parametrize("old, new", [("1", "2"), ("3", "4"), ("4", "5"), ("5", "6"), ("6", "7"), ("7", "8"),
+                                      ("4", "3")])
+def test_every_single_swap_shift_of_the_example_completes_and_balances(old, new):
+    from epicyclic.io import load_train_file
+    from epicyclic.io.dynamics_format import dynamics_spec
+
+    path = "examples/dynamics/zf_8hp70_shift.toml"
+    t = Transmission.from_train_file(load_train_file(path))
+    result = simulate_shift(t, dynamics_spec(open(path, encoding="utf-8").read(), path, t), old, new)
+    assert result.completed, result.status
+    assert result.balance.relative_residual < 1e-6
+    assert not [w for w in result.warnings if w.startswith(("tie-up", "capacity"))], result.warnings
+    final = result.traces.speeds["in"][-1] / result.traces.speeds["out"][-1]
+    assert final == pytest.approx(t.ratio(new), rel=1e-9)
