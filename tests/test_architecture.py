@@ -29,7 +29,8 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"model"},                                        # the description: elements, train, operating point
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results
-    {"analysis", "losses", "rating", "transmission", "demo"},  # built on the solver: modes, losses, rating, gears
+    {"analysis", "losses", "rating", "transmission", "demo", "dynamics"},  # built on the solver: modes, losses,
+    #                                                   rating, gears, shifts as they happen
     {"explain", "explain_losses", "io", "plotting", "synthesis", "exchange"},  # files (REXS too), reports, pictures
     {"cli", "web", "notebook"},                       # the front ends (notebook: Jupyter previews)
     {"__main__"},
@@ -49,6 +50,8 @@ REACHING_UP = {
         "ShiftMap.plot() draws itself",
     ("epicyclic.transmission.shift_map", "epicyclic.plotting._common"):
         "ShiftMap._repr_html_ and .save() render its figure",
+    ("epicyclic.dynamics.results", "epicyclic.plotting.shift_bench"):
+        "ShiftResult.plot() draws the test-bench picture",
     ("epicyclic.losses.breakdown", "epicyclic.plotting.loss_bars"):
         "LossBreakdown.plot() draws itself (stacked bars by source)",
 }

@@ -174,6 +174,16 @@ class Bad:
 
 
 
+#: TRANS with the transient inputs of ``shift`` and ``launch`` (docs/dynamics.md).
+CAPACITY = ("piston_area = 0.01\nfaces = 6\nmean_radius = 0.07\nfriction = 0.12\nreturn_spring = 500\n")
+DYN = (TRANS.replace('name = "B"\nshaft = "ring"\n', 'name = "B"\nshaft = "ring"\n[brake.capacity]\n' + CAPACITY)
+       .replace('name = "C"\nfirst = "in"\nsecond = "ring"\n',
+                'name = "C"\nfirst = "in"\nsecond = "ring"\n[clutch.capacity]\n' + CAPACITY)
+       + "[engine]\nfull_load = [[1000, 100.0], [5000, 120.0]]\n\n[dynamics]\ninput_speed = 2000\nduration = 0.5\n"
+         "load = 'torque'\noutput_torque = 50.0\n")
+SHIFT_ARGS = ("{file}", "--from", "1", "--to", "2")
+
+
 #: A synthesis specification (docs/synthesis.md): the Simpson three-speed's ratios, 2 sets, 2 + 2 elements.
 SYNTH = """\
 title = "three speeds"
@@ -816,7 +826,23 @@ CORPUS: list[Bad] = [
         ("{file}", "--shifts", "even")),
     Bad("size: width and ratio", "size", GEO, "--face-width and --face-width-ratio",
         ("{file}", "--face-width", "30", "--face-width-ratio", "0.5")),
+    Bad("shift: no [dynamics] table", "shift", TRANS + "[engine]\nfull_load = [[1000, 100.0]]\n", "[dynamics]",
+        SHIFT_ARGS),
+    Bad("shift: unknown key in [dynamics]", "shift", DYN + "durration = 1\n", "durration", SHIFT_ARGS),
+    Bad("shift: an element without capacity", "shift", sub("[clutch.capacity]\n" + CAPACITY, "", DYN),
+        "'C' has no capacity", SHIFT_ARGS),
+    Bad("shift: --from and --to the same gear", "shift", DYN, "both gear", ("{file}", "--from", "1", "--to", "1")),
+    Bad("shift: a gear not in the schedule", "shift", DYN, "'9'", ("{file}", "--from", "1", "--to", "9")),
+    Bad("shift: --throttle 150%", "shift", DYN, "--throttle", SHIFT_ARGS + ("--throttle", "150%")),
+    Bad("shift: friction table not increasing", "shift", sub("friction = 0.12", "friction = [[100, 0.1], [0, 0.12]]",
+                                                               DYN), "increase", SHIFT_ARGS),
+    Bad("shift: no [engine]", "shift", DYN.replace("[engine]\nfull_load = [[1000, 100.0], [5000, 120.0]]\n", ""),
+        "[engine]", SHIFT_ARGS),
+    Bad("launch: output held at its speed", "launch", DYN.replace("load = 'torque'", "load = 'held'"),
+        "cannot be held"),
+    Bad("launch: unknown capacity key", "launch", sub("faces = 6", "faces = 6\npiston = 1", DYN), "piston"),
 ]
+
 
 IDS = [case.id for case in CORPUS]
 

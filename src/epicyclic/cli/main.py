@@ -93,6 +93,11 @@ from . import convert as _convert  # noqa: E402
 
 app.command("convert")(_convert.convert)
 
+from . import dynamics as _dynamics  # noqa: E402
+
+app.command("shift")(_dynamics.shift)
+app.command("launch")(_dynamics.launch)
+
 from . import serve as _serve  # noqa: E402
 
 app.command("serve")(_serve.serve)

@@ -62,7 +62,8 @@ __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "lo
 
 _SPIN_TABLES = ("pump", "housing", "seal", "churning", "windage", "defaults")  # io.spin_format reads them
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant", "rating", "duty_cycle", *_SPIN_TABLES}
+             "operating_point", "transmission", "lubricant", "rating", "duty_cycle", *_SPIN_TABLES,
+             "dynamics", "engine"}  # the transient's inputs: io.dynamics_format reads them
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
                    "mesh_efficiencies", "planets", "geometry", "losses", "bearings"}
 _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
@@ -71,8 +72,8 @@ _TEETH_KEYS = {"simple": {"kind", "sun", "planet", "ring"},
                "two_rings": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"},
                "two_suns": {"kind", "first", "planet_first", "planet_second", "second", "module_ratio"}}
 _GEAR_KEYS = {"name", "first", "second", "meshes", "ratio", "efficiency", "geometry", "losses"}
-_CLUTCH_KEYS = {"name", "first", "second", "engaged", "drag"}
-_BRAKE_KEYS = {"name", "shaft", "engaged", "drag"}
+_CLUTCH_KEYS = {"name", "first", "second", "engaged", "drag", "capacity"}  # capacity: io.dynamics_format
+_BRAKE_KEYS = {"name", "shaft", "engaged", "drag", "capacity"}
 _UNIT_KEYS = {"speed", "torque", "power"}
 _OP_KEYS = {"speeds", "torques", "powers", "drives", "loads", "gear"}
 _TRANSMISSION_KEYS = {"input", "output", "schedule", "input_speed_range", "max_input_torque"}
