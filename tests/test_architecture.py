@@ -29,7 +29,7 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"model"},                                        # the description: elements, train, operating point
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results
-    {"analysis", "losses", "rating", "transmission", "demo"},  # built on the solver: modes, losses, rating, gears
+    {"analysis", "elastic", "losses", "rating", "transmission", "demo"},  # built on the solver: modes, losses, rating, gears, elastic set
     {"explain", "explain_losses", "io", "plotting", "synthesis", "exchange"},  # files (REXS too), reports, pictures
     {"cli", "web", "notebook"},                       # the front ends (notebook: Jupyter previews)
     {"__main__"},
