@@ -3,6 +3,7 @@
 * :mod:`~epicyclic.elastic.stiffness` — mesh stiffness c', c_γα of ISO 6336-1 (used by the rating too);
 * :mod:`~epicyclic.elastic.lumped` — the lumped-parameter model of Lin & Parker (1999);
 * :mod:`~epicyclic.elastic.modes` — natural frequencies, mode types, modal strain energy, speed;
+* :mod:`~epicyclic.elastic.phasing` — mesh phasing: which mesh harmonics excite which modes (Parker & Lin 2004);
 
 References
 ----------
@@ -12,6 +13,7 @@ J. Lin, R. G. Parker, J. Vib. Acoust. 121 (1999) 316–321; ISO 6336-1:2006, 9.3
 from .errors import ElasticError
 from .lumped import Body, PlanetaryLumpedModel, equally_spaced
 from .modes import NaturalModes, frequencies_at_speeds, natural_modes
+from .phasing import MeshPhasing, mesh_phasing
 
 __all__ = ["ElasticError", "Body", "PlanetaryLumpedModel", "equally_spaced", "NaturalModes", "natural_modes",
-           "frequencies_at_speeds"]
+           "frequencies_at_speeds", "MeshPhasing", "mesh_phasing"]
