@@ -4,16 +4,19 @@
 * :mod:`~epicyclic.elastic.lumped` — the lumped-parameter model of Lin & Parker (1999);
 * :mod:`~epicyclic.elastic.modes` — natural frequencies, mode types, modal strain energy, speed;
 * :mod:`~epicyclic.elastic.phasing` — mesh phasing: which mesh harmonics excite which modes (Parker & Lin 2004);
+* :mod:`~epicyclic.elastic.campbell` — Campbell diagram: mesh and shaft orders, crossings over speed;
 
 References
 ----------
 J. Lin, R. G. Parker, J. Vib. Acoust. 121 (1999) 316–321; ISO 6336-1:2006, 9.3.
 """
 
+from .campbell import CampbellDiagram, campbell_diagram
 from .errors import ElasticError
 from .lumped import Body, PlanetaryLumpedModel, equally_spaced
 from .modes import NaturalModes, frequencies_at_speeds, natural_modes
 from .phasing import MeshPhasing, mesh_phasing
 
 __all__ = ["ElasticError", "Body", "PlanetaryLumpedModel", "equally_spaced", "NaturalModes", "natural_modes",
-           "frequencies_at_speeds", "MeshPhasing", "mesh_phasing"]
+           "frequencies_at_speeds", "MeshPhasing", "mesh_phasing",
+           "CampbellDiagram", "campbell_diagram"]
