@@ -5,10 +5,13 @@
 * :mod:`~epicyclic.elastic.modes` — natural frequencies, mode types, modal strain energy, speed;
 * :mod:`~epicyclic.elastic.phasing` — mesh phasing: which mesh harmonics excite which modes (Parker & Lin 2004);
 * :mod:`~epicyclic.elastic.campbell` — Campbell diagram: mesh and shaft orders, crossings over speed;
+* :mod:`~epicyclic.elastic.sharing` — static load sharing among the planets, K_γ (one-sided contact,
+  :mod:`~epicyclic.elastic.contact`), over torque, carrier angle and Monte-Carlo draws.
 
 References
 ----------
-J. Lin, R. G. Parker, J. Vib. Acoust. 121 (1999) 316–321; ISO 6336-1:2006, 9.3.
+J. Lin, R. G. Parker, J. Vib. Acoust. 121 (1999) 316–321; R. G. Parker, J. Lin, J. Mech. Des. 126 (2004)
+365–370; A. Kahraman, Mech. Mach. Theory 29 (1994) 1151–1165; ISO 6336-1:2006, 9.3.
 """
 
 from .campbell import CampbellDiagram, campbell_diagram
@@ -16,7 +19,17 @@ from .errors import ElasticError
 from .lumped import Body, PlanetaryLumpedModel, equally_spaced
 from .modes import NaturalModes, frequencies_at_speeds, natural_modes
 from .phasing import MeshPhasing, mesh_phasing
+from .sharing import (
+    PlanetErrors,
+    Tolerances,
+    load_sharing,
+    monte_carlo_sharing,
+    sharing_over_revolution,
+    sharing_over_torque,
+)
+from .sharing_results import PlanetLoads, SharingStudy
 
 __all__ = ["ElasticError", "Body", "PlanetaryLumpedModel", "equally_spaced", "NaturalModes", "natural_modes",
            "frequencies_at_speeds", "MeshPhasing", "mesh_phasing",
-           "CampbellDiagram", "campbell_diagram"]
+           "CampbellDiagram", "campbell_diagram", "PlanetErrors", "Tolerances", "load_sharing",
+           "monte_carlo_sharing", "sharing_over_revolution", "sharing_over_torque", "PlanetLoads", "SharingStudy"]

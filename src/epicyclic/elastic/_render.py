@@ -6,7 +6,7 @@ import html
 
 from ..text import markdown_text, terminal_text
 
-__all__ = ["grid", "markdown", "html_table", "number"]
+__all__ = ["grid", "markdown", "html_table", "number", "Tabular"]
 
 
 def number(value: float, digits: int = 5) -> str:
@@ -57,3 +57,24 @@ def html_table(headers: list[str], rows: list[list[str]], title: str = "") -> st
     head = "<tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in headers) + "</tr>"
     body = "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rows)
     return f"<table>{cap}{head}{body}</table>"
+
+
+class Tabular:
+    """Renders a result from its ``_rows()`` (headers, rows) and ``_title()``: text, Markdown, HTML."""
+
+    def _rows(self) -> tuple[list[str], list[list[str]]]:  # pragma: no cover - every result defines it
+        raise NotImplementedError
+
+    def _title(self) -> str:  # pragma: no cover
+        raise NotImplementedError
+
+    def table(self) -> str:
+        """The result as a plain-text table."""
+        return grid(*self._rows(), title=self._title())
+
+    def markdown(self) -> str:
+        """The result as a Markdown table."""
+        return markdown(*self._rows(), title=self._title())
+
+    def _repr_html_(self) -> str:
+        return html_table(*self._rows(), title=self._title())

@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from ._render import grid, html_table, markdown, number
+from ._render import Tabular, number
 from .errors import ElasticError, finite
 from .lumped import CENTRAL, PlanetaryLumpedModel
 from .modes import frequencies_at_speeds, natural_modes
@@ -107,7 +107,7 @@ def crossings(speeds: np.ndarray, natural: np.ndarray, lines: np.ndarray) -> lis
 
 
 @dataclass(frozen=True)
-class CampbellDiagram:
+class CampbellDiagram(Tabular):
     """Natural frequencies and excitation orders of a set over a speed range.
 
     Attributes
@@ -149,16 +149,6 @@ class CampbellDiagram:
             f"{self.speeds[0]:g} … {self.speeds[-1]:g}"
         return f"Campbell diagram crossings, input speed {span} 1/min ({len(self.crossings)})"
 
-    def table(self) -> str:
-        """The crossings in the operating range."""
-        return grid(*self._rows(), title=self._title())
-
-    def markdown(self) -> str:
-        """:meth:`table` as Markdown."""
-        return markdown(*self._rows(), title=self._title())
-
-    def _repr_html_(self) -> str:
-        return html_table(*self._rows(), title=self._title())
 
     def __repr__(self) -> str:
         return (f"CampbellDiagram({len(self.speeds)} speeds {self.speeds[0]:g}…{self.speeds[-1]:g} 1/min, "

@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 import scipy.linalg
 
-from ._render import grid, html_table, markdown, number
+from ._render import Tabular, number
 from .errors import ElasticError
 from .lumped import PlanetaryLumpedModel
 
@@ -57,7 +57,7 @@ def _kind(group: np.ndarray, zero: bool, tolerance: float) -> str:
 
 
 @dataclass(frozen=True)
-class NaturalModes:
+class NaturalModes(Tabular):
     """Natural frequencies and modes of a planetary set at rest.
 
     Attributes
@@ -120,16 +120,6 @@ class NaturalModes:
     def _title(self) -> str:
         return f"Natural frequencies of a {self.model.planets}-planet set ({len(self)} modes)"
 
-    def table(self) -> str:
-        """The distinct frequencies with type, multiplicity and the elements with most strain energy."""
-        return grid(*self._rows(), title=self._title())
-
-    def markdown(self) -> str:
-        """:meth:`table` as Markdown."""
-        return markdown(*self._rows(), title=self._title())
-
-    def _repr_html_(self) -> str:
-        return html_table(*self._rows(), title=self._title())
 
     def __repr__(self) -> str:
         shown = ", ".join(f"{f:.5g} Hz {k} x{m}" for f, k, m in self.distinct()[:6])
