@@ -14,7 +14,7 @@ __all__ = ["PlanetLoads", "SharingStudy", "k_gamma"]
 
 
 def k_gamma(forces: np.ndarray) -> np.ndarray:
-    """K_γ = max_n F_n / mean F_n along the last axis (exactly 1 where all F_n are equal).
+    """K_γ = max_n F_n / mean F_n along the last axis (exactly 1 where all F_n are equal, at most N).
 
     >>> float(k_gamma(np.array([1.0, 1.0, 2.0])))
     1.5
@@ -22,7 +22,8 @@ def k_gamma(forces: np.ndarray) -> np.ndarray:
     forces = np.asarray(forces, dtype=float)
     top, low = forces.max(axis=-1), forces.min(axis=-1)
     ratio = top / forces.mean(axis=-1)
-    return np.where(top == low, 1.0, np.maximum(ratio, 1.0))
+    # 1 <= K_γ <= N exactly (all equal / one planet carrying it all); round-off kept inside
+    return np.where(top == low, 1.0, np.clip(ratio, 1.0, forces.shape[-1]))
 
 
 @dataclass(frozen=True)
