@@ -6,7 +6,8 @@
 * :mod:`~epicyclic.elastic.phasing` — mesh phasing: which mesh harmonics excite which modes (Parker & Lin 2004);
 * :mod:`~epicyclic.elastic.campbell` — Campbell diagram: mesh and shaft orders, crossings over speed;
 * :mod:`~epicyclic.elastic.sharing` — static load sharing among the planets, K_γ (one-sided contact,
-  :mod:`~epicyclic.elastic.contact`), over torque, carrier angle and Monte-Carlo draws.
+  :mod:`~epicyclic.elastic.contact`), over torque, carrier angle and Monte-Carlo draws;
+* :mod:`~epicyclic.elastic.face_load` — face load distribution of a mesh (slice model), K_Hβ, K_Fβ, crowning.
 
 References
 ----------
@@ -16,6 +17,7 @@ J. Lin, R. G. Parker, J. Vib. Acoust. 121 (1999) 316–321; R. G. Parker, J. Lin
 
 from .campbell import CampbellDiagram, campbell_diagram
 from .errors import ElasticError
+from .face_load import FaceLoad, HelixModification, best_crowning, face_load
 from .lumped import Body, PlanetaryLumpedModel, equally_spaced
 from .modes import NaturalModes, frequencies_at_speeds, natural_modes
 from .phasing import MeshPhasing, mesh_phasing
@@ -32,4 +34,5 @@ from .sharing_results import PlanetLoads, SharingStudy
 __all__ = ["ElasticError", "Body", "PlanetaryLumpedModel", "equally_spaced", "NaturalModes", "natural_modes",
            "frequencies_at_speeds", "MeshPhasing", "mesh_phasing",
            "CampbellDiagram", "campbell_diagram", "PlanetErrors", "Tolerances", "load_sharing",
-           "monte_carlo_sharing", "sharing_over_revolution", "sharing_over_torque", "PlanetLoads", "SharingStudy"]
+           "monte_carlo_sharing", "sharing_over_revolution", "sharing_over_torque", "PlanetLoads", "SharingStudy",
+           "FaceLoad", "HelixModification", "face_load", "best_crowning"]
