@@ -59,3 +59,13 @@ def test_refused_defaults_and_bad_sets():
         lumped_model(SetGeometry.create(p, module=1.75, x_sun=0.438, x_planet=0.0426))
     with pytest.raises(ElasticError, match="elastic.sun_mesh"):
         ElasticSpec(sun_mesh=-1.0)
+
+
+def test_a_stepped_set():
+    # examples/geometry_stepped_set.toml: sun 20 (m 2) - planet 30 | planet 21 (m 2*50/70) - ring 91
+    p = PlanetarySet.stepped("S", sun="s", ring="r", carrier="c", z_sun=20, z_planet_sun=30, z_planet_ring=21,
+                             z_ring=91, planets=3)
+    g = SetGeometry.create(p, module=2.0, ring_module=2 * 50 / 70, face_width=20.0, x_sun=0.2, x_planet=(-0.2, 0.0))
+    model, _ = lumped_model(g)
+    assert model.step_ratio == pytest.approx((21 * 2 * 50 / 70) / (30 * 2.0))
+    assert model.planet.mass > lumped_model(g)[0].sun.mass

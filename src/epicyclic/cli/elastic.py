@@ -1,6 +1,6 @@
 """``epicyclic vibration FILE`` and ``epicyclic sharing FILE``: the planetary sets as elastic systems.
 
-``vibration``: natural frequencies and mode types of every simple set with a geometry table
+``vibration``: natural frequencies and mode types of every simple or stepped set with a geometry table
 (Lin & Parker 1999), the mesh phasing (which mesh harmonics excite which mode type) and the
 Campbell diagram's crossings over a speed range.  ``sharing``: the static load of every planet
 and K_γ from the errors of the ``[elastic]`` table, over torque, over a carrier revolution
@@ -34,7 +34,7 @@ def _sets(file: Path, overrides: list[str] | None):
     spec = inputs.spec if inputs is not None else ElasticSpec()
     chosen = inputs.set_name if inputs is not None else None
     sets = [e for e in train_file.train.elements if isinstance(e, PlanetarySet) and e.name in train_file.geometry
-            and e.teeth is not None and e.teeth.kind == "simple"]
+            and e.teeth is not None and e.teeth.kind in ("simple", "stepped")]
     if chosen is not None:
         if chosen not in {e.name for e in sets}:
             raise ElasticError(f"[elastic] set: {chosen!r} is no simple set with a geometry table; the file has "
@@ -80,12 +80,12 @@ def _page(title: str, sections: list[tuple[str, Any]], format: OutputFormat) -> 
 
 def _ratios(element, state) -> tuple[dict[str, float], str]:
     """Member speeds per unit sun speed: from the operating point, else the ring held (stated)."""
-    z_s, z_r = element.teeth.sun, element.teeth.ring
     if state is not None and state.speeds.get("sun"):
         n_s = state.speeds["sun"]
         return ({m: state.speeds[m] / n_s for m in ("sun", "ring", "carrier")},
                 "member speeds in the ratios of the operating point")
-    return {"sun": 1.0, "ring": 0.0, "carrier": z_s / (z_s + z_r)}, "ring held, sun driving (no operating point)"
+    i0 = element.teeth.stationary_ratio          # Willis: n_c = n_s/(1 - i0) with the ring held
+    return {"sun": 1.0, "ring": 0.0, "carrier": 1.0 / (1.0 - i0)}, "ring held, sun driving (no operating point)"
 
 
 @guarded
@@ -182,9 +182,9 @@ def sharing(
         entry: dict[str, Any] = {"loads": loads.to_dict(), "over_torque": sweep.to_dict(), "defaults_taken": taken}
         revolution = None
         if errors.sun_runout or errors.ring_runout or plot is not None:
-            z_s, z_r = element.teeth.sun, element.teeth.ring
+            i0 = element.teeth.stationary_ratio  # ring held: the sun turns -i0 times against the carrier
             revolution = sharing_over_revolution(model, t, errors, np.linspace(0.0, 360.0, 361),
-                                                 sun_turns=z_r / z_s, ring_turns=-1.0)
+                                                 sun_turns=-i0, ring_turns=-1.0)
             sections.append((f"{element.name}: over a carrier revolution (ring held)", revolution))
             entry["over_revolution"] = revolution.to_dict()
         if inputs is not None and inputs.tolerances is not None:

@@ -3,7 +3,8 @@
 Over a range of input speeds n (1/min) with the members turning at fixed ratios to it
 (n_j = ratio_j n, e.g. from the kinematics of the train), the set's
 
-* mesh frequency is f_m = z_s |n_s − n_c|/60 (= z_r |n_r − n_c|/60), and its harmonics l f_m;
+* mesh frequency is f_m = z_s |n_s − n_c|/60 (= z_r |n_r − n_c|/60 for a simple set; a stepped set's
+  ring meshes get their own lines, ``ring mesh xl``), and its harmonics l f_m;
 * shaft orders are k n_j/60 for the carrier, ring and sun;
 * natural frequencies follow from :func:`~epicyclic.elastic.modes.frequencies_at_speeds` at the
   carrier speed Ω = 2π n_c/60 (gyroscopic terms; or the frequencies at rest).
@@ -227,8 +228,12 @@ def campbell_diagram(model: PlanetaryLumpedModel, sun_teeth: int, ring_teeth: in
     else:
         natural = np.broadcast_to(rest.frequencies, (len(grid_), len(rest.frequencies))).copy()
     mesh = sun_teeth * np.abs(ratio["sun"] - ratio["carrier"]) * np.abs(grid_) / 60.0
+    ring_mesh = ring_teeth * np.abs(ratio["ring"] - ratio["carrier"]) * np.abs(grid_) / 60.0
     orders = [f"mesh x{l_}" for l_ in range(1, mesh_harmonics + 1)]
     columns = [l_ * mesh for l_ in range(1, mesh_harmonics + 1)]
+    if not np.allclose(ring_mesh, mesh, rtol=1e-9, atol=1e-9):  # a stepped set: the ring meshes have their own
+        orders += [f"ring mesh x{l_}" for l_ in range(1, mesh_harmonics + 1)]
+        columns += [l_ * ring_mesh for l_ in range(1, mesh_harmonics + 1)]
     for name in CENTRAL:
         if ratio[name] != 0.0:
             for k in range(1, shaft_orders + 1):
@@ -247,7 +252,10 @@ def campbell_diagram(model: PlanetaryLumpedModel, sun_teeth: int, ring_teeth: in
             continue
         kind = rest.kinds[j]
         excited = None
-        if orders[i].startswith("mesh"):
-            excited = ("rotational" if kind == "rigid-body" else kind) in phasing.excited(i + 1) or kind == "mixed"
+        if "mesh" in orders[i]:
+            which = "ring" if orders[i].startswith("ring") else "sun"
+            harmonic = int(orders[i].rsplit("x", 1)[1])
+            excited = ("rotational" if kind == "rigid-body" else kind) in phasing.excited(harmonic, which) \
+                or kind == "mixed"
         found.append(Crossing(orders[i], j + 1, kind, speed, freq, excited))
     return CampbellDiagram(grid_, natural, tuple(orders), lines, rest.kinds, tuple(found), band, gyroscopic)

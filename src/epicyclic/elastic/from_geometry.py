@@ -1,4 +1,4 @@
-"""A lumped model of a simple planetary set from its gear geometry, with stated (and refusable) defaults.
+"""A lumped model of a simple or stepped planetary set from its gear geometry, with stated (refusable) defaults.
 
 What the geometry decides:
 
@@ -8,8 +8,9 @@ What the geometry decides:
   shifts, C_M = 0.8 solid blanks, C_R = 1, C_B from the basic rack, the line load taken ≥ 100 N/mm;
   c_γα = c' (0.75 ε_α + 0.25)), b the mesh's face width;
 * masses and inertias of steel (7850 kg/m³) discs: sun and planet solid discs of the mean
-  diameter (d_a + d_f)/2 and their face width; the ring an annulus from its root diameter out to
-  a rim of 3 m_n; the carrier a solid disc of diameter 2 a_w and the planet face width.
+  diameter (d_a + d_f)/2 and their face width (a stepped planet: both gears on one body); the ring an
+  annulus from its root diameter out to a rim of 3 m_n; the carrier a solid disc of diameter 2 a_w
+  and the (sun-side) planet face width.
 
 What the defaults say (each default taken is listed in :attr:`ElasticSpec.defaults_taken`'s
 result; ``refuse_defaults`` makes a missing value an error): planet bearing and pin 1e8 N/m,
@@ -129,7 +130,7 @@ def lumped_model(geometry: SetGeometry, spec: ElasticSpec | None = None) -> tupl
     Parameters
     ----------
     geometry : SetGeometry
-        A simple set with a face width.
+        A simple set, or a stepped set with a sun and an internal ring, with a face width.
     spec : ElasticSpec, optional
 
     Returns
@@ -140,7 +141,7 @@ def lumped_model(geometry: SetGeometry, spec: ElasticSpec | None = None) -> tupl
     Raises
     ------
     ElasticError
-        Not a simple set, no face width, a default refused.
+        Not a simple or stepped sun-ring set, no face width, a default refused.
 
     References
     ----------
@@ -156,9 +157,12 @@ def lumped_model(geometry: SetGeometry, spec: ElasticSpec | None = None) -> tupl
     (3, 724, 10)
     """
     spec = spec or ElasticSpec()
-    if not isinstance(geometry, SetGeometry) or geometry.kind != "simple":
-        raise ElasticError("elastic models are built for simple planetary sets (sun, planet, ring) with a geometry "
-                           "table; stepped and double-planet sets are not modelled yet.")
+    teeth = geometry.planetary_set.teeth if isinstance(geometry, SetGeometry) else None
+    stepped = teeth is not None and teeth.kind == "stepped" and teeth.ring_internal and not teeth.sun_internal
+    if not isinstance(geometry, SetGeometry) or not (geometry.kind == "simple" or stepped):
+        raise ElasticError("elastic models are built for simple sets and stepped sets with a sun and an internal ring, "
+                           "with a geometry table; double-planet sets and sets with two suns or two rings are not "
+                           "modelled yet.")
     if geometry.face_width is None:
         raise ElasticError(f"{geometry.planetary_set.name}: the geometry table needs face_width (mm) for the mesh "
                            "stiffness and the masses.")
@@ -172,12 +176,19 @@ def lumped_model(geometry: SetGeometry, spec: ElasticSpec | None = None) -> tupl
         mass = rho * math.pi / 4 * (outer ** 2 - inner ** 2) * width
         return mass, mass * (outer ** 2 + inner ** 2) / 8 * 1e-6      # kg, kg m²
 
-    sun, planet, ring = gears["sun"], gears["planet"], gears["ring"]
+    sun, ring = gears["sun"], gears["ring"]
+    planet, planet_ring = (gears["planet_sun"], gears["planet_ring"]) if stepped else (gears["planet"], None)
     mean = lambda g: (g.tip_diameter + g.root_diameter) / 2  # noqa: E731
     a_w = geometry.carrier_radius
-    inertial = {"sun": disc(mean(sun), 0.0, widths["sun"]), "planet": disc(mean(planet), 0.0, widths["planet"]),
-                "ring": disc(ring.root_diameter + 6 * m_n, ring.root_diameter, widths["ring"]),
-                "carrier": disc(2 * a_w, 0.0, widths["planet"])}
+    planet_key = "planet_sun" if stepped else "planet"
+    planet_disc = disc(mean(planet), 0.0, widths[planet_key])
+    if stepped:  # both gears of the stepped planet on one body
+        second = disc(mean(planet_ring), 0.0, widths["planet_ring"])
+        planet_disc = (planet_disc[0] + second[0], planet_disc[1] + second[1])
+    ring_m = geometry.ring_module or m_n
+    inertial = {"sun": disc(mean(sun), 0.0, widths["sun"]), "planet": planet_disc,
+                "ring": disc(ring.root_diameter + 6 * ring_m, ring.root_diameter, widths["ring"]),
+                "carrier": disc(2 * a_w, 0.0, widths[planet_key])}
     inertial.update({k: (float(v[0]), float(v[1])) for k, v in spec.masses.items()})
     radius = {"sun": sun.base_diameter / 2e3, "planet": planet.base_diameter / 2e3, "ring": ring.base_diameter / 2e3,
               "carrier": a_w / 1e3}
@@ -205,5 +216,6 @@ def lumped_model(geometry: SetGeometry, spec: ElasticSpec | None = None) -> tupl
                   "ring": (spec.value("ring_support", taken), ring_torsion),
                   "carrier": (spec.value("carrier_support", taken), spec.value("carrier_torsion", taken))},
         sun_pressure_angle=math.radians(geometry.sun_mesh.operating_pressure_angle),
-        ring_pressure_angle=math.radians(geometry.ring_mesh.operating_pressure_angle))
+        ring_pressure_angle=math.radians(geometry.ring_mesh.operating_pressure_angle),
+        ring_planet_radius=planet_ring.base_diameter / 2e3 if stepped else None)
     return model, taken

@@ -11,8 +11,8 @@ Springs, each a stiffness k along a direction vector v of the coordinates (K = �
 
 * sun–planet mesh: δ_sn = −x_s sin ψ_sn + y_s cos ψ_sn − ξ_n sin α_s − η_n cos α_s + u_s + u_n,
   ψ_sn = ψ_n − α_s;
-* ring–planet mesh: δ_rn = −x_r sin ψ_rn + y_r cos ψ_rn + ξ_n sin α_r − η_n cos α_r + u_r − u_n,
-  ψ_rn = ψ_n + α_r;
+* ring–planet mesh: δ_rn = −x_r sin ψ_rn + y_r cos ψ_rn + ξ_n sin α_r − η_n cos α_r + u_r − ρ u_n,
+  ψ_rn = ψ_n + α_r (ρ = 1; a stepped planet: ρ = r_p,ring/r_p,sun, its two gears on one body);
 * planet bearing (isotropic k_p, between planet and its pin on the carrier):
   ξ_n − (x_c cos ψ_n + y_c sin ψ_n) and η_n − (−x_c sin ψ_n + y_c cos ψ_n + u_c);
 * supports of c, r, s: k_j on x and y, k_ju on u (torsional k_θ/r² in the u coordinate).
@@ -27,6 +27,8 @@ J. Lin, R. G. Parker, "Analytical characterization of the unique properties of p
 vibration", J. Vib. Acoust. 121 (1999) 316–321, eqs. (1)–(8).
 C. G. Cooley, R. G. Parker, "Vibration properties of high-speed planetary gears with gyroscopic
 effects", J. Vib. Acoust. 134 (2012) 061014, eq. (1).
+D. R. Kiracofe, R. G. Parker, "Structured vibration modes of general compound planetary gear
+systems", J. Vib. Acoust. 129 (2007) 1–16 (stepped planets keep the three mode types).
 """
 
 from __future__ import annotations
@@ -118,6 +120,10 @@ class PlanetaryLumpedModel:
         ``{"carrier"|"ring"|"sun": (k_translational N/m, k_torsional N m/rad)}``; 0 means free.
     sun_pressure_angle, ring_pressure_angle : float
         Working transverse pressure angles α_s, α_r, rad.
+    ring_planet_radius : float or None
+        A stepped planet: base radius of its gear that meshes the ring, m (``planet.radius`` is that
+        of the gear meshing the sun); the ring mesh sees the planet's rotation u_n times
+        ρ = r_p,ring/r_p,sun.  None: one planet gear (a simple set).
     """
 
     carrier: Body
@@ -131,6 +137,7 @@ class PlanetaryLumpedModel:
     supports: dict[str, tuple[float, float]] = field(default_factory=dict)
     sun_pressure_angle: float = math.radians(20.0)
     ring_pressure_angle: float = math.radians(20.0)
+    ring_planet_radius: float | None = None
 
     def __post_init__(self) -> None:
         for name in (*CENTRAL, "planet"):
@@ -151,6 +158,8 @@ class PlanetaryLumpedModel:
             supports[name] = (non_negative(pair[0], f"supports.{name} translational"),
                               non_negative(pair[1], f"supports.{name} torsional"))
         object.__setattr__(self, "supports", {name: supports.get(name, (0.0, 0.0)) for name in CENTRAL})
+        if self.ring_planet_radius is not None:
+            object.__setattr__(self, "ring_planet_radius", positive(self.ring_planet_radius, "ring_planet_radius"))
         for key in ("sun_pressure_angle", "ring_pressure_angle"):
             value = finite(getattr(self, key), key)
             if not 0.0 < value < math.pi / 2:
@@ -199,6 +208,11 @@ class PlanetaryLumpedModel:
         """K_Ω = diag(m, m, 0) per member, kg."""
         return np.diag(self._body_masses()[1])
 
+    @property
+    def step_ratio(self) -> float:
+        """ρ = r_p,ring / r_p,sun of a stepped planet (1 for a simple set)."""
+        return 1.0 if self.ring_planet_radius is None else self.ring_planet_radius / self.planet.radius
+
     # ------------------------------------------------------------------ springs
     def springs(self) -> tuple[tuple[str, ...], np.ndarray, np.ndarray]:
         """(names, stiffnesses k (N/m), directions V (one row per spring)) with K = Vᵀ diag(k) V.
@@ -222,14 +236,14 @@ class PlanetaryLumpedModel:
             ks.append(k)
             rows.append(v)
 
-        a_s, a_r = self.sun_pressure_angle, self.ring_pressure_angle
+        a_s, a_r, rho = self.sun_pressure_angle, self.ring_pressure_angle, self.step_ratio
         for i, psi in enumerate(self.planet_angles):
             p = 9 + 3 * i
             ps, pr = psi - a_s, psi + a_r
             add(f"sun-planet {i + 1}", self.sun_mesh,
                 {6: -math.sin(ps), 7: math.cos(ps), 8: 1.0, p: -math.sin(a_s), p + 1: -math.cos(a_s), p + 2: 1.0})
             add(f"ring-planet {i + 1}", self.ring_mesh,
-                {3: -math.sin(pr), 4: math.cos(pr), 5: 1.0, p: math.sin(a_r), p + 1: -math.cos(a_r), p + 2: -1.0})
+                {3: -math.sin(pr), 4: math.cos(pr), 5: 1.0, p: math.sin(a_r), p + 1: -math.cos(a_r), p + 2: -rho})
             add(f"bearing planet {i + 1}", self.planet_bearing, {p: 1.0, 0: -math.cos(psi), 1: -math.sin(psi)})
             add(f"bearing planet {i + 1}", self.planet_bearing,
                 {p + 1: 1.0, 0: math.sin(psi), 1: -math.cos(psi), 2: -1.0})
@@ -260,7 +274,8 @@ class PlanetaryLumpedModel:
                 "supports": {k: {"translational_N_per_m": v[0], "torsional_Nm_per_rad": v[1]}
                              for k, v in self.supports.items()},
                 "sun_pressure_angle_deg": math.degrees(self.sun_pressure_angle),
-                "ring_pressure_angle_deg": math.degrees(self.ring_pressure_angle)}
+                "ring_pressure_angle_deg": math.degrees(self.ring_pressure_angle),
+                "ring_planet_radius_m": self.ring_planet_radius}
 
     def equally_spaced(self, tolerance: float = 1e-9) -> bool:
         """Whether the planets stand at 2π/N apart (within ``tolerance`` rad)."""

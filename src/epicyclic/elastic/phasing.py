@@ -72,13 +72,16 @@ class MeshPhasing:
         ideal = 2 * np.pi * np.arange(self.planets) / self.planets
         return bool(np.all(np.abs(np.angle(np.exp(1j * (psi - ideal)))) < 1e-9))
 
-    def weights(self, harmonic: int) -> dict[str, float]:
+    def weights(self, harmonic: int, mesh: str = "sun") -> dict[str, float]:
         """|W₀|, |W₊|, |W₋| of harmonic l (module docstring), each 0 … 1.
 
         Parameters
         ----------
         harmonic : int
             l ≥ 1.
+        mesh : {"sun", "ring"}, default "sun"
+            The phases of the sun–planet or of the ring–planet meshes (the same rules for a simple
+            set that assembles; a stepped set's ring meshes have their own frequency).
 
         Returns
         -------
@@ -88,8 +91,11 @@ class MeshPhasing:
             outside the rotational and translational patterns).
         """
         l_ = _teeth(harmonic, "harmonic")
+        if mesh not in ("sun", "ring"):
+            raise ElasticError(f"mesh must be 'sun' or 'ring', got {mesh!r}.")
         psi = np.asarray(self.planet_angles)
-        phasor = np.exp(-2j * np.pi * l_ * np.asarray(self.sun_phases))
+        phases = self.sun_phases if mesh == "sun" else self.ring_phases
+        phasor = np.exp(-2j * np.pi * l_ * np.asarray(phases))
         n = self.planets
         w0 = abs(phasor.sum()) / n
         wp = abs((phasor * np.exp(1j * psi)).sum()) / n
@@ -102,9 +108,21 @@ class MeshPhasing:
         return {"rotational": clean(w0), "translational+": clean(wp), "translational-": clean(wm),
                 "planet": clean(rest)}
 
-    def excited(self, harmonic: int) -> tuple[str, ...]:
-        """The mode types harmonic l excites: ``rotational``, ``translational``, ``planet``."""
-        w = self.weights(harmonic)
+    def excited(self, harmonic: int, mesh: str = "sun") -> tuple[str, ...]:
+        """The mode types harmonic l of the ``mesh`` (sun or ring) meshes excites.
+
+        Parameters
+        ----------
+        harmonic : int
+            l ≥ 1.
+        mesh : {"sun", "ring"}, default "sun"
+
+        Returns
+        -------
+        tuple of str
+            Some of ``rotational``, ``translational``, ``planet`` (empty: the harmonic cancels).
+        """
+        w = self.weights(harmonic, mesh)
         out = []
         if w["rotational"] > 0.0:
             out.append("rotational")

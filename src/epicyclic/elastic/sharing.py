@@ -15,7 +15,7 @@ translation by its support stiffness (0 = floating) and each planet by its beari
 Tooth contacts carry load only in compression (k max(δ, 0)), so the load shares follow from a
 complementarity problem, solved with :func:`~epicyclic.elastic.contact.solve_contact`.  The
 load-sharing factor is K_γ = max_n F_n / mean F_n of the sun-mesh forces F_n (equal to the
-ring-mesh forces: a planet turns freely on its pin).  Without errors and with equally spaced
+ring-mesh forces, a planet turns freely on its pin; ρ times them for a stepped planet).  Without errors and with equally spaced
 planets the set is solved in its symmetric subspace, so every planet's share is the same number.
 
 References
@@ -154,9 +154,9 @@ class Tolerances:
 def _static(model: PlanetaryLumpedModel):
     """The static springs with the held rotations (carrier, ring) and the free planet rotations eliminated.
 
-    A planet turning freely on its pin carries the same force in both meshes: minimising the energy
-    over u_n joins them into one contact of stiffness k_s k_r/(k_s + k_r) along w_s + w_r (u_n
-    cancels) with gap g_s + g_r.
+    A planet turning freely on its pin carries F_s = ρ F_r (the same force in both meshes for a
+    simple planet, ρ = 1): minimising the energy over u_n joins them into one contact of stiffness
+    k_s k_r/(k_s + ρ² k_r) along ρ w_s + w_r (u_n cancels) with gap ρ g_s + g_r, carrying F_r.
     """
     if not isinstance(model, PlanetaryLumpedModel):
         raise ElasticError(f"load sharing needs a PlanetaryLumpedModel, got {type(model).__name__}.")
@@ -167,8 +167,9 @@ def _static(model: PlanetaryLumpedModel):
     linear = [i for i, nm in enumerate(names) if nm.startswith(("bearing", "support"))]
     sun = [names.index(f"sun-planet {i + 1}") for i in range(n)]
     ring = [names.index(f"ring-planet {i + 1}") for i in range(n)]
-    w = v[sun] + v[ring]
-    k_pair = k[sun] * k[ring] / (k[sun] + k[ring])
+    rho = model.step_ratio                            # a stepped planet: F_s r_p,sun = F_r r_p,ring
+    w = rho * v[sun] + v[ring]
+    k_pair = k[sun] * k[ring] / (k[sun] + rho * rho * k[ring])
     return names, k[linear], v[linear][:, keep], [names[i] for i in linear], k_pair, w[:, keep], keep
 
 
@@ -187,12 +188,13 @@ def _solve(model: PlanetaryLumpedModel, torque: np.ndarray, err: dict[str, np.nd
     phi_r = np.radians(err["ring_runout_angle"])[:, None]
     close_s = err["tooth_thickness"] / 2 * math.cos(a_s) + err["sun_runout"][:, None] * np.sin(phi_s - (psi - a_s))
     close_r = err["tooth_thickness"] / 2 * math.cos(a_r) + err["ring_runout"][:, None] * np.sin(phi_r - (psi + a_r))
-    g = -(close_s + close_r) * _UM
+    rho = model.step_ratio
+    g = -(rho * close_s + close_r) * _UM
     f = np.zeros((cases, len(keep)))
     f[:, keep.index(8)] = torque / model.sun.radius
     _, deflection = solve_contact(k_lin, v_lin, e_lin, k_pair, w, g, f)
-    force = k_pair * np.maximum(deflection, 0.0)
-    return force, force.copy()
+    ring = k_pair * np.maximum(deflection, 0.0)
+    return rho * ring, ring
 
 
 def _symmetric(model: PlanetaryLumpedModel, torque: float):
@@ -211,8 +213,8 @@ def _symmetric(model: PlanetaryLumpedModel, torque: float):
     deflection = (con * q_r).sum(axis=1)             # rows alike for every planet: the same sum
     if np.any(deflection <= 0.0):
         raise ElasticError("load sharing: a mesh opens under the torque; the sun torque must drive the set (> 0).")
-    force = (k_pair * deflection)[None]
-    return force, force.copy()
+    ring = (k_pair * deflection)[None]
+    return model.step_ratio * ring, ring
 
 
 def _repeat(errors: PlanetErrors, planets: int, cases: int) -> dict[str, np.ndarray]:

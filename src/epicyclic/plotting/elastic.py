@@ -42,7 +42,7 @@ def campbell_figure(diagram: Any, *, title: str = "Campbell diagram", figsize=(8
         shown.add(kind)
         ax.plot(speeds, diagram.natural[:, j], color=_KIND_COLOURS[kind], lw=1.2, label=label)
     for i, order in enumerate(diagram.orders):
-        mesh = order.startswith("mesh")
+        mesh = "mesh" in order
         ax.plot(speeds, diagram.lines[:, i], color="black" if mesh else "#777777", lw=0.9, ls="-" if mesh else ":")
         k = len(speeds) - 1
         if diagram.lines[k, i] > top:  # label where the line leaves the plot
