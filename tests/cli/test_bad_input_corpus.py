@@ -708,6 +708,9 @@ CORPUS: list[Bad] = [
     Bad("sharing: draws 0", "sharing", GEO + "[elastic]\ndraws = 0\n", "[elastic], key 'draws'"),
     Bad("sharing: --torque nan", "sharing", GEO, "--torque", ("{file}", "--torque", "nan")),
     Bad("sharing without operating point or torque", "sharing", GEO.split("[operating_point]")[0], "--torque"),
+    Bad("sharing: unknown face key", "sharing", GEO + "[elastic.face]\ncrown = 3\n", "unknown key 'crown'"),
+    Bad("sharing: end relief without length", "sharing", GEO + "[elastic.face]\nend_relief = 3\n",
+        "end_relief_length"),
     Bad("forces an overflowing solution", "forces", sub(SPEEDS, "speeds = { in = 1e300 }", GEO).replace(
         TORQUES, "torques = { in = 1e300 }"), "not a finite number"),
     Bad("forces --out is a folder", "forces", GEO, "is a folder", ("{file}", "--out", "{tmp}")),

@@ -46,4 +46,5 @@ def test_sharing_reports_the_computed_and_the_table_value(tmp_path):
     assert sum(data["loads"]["sun_mesh_N"]) == pytest.approx(60.0 / (21 * 1.75 * 0.9396926207859084 / 2e3), rel=1e-3)
     assert data["monte_carlo"]["seed"] == 0 and data["monte_carlo"]["draws"] == 10000
     assert any("IEC 61400-4" in n for n in data["notes"])
+    assert data["face_load"]["sun"]["k_hbeta"] > 1.0 and data["face_load"]["ring"]["k_hbeta"] > 1.0
     assert out.exists() and out.stat().st_size > 1000

@@ -88,6 +88,26 @@ def _ratios(element, state) -> tuple[dict[str, float], str]:
     return {"sun": 1.0, "ring": 0.0, "carrier": 1.0 / (1.0 - i0)}, "ring held, sun driving (no operating point)"
 
 
+def _face_loads(geometry, model, loads, face: dict) -> dict:
+    """Face load of the sun and ring mesh of the most loaded planet (c_γβ = 0.85 c_γα, ISO 6336-1, 9.3.2)."""
+    from ..elastic.face_load import face_load
+
+    worst = int(loads.sun_mesh.argmax())
+    out = {}
+    for name, mesh, k, force in (("sun", geometry.sun_mesh, model.sun_mesh, loads.sun_mesh[worst]),
+                                 ("ring", geometry.ring_mesh, model.ring_mesh, loads.ring_mesh[worst])):
+        b = geometry.mesh_face_width(mesh)
+        c_gamma_beta = 0.85 * k / (b * 1e6)                        # N/(mm µm)
+        sun = geometry.gears["sun"]
+        torsion = (sun.root_diameter, sun.base_diameter / 2, 80000.0) if name == "sun" and face["sun_torsion"] \
+            else None                                              # the sun twists (steel, G = 80 GPa)
+        height = (mesh.gear1.tip_diameter - mesh.gear1.root_diameter) / 2
+        out[name] = face_load(float(force), b, c_gamma_beta, misalignment=face["misalignment"],
+                              modification=face["modification"], slices=face["slices"], tooth_height=height,
+                              torsion=torsion)
+    return out
+
+
 @guarded
 def vibration(
     file: Annotated[Path, typer.Argument(help="Train description (.toml) with a geometry table per set.")],
@@ -191,6 +211,10 @@ def sharing(
             mc = monte_carlo_sharing(model, t, inputs.tolerances, inputs.draws, inputs.seed)
             sections.append((f"{element.name}: Monte Carlo", mc))
             entry["monte_carlo"] = mc.to_dict()
+        if inputs is not None and inputs.face is not None:
+            for mesh_name, face in _face_loads(geometry, model, loads, inputs.face).items():
+                sections.append((f"{element.name}: face load, {mesh_name} mesh of the most loaded planet", face))
+                entry.setdefault("face_load", {})[mesh_name] = face.to_dict()
         notes = [f"computed K_gamma = {loads.k_gamma:.4f} at {t:g} N m (one-sided contact, errors of [elastic])"]
         planets = element.planets
         try:

@@ -23,8 +23,10 @@ __all__ = ["ElasticInputs", "read_elastic", "ELASTIC_KEYS"]
 
 _STIFF = ("sun_mesh", "ring_mesh", "planet_bearing", "sun_support", "ring_support", "carrier_support")
 _TORSION = ("sun_torsion", "ring_torsion", "carrier_torsion")
+_FACE_KEYS = {"misalignment", "crowning", "end_relief", "end_relief_length", "slope_correction", "sun_torsion",
+              "slices"}
 ELASTIC_KEYS = {"defaults", "set", *_STIFF, *_TORSION, "density", "masses", "planet_angles", "errors", "tolerances",
-                "draws", "seed", "speed_range", "operating_range"}
+                "draws", "seed", "speed_range", "operating_range", "face"}
 _ERROR_KEYS = {"pin_radial", "pin_tangential", "tooth_thickness", "sun_runout", "sun_runout_angle", "ring_runout",
                "ring_runout_angle"}
 _TOLERANCE_KEYS = {"pin_position", "tooth_thickness", "sun_runout", "ring_runout"}
@@ -49,6 +51,9 @@ class ElasticInputs:
         Sun speeds of the Campbell diagram, 1/min.
     operating_range : tuple of float or None
         Sun speeds whose crossings are listed, 1/min.
+    face : dict or None
+        ``[elastic.face]``: ``misalignment``, ``modification`` (HelixModification), ``sun_torsion``
+        (bool), ``slices`` for the face load distribution of the most loaded planet's meshes.
     """
 
     spec: Any
@@ -59,6 +64,7 @@ class ElasticInputs:
     seed: int = 0
     speed_range: tuple[float, float] | None = None
     operating_range: tuple[float, float] | None = None
+    face: Any = None
 
 
 def _numbers(reader: TableReader, value: object, key: str, where: str) -> tuple[float, ...]:
@@ -158,6 +164,7 @@ def read_elastic(reader: TableReader, value: object) -> ElasticInputs:
             tol = reader.table(table["tolerances"], where)
             reader.check_keys(tol, _TOLERANCE_KEYS, where)
             tolerances = Tolerances(**{k: reader.number(v, k, where) for k, v in tol.items()})
+        face = _face(reader, table["face"]) if "face" in table else None
     except ElasticError as exc:
         raise reader.wrap(_WHERE, exc, "elastic") from None
     except TypeError as exc:  # a list where a number belongs, or the reverse
@@ -165,4 +172,19 @@ def read_elastic(reader: TableReader, value: object) -> ElasticInputs:
     name = reader.name(table, "set", _WHERE) if "set" in table else None
     return ElasticInputs(spec, name, errors, tolerances, _whole(reader, table, "draws", 10_000, 1, 1_000_000),
                          _whole(reader, table, "seed", 0, 0, 2 ** 63 - 1), _range(reader, table, "speed_range"),
-                         _range(reader, table, "operating_range"))
+                         _range(reader, table, "operating_range"), face)
+
+
+def _face(reader: TableReader, value: object) -> dict[str, Any]:
+    """``[elastic.face]``: misalignment and helix modifications (µm, mm), sun torsion (bool), slices."""
+    from ..elastic.face_load import HelixModification
+
+    where = f"{_WHERE} face"
+    face = reader.table(value, where)
+    reader.check_keys(face, _FACE_KEYS, where)
+    mod = {k: reader.number(face[k], k, where) for k in ("crowning", "end_relief", "end_relief_length",
+                                                         "slope_correction") if k in face}
+    return {"misalignment": reader.number(face.get("misalignment", 0.0), "misalignment", where),
+            "modification": HelixModification(**mod),
+            "sun_torsion": reader.boolean(face, "sun_torsion", where, True),
+            "slices": _whole(reader, face, "slices", 40, 4, 400)}
