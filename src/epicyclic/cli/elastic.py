@@ -223,9 +223,12 @@ def sharing(
         except GeometryError as exc:  # more planets than the table covers
             notes.append(f"for comparison: no table value ({exc})")
         used = geometry.load_sharing
-        notes.append("forces and rating use " + (f"the file's K_gamma = {used:g}" if used is not None else
-                                                 f"the default K_gamma = {default_load_sharing(planets):g} (ABS rules)")
-                     + "; the computed value is not fed to them")
+        rated = inputs is not None and "load_sharing" in inputs.rating
+        notes.append("the forces use " + (f"the file's K_gamma = {used:g}" if used is not None else
+                                          f"the default K_gamma = {default_load_sharing(planets):g} (ABS rules)")
+                     + "; epicyclic rate uses " + ("the computed K_gamma ([elastic] rating)" if rated else
+                                                   "the [rating] or that value ([elastic] rating = "
+                                                   "[\"load_sharing\"] makes it take the computed one)"))
         notes += [f"defaults taken: {x}" for x in taken]
         sections.append((f"{element.name}: notes", notes))
         entry["notes"] = notes

@@ -8,7 +8,8 @@ coordinates q under the loads f.  The equilibrium minimises the convex, piecewis
 a complementarity problem (a contact carries k (wᵀq − g) ≥ 0 where it closes, nothing where it
 opens).  It is solved by Newton's method on the active set — each step solves the linear system
 of the contacts closed at the current q — with a backtracking line search on E, which makes the
-method converge from any start; it ends when the solution of an active set keeps that set (contacts
+method converge from any start (a spring of 10⁻¹¹ of the mean stiffness on every coordinate keeps each
+step's system regular where the open contacts leave a member free); it ends when the solution of an active set keeps that set (contacts
 within round-off of their boundary count either way).  The bound: at most ``iterations`` steps (default 60) of at most 30 halvings each,
 else :class:`~epicyclic.elastic.errors.ElasticError`.  All cases (rows) are solved together with
 batched ``numpy.linalg.solve``.
@@ -31,14 +32,25 @@ from .errors import ElasticError
 __all__ = ["solve_contact"]
 
 
+def _regularisation(k_lin, v_lin, k_con, w_con) -> float:
+    """ε = 10⁻¹¹ of the mean diagonal stiffness: holds a member that the open contacts leave free (a floating sun
+    touching one planet) in the Newton steps; at the equilibrium its spring carries ~10⁻¹¹ of the load."""
+    diag = (v_lin * v_lin).T @ k_lin + (w_con * w_con).T @ k_con
+    return 1e-11 * float(np.mean(diag))
+
+
 def _energy(q, k_lin, v_lin, e_lin, k_con, w_con, g_con, f):
     s = q @ v_lin.T - e_lin
     c = np.maximum(q @ w_con.T - g_con, 0.0)
-    return 0.5 * (s * s) @ k_lin + 0.5 * (c * c) @ k_con - np.einsum("bi,bi->b", f, q)
+    eps = _regularisation(k_lin, v_lin, k_con, w_con)  # the energy of the regularised steps
+    return 0.5 * (s * s) @ k_lin + 0.5 * (c * c) @ k_con + 0.5 * eps * np.einsum("bi,bi->b", q, q) \
+        - np.einsum("bi,bi->b", f, q)
 
 
-def _system(active, k_lin, v_lin, e_lin, k_con, w_con, g_con, f):
+def _system(active, k_lin, v_lin, e_lin, k_con, w_con, g_con, f, *, regular: bool = True):
     base = (v_lin.T * k_lin) @ v_lin
+    if regular:
+        base = base + _regularisation(k_lin, v_lin, k_con, w_con) * np.eye(v_lin.shape[1])
     a = base[None] + np.einsum("bj,ji,jk->bik", active * k_con, w_con, w_con)
     rhs = f + (e_lin * k_lin) @ v_lin + (active * g_con * k_con) @ w_con
     free = np.abs(np.einsum("bii->bi", a)) == 0.0                 # a coordinate nothing holds (a planet off contact)
@@ -47,6 +59,31 @@ def _system(active, k_lin, v_lin, e_lin, k_con, w_con, g_con, f):
         a[b, i, i] = 1.0
         rhs[b, i] = 0.0
     return a, rhs
+
+
+def _polish(act, target, tol, k_lin, v_lin, e_lin, k_con, w_con, g_con, f):
+    """The equilibria of the active sets ``act`` without the regularising spring, where they keep their set.
+
+    A member the closed contacts hold only in part (a floating sun between two opposite planets)
+    makes the system singular but consistent; its least-norm solution (pseudo-inverse), the limit of
+    the regularised one, is taken there.  Rows whose plain solution changes the active set keep ``target``.
+    """
+    a0, rhs0 = _system(act, k_lin, v_lin, e_lin, k_con, w_con, g_con, f, regular=False)
+
+    def holds(q):
+        d0 = q @ w_con.T - g_con
+        return np.all(((d0 > 0.0) == (act == 1.0)) | (np.abs(d0) <= tol), axis=1) & np.all(np.isfinite(q), axis=1)
+
+    try:
+        plain = np.linalg.solve(a0, rhs0[..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        plain = np.full_like(target, np.nan)
+    ok = holds(plain)
+    if not ok.all():
+        least = np.einsum("bij,bj->bi", np.linalg.pinv(a0[~ok], rcond=1e-12), rhs0[~ok])
+        plain[~ok] = least
+        ok = holds(plain)
+    return np.where(ok[:, None], plain, target)
 
 
 def solve_contact(k_lin, v_lin, e_lin, k_con, w_con, g_con, f, *, iterations: int = 60):
@@ -91,8 +128,12 @@ def solve_contact(k_lin, v_lin, e_lin, k_con, w_con, g_con, f, *, iterations: in
     (0.75, 0.25)
     """
     args = (k_lin, v_lin, e_lin, k_con, w_con, g_con, f)
-    a, rhs = _system(np.ones_like(g_con, dtype=float), *args)
-    q = np.linalg.solve(a, rhs[..., None])[..., 0]                  # every contact closed
+    a, rhs = _system(np.ones_like(g_con, dtype=float), *args, regular=False)
+    try:
+        q = np.linalg.solve(a, rhs[..., None])[..., 0]              # every contact closed
+    except np.linalg.LinAlgError:
+        a, rhs = _system(np.ones_like(g_con, dtype=float), *args)
+        q = np.linalg.solve(a, rhs[..., None])[..., 0]
     active = (q @ w_con.T - g_con > 0.0).astype(float)
     done = np.all(active == 1.0, axis=1)                           # the all-closed solution holds
     for _ in range(iterations):
@@ -114,7 +155,7 @@ def solve_contact(k_lin, v_lin, e_lin, k_con, w_con, g_con, f, *, iterations: in
         t = np.ones(len(rows))
         trial = target.copy()
         e_trial = _energy(trial, *sub)
-        slack = 1e-9 * (np.abs(energy) + np.abs(e_trial)) + 1e-300
+        slack = 1e-12 * np.abs(energy) + 1e-300                   # descent on the current energy
         for _ in range(30):                                       # backtracking: E must not rise
             worse = ~exact & (e_trial > energy + slack)
             if not worse.any():
@@ -122,6 +163,9 @@ def solve_contact(k_lin, v_lin, e_lin, k_con, w_con, g_con, f, *, iterations: in
             t = np.where(worse, t / 2, t)
             trial = current + t[:, None] * step
             e_trial = _energy(trial, *sub)
+        if exact.any():  # the active set found: its equilibrium without the regularising spring
+            target[exact] = _polish(act[exact], target[exact], tol[exact], k_lin, v_lin, e_lin[rows[exact]], k_con,
+                                    w_con, g_con[rows[exact]], f[rows[exact]])
         q[rows] = np.where(exact[:, None], target, trial)
         done[rows] = exact
     raise ElasticError(f"load sharing: no equilibrium within {iterations} Newton steps; check that every member is "

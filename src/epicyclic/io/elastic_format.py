@@ -26,7 +26,7 @@ _TORSION = ("sun_torsion", "ring_torsion", "carrier_torsion")
 _FACE_KEYS = {"misalignment", "crowning", "end_relief", "end_relief_length", "slope_correction", "sun_torsion",
               "slices"}
 ELASTIC_KEYS = {"defaults", "set", *_STIFF, *_TORSION, "density", "masses", "planet_angles", "errors", "tolerances",
-                "draws", "seed", "speed_range", "operating_range", "face"}
+                "draws", "seed", "speed_range", "operating_range", "face", "rating"}
 _ERROR_KEYS = {"pin_radial", "pin_tangential", "tooth_thickness", "sun_runout", "sun_runout_angle", "ring_runout",
                "ring_runout_angle"}
 _TOLERANCE_KEYS = {"pin_position", "tooth_thickness", "sun_runout", "ring_runout"}
@@ -54,6 +54,8 @@ class ElasticInputs:
     face : dict or None
         ``[elastic.face]``: ``misalignment``, ``modification`` (HelixModification), ``sun_torsion``
         (bool), ``slices`` for the face load distribution of the most loaded planet's meshes.
+    rating : tuple of str
+        The factors ``epicyclic rate`` takes from the elastic model (``load_sharing``, ``K_Hbeta``).
     """
 
     spec: Any
@@ -65,6 +67,7 @@ class ElasticInputs:
     speed_range: tuple[float, float] | None = None
     operating_range: tuple[float, float] | None = None
     face: Any = None
+    rating: tuple[str, ...] = ()
 
 
 def _numbers(reader: TableReader, value: object, key: str, where: str) -> tuple[float, ...]:
@@ -170,9 +173,14 @@ def read_elastic(reader: TableReader, value: object) -> ElasticInputs:
     except TypeError as exc:  # a list where a number belongs, or the reverse
         raise reader.error(_WHERE, f"a value has the wrong kind: {exc}; see docs/file-format.md, [elastic].") from None
     name = reader.name(table, "set", _WHERE) if "set" in table else None
+    rating = reader.names(table.get("rating", []), "rating", _WHERE)
+    unknown = [r for r in rating if r not in ("load_sharing", "K_Hbeta")]
+    if unknown:
+        raise reader.error(at_key(_WHERE, "rating"), f"the elastic model computes load_sharing and K_Hbeta for the "
+                                                     f"rating, not {short(unknown[0])}.")
     return ElasticInputs(spec, name, errors, tolerances, _whole(reader, table, "draws", 10_000, 1, 1_000_000),
                          _whole(reader, table, "seed", 0, 0, 2 ** 63 - 1), _range(reader, table, "speed_range"),
-                         _range(reader, table, "operating_range"), face)
+                         _range(reader, table, "operating_range"), face, rating)
 
 
 def _face(reader: TableReader, value: object) -> dict[str, Any]:
