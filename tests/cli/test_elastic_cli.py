@@ -48,3 +48,4 @@ def test_sharing_reports_the_computed_and_the_table_value(tmp_path):
     assert any("IEC 61400-4" in n for n in data["notes"])
     assert data["face_load"]["sun"]["k_hbeta"] > 1.0 and data["face_load"]["ring"]["k_hbeta"] > 1.0
     assert out.exists() and out.stat().st_size > 1000
+    assert (tmp_path / "loads-face.svg").stat().st_size > 1000     # [elastic.face]: the face load too

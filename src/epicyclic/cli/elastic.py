@@ -167,8 +167,9 @@ def sharing(
     format: FormatOption = OutputFormat.table,
     out: OutOption = None,
     torque: Annotated[Optional[float], typer.Option(help="Sun torque, N m (default: the operating point's).")] = None,
-    plot: Annotated[Optional[Path], typer.Option(help="Also draw the load per planet over a carrier revolution.")]
-    = None,
+    plot: Annotated[Optional[Path], typer.Option(
+        help="Also draw the load per planet over a carrier revolution (and, with [elastic.face], the face load "
+             "to NAME-face.svg).")] = None,
     set_: SetOption = None,
 ) -> None:
     """Load of every planet and K_γ from the [elastic] errors: over torque, a carrier revolution, Monte Carlo."""
@@ -212,9 +213,16 @@ def sharing(
             sections.append((f"{element.name}: Monte Carlo", mc))
             entry["monte_carlo"] = mc.to_dict()
         if inputs is not None and inputs.face is not None:
-            for mesh_name, face in _face_loads(geometry, model, loads, inputs.face).items():
+            faces = _face_loads(geometry, model, loads, inputs.face)
+            for mesh_name, face in faces.items():
                 sections.append((f"{element.name}: face load, {mesh_name} mesh of the most loaded planet", face))
                 entry.setdefault("face_load", {})[mesh_name] = face.to_dict()
+            if plot is not None:
+                from ..plotting.elastic import save_face_load
+
+                name = f"{plot.stem}-face" if len(sets) == 1 else f"{plot.stem}-{element.name}-face"
+                save_face_load({f"{m} mesh": f for m, f in faces.items()}, plot.with_stem(name),
+                               title=f"{element.name}: load along the face width, most loaded planet")
         notes = [f"computed K_gamma = {loads.k_gamma:.4f} at {t:g} N m (one-sided contact, errors of [elastic])"]
         planets = element.planets
         try:

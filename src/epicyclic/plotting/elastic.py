@@ -5,6 +5,7 @@
   operating range marked (filled where the mesh phasing lets the harmonic excite the mode,
   open where it cancels).
 * Planet loads: the mesh force of every planet over the carrier angle with K_γ on a second axis.
+* Face load: the load per unit face width w(y) of one or more meshes, the mean dashed.
 
 References
 ----------
@@ -19,7 +20,8 @@ from typing import Any
 
 from ._common import pyplot, save_figure
 
-__all__ = ["campbell_figure", "planet_loads_figure", "save_campbell", "save_planet_loads"]
+__all__ = ["campbell_figure", "planet_loads_figure", "face_load_figure", "save_campbell", "save_planet_loads",
+           "save_face_load"]
 
 _KIND_COLOURS = {"rigid-body": "#999999", "rotational": "#1f77b4", "translational": "#d62728", "planet": "#2ca02c",
                  "mixed": "#9467bd"}
@@ -84,6 +86,28 @@ def planet_loads_figure(study: Any, *, title: str = "Load per planet", figsize=(
     ax.legend(fontsize=8, ncol=6, loc="upper center", bbox_to_anchor=(0.5, -0.14), frameon=False)
     ax.grid(alpha=0.3)
     return fig
+
+
+def face_load_figure(loads: dict, *, title: str = "Load along the face width", figsize=(8.0, 4.0)) -> Any:
+    """A matplotlib Figure of :class:`~epicyclic.elastic.face_load.FaceLoad` results by name (mesh → FaceLoad)."""
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=figsize)
+    for name, load in loads.items():
+        line, = ax.step(load.positions, load.line_load, where="mid", lw=1.4,
+                        label=f"{name}: K_Hbeta {load.k_hbeta:.3f}")
+        ax.axhline(load.force / load.face_width, color=line.get_color(), ls="--", lw=0.8)
+    ax.set_xlabel("position along the face width (from the torque input end), mm")
+    ax.set_ylabel("load per unit face width w, N/mm")
+    ax.set_ylim(bottom=0)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    return fig
+
+
+def save_face_load(loads: dict, path: str | Path, **kwargs: Any) -> Path:
+    """Draw :func:`face_load_figure` to ``path`` (.svg, .png, .pdf)."""
+    return save_figure(face_load_figure(loads, **kwargs), path)
 
 
 def save_campbell(diagram: Any, path: str | Path, **kwargs: Any) -> Path:
