@@ -192,3 +192,17 @@ def test_a_floating_sun_between_two_opposite_planets(planets):
     assert study.sun_mesh.sum(axis=1) * model.sun.radius == pytest.approx(np.ones(300), rel=1e-9)
     assert np.any(np.count_nonzero(study.sun_mesh, axis=1) == 2)
     assert np.all((study.k_gamma >= 1.0) & (study.k_gamma <= planets))
+
+
+@pytest.mark.parametrize("sun, ring, carrier", [(0.0, 0.0, 1e8), (0.0, 0.0, 0.0), (1e8, 0.0, 0.0)])
+def test_floating_members_keep_the_balance(sun, ring, carrier):
+    # Several floating members at low and high torque: a step's active set may leave a member free (a
+    # singular, sometimes inconsistent system); the equilibrium found must still balance the sun torque.
+    m = lin_parker_1999(7)
+    model = PlanetaryLumpedModel(m.carrier, m.ring, m.sun, m.planet, m.planet_angles, m.sun_mesh, m.ring_mesh, 1e7,
+                                 supports={"sun": (sun, 0.0), "ring": (ring, 0.0), "carrier": (carrier, 0.0)},
+                                 sun_pressure_angle=m.sun_pressure_angle, ring_pressure_angle=m.ring_pressure_angle)
+    for torque in (0.5, 20.0, 3000.0):
+        study = monte_carlo_sharing(model, torque, Tolerances(pin_position=25, tooth_thickness=25, sun_runout=15,
+                                                              ring_runout=15), draws=200, seed=int(torque))
+        assert study.sun_mesh.sum(axis=1) * model.sun.radius == pytest.approx(np.full(200, torque), rel=1e-8)

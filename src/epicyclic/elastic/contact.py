@@ -66,13 +66,17 @@ def _polish(act, target, tol, k_lin, v_lin, e_lin, k_con, w_con, g_con, f):
 
     A member the closed contacts hold only in part (a floating sun between two opposite planets)
     makes the system singular but consistent; its least-norm solution (pseudo-inverse), the limit of
-    the regularised one, is taken there.  Rows whose plain solution changes the active set keep ``target``.
+    the regularised one, is taken there.  Rows whose plain solution changes the active set or leaves the system
+    unsolved (an inconsistent least-squares answer) keep ``target``.
     """
     a0, rhs0 = _system(act, k_lin, v_lin, e_lin, k_con, w_con, g_con, f, regular=False)
 
     def holds(q):
+        """Finite, in equilibrium (the linear system solved to round-off) and keeping its active set."""
         d0 = q @ w_con.T - g_con
-        return np.all(((d0 > 0.0) == (act == 1.0)) | (np.abs(d0) <= tol), axis=1) & np.all(np.isfinite(q), axis=1)
+        residual = np.linalg.norm(np.einsum("bij,bj->bi", a0, np.nan_to_num(q)) - rhs0, axis=1)
+        return np.all(((d0 > 0.0) == (act == 1.0)) | (np.abs(d0) <= tol), axis=1) & np.all(np.isfinite(q), axis=1) \
+            & (residual <= 1e-9 * np.linalg.norm(rhs0, axis=1))
 
     try:
         plain = np.linalg.solve(a0, rhs0[..., None])[..., 0]
