@@ -38,6 +38,9 @@ def test_operating_range_filters_and_renders():
     model = lin_parker_1999(4)
     c = campbell_diagram(model, Z_S, Z_R, RATIOS, np.linspace(0.0, 30000.0, 301), operating=(5000.0, 8000.0))
     assert c.crossings and all(5000.0 <= x.speed <= 8000.0 for x in c.crossings)
+    # at speed the type comes from the gyroscopic mode shape; the phasing rule of z_s = 31, N = 4 still decides
+    assert all(x.excited == (x.kind == "translational") for x in c.crossings if x.order == "mesh x1")
+    assert {x.kind for x in c.crossings} <= {"rotational", "translational", "planet"}
     assert "mesh x1" in c.table() and "| order |" in c.markdown() and "<table>" in c._repr_html_()
     data = c.to_dict()
     assert data["crossings"][0]["speed_rpm"] == c.crossings[0].speed

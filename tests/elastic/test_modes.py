@@ -131,3 +131,15 @@ def test_bad_input_names_the_key(bad, key):
         Body(0.0, 1.0, 1.0)
     with pytest.raises(ElasticError, match="carrier_speeds"):
         frequencies_at_speeds(lin_parker_1999(3), [float("inf")])
+
+
+@pytest.mark.parametrize("planets", [3, 4, 5])
+@pytest.mark.parametrize("speed", [0.0, 300.0, 1500.0])
+def test_mode_types_survive_speed(planets, speed):
+    # Cooley & Parker 2012: at carrier speed the rotational, translational and planet modes keep their structure
+    from epicyclic.elastic.modes import kinds_at_speed
+
+    freq, kinds = kinds_at_speed(cooley_parker_2012(planets), speed)
+    assert kinds.count("rotational") + kinds.count("rigid-body") == 6
+    assert kinds.count("translational") == 12 and kinds.count("planet") == 3 * (planets - 3)
+    assert freq == pytest.approx(frequencies_at_speeds(cooley_parker_2012(planets), speed)[0], rel=1e-9, abs=1e-6)

@@ -12,7 +12,8 @@ Over a range of input speeds n (1/min) with the members turning at fixed ratios 
 A crossing is a speed at which an excitation line meets a natural-frequency curve (the sign of
 their difference changes between two grid speeds; the speed is interpolated linearly).  Each
 mesh-harmonic crossing says whether the mesh phasing lets that harmonic excite the mode's type
-(:mod:`~epicyclic.elastic.phasing`; the type is that of the mode at rest with the same rank).
+(:mod:`~epicyclic.elastic.phasing`; the type from the mode shape at the crossing's speed,
+:func:`~epicyclic.elastic.modes.kinds_at_speed`).
 
 References
 ----------
@@ -32,7 +33,7 @@ import numpy as np
 from ._render import Tabular, number
 from .errors import ElasticError, finite
 from .lumped import CENTRAL, PlanetaryLumpedModel
-from .modes import frequencies_at_speeds, natural_modes
+from .modes import frequencies_at_speeds, kinds_at_speed, natural_modes
 from .phasing import mesh_phasing
 
 __all__ = ["CampbellDiagram", "Crossing", "campbell_diagram", "crossings"]
@@ -49,7 +50,7 @@ class Crossing:
     mode : int
         Rank of the natural frequency (1 = lowest).
     kind : str
-        The type of that mode at rest.
+        The type of that mode at the crossing's speed.
     speed : float
         Input speed of the crossing, 1/min.
     frequency : float
@@ -250,7 +251,9 @@ def campbell_diagram(model: PlanetaryLumpedModel, sun_teeth: int, ring_teeth: in
     for i, j, speed, freq in crossings(grid_, natural, lines):
         if freq <= 0.0 or (band and not band[0] <= speed <= band[1]):
             continue
-        kind = rest.kinds[j]
+        # the mode's type at the crossing's carrier speed (the ranks of the curves may change with speed)
+        kind = kinds_at_speed(model, 2 * math.pi * ratio["carrier"] * speed / 60.0)[1][j] if gyroscopic \
+            else rest.kinds[j]
         excited = None
         if "mesh" in orders[i]:
             which = "ring" if orders[i].startswith("ring") else "sun"

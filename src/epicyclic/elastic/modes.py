@@ -32,7 +32,7 @@ from ._render import Tabular, number
 from .errors import ElasticError
 from .lumped import PlanetaryLumpedModel
 
-__all__ = ["NaturalModes", "natural_modes", "frequencies_at_speeds", "KINDS"]
+__all__ = ["NaturalModes", "natural_modes", "frequencies_at_speeds", "kinds_at_speed", "KINDS"]
 
 #: Mode types.
 KINDS = ("rigid-body", "rotational", "translational", "planet", "mixed")
@@ -256,3 +256,55 @@ def frequencies_at_speeds(model: PlanetaryLumpedModel, carrier_speeds) -> np.nda
     top = np.max(freq, axis=1, keepdims=True)
     return np.where(freq < 1e-6 * np.maximum(top, 1.0), 0.0, freq)
 
+
+
+def kinds_at_speed(model: PlanetaryLumpedModel, carrier_speed: float) -> tuple[tuple[float, ...], tuple[str, ...]]:
+    """Natural frequencies (Hz) and mode types at the carrier speed Ω, from the gyroscopic eigenvectors.
+
+    Cooley & Parker (2012) show that the rotational, translational and planet modes of equally spaced
+    planets keep their structure at speed (the translational pairs split); each complex mode shape is
+    classified by which central-member coordinates move, as :func:`natural_modes` does at rest.
+
+    Parameters
+    ----------
+    model : PlanetaryLumpedModel
+    carrier_speed : float
+        Ω, rad/s.
+
+    Returns
+    -------
+    tuple
+        (ascending frequencies Hz, their types as :data:`KINDS`).
+
+    References
+    ----------
+    Cooley & Parker 2012, section 4 (the mode types at speed).
+
+    Examples
+    --------
+    >>> from epicyclic.elastic.lumped import Body, PlanetaryLumpedModel, equally_spaced
+    >>> b = Body(1.0, 0.01, 0.1)
+    >>> m = PlanetaryLumpedModel(b, b, b, Body(0.5, 0.002, 0.05), equally_spaced(4), 5e8, 5e8, 1e8,
+    ...                          supports={"ring": (1e8, 1e6), "carrier": (1e8, 1e4), "sun": (1e8, 1e4)})
+    >>> _, kinds = kinds_at_speed(m, 300.0)
+    >>> kinds.count("rotational"), kinds.count("translational"), kinds.count("planet")
+    (6, 12, 3)
+    """
+    speed = float(np.asarray(carrier_speed, dtype=float))
+    if not math.isfinite(speed) or abs(speed) > 1e6:
+        raise ElasticError(f"carrier_speed must be a finite speed in rad/s below 1e6, got {carrier_speed!r}.")
+    n = model.size
+    m_inv = 1.0 / np.diag(model.mass_matrix())
+    a = np.zeros((2 * n, 2 * n))
+    a[:n, n:] = np.eye(n)
+    a[n:, :n] = -m_inv[:, None] * (model.stiffness_matrix() - speed ** 2 * model.centripetal_matrix())
+    a[n:, n:] = -speed * (m_inv[:, None] * model.gyroscopic_matrix())
+    lam, vec = np.linalg.eig(a)
+    order = np.argsort(np.abs(lam.imag), kind="stable")[1::2]   # one of each ±iω pair, ascending
+    freq = np.abs(lam.imag[order]) / (2.0 * math.pi)
+    top = max(float(freq.max()), 1.0)
+    kinds = []
+    for f, k in zip(freq, order):
+        shape = np.abs(vec[:n, k])[:, None]
+        kinds.append(_kind(shape, f < 1e-6 * top, 1e-6))
+    return tuple(float(f) if f >= 1e-6 * top else 0.0 for f in freq), tuple(kinds)
