@@ -2,6 +2,8 @@
 
 import math
 
+import numpy as np
+
 import pytest
 
 from epicyclic import PlanetarySet
@@ -69,3 +71,23 @@ def test_a_stepped_set():
     model, _ = lumped_model(g)
     assert model.step_ratio == pytest.approx((21 * 2 * 50 / 70) / (30 * 2.0))
     assert model.planet.mass > lumped_model(g)[0].sun.mass
+
+
+def test_a_double_planet_set():
+    # sun 30, planets 15 and 16, ring 78, m = 2 (tests/geometry/test_fitting.py: it assembles with 3 pairs)
+    from epicyclic.elastic import natural_modes
+    from epicyclic.elastic.double import DoublePlanetModel
+
+    p = PlanetarySet.double_planet("D", sun="s", ring="r", carrier="c", z_sun=30, z_planet_sun=15, z_planet_ring=16,
+                                   z_ring=78, planets=3)
+    g = SetGeometry.create(p, module=2.0, face_width=20.0)
+    model, taken = lumped_model(g)
+    assert isinstance(model, DoublePlanetModel) and model.size == 9 + 18
+    a, b, c = (m.center_distance for m in g.meshes)
+    # the outer planet stands where the three centre distances close their triangle
+    gap = model.outer_planet_radius * 1e3 * np.array([math.cos(model.outer_planet_angle),
+                                                       math.sin(model.outer_planet_angle)]) - np.array([a, 0.0])
+    assert np.hypot(*gap) == pytest.approx(b, rel=1e-12) and model.outer_planet_radius * 1e3 == pytest.approx(c)
+    modes = natural_modes(model)
+    assert modes.count("translational") == 18 and modes.count("rigid-body") == 1
+    assert any("planet-planet" in t for t in taken)

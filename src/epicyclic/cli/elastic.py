@@ -1,8 +1,9 @@
 """``epicyclic vibration FILE`` and ``epicyclic sharing FILE``: the planetary sets as elastic systems.
 
-``vibration``: natural frequencies and mode types of every simple or stepped set with a geometry table
+``vibration``: natural frequencies and mode types of every simple, stepped or double-planet set with a
+geometry table
 (Lin & Parker 1999), the mesh phasing (which mesh harmonics excite which mode type) and the
-Campbell diagram's crossings over a speed range.  ``sharing``: the static load of every planet
+Campbell diagram's crossings over a speed range.  ``sharing`` (simple and stepped sets): the static load of every planet
 and K_γ from the errors of the ``[elastic]`` table, over torque, over a carrier revolution
 (with run-outs) and as a Monte-Carlo distribution (with tolerances).  Stiffnesses come from the
 ``[elastic]`` table or the stated defaults (``docs/elastic.md``); the defaults taken are listed.
@@ -34,7 +35,7 @@ def _sets(file: Path, overrides: list[str] | None):
     spec = inputs.spec if inputs is not None else ElasticSpec()
     chosen = inputs.set_name if inputs is not None else None
     sets = [e for e in train_file.train.elements if isinstance(e, PlanetarySet) and e.name in train_file.geometry
-            and e.teeth is not None and e.teeth.kind in ("simple", "stepped")]
+            and e.teeth is not None and e.teeth.kind in ("simple", "stepped", "double")]
     if chosen is not None:
         if chosen not in {e.name for e in sets}:
             raise ElasticError(f"[elastic] set: {chosen!r} is no simple set with a geometry table; the file has "
@@ -187,6 +188,15 @@ def sharing(
     inputs = train_file.elastic
     sections: list[tuple[str, Any]] = []
     data: dict[str, Any] = {"title": f"load sharing of {train_file.title}", "sets": {}}
+    skipped = [e.name for e, *_ in sets if e.teeth.kind == "double"]
+    sets = [entry for entry in sets if entry[0].teeth.kind != "double"]
+    if not sets:
+        raise ElasticError(f"sharing: the load sharing of double-planet sets ({', '.join(map(repr, skipped))}) is not "
+                           "modelled yet; epicyclic vibration gives their modes.")
+    if skipped:
+        data["skipped"] = {name: "double-planet set: load sharing not modelled" for name in skipped}
+        sections.append(("skipped", [f"{name}: a double-planet set, its load sharing is not modelled" for name in
+                                     skipped]))
     for element, geometry, model, taken, state in sets:
         t = torque
         if t is None:

@@ -1,7 +1,8 @@
 """The planetary set as an elastic, vibrating system: stiffnesses, natural modes, mesh phasing, load sharing.
 
 * :mod:`~epicyclic.elastic.stiffness` — mesh stiffness c', c_γα of ISO 6336-1 (used by the rating too);
-* :mod:`~epicyclic.elastic.lumped` — the lumped-parameter model of Lin & Parker (1999);
+* :mod:`~epicyclic.elastic.lumped` — the lumped-parameter model of Lin & Parker (1999) (stepped planets too),
+  :mod:`~epicyclic.elastic.double` of double-planet sets;
 * :mod:`~epicyclic.elastic.modes` — natural frequencies, mode types, modal strain energy, speed;
 * :mod:`~epicyclic.elastic.phasing` — mesh phasing: which mesh harmonics excite which modes (Parker & Lin 2004);
 * :mod:`~epicyclic.elastic.campbell` — Campbell diagram: mesh and shaft orders, crossings over speed;
@@ -16,6 +17,7 @@ J. Lin, R. G. Parker, J. Vib. Acoust. 121 (1999) 316–321; R. G. Parker, J. Lin
 """
 
 from .campbell import CampbellDiagram, campbell_diagram
+from .double import DoublePlanetModel
 from .errors import ElasticError
 from .face_load import FaceLoad, HelixModification, best_crowning, face_load
 from .lumped import Body, PlanetaryLumpedModel, equally_spaced
@@ -31,7 +33,7 @@ from .sharing import (
 )
 from .sharing_results import PlanetLoads, SharingStudy
 
-__all__ = ["ElasticError", "Body", "PlanetaryLumpedModel", "equally_spaced", "NaturalModes", "natural_modes",
+__all__ = ["ElasticError", "Body", "DoublePlanetModel", "PlanetaryLumpedModel", "equally_spaced", "NaturalModes", "natural_modes",
            "frequencies_at_speeds", "MeshPhasing", "mesh_phasing",
            "CampbellDiagram", "campbell_diagram", "PlanetErrors", "Tolerances", "load_sharing",
            "monte_carlo_sharing", "sharing_over_revolution", "sharing_over_torque", "PlanetLoads", "SharingStudy",

@@ -159,10 +159,12 @@ def lumped_model(geometry: SetGeometry, spec: ElasticSpec | None = None) -> tupl
     spec = spec or ElasticSpec()
     teeth = geometry.planetary_set.teeth if isinstance(geometry, SetGeometry) else None
     stepped = teeth is not None and teeth.kind == "stepped" and teeth.ring_internal and not teeth.sun_internal
+    if isinstance(geometry, SetGeometry) and geometry.kind == "double":
+        return _double(geometry, spec)
     if not isinstance(geometry, SetGeometry) or not (geometry.kind == "simple" or stepped):
-        raise ElasticError("elastic models are built for simple sets and stepped sets with a sun and an internal ring, "
-                           "with a geometry table; double-planet sets and sets with two suns or two rings are not "
-                           "modelled yet.")
+        raise ElasticError("elastic models are built for simple, double-planet and stepped sets with a sun and an "
+                           "internal ring, with a geometry table; sets with two suns or two rings are not modelled "
+                           "yet.")
     if geometry.face_width is None:
         raise ElasticError(f"{geometry.planetary_set.name}: the geometry table needs face_width (mm) for the mesh "
                            "stiffness and the masses.")
@@ -218,4 +220,70 @@ def lumped_model(geometry: SetGeometry, spec: ElasticSpec | None = None) -> tupl
         sun_pressure_angle=math.radians(geometry.sun_mesh.operating_pressure_angle),
         ring_pressure_angle=math.radians(geometry.ring_mesh.operating_pressure_angle),
         ring_planet_radius=planet_ring.base_diameter / 2e3 if stepped else None)
+    return model, taken
+
+
+def _double(geometry: SetGeometry, spec: ElasticSpec) -> tuple[PlanetaryLumpedModel, list[str]]:
+    """A double-planet set: planet 1 (sun side) at the sun mesh's centre distance, planet 2 at the ring's,
+    φ between them from the triangle of the three centre distances."""
+    from .double import DoublePlanetModel
+
+    taken: list[str] = []
+    rho = spec.value("density", taken) * 1e-9
+    widths, gears = geometry.face_width, geometry.gears
+    if widths is None:
+        raise ElasticError(f"{geometry.planetary_set.name}: the geometry table needs face_width (mm).")
+
+    def disc(g, width: float) -> tuple[float, float]:
+        d = (g.tip_diameter + g.root_diameter) / 2
+        mass = rho * math.pi / 4 * d * d * width
+        return mass, mass * d * d / 8 * 1e-6
+
+    sun_mesh, middle, ring_mesh = geometry.meshes
+    r_a, r_b, a_ab = sun_mesh.center_distance, ring_mesh.center_distance, middle.center_distance
+    cos_phi = (r_a ** 2 + r_b ** 2 - a_ab ** 2) / (2 * r_a * r_b)
+    if not -1.0 < cos_phi < 1.0:
+        raise ElasticError(f"{geometry.planetary_set.name}: the centre distances {r_a:.4g}, {r_b:.4g}, {a_ab:.4g} mm "
+                           "close no triangle; check the double-planet geometry (epicyclic fit).")
+    ring = gears["ring"]
+    m_n = geometry.rack.module
+    inertial = {"sun": disc(gears["sun"], widths["sun"]), "planet": disc(gears["planet1"], widths["planet1"]),
+                "outer": disc(gears["planet2"], widths["planet2"]),
+                "ring": (rho * math.pi / 4 * ((ring.root_diameter + 6 * m_n) ** 2 - ring.root_diameter ** 2)
+                         * widths["ring"], 0.0),
+                "carrier": (rho * math.pi / 4 * (2 * r_b) ** 2 * widths["planet2"], 0.0)}
+    ring_mass = inertial["ring"][0]
+    inertial["ring"] = (ring_mass, ring_mass * ((ring.root_diameter + 6 * m_n) ** 2 + ring.root_diameter ** 2) / 8e6)
+    carrier_mass = inertial["carrier"][0]
+    inertial["carrier"] = (carrier_mass, carrier_mass * (2 * r_b) ** 2 / 8e6)
+    inertial.update({k: (float(v[0]), float(v[1])) for k, v in spec.masses.items()})
+    body = lambda key, radius: Body(inertial[key][0], inertial[key][1], radius)  # noqa: E731
+    k = []
+    for mesh, key in ((sun_mesh, "sun_mesh"), (ring_mesh, "ring_mesh")):
+        given = getattr(spec, key)
+        if given is None:
+            spec.value(key, taken)
+        k.append(given if given is not None else _iso_mesh(geometry, mesh))
+    k_ab = _iso_mesh(geometry, middle)
+    taken.append("planet-planet mesh c_gamma_alpha b (ISO 6336-1, 9.3)")
+    ring_torsion = spec.value("ring_torsion", taken)
+    if ring_torsion is None:
+        ring_torsion = 1e9 * (ring.base_diameter / 2e3) ** 2
+    planets = geometry.planetary_set.planets
+    angles = equally_spaced(planets) if spec.planet_angles is None else tuple(math.radians(a) for a in
+                                                                              spec.planet_angles)
+    if len(angles) != planets:
+        raise ElasticError(f"elastic.planet_angles: give one angle per planet pair ({planets}), got {len(angles)}.")
+    model = DoublePlanetModel(
+        body("carrier", r_a / 1e3), body("ring", ring.base_diameter / 2e3), body("sun", gears["sun"].base_diameter / 2e3),
+        body("planet", gears["planet1"].base_diameter / 2e3), angles, k[0], k[1],
+        spec.value("planet_bearing", taken),
+        supports={"sun": (spec.value("sun_support", taken), spec.value("sun_torsion", taken)),
+                  "ring": (spec.value("ring_support", taken), ring_torsion),
+                  "carrier": (spec.value("carrier_support", taken), spec.value("carrier_torsion", taken))},
+        sun_pressure_angle=math.radians(sun_mesh.operating_pressure_angle),
+        ring_pressure_angle=math.radians(ring_mesh.operating_pressure_angle),
+        outer_planet=body("outer", gears["planet2"].base_diameter / 2e3), planet_mesh=k_ab,
+        planet_pressure_angle=math.radians(middle.operating_pressure_angle), outer_planet_radius=r_b / 1e3,
+        outer_planet_angle=math.acos(cos_phi))
     return model, taken

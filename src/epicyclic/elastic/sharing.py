@@ -160,6 +160,9 @@ def _static(model: PlanetaryLumpedModel):
     """
     if not isinstance(model, PlanetaryLumpedModel):
         raise ElasticError(f"load sharing needs a PlanetaryLumpedModel, got {type(model).__name__}.")
+    if model.size != 9 + 3 * model.planets:
+        raise ElasticError("load sharing is modelled for simple and stepped planets; a double-planet set is not "
+                           "(its modes are: natural_modes).")
     names, k, v = model.springs()
     n = model.planets
     drop = set(_KEEP_DROP) | {11 + 3 * i for i in range(n)}
