@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import ElasticError, finite, positive
-from .lumped import CENTRAL, Body, PlanetaryLumpedModel
+from .lumped import CENTRAL, Body, PlanetaryLumpedModel, SpringSet
 
 __all__ = ["DoublePlanetModel"]
 
@@ -99,20 +99,8 @@ class DoublePlanetModel(PlanetaryLumpedModel):
     def springs(self) -> tuple[tuple[str, ...], np.ndarray, np.ndarray]:
         """(names, stiffnesses N/m, directions) as :meth:`PlanetaryLumpedModel.springs`; meshes ``sun-planet n``,
         ``planet-planet n``, ``ring-planet n``, bearings ``bearing planet na`` / ``nb``."""
-        names: list[str] = []
-        ks: list[float] = []
-        rows: list[np.ndarray] = []
-        n = self.size
-
-        def add(name: str, k: float, entries: dict[int, float]) -> None:
-            if k <= 0.0:
-                return
-            v = np.zeros(n)
-            for index, value in entries.items():
-                v[index] += value
-            names.append(name)
-            ks.append(k)
-            rows.append(v)
+        springs = SpringSet(self.size)
+        add = springs.add
 
         def local(p: int, psi: float, d: np.ndarray, sign: float) -> dict[int, float]:
             """A planet's translation term sign·d·X in its (ξ, η) axes."""
@@ -138,13 +126,8 @@ class DoublePlanetModel(PlanetaryLumpedModel):
                 add(f"bearing planet {i + 1}{tag}", self.planet_bearing, {p: 1.0, 0: -math.cos(phi), 1: -math.sin(phi)})
                 add(f"bearing planet {i + 1}{tag}", self.planet_bearing,
                     {p + 1: 1.0, 0: math.sin(phi), 1: -math.cos(phi), 2: -radius / r_c})
-        for j, name in enumerate(CENTRAL):
-            k_t, k_theta = self.supports[name]
-            body = getattr(self, name)
-            add(f"support {name}", k_t, {3 * j: 1.0})
-            add(f"support {name}", k_t, {3 * j + 1: 1.0})
-            add(f"torsion {name}", k_theta / body.radius ** 2, {3 * j + 2: 1.0})
-        return tuple(names), np.asarray(ks), np.asarray(rows).reshape(len(rows), n)
+        self._supports(springs)
+        return springs.result()
 
     def to_dict(self):
         """JSON data of the inputs (SI units), with the outer planet and the planet–planet mesh."""

@@ -41,7 +41,7 @@ import numpy as np
 
 from .errors import ElasticError, finite, non_negative, positive
 
-__all__ = ["Body", "PlanetaryLumpedModel", "CENTRAL", "equally_spaced"]
+__all__ = ["Body", "PlanetaryLumpedModel", "SpringSet", "CENTRAL", "equally_spaced"]
 
 #: The central members in the order of their coordinates.
 CENTRAL = ("carrier", "ring", "sun")
@@ -100,6 +100,28 @@ class Body:
     def inertia_over_r2(self) -> float:
         """I/r², kg: the mass of the u coordinate."""
         return self.inertia / self.radius ** 2
+
+
+class SpringSet:
+    """Springs being listed: names, stiffnesses and direction rows over ``size`` coordinates."""
+
+    def __init__(self, size: int):
+        self.size, self.names, self.ks, self.rows = size, [], [], []
+
+    def add(self, name: str, k: float, entries: dict[int, float]) -> None:
+        """A spring ``k`` (left out where 0) along the direction with ``entries`` (coordinate → coefficient)."""
+        if k <= 0.0:
+            return
+        v = np.zeros(self.size)
+        for index, value in entries.items():
+            v[index] += value
+        self.names.append(name)
+        self.ks.append(k)
+        self.rows.append(v)
+
+    def result(self) -> tuple[tuple[str, ...], np.ndarray, np.ndarray]:
+        """(names, stiffnesses, directions)."""
+        return tuple(self.names), np.asarray(self.ks), np.asarray(self.rows).reshape(len(self.rows), self.size)
 
 
 @dataclass(frozen=True)
@@ -221,21 +243,8 @@ class PlanetaryLumpedModel:
         ``bearing planet 1`` (radial and tangential rows), ``support sun`` (x, y rows),
         ``torsion ring``.  Springs of zero stiffness (free members) are left out.
         """
-        names: list[str] = []
-        ks: list[float] = []
-        rows: list[np.ndarray] = []
-        n = self.size
-
-        def add(name: str, k: float, entries: dict[int, float]) -> None:
-            if k <= 0.0:
-                return
-            v = np.zeros(n)
-            for index, value in entries.items():
-                v[index] += value
-            names.append(name)
-            ks.append(k)
-            rows.append(v)
-
+        springs = SpringSet(self.size)
+        add = springs.add
         a_s, a_r, rho = self.sun_pressure_angle, self.ring_pressure_angle, self.step_ratio
         for i, psi in enumerate(self.planet_angles):
             p = 9 + 3 * i
@@ -247,13 +256,17 @@ class PlanetaryLumpedModel:
             add(f"bearing planet {i + 1}", self.planet_bearing, {p: 1.0, 0: -math.cos(psi), 1: -math.sin(psi)})
             add(f"bearing planet {i + 1}", self.planet_bearing,
                 {p + 1: 1.0, 0: math.sin(psi), 1: -math.cos(psi), 2: -1.0})
+        self._supports(springs)
+        return springs.result()
+
+    def _supports(self, springs: SpringSet) -> None:
+        """The translational and torsional supports of carrier, ring and sun."""
         for j, name in enumerate(CENTRAL):
             k_t, k_theta = self.supports[name]
             body = getattr(self, name)
-            add(f"support {name}", k_t, {3 * j: 1.0})
-            add(f"support {name}", k_t, {3 * j + 1: 1.0})
-            add(f"torsion {name}", k_theta / body.radius ** 2, {3 * j + 2: 1.0})
-        return tuple(names), np.asarray(ks), np.asarray(rows).reshape(len(rows), n)
+            springs.add(f"support {name}", k_t, {3 * j: 1.0})
+            springs.add(f"support {name}", k_t, {3 * j + 1: 1.0})
+            springs.add(f"torsion {name}", k_theta / body.radius ** 2, {3 * j + 2: 1.0})
 
     def stiffness_matrix(self) -> np.ndarray:
         """K = Σ k v vᵀ over meshes, planet bearings and supports, N/m."""
