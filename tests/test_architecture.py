@@ -29,8 +29,8 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"model"},                                        # the description: elements, train, operating point
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results
-    {"analysis", "losses", "rating", "transmission", "demo", "dynamics"},  # built on the solver: modes, losses,
-    #                                                   rating, gears, shifts as they happen
+    {"analysis", "elastic", "losses", "rating", "transmission", "demo", "dynamics"},  # built on the solver: modes,
+    #                                      losses, rating, gears, the elastic set, shifts as they happen
     {"explain", "explain_losses", "io", "plotting", "synthesis", "exchange"},  # files (REXS too), reports, pictures
     {"cli", "web", "notebook"},                       # the front ends (notebook: Jupyter previews)
     {"__main__"},

@@ -294,7 +294,8 @@ def test_a_mesh_below_its_minimum_safety_is_drawn_red():
             names = [t for t in ax.texts if t.get_text().startswith("P: i0")]
             assert len(names) == 1 and ("below minimum safety" in names[0].get_text()) == red
             if red:
-                assert "S_F 0.477 < 1.4" in names[0].get_text()  # the ring's root: the printed safety
+                s_f = min(float(g.S_F) for m in rating.meshes if m.mesh == "sun-planet" for g in m.gears)
+                assert f"S_F {s_f:.3f} < 1.4" in names[0].get_text()  # the mesh's lowest root safety, printed
                 assert subject.context.warnings["P"] == rating.below_minimum()["P"]
         finally:
             plt.close(fig)

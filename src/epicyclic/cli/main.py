@@ -102,6 +102,11 @@ from . import serve as _serve  # noqa: E402
 
 app.command("serve")(_serve.serve)
 
+from . import elastic as _elastic  # noqa: E402
+
+app.command("vibration")(_elastic.vibration)
+app.command("sharing")(_elastic.sharing)
+
 
 def main() -> None:
     """Console-script entry point."""

@@ -89,8 +89,13 @@ def rate_file(train_file, file, gears):
     for gear in gears:
         current = train_file if gear is None else replace(train_file, gear=gear)
         solution = solved(current, file)
-        out.append((current.gear, rate_solution(solution, current.geometry, spec, gear=current.gear,
-                                                planned=planned)))
+        used, plan = spec, planned
+        if train_file.elastic is not None and train_file.elastic.rating:  # K_γ, K_Hβ from the elastic model
+            from ..rating.elastic_factors import with_elastic_factors
+
+            used = with_elastic_factors(spec, current.geometry, train_file.elastic, solution, train_file.elastic.rating)
+            plan = mesh_inputs(current.geometry, used)
+        out.append((current.gear, rate_solution(solution, current.geometry, used, gear=current.gear, planned=plan)))
     return out
 
 

@@ -52,6 +52,7 @@ from ..model import HOUSING, Brake, Clutch, GearStage, GearTrain, OperatingPoint
 from ..model.planetary import check_planets
 from ..text import short, terminal_text
 from ..units import Units, to_core
+from .elastic_format import read_elastic
 from .located import locate_error, operating_point_where
 from .overrides import OverrideError, apply_overrides
 from .reader import TableReader, at_key, kind_of
@@ -62,7 +63,7 @@ __all__ = ["InputFileError", "TrainFile", "Transmission", "load_train_file", "lo
 
 _SPIN_TABLES = ("pump", "housing", "seal", "churning", "windage", "defaults")  # io.spin_format reads them
 _TOP_KEYS = {"title", "description", "units", "planetary", "gear", "clutch", "brake", "shafts",
-             "operating_point", "transmission", "lubricant", "rating", "duty_cycle", *_SPIN_TABLES,
+             "operating_point", "transmission", "lubricant", "rating", "duty_cycle", "elastic", *_SPIN_TABLES,
              "dynamics", "engine"}  # the transient's inputs: io.dynamics_format reads them
 _PLANETARY_KEYS = {"name", "sun", "ring", "carrier", "teeth", "stationary_ratio", "stationary_efficiency",
                    "mesh_efficiencies", "planets", "geometry", "losses", "bearings"}
@@ -110,10 +111,9 @@ class TrainFile:
     duty_cycle : DutyCycle or None
         The ``[duty_cycle]`` table.
     exchange : RexsDocument or None
-        For a REXS file: what the file held beyond the train (its load cases, the summary of what was
-        ignored, which REXS component each element came from; :mod:`epicyclic.exchange`).
-    spin : SpinLosses or None
-        The spin losses (oil, clutch and brake ``drag``, pump, churning, windage, seals, housing) or None.
+        For a REXS file: its load cases, what was ignored, each element's component (:mod:`epicyclic.exchange`).
+    spin, elastic : SpinLosses, ElasticInputs or None
+        The spin losses (oil, drag, pump, churning, windage, seals, housing); the ``[elastic]`` table.
     """
 
     source: str
@@ -131,6 +131,7 @@ class TrainFile:
     duty_cycle: Any = None
     exchange: Any = None
     spin: Any = None
+    elastic: Any = None
 
     @property
     def operating_train(self) -> GearTrain:
@@ -392,9 +393,10 @@ class _Reader(TableReader):
                                                         transmission, op)
         spin = spin.read_spin(self, data, oil, temperature, train, transmission and transmission.input) if (
             spin is not None and (spin.has_spin(data) or oil is not None)) else None  # spin losses, docs/losses.md
+        elastic = read_elastic(self, data["elastic"]) if "elastic" in data else None  # docs/elastic.md
         return TrainFile(self.source, title, train, op, self.units, transmission, description, gear,
                          MappingProxyType(geometry), MappingProxyType(losses), rating,
-                         bearings=MappingProxyType(bearings), duty_cycle=duty, spin=spin)
+                         bearings=MappingProxyType(bearings), duty_cycle=duty, spin=spin, elastic=elastic)
 
     def read_units(self, table: Mapping[str, Any]) -> Units:
         self.check_keys(table, _UNIT_KEYS, "[units]")

@@ -3,7 +3,7 @@
 All functions take the tangential force and speed as numbers or numpy arrays (one
 value per load case) and return the same shape: a duty cycle is rated in one call.
 
-* Mesh stiffness (ISO 6336-1, 9.3): c' = c'_th C_M C_R C_B cos β with
+* Mesh stiffness (ISO 6336-1, 9.3; in :mod:`epicyclic.elastic.stiffness`, imported here): c' = c'_th C_M C_R C_B cos β with
   1/c'_th = q' = C1 + C2/z_n1 + C3/z_n2 + C4 x1 + C5 x1/z_n1 + C6 x2 + C7 x2/z_n2 + C8 x1² + C9 x2²
   (z_n2 → ∞ for internal gears), reduced by (K_A F_t/b)/100 below 100 N/mm;
   c_γα = c' (0.75 ε_α + 0.25), c_γβ = 0.85 c_γα.
@@ -35,6 +35,7 @@ import math
 
 import numpy as np
 
+from ..elastic.stiffness import basic_rack_factor, mesh_stiffness, single_stiffness
 from ..errors import EpicyclicError
 from ..geometry.accuracy import flank_tolerances
 from .errors import RatingError
@@ -49,8 +50,6 @@ __all__ = [
     "single_stiffness",
     "transverse_load_factors",
 ]
-
-_Q = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
 
 
 def deviations(grade: int, diameter: float, module: float, face_width: float,
@@ -100,98 +99,6 @@ def deviations(grade: int, diameter: float, module: float, face_width: float,
     except EpicyclicError as exc:
         raise RatingError(f"rating.accuracy_grade: {exc}") from None
     return {"f_pt": t.f_pt, "f_falpha": t.f_falpha, "f_Hbeta": t.f_Hbeta}
-
-
-def basic_rack_factor(dedendum: float, pressure_angle_deg: float) -> float:
-    """C_B = [1 + 0.5 (1.2 − h_fP/m_n)] [1 − 0.02 (20° − α_n)] (ISO 6336-1, eq. (79)).
-
-    Parameters
-    ----------
-    dedendum : float
-        h_fP/m_n of the basic rack.
-    pressure_angle_deg : float
-        α_n, degrees.
-
-    Returns
-    -------
-    float
-
-    References
-    ----------
-    ISO 6336-1:2006, 9.3.1, eq. (79).
-
-    Examples
-    --------
-    >>> round(basic_rack_factor(1.25, 20.0), 3)
-    0.975
-    """
-    return (1 + 0.5 * (1.2 - dedendum)) * (1 - 0.02 * (20.0 - pressure_angle_deg))
-
-
-def single_stiffness(z_n1: float, z_n2: float, x1: float, x2: float, beta: float, *, dedendum: float = 1.25,
-                     pressure_angle_deg: float = 20.0, internal: bool = False, gear_blank: float = 0.8) -> float:
-    """Single stiffness c' at K_A F_t/b ≥ 100 N/mm, N/(mm µm).
-
-    Parameters
-    ----------
-    z_n1, z_n2 : float
-        Virtual tooth numbers (z_n2 ignored for an internal gear: → ∞).
-    x1, x2 : float
-        Profile shifts.
-    beta : float
-        Helix angle, rad.
-    dedendum : float
-        h_fP* for C_B.
-    pressure_angle_deg : float
-        α_n for C_B.
-    internal : bool
-        Gear 2 is internal.
-    gear_blank : float, default 0.8
-        C_M (0.8 for solid discs).
-
-    Returns
-    -------
-    float
-
-    References
-    ----------
-    ISO 6336-1:2006, 9.3.1, eqs. (70)–(79), Table 8 (C1 … C9); C_R = 1 (solid blanks).
-
-    Examples
-    --------
-    >>> round(single_stiffness(19, 104, 0.5, 0.15, 0.0), 3)
-    14.892
-    """
-    c1, c2, c3, c4, c5, c6, c7, c8, c9 = _Q
-    inv2 = 0.0 if internal else 1.0 / z_n2
-    q = c1 + c2 / z_n1 + c3 * inv2 + c4 * x1 + c5 * x1 / z_n1 + c6 * x2 + c7 * x2 * inv2 + c8 * x1 ** 2 + c9 * x2 ** 2
-    return (1.0 / q) * gear_blank * basic_rack_factor(dedendum, pressure_angle_deg) * math.cos(beta)
-
-
-def mesh_stiffness(c_prime: float, contact_ratio: float, line_load):
-    """(c', c_γα, c_γβ) for the line load K_A F_t/b (N/mm), reduced below 100 N/mm.
-
-    Parameters
-    ----------
-    c_prime : float
-        :func:`single_stiffness`, N/(mm µm).
-    contact_ratio : float
-        ε_α.
-    line_load : float or ndarray
-        K_A F_t / b, N/mm.
-
-    Returns
-    -------
-    tuple of float or ndarray
-
-    References
-    ----------
-    ISO 6336-1:2006, 9.3.1 (eq. 70, low loads) and 9.3.2 (c_γα = c'(0.75 ε_α + 0.25), c_γβ = 0.85 c_γα).
-    """
-    scale = np.clip(np.asarray(line_load, dtype=float) / 100.0, 1e-9, 1.0)  # no zero stiffness at zero load
-    c = c_prime * scale
-    c_ga = c * (0.75 * contact_ratio + 0.25)
-    return c, c_ga, 0.85 * c_ga
 
 
 def reduced_mass(d_m1: float, d_b1: float, d_m2: float, d_b2: float, density1: float, density2: float, *,
