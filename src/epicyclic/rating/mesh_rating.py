@@ -399,7 +399,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("C_a", s["C_a"], "µm", p1("6.3" if spec.tip_relief is not None else "6.3 (C_ay, running-in)"),
                "tip relief in K_v", GIVEN if spec.tip_relief is not None else COMPUTED),
         _factor("K_v", k_v, given["K_v"], p1("6.3 (method B)"), "dynamic factor", p1("6 (given)")),
-        Factor("f_pb", s["f_pb"], "µm", _deviation_clause(s["f_pb_source"], f"{accuracy}, f_pb = f_pt cos alpha_t"),
+        Factor("f_pb", s["f_pb"], "µm", _deviation_clause(s["f_pb_source"], f"{accuracy}, f_pb = f_pt cos α_t"),
                "transverse base pitch deviation", s["f_pb_source"]),
         Factor("f_falpha", s["f_falpha"], "µm", _deviation_clause(s["f_falpha_source"], accuracy),
                "profile form deviation", s["f_falpha_source"]),
