@@ -406,6 +406,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("f_Hbeta", s["f_Hbeta"], "µm", _deviation_clause(s["f_Hbeta_source"], accuracy),
                "helix slope deviation", s["f_Hbeta_source"]),
         Factor("y_alpha", _out(y_a), "µm", p1("8.3.4"), "running-in allowance (pitch)"),
+        Factor("y_f", _out(y_f), "µm", p1("6.3 and 8.3.4"), "running-in allowance (profile form)"),
         Factor("F_betax", _out(f_bx), "µm", p1("7.6 (method C)"), "initial equivalent misalignment"),
         _factor("K_Hbeta", k_hb, given["K_Hbeta"], p1("7.6 (method C)"), "face load factor (contact)",
                 p1("7 (given)")),
