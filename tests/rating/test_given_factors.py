@@ -98,6 +98,8 @@ def test_accuracy_edition_and_grade_per_gear(tmp_path):
     ("f_pb = { moon = 8.0 }", "rating.f_pb: 'moon' names no gear"),
     ("K_Halfa = 1.1", "unknown key 'K_Halfa'"),
     ('K_v = "fast"', "K_v"),
+    ('f_pb = "12 um"', "key 'f_pb': takes a plain number in µm, without a unit"),
+    ('K_v = { "sun-planet" = "1.05 N" }', "takes a plain number in 1 (a factor)"),
 ])
 def test_bad_factors_name_the_key_and_what_is_accepted(tmp_path, extra, message):
     assert message in _bad(tmp_path, extra)

@@ -76,6 +76,19 @@ _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "hardness
                   "yield_strength"}
 
 
+_UNITS = {"f_pb": "µm", "f_falpha": "µm", "f_Hbeta": "µm", "flank_roughness": "µm (R_z)", "root_roughness": "µm (R_z)"}
+
+
+def _plain(reader, value, key: str, where: str, table_key: str) -> float:
+    """A number of a key whose unit is fixed: a string with a unit in it is refused naming the unit."""
+    if isinstance(value, str) and any(c.isalpha() for c in value):
+        unit = _UNITS.get(table_key, "1 (a factor)")
+        example = "12.0" if table_key in _UNITS else "1.1"
+        raise reader.error(at_key(where, key), f"takes a plain number in {unit}, without a unit; got {value!r} "
+                                               f"(e.g. {key} = {example}).")
+    return reader.number(value, key, where)
+
+
 def _user_materials(reader, table, where: str, quality: str) -> dict[str, Material]:
     out = {}
     for name, entry in table.items():
@@ -156,9 +169,9 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
     for key in _TABLES:  # one value, or one per mesh / per gear: { sun = 4.8, ring = 8.0 }
         if isinstance(table.get(key), Mapping):
             k_where = at_key(where, key)
-            values[key] = {k: reader.number(v, k, k_where) for k, v in reader.table(table[key], k_where).items()}
+            values[key] = {k: _plain(reader, v, k, k_where, key) for k, v in reader.table(table[key], k_where).items()}
         elif key in table:
-            values[key] = reader.number(table[key], key, where)
+            values[key] = _plain(reader, table[key], key, where, key)
     if "standard" in table:
         values["standard"] = str(table["standard"])
     if isinstance(table.get("accuracy_grade"), Mapping):
