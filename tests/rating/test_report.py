@@ -17,7 +17,8 @@ LOAD_FACTORS = ("K_A", "K_γ", "K_v", "K_Hβ", "K_Fβ", "K_Hα", "K_Fα")
 def _rows(text: str) -> dict[str, str]:
     rows = {}
     lines = text.splitlines()
-    start = next(i for i, line in enumerate(lines) if line.startswith("quantity"))  # the first factor table
+    start = next(i for i, line in enumerate(lines)  # the first factor table (after the input echo)
+                 if line.startswith("quantity") and "given / computed" in line)
     for line in lines[start:]:
         for symbol in LOAD_FACTORS + ("f_pb", "S_Hmin", "S_Fmin", "S_H"):
             if f"  {symbol} " in line and symbol not in rows:  # the symbol column

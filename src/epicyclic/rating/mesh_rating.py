@@ -40,7 +40,7 @@ from ..geometry.gear import MeshGeometry
 from . import flank, load_factors, root
 from ..geometry.accuracy import base_pitch_deviation
 from .errors import RatingError
-from .failure_modes import failure_modes
+from .failure_modes import failure_modes, idle_note
 from .generated_form import generated_tooth_form
 from .given_factors import COMPUTED, DEFAULT, GEAR_DEVIATIONS, GIVEN, MESH_FACTORS, FactorValue
 from .life_factors import bending_curve, pitting_curve
@@ -438,7 +438,8 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     fallback = f", no tool given: ISO's closed form of the basic rack (rho_fP* = {spec.tool_tip_radius:g})"
     forms = tuple(f"Y_F, Y_S of the {name}: {form.method if tool else form.method + fallback}"
                   for name, form, tool in zip(inp.gears, s["forms"], s["form_tools"]))
-    notes = tuple(spec.notes) + ((method_c,) if given["K_Hbeta"] is None else ()) + forms
+    idle = idle_note(inp, n1)
+    notes = tuple(spec.notes) + ((method_c,) if given["K_Hbeta"] is None else ()) + forms + ((idle,) if idle else ())
     rating = MeshRating(inp.element, mesh.name, f"ISO 6336:{year}", "B", {x.symbol: x for x in mesh_factors},
                         (gears[0], gears[1]), mesh.internal, notes)
     modes = failure_modes(inp, rating, t1, n1)

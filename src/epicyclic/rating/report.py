@@ -22,6 +22,7 @@ import html
 import numpy as np
 
 from .given_factors import COMPUTED, GIVEN
+from .report_render import Section, html_page, iso_symbol, iso_unit, render_html, render_markdown, render_text
 
 __all__ = [
     "FACTOR_HEAD",
@@ -32,6 +33,7 @@ __all__ = [
     "iso_unit",
     "markdown_report",
     "mesh_rows",
+    "report_sections",
     "modes_rows",
     "summary_rows",
     "text_report",
@@ -43,40 +45,6 @@ FACTOR_HEAD = ["quantity", "symbol", "unit", "gear 1", "gear 2", "given / comput
 MODES_HEAD = ["element", "mesh", "failure mode", "safety", "value", "minimum", "method"]
 _SAFETY_SUMMARY, _SAFETY_FACTORS = (5, 9), (3, 4)  # columns that may end in " !"
 
-_GREEK = (("epsilon", "ε"), ("lambda", "λ"), ("alpha", "α"), ("beta", "β"), ("gamma", "γ"), ("delta", "δ"),
-          ("sigma", "σ"), ("theta", "ϑ"), ("rho", "ρ"), ("nu", "ν"), ("eta", "η"), ("mu", "µ"))
-_UNITS = (("sqrt(N/mm^2)", "√(N/mm²)"), ("N/mm^2", "N/mm²"), ("mm*um", "mm·µm"), ("mm*µm", "mm·µm"),
-          ("mm^2/s", "mm²/s"), ("um", "µm"))
-
-
-def iso_symbol(symbol: str) -> str:
-    """An ASCII symbol of the results (``sigma_HP``, ``K_Hbeta``, ``c_gamma_alpha``) as ISO writes it.
-
-    Parameters
-    ----------
-    symbol : str
-
-    Returns
-    -------
-    str
-
-    References
-    ----------
-    ISO 6336-1:2019, clause 4 (symbols).
-
-    Examples
-    --------
-    >>> [iso_symbol(s) for s in ("sigma_HP", "K_Hbeta", "c_gamma_alpha", "Y_deltarelT", "epsilon_alpha", "c_prime")]
-    ['σ_HP', 'K_Hβ', 'c_γα', 'Y_δrelT', 'ε_α', "c'"]
-    """
-    if symbol == "c_prime":
-        return "c'"
-    for word, letter in _GREEK:
-        symbol = symbol.replace(word, letter)
-    base, _, rest = symbol.partition("_")
-    return base + ("_" + rest.replace("_", "") if rest else "")
-
-
 def _source(factor) -> str:
     """The factor's own source; a factor (K_, Z_, Y_, S_ of unit 1) without one is computed by its clause."""
     if factor.source:
@@ -84,31 +52,6 @@ def _source(factor) -> str:
     if factor.symbol in ("sigma_Hlim", "sigma_Flim"):
         return "material"
     return COMPUTED if factor.unit == "1" and factor.symbol[:2] in ("K_", "Z_", "Y_", "S_") else ""
-
-
-def iso_unit(unit: str) -> str:
-    """A unit of the results (``N/mm^2``, ``um``) as SI writes it (``N/mm²``, ``µm``).
-
-    Parameters
-    ----------
-    unit : str
-
-    Returns
-    -------
-    str
-
-    References
-    ----------
-    ISO 80000-1:2009 (symbols of units).
-
-    Examples
-    --------
-    >>> iso_unit("N/mm^2"), iso_unit("N/(mm*um)"), iso_unit("um")
-    ('N/mm²', 'N/(mm·µm)', 'µm')
-    """
-    for ascii_, si in _UNITS:
-        unit = unit.replace(ascii_, si)
-    return unit
 
 
 def _fmt(value) -> str:
@@ -218,13 +161,52 @@ def _title(mesh) -> str:
             f"{mesh.standard}, method {mesh.method}: {state}")
 
 
-def text_report(rating, *, details: bool = True) -> str:
+def report_sections(rating, *, details: bool = True, inputs=()) -> list[Section]:
+    """The sections of the rating report, for every format: inputs, summary, failure modes, meshes.
+
+    Parameters
+    ----------
+    rating : TrainRating
+    details : bool, default True
+        With every mesh's factor table and its failure modes (each mesh on a new printed page).
+    inputs : sequence of Section, optional
+        The input echo (:func:`~epicyclic.rating.input_echo.echo_sections`), first.
+
+    Returns
+    -------
+    list of Section
+
+    References
+    ----------
+    ISO 6336-1:2019, clause 4.
+    """
+    head = (f"Tooth load capacity, {rating.standard} method B" + (f", gear {rating.gear}" if rating.gear else "")
+            + f", required life {rating.life_hours:g} h")
+    out = list(inputs)
+    out.append(Section(head, SUMMARY_HEAD, summary_rows(rating), _SAFETY_SUMMARY, level=2,
+                       ok=all(m.ok for m in rating.meshes)))
+    if any(m.modes for m in rating.meshes):
+        out.append(Section("Failure modes beyond pitting and root", MODES_HEAD, modes_rows(rating), (4,)))
+    if details:
+        for m in rating.meshes:
+            out.append(Section(_title(m), FACTOR_HEAD, mesh_rows(m), _SAFETY_FACTORS, tuple(m.notes), level=3,
+                               page_break=True, ok=m.ok))
+            out.extend(mode.section() for mode in m.modes)
+    if rating.skipped:
+        out.append(Section("Not rated", (), (), notes=tuple(f"{k}: {v}" for k, v in rating.skipped.items()),
+                           level=3))
+    return out
+
+
+def text_report(rating, *, details: bool = True, inputs=()) -> str:
     """The rating as plain text: the summary and, with ``details``, every mesh's factor table.
 
     Parameters
     ----------
     rating : TrainRating
     details : bool, default True
+    inputs : sequence of Section, optional
+        The input echo, printed first.
 
     Returns
     -------
@@ -234,39 +216,18 @@ def text_report(rating, *, details: bool = True) -> str:
     ----------
     ISO 6336-1:2019, clause 4.
     """
-    from ..geometry._render import text_table
-
-    head = (f"Tooth load capacity, {rating.standard} method B"
-            + (f", gear {rating.gear}" if rating.gear else "") + f", required life {rating.life_hours:g} h")
-    parts = [text_table(SUMMARY_HEAD, summary_rows(rating), title=head)]
-    if any(m.modes for m in rating.meshes):
-        parts.append(text_table(MODES_HEAD, modes_rows(rating), title="Failure modes beyond pitting and root"))
-    if details:
-        for m in rating.meshes:
-            parts.append(text_table(FACTOR_HEAD, mesh_rows(m), title=_title(m)))
-            parts.extend(f"note: {n}" for n in m.notes)
-            for mode in m.modes:
-                parts.append(mode.table())
-                parts.extend(f"note: {n}" for n in mode.notes)
-    parts.extend(f"not rated: {k}: {v}" for k, v in rating.skipped.items())
-    return "\n\n".join(parts)
+    return render_text(report_sections(rating, details=details, inputs=inputs))
 
 
-def _md_table(head, rows) -> str:
-    def esc(c: str) -> str:
-        return c.replace("|", "\\|")
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    lines += ["| " + " | ".join(esc(c) for c in r) + " |" for r in rows]
-    return "\n".join(lines)
-
-
-def markdown_report(rating, *, details: bool = True) -> str:
+def markdown_report(rating, *, details: bool = True, inputs=()) -> str:
     """The rating as Markdown (safeties below their minimum end in ``!``).
 
     Parameters
     ----------
     rating : TrainRating
     details : bool, default True
+    inputs : sequence of Section, optional
+        The input echo, first.
 
     Returns
     -------
@@ -276,37 +237,18 @@ def markdown_report(rating, *, details: bool = True) -> str:
     ----------
     ISO 6336-1:2019, clause 4.
     """
-    parts = [f"## Tooth load capacity ({rating.standard}, method B"
-             + (f", gear {rating.gear}" if rating.gear else "") + f", life {rating.life_hours:g} h)",
-             _md_table(SUMMARY_HEAD, summary_rows(rating))]
-    if any(m.modes for m in rating.meshes):
-        parts.append(_md_table(MODES_HEAD, modes_rows(rating)))
-    if details:
-        for m in rating.meshes:
-            parts += [f"### {_title(m)}", _md_table(FACTOR_HEAD, mesh_rows(m))]
-            parts += [mode.markdown() for mode in m.modes]
-    return "\n\n".join(parts) + "\n"
+    return render_markdown(report_sections(rating, details=details, inputs=inputs))
 
 
-def _html_rows(rows, safety_columns) -> str:
-    out = []
-    for r in rows:
-        cells = []
-        for i, c in enumerate(r):
-            bad = c.endswith(" !") and i in safety_columns
-            text = html.escape(c[:-2] if bad else c)
-            cells.append(f"<td class='below' style='{_RED}'>{text}</td>" if bad else f"<td>{text}</td>")
-        out.append("<tr>" + "".join(cells) + "</tr>")
-    return "".join(out)
-
-
-def html_section(rating, *, details: bool = True) -> str:
+def html_section(rating, *, details: bool = True, inputs=()) -> str:
     """The rating as an HTML fragment (tables; safeties below their minimum in red).
 
     Parameters
     ----------
     rating : TrainRating
     details : bool, default True
+    inputs : sequence of Section, optional
+        The input echo, first.
 
     Returns
     -------
@@ -316,41 +258,22 @@ def html_section(rating, *, details: bool = True) -> str:
     ----------
     ISO 6336-1:2019, clause 4.
     """
-    esc = html.escape
-    head = "".join(f"<th>{esc(h)}</th>" for h in SUMMARY_HEAD)
-    parts = [f"<section class='rating'><h2>Tooth load capacity — {esc(rating.standard)}, method B"
-             + (f", gear {esc(rating.gear)}" if rating.gear else "") + f", life {rating.life_hours:g} h</h2>",
-             f"<table><thead><tr>{head}</tr></thead><tbody>{_html_rows(summary_rows(rating), _SAFETY_SUMMARY)}"
-             "</tbody></table>"]
-    if any(m.modes for m in rating.meshes):
-        mhead = "".join(f"<th>{esc(h)}</th>" for h in MODES_HEAD)
-        parts.append(f"<table><thead><tr>{mhead}</tr></thead><tbody>{_html_rows(modes_rows(rating), (4,))}"
-                     "</tbody></table>")
-    if details:
-        fhead = "".join(f"<th>{esc(h)}</th>" for h in FACTOR_HEAD)
-        for m in rating.meshes:
-            cls = "" if m.ok else f" class='below' style='{_RED}'"
-            parts.append(f"<h3{cls}>{esc(_title(m))}</h3><table><thead><tr>{fhead}</tr></thead><tbody>"
-                         f"{_html_rows(mesh_rows(m), _SAFETY_FACTORS)}</tbody></table>")
-            parts.extend(f"<p class='note'>{esc(n)}</p>" for n in m.notes)
-            parts.extend(mode.html() for mode in m.modes)
-    parts.append("</section>")
-    return "".join(parts)
+    return f"<section class='rating'>{render_html(report_sections(rating, details=details, inputs=inputs))}</section>"
 
 
-_RED = "color:#b00020;font-weight:bold"  # inline too: the analyze report's style sheet has no .below
-_CSS = ("body{font-family:system-ui,sans-serif;margin:2em;color:#222}table{border-collapse:collapse;margin:1em 0}"
-        "td,th{border:1px solid #ccc;padding:2px 6px;font-size:90%}th{background:#f3f3f3}"
-        ".below{color:#b00020;font-weight:bold}.note{color:#555;font-size:90%}")
-
-
-def html_document(rating, title: str) -> str:
-    """A self-contained HTML document of the rating.
+def html_document(ratings, title: str, *, source: str = "", date: str | None = None, inputs=()) -> str:
+    """A self-contained HTML document of one rating or several (one per gear) that prints to PDF cleanly.
 
     Parameters
     ----------
-    rating : TrainRating
+    ratings : TrainRating or sequence of TrainRating
     title : str
+    source : str, optional
+        The rated file, in the header of every printed page.
+    date : str, optional
+        ISO 8601 date of the header; default today (UTC).
+    inputs : sequence of Section, optional
+        The input echo, once before the ratings.
 
     Returns
     -------
@@ -358,8 +281,12 @@ def html_document(rating, title: str) -> str:
 
     References
     ----------
-    ISO 6336-1:2019, clause 4.
+    ISO 6336-1:2019, clause 4; W3C, *CSS Paged Media Module Level 3*.
     """
-    esc = html.escape
-    return (f"<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>{esc(title)} — rating</title>"
-            f"<style>{_CSS}</style></head><body><h1>{esc(title)}</h1>{html_section(rating)}</body></html>\n")
+    import datetime
+
+    ratings = [ratings] if hasattr(ratings, "meshes") else list(ratings)
+    if date is None:
+        date = datetime.datetime.now(datetime.timezone.utc).date().isoformat()
+    body = render_html(list(inputs)) + "".join(html_section(r) for r in ratings)
+    return html_page(title, body, source=source, date=date)
