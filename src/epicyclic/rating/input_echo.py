@@ -152,7 +152,8 @@ def echo_sections(planned: Sequence, spec) -> list[Section]:
     ----------
     ISO 6336-1:2019, clauses 4–6; ISO 21771:2007.
     """
-    out = [Section("Inputs of the rating", ["quantity", "symbol", "unit", "value"], _general_rows(spec), level=2)]
+    out = [Section("Inputs of the rating", ["quantity", "symbol", "unit", "value"], _general_rows(spec), level=2,
+                   literal=(3,))]
     elements: dict[str, dict[str, tuple]] = {}
     for p in planned:
         inp = p.input
@@ -163,5 +164,5 @@ def echo_sections(planned: Sequence, spec) -> list[Section]:
                            _gear_rows(element, gears, spec), level=3))
     given = _given_rows(planned, spec)
     out.append(Section("Inputs: given factors", ["element", "mesh", "symbol", "value", "source"], given, level=3,
-                       notes=() if given else ("no factor given: every load factor computed by its clause",)))
+                       literal=(4,), notes=() if given else ("no factor given: every load factor computed by its clause",)))
     return out

@@ -35,9 +35,10 @@ _GREEK = (("epsilon", "ε"), ("lambda", "λ"), ("alpha", "α"), ("beta", "β"), 
 _UNITS = (("sqrt(N/mm^2)", "√(N/mm²)"), ("N/mm^2", "N/mm²"), ("mm*um", "mm·µm"), ("mm*µm", "mm·µm"),
           ("mm^2/s", "mm²/s"), ("um", "µm"))
 #: A symbol in running text: one letter or a Greek letter's name, an underscore, its index.
-_SYMBOL = re.compile(r"\b(?:[A-Za-z]|" + "|".join(w for w, _ in _GREEK) + r")_[A-Za-z0-9_]*[A-Za-z0-9*]")
+_SYMBOL = re.compile(r"(?<![.\w])(?:[A-Za-z]|" + "|".join(w for w, _ in _GREEK) + r")_[A-Za-z0-9_]*[A-Za-z0-9*]")
 _GREEK_WORD = re.compile(r"\b(" + "|".join(w for w, _ in _GREEK) + r")\b(?=[ =(])")
 _MICRO = re.compile(r"(?<=[\d ])um\b|\bum(?=[ ,;)])")
+_POWER = re.compile(r"(?<=m)\^([23])\b")
 
 
 def iso_symbol(symbol: str) -> str:
@@ -85,12 +86,12 @@ def iso_unit(unit: str) -> str:
 
     Examples
     --------
-    >>> iso_unit("N/mm^2"), iso_unit("N/(mm*um)"), iso_unit("um")
-    ('N/mm²', 'N/(mm·µm)', 'µm')
+    >>> iso_unit("N/mm^2"), iso_unit("N/(mm*um)"), iso_unit("um"), iso_unit("N*s/m^2")
+    ('N/mm²', 'N/(mm·µm)', 'µm', 'N·s/m²')
     """
     for ascii_, si in _UNITS:
         unit = unit.replace(ascii_, si)
-    return unit
+    return _POWER.sub(lambda m: "²³"[int(m.group(1)) - 2], unit).replace("*", "·")
 
 
 def iso_text(text: str) -> str:
@@ -98,7 +99,8 @@ def iso_text(text: str) -> str:
 
     Symbols are a letter or a Greek letter's name with an index (``sigma_H``, ``rho_fP*``,
     ``K_Hbeta``); a lone Greek name before ``=`` or a bracket (``lambda (...)``) becomes the letter;
-    ``um`` after a number becomes ``µm``, ``N/mm^2`` ``N/mm²``.
+    ``um`` after a number becomes ``µm``, ``N/mm^2`` ``N/mm²``.  A key of the input file
+    (``rating.K_Hbeta``) stays as it is.
 
     Parameters
     ----------
@@ -122,7 +124,7 @@ def iso_text(text: str) -> str:
     text = _MICRO.sub("µm", text)
     for ascii_, si in _UNITS[:-1]:
         text = text.replace(ascii_, si)
-    return text
+    return _POWER.sub(lambda m: "²³"[int(m.group(1)) - 2], text)
 
 
 @dataclass(frozen=True)
@@ -146,6 +148,9 @@ class Section:
         Printed on a new page (the first section of each mesh).
     ok : bool, default True
         False: the heading is marked (red in HTML).
+    literal : tuple of int, default ()
+        Columns written as they are (keys of the input file); the others get ISO symbols
+        (:func:`iso_text`).
 
     References
     ----------
@@ -160,6 +165,11 @@ class Section:
     level: int = 3
     page_break: bool = False
     ok: bool = True
+    literal: tuple[int, ...] = ()
+
+    def cells(self) -> tuple[tuple[str, ...], ...]:
+        """The rows with symbols and units written as ISO and SI write them (not the literal columns)."""
+        return tuple(tuple(c if i in self.literal else iso_text(c) for i, c in enumerate(r)) for r in self.rows)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "head", tuple(self.head))
@@ -191,7 +201,7 @@ def render_text(sections: Sequence[Section]) -> str:
     parts = []
     for s in sections:
         title = iso_text(s.title)
-        parts.append(text_table([iso_text(h) for h in s.head], s.rows, title=title) if s.head else title)
+        parts.append(text_table([iso_text(h) for h in s.head], s.cells(), title=title) if s.head else title)
         parts.extend(f"note: {iso_text(n)}" for n in s.notes)
     return "\n\n".join(parts)
 
@@ -223,7 +233,7 @@ def render_markdown(sections: Sequence[Section]) -> str:
     for s in sections:
         parts.append("#" * s.level + " " + iso_text(s.title))
         if s.head:
-            parts.append(_md_table([iso_text(h) for h in s.head], s.rows))
+            parts.append(_md_table([iso_text(h) for h in s.head], s.cells()))
         parts.extend(f"*note: {iso_text(n)}*" for n in s.notes)
     return "\n\n".join(parts) + "\n"
 
@@ -272,7 +282,7 @@ def render_html(sections: Sequence[Section]) -> str:
         parts.append(f"<h{s.level}{cls}>{esc(iso_text(s.title))}</h{s.level}>")
         if s.head:
             head = "".join(f"<th>{esc(iso_text(h))}</th>" for h in s.head)
-            parts.append(f"<table><thead><tr>{head}</tr></thead><tbody>{_html_rows(s.rows, s.safety_columns)}"
+            parts.append(f"<table><thead><tr>{head}</tr></thead><tbody>{_html_rows(s.cells(), s.safety_columns)}"
                          "</tbody></table>")
         parts.extend(f"<p class='note'>{esc(iso_text(n))}</p>" for n in s.notes)
     if open_div:
