@@ -169,11 +169,17 @@ def mode_rows(mode: ModeRating) -> list[list[str]]:
         text = _fmt(value)
         return text + (" !" if symbol == mode.safety and np.any(np.asarray(value, dtype=float) < mode.minimum) else "")
 
+    own_minimum = next((s for s in (mode.safety + "_min", mode.safety + "min") if s in mode.factors), None)
+
     def row(s, f, other=None):
         one = [f.name, iso_symbol(s), iso_unit(f.unit), cell(s, f.value), cell(s, other.value) if other else "",
                f.source, f.clause]
         if s != mode.safety:
-            return [one]
+            return [] if s == own_minimum else [one]
+        if own_minimum is not None:  # the mode's own minimum, moved beside its safety
+            m = mode.factors[own_minimum]
+            return [one, [m.name, iso_symbol(own_minimum), iso_unit(m.unit), _fmt(m.value), "", m.source or "given",
+                          m.clause]]
         minimum = _fmt(mode.minimum)  # the minimum beside the safety
         return [one, [f"minimum {f.name}", iso_symbol(s) + "min", "1", minimum, minimum if other else "", "given",
                       f.clause]]

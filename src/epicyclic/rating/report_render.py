@@ -33,7 +33,7 @@ __all__ = ["Section", "html_page", "iso_symbol", "iso_text", "iso_unit", "render
 _GREEK = (("epsilon", "ε"), ("lambda", "λ"), ("alpha", "α"), ("beta", "β"), ("gamma", "γ"), ("delta", "δ"),
           ("sigma", "σ"), ("theta", "ϑ"), ("rho", "ρ"), ("nu", "ν"), ("eta", "η"), ("mu", "µ"))
 _UNITS = (("sqrt(N/mm^2)", "√(N/mm²)"), ("N/mm^2", "N/mm²"), ("mm*um", "mm·µm"), ("mm*µm", "mm·µm"),
-          ("mm^2/s", "mm²/s"), ("um", "µm"))
+          ("mm^2/s", "mm²/s"), ("degC", "°C"), ("um", "µm"))
 #: A symbol in running text: one letter or a Greek letter's name, an underscore, its index.
 _SYMBOL = re.compile(r"(?<![.\w])(?:[A-Za-z]|" + "|".join(w for w, _ in _GREEK) + r")_[A-Za-z0-9_]*[A-Za-z0-9*]")
 _GREEK_WORD = re.compile(r"\b(" + "|".join(w for w, _ in _GREEK) + r")\b(?=[ =(])")
