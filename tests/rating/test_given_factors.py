@@ -133,3 +133,14 @@ def test_mesh_lookup_order():
     assert [mesh_factor(table, e, m).value for e, m in
             (("P", "sun-planet"), ("Q", "sun-planet"), ("P", "planet-ring"), ("Q", "planet-ring"))] == [
         1.3, 1.2, 1.1, 1.05]
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.floats(0.0, 60.0), st.floats(0.0, 30.0))
+def test_k_v_rises_with_a_measured_base_pitch_deviation(f_pb, step):
+    def k_v(value):
+        spec = RatingSpec(material="18CrNiMo7-6", flank_roughness=3.0, root_roughness=10.0, viscosity_40=100.0,
+                          K_Hbeta=1.2, f_pb=value)
+        return rate_mesh(MeshInput("pair", PAIR, 30.0, ("pinion", "wheel"), spec), 400.0, 3000.0)["K_v"]
+
+    assert k_v(f_pb + step) >= k_v(f_pb) - 1e-12
