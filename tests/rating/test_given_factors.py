@@ -144,3 +144,15 @@ def test_k_v_rises_with_a_measured_base_pitch_deviation(f_pb, step):
         return rate_mesh(MeshInput("pair", PAIR, 30.0, ("pinion", "wheel"), spec), 400.0, 3000.0)["K_v"]
 
     assert k_v(f_pb + step) >= k_v(f_pb) - 1e-12
+
+
+def test_measured_deviations_need_no_grade_where_the_grade_has_no_tolerance():
+    # m_n = 0.3 mm lies outside ISO 1328-1 (0.5 ... 70 mm): from the grade an error naming the key; all three
+    # deviations measured: rated
+    small = MeshGeometry(GearGeometry(20, BasicRack(0.3), 0.0), GearGeometry(40, BasicRack(0.3), 0.0))
+    base = {"material": "18CrNiMo7-6", "flank_roughness": 3.0, "root_roughness": 10.0, "viscosity_40": 100.0}
+    with pytest.raises(RatingError, match="rating.accuracy_grade: accuracy: the normal module 0.3 mm lies outside"):
+        MeshInput("pair", small, 3.0, ("pinion", "wheel"), RatingSpec(**base))
+    spec = RatingSpec(**base, f_pb=3.0, f_falpha=3.0, f_Hbeta=4.0)
+    rating = rate_mesh(MeshInput("pair", small, 3.0, ("pinion", "wheel"), spec), 0.5, 3000.0)
+    assert rating.factors["f_pb"].source == "given" and rating["f_Hbeta"] == 4.0
