@@ -65,6 +65,9 @@ def test_every_load_factor_says_given_or_computed(tmp_path):
     for symbol in ("K_v", "K_Hbeta", "K_Fbeta", "K_Halpha", "K_Falpha", "f_pb", "f_falpha", "f_Hbeta"):
         assert factors[symbol]["source"] == "computed", symbol
     assert "ISO 1328-1:2013, grade 6" in factors["f_pb"]["clause"] and factors["f_pb"]["unit"] == "µm"
+    assert factors["Z_H"]["source"] == "computed" and "source" not in factors["F_t"]  # data carry none
+    sun = meshes["sun-planet"]["gears"]["sun"]
+    assert sun["S_H"]["source"] == "computed" and sun["sigma_Hlim"]["source"] == "material"
 
 
 def test_transverse_load_factors_given(tmp_path):

@@ -21,7 +21,7 @@ import html
 
 import numpy as np
 
-from .given_factors import COMPUTED, GIVEN
+from .given_factors import GIVEN
 
 __all__ = [
     "FACTOR_HEAD",
@@ -76,12 +76,8 @@ def iso_symbol(symbol: str) -> str:
 
 
 def _source(factor) -> str:
-    """The factor's own source; a factor (K_, Z_, Y_, S_ of unit 1) without one is computed by its clause."""
-    if factor.source:
-        return factor.source
-    if factor.symbol in ("sigma_Hlim", "sigma_Flim"):
-        return "material"
-    return COMPUTED if factor.unit == "1" and factor.symbol[:2] in ("K_", "Z_", "Y_", "S_") else ""
+    """The factor's source (``given``, ``computed``, ...; :class:`~epicyclic.rating.results.Factor`)."""
+    return factor.source
 
 
 def iso_unit(unit: str) -> str:
