@@ -200,14 +200,17 @@ def _static(inp: MeshInput) -> dict[str, Any]:
         zn[order[0]], zn[order[1]], xs[order[0]], xs[order[1]], beta, dedendum=rack.dedendum,
         pressure_angle_deg=rack.pressure_angle, internal=mesh.internal)
     s["grades"] = [spec.grade_of(inp.element, name) for name in inp.gears]
-    dev = [load_factors.deviations(q, g.reference_diameter, rack.module, b, spec.accuracy_standard)
-           for q, g in zip(s["grades"], (g1, g2))]
-    for d in dev:
-        d["f_pb"] = base_pitch_deviation(d["f_pt"], at)
+    given = {key: [spec.deviation_of(key, inp.element, name) for name in inp.gears] for key in GEAR_DEVIATIONS}
+    dev = []
+    for i, (q, g) in enumerate(zip(s["grades"], (g1, g2))):
+        if all(given[key][i] is not None for key in GEAR_DEVIATIONS):  # all measured: no grade needed
+            dev.append({key: given[key][i] for key in GEAR_DEVIATIONS})
+            continue
+        d = load_factors.deviations(q, g.reference_diameter, rack.module, b, spec.accuracy_standard)
+        dev.append({**d, "f_pb": base_pitch_deviation(d["f_pt"], at)})
     for key in GEAR_DEVIATIONS:  # measured per gear, else from the grade; the mesh takes the larger
-        given = [spec.deviation_of(key, inp.element, name) for name in inp.gears]
-        s[key] = max(d[key] if v is None else v for v, d in zip(given, dev))
-        s[key + "_source"] = _sources(given)
+        s[key] = max(d[key] if v is None else v for v, d in zip(given[key], dev))
+        s[key + "_source"] = _sources(given[key])
     d_m = [(g.tip_diameter + g.root_diameter) / 2 for g in (g1, g2)]
     s["m_red"] = load_factors.reduced_mass(
         d_m[0], g1.base_diameter, d_m[1], g2.base_diameter, mats[0].density, mats[1].density,

@@ -21,7 +21,7 @@ import html
 
 import numpy as np
 
-from .given_factors import COMPUTED, GIVEN
+from .given_factors import GIVEN
 from .report_render import Section, html_page, iso_symbol, iso_unit, render_html, render_markdown, render_text
 
 __all__ = [
@@ -46,12 +46,8 @@ MODES_HEAD = ["element", "mesh", "failure mode", "safety", "value", "minimum", "
 _SAFETY_SUMMARY, _SAFETY_FACTORS = (5, 9), (3, 4)  # columns that may end in " !"
 
 def _source(factor) -> str:
-    """The factor's own source; a factor (K_, Z_, Y_, S_ of unit 1) without one is computed by its clause."""
-    if factor.source:
-        return factor.source
-    if factor.symbol in ("sigma_Hlim", "sigma_Flim"):
-        return "material"
-    return COMPUTED if factor.unit == "1" and factor.symbol[:2] in ("K_", "Z_", "Y_", "S_") else ""
+    """The factor's source (``given``, ``computed``, ...; :class:`~epicyclic.rating.results.Factor`)."""
+    return factor.source
 
 
 def _fmt(value) -> str:
