@@ -80,10 +80,10 @@ def test_the_printable_page_has_the_print_style_sheet_and_the_header():
     assert page.startswith("<!DOCTYPE html>") and "<meta charset='utf-8'>" in page
     style = re.search(r"<style>(.*)</style>", page).group(1)
     assert "@page{size:A4" in style and "@media print" in style
-    assert "div.mesh{break-before:page" in style  # a page break before each mesh
+    assert "div.mesh,section.rating{break-before:page" in style  # a page break before each mesh and each gear
     assert "thead{display:table-header-group}" in style  # the head repeats on a new page
     assert "tr,td,th{break-inside:avoid" in style  # rows are not cut
     header = re.search(r"<header class='page'>(.*?)</header>", page).group(1)
     assert "examples/x.toml" in header and "2026-12-08" in header
     # the title that a browser prints at the top of every page holds the file and the date too
-    assert re.search(r"<title>examples/x.toml — ZF 8HP — rating — 2026-12-08</title>", page)
+    assert re.search(r"<title>examples/x.toml — 2026-12-08 — ZF 8HP — rating</title>", page)

@@ -303,7 +303,7 @@ CSS = ("body{font-family:system-ui,'DejaVu Sans',sans-serif;margin:2em;color:#22
        "h2,h3,h4{break-after:avoid;page-break-after:avoid}"
        "table{width:100%;table-layout:auto}td,th{font-size:7.5pt;padding:1px 3px}"
        "thead{display:table-header-group}tr,td,th{break-inside:avoid;page-break-inside:avoid}"
-       "div.mesh{break-before:page;page-break-before:always}"
+       "div.mesh,section.rating{break-before:page;page-break-before:always}"
        ".note{break-inside:avoid;font-size:7pt}"
        "th{background:#eee;-webkit-print-color-adjust:exact;print-color-adjust:exact}}")
 
@@ -333,6 +333,6 @@ def html_page(title: str, body: str, *, source: str = "", date: str = "") -> str
     esc = html.escape
     header = (f"<header class='page'><span>{esc(source or title)}</span><span>{esc(title)}</span>"
               f"<span>{esc(date)}</span></header>")
-    heading = " — ".join(x for x in (source, f"{title} — rating", date) if x)
+    heading = " — ".join(x for x in (source, date, f"{title} — rating") if x)  # a browser cuts a long title's end
     return (f"<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>{esc(heading)}</title>"
             f"<style>{CSS}</style></head><body>{header}<h1>{esc(title)}</h1>{body}</body></html>\n")
