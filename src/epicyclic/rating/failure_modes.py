@@ -14,7 +14,9 @@ A mode without inputs is not rated (and not reported); a mode whose inputs are i
 :class:`~epicyclic.rating.errors.RatingError` naming the key.  A mesh that does not turn in any of
 its load cases (a set that turns as a block in a transmission's gear: no rolling, no sliding) has no
 lubricant film and no flash temperature: its modes are not rated and :func:`idle_note` says so in
-the mesh's notes.
+the mesh's notes.  Where it stands still in some cases of a batch only (the cases of several gears
+rated together, as a duty cycle's damage sums do), the modes are not rated over that batch either,
+and the note says in how many cases and how to rate them (by gear).
 
 References
 ----------
@@ -33,7 +35,7 @@ def _requested(spec) -> list[str]:
 
 
 def idle_note(inp, speed) -> str | None:
-    """The note of a mesh whose modes are not rated because it does not turn in any case, else None.
+    """The note of a mesh whose modes are not rated because it stands still in some or all cases, else None.
 
     Parameters
     ----------
@@ -51,10 +53,14 @@ def idle_note(inp, speed) -> str | None:
     flash temperature needs the sliding velocity).
     """
     modes = _requested(inp.spec)
-    if not modes or np.any(np.abs(np.asarray(speed, dtype=float)) > 0):
+    still = np.abs(np.asarray(speed, dtype=float)).reshape(-1) == 0
+    if not modes or not np.any(still):
         return None
-    return (f"{' and '.join(modes)} not rated: the mesh does not turn (gear 1 at 0 1/min relative to the carrier: "
-            "no rolling, no lubricant film, no flash temperature)")
+    why = "no rolling, no lubricant film, no flash temperature"
+    if np.all(still):
+        return f"{' and '.join(modes)} not rated: the mesh does not turn (gear 1 at 0 1/min relative to the carrier: {why})"
+    return (f"{' and '.join(modes)} not rated over these load cases: the mesh stands still in {int(still.sum())} of "
+            f"{still.size} ({why}); rate the cases of each gear on their own (epicyclic rate --gear G)")
 
 
 def failure_modes(inp, rating, torque, speed) -> tuple:
