@@ -40,7 +40,7 @@ def test_bad_input_names_the_key(change, message):
 def test_rate_prints_the_micropitting_section_in_every_format():
     table = runner.invoke(app, ["rate", str(EXAMPLE)])
     assert table.exit_code == 0, table.output
-    assert "Failure modes beyond pitting and root" in table.output and "lambda_GF_min" in table.output
+    assert "Failure modes beyond pitting and root" in table.output and "λ_GFmin" in table.output
     data = json.loads(runner.invoke(app, ["rate", str(EXAMPLE), "-f", "json"]).stdout)
     section = data["ratings"][0]["meshes"][0]["modes"]["micropitting"]
     assert section["safety"] == "S_lambda" and section["value"] > 0 and section["ok"] is True
@@ -56,4 +56,4 @@ def test_a_micropitting_shortfall_is_marked_and_named():
     assert result.exit_code == 0, result.output
     assert "<h4 class='below'" in result.output
     text = runner.invoke(app, ["rate", given, "--set", "rating.micropitting.lambda_GFP=3.0"])
-    assert "S_lambda" in text.output and " !" in text.output and "below minimum safety" in text.output
+    assert "S_λ" in text.output and " !" in text.output and "below minimum safety" in text.output

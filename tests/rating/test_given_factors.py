@@ -65,6 +65,9 @@ def test_every_load_factor_says_given_or_computed(tmp_path):
     for symbol in ("K_v", "K_Hbeta", "K_Fbeta", "K_Halpha", "K_Falpha", "f_pb", "f_falpha", "f_Hbeta"):
         assert factors[symbol]["source"] == "computed", symbol
     assert "ISO 1328-1:2013, grade 6" in factors["f_pb"]["clause"] and factors["f_pb"]["unit"] == "µm"
+    assert factors["Z_H"]["source"] == "computed" and "source" not in factors["F_t"]  # data carry none
+    sun = meshes["sun-planet"]["gears"]["sun"]
+    assert sun["S_H"]["source"] == "computed" and sun["sigma_Hlim"]["source"] == "material"
 
 
 def test_transverse_load_factors_given(tmp_path):
@@ -98,6 +101,8 @@ def test_accuracy_edition_and_grade_per_gear(tmp_path):
     ("f_pb = { moon = 8.0 }", "rating.f_pb: 'moon' names no gear"),
     ("K_Halfa = 1.1", "unknown key 'K_Halfa'"),
     ('K_v = "fast"', "K_v"),
+    ('f_pb = "12 mm"', "key 'f_pb': takes a plain number in µm, without a unit"),  # its own unit, '12 um', is read
+    ('K_v = { "sun-planet" = "1.05 N" }', "takes a plain number in 1 (a factor)"),
 ])
 def test_bad_factors_name_the_key_and_what_is_accepted(tmp_path, extra, message):
     assert message in _bad(tmp_path, extra)
@@ -131,3 +136,26 @@ def test_mesh_lookup_order():
     assert [mesh_factor(table, e, m).value for e, m in
             (("P", "sun-planet"), ("Q", "sun-planet"), ("P", "planet-ring"), ("Q", "planet-ring"))] == [
         1.3, 1.2, 1.1, 1.05]
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.floats(0.0, 60.0), st.floats(0.0, 30.0))
+def test_k_v_rises_with_a_measured_base_pitch_deviation(f_pb, step):
+    def k_v(value):
+        spec = RatingSpec(material="18CrNiMo7-6", flank_roughness=3.0, root_roughness=10.0, viscosity_40=100.0,
+                          K_Hbeta=1.2, f_pb=value)
+        return rate_mesh(MeshInput("pair", PAIR, 30.0, ("pinion", "wheel"), spec), 400.0, 3000.0)["K_v"]
+
+    assert k_v(f_pb + step) >= k_v(f_pb) - 1e-12
+
+
+def test_measured_deviations_need_no_grade_where_the_grade_has_no_tolerance():
+    # m_n = 0.3 mm lies outside ISO 1328-1 (0.5 ... 70 mm): from the grade an error naming the key; all three
+    # deviations measured: rated
+    small = MeshGeometry(GearGeometry(20, BasicRack(0.3), 0.0), GearGeometry(40, BasicRack(0.3), 0.0))
+    base = {"material": "18CrNiMo7-6", "flank_roughness": 3.0, "root_roughness": 10.0, "viscosity_40": 100.0}
+    with pytest.raises(RatingError, match="rating.accuracy_grade: accuracy: the normal module 0.3 mm lies outside"):
+        MeshInput("pair", small, 3.0, ("pinion", "wheel"), RatingSpec(**base))
+    spec = RatingSpec(**base, f_pb=3.0, f_falpha=3.0, f_Hbeta=4.0)
+    rating = rate_mesh(MeshInput("pair", small, 3.0, ("pinion", "wheel"), spec), 0.5, 3000.0)
+    assert rating.factors["f_pb"].source == "given" and rating["f_Hbeta"] == 4.0

@@ -33,13 +33,14 @@ def test_safety_ok_and_below_minimum():
 def test_rendering_marks_the_shortfall():
     bad = mode(0.8)
     rows = mode_rows(bad)
-    assert rows[-1][3] == "0.8 !" and rows[0][1] == "lambda"
+    assert rows[-2][3] == "0.8 !" and rows[0][1] == "λ"
+    assert rows[-1][1:4] == ["S_Xmin", "1", "1"]  # the minimum beside the safety
     assert "Test mode" in bad.table() and "0.8 !" in bad.table()
     assert "class='below'" in bad.html() and "a note" in bad.html() and bad._repr_html_() == bad.html()
     assert bad.markdown().startswith("#### Test mode") and "*note: a note*" in bad.markdown()
     assert "class='below'" not in mode(1.5).html()
     per_gear = mode_rows(mode((1.4, 0.9), per_gear=True))
-    assert per_gear[-1][3:5] == ["1.4", "0.9 !"]
+    assert per_gear[-2][3:5] == ["1.4", "0.9 !"] and per_gear[-1][3:5] == ["1", "1"]
 
 
 def test_json_is_strict():

@@ -135,7 +135,7 @@ def test_roughness_per_gear_from_the_file():
     # issue 30: a unit in [rating] got the expression grammar's tooth-ratio hint ("e.g. '(24/50)*(42/30)'")
     ('rating.life="20000 kg"', "key 'life': expected a number in h (e.g. 2 or '2 h'), got '20000 kg'"),
     ('rating.S_Hmin="1 h"', "key 'S_Hmin': expected a plain number (no unit), got '1 h'"),
-    ('rating.flank_roughness="3 mm"', "key 'flank_roughness': expected a number in µm"),
+    ('rating.flank_roughness="3 mm"', "key 'flank_roughness': takes a plain number in µm (R_z), without a unit"),
     # issue 30: a key naming no gear was accepted and dropped
     ("rating.rim_thickness={moon=12}", "rating.rim_thickness.moon names no gear of the rated train"),
     ("rating.tool={moon={tip_radius=0.3}}", "rating.tool.moon names no gear of the rated train"),

@@ -156,3 +156,20 @@ tip_diameter = [[43.5, "none"], ["none", 110.0]]
     assert geometry.meshes[0].gear1.tip_diameter == pytest.approx(43.5)
     assert geometry.meshes[1].gear2.tip_diameter == pytest.approx(110.0)
     assert geometry.meshes[0].gear2.tip_diameter == pytest.approx(84.0)  # uncut: 40·2 + 2·2
+
+
+def test_load_sharing_of_a_stage_only_where_a_table_names_it():
+    from dataclasses import replace
+
+    stage = GearStage.from_teeth("G", "in", "mid", [(20, 40, "external")])
+    point = OperatingPoint(speeds={"in": 1000}, torques={"in": 100}, drives=["in"], loads=["mid"])
+    solution, geometry = solve(GearTrain([stage]), point), {"G": StageGeometry(stage, BasicRack(2.0), face_width=25.0)}
+    plain = rate_solution(solution, geometry, replace(SPEC, load_sharing=1.2)).meshes[0]
+    assert plain["K_gamma"] == 1.0 and plain.factors["K_gamma"].source == "one load path"
+    named = rate_solution(solution, geometry, replace(SPEC, load_sharing={"G": 1.1})).meshes[0]
+    assert named["K_gamma"] == 1.1 and named.factors["K_gamma"].source == "given"
+    # the set's K_γ and where it comes from: the geometry's, else the default by number of planets
+    rating = rate_solution(solve(TRAIN, POINT), GEOMETRY, SPEC).mesh("P", "sun-planet")
+    assert rating["K_gamma"] == 1.1 and rating.factors["K_gamma"].source == "given (geometry)"
+    default = {"P": SetGeometry.create(SET, 3.0, face_width=40.0)}
+    assert rate_solution(solve(TRAIN, POINT), default, SPEC).meshes[0].factors["K_gamma"].source == "default"

@@ -54,7 +54,7 @@ def _spec(train_file, file):
     return train_file.rating
 
 
-def rate_file(train_file, file, gears):
+def rate_file(train_file, file, gears, planned=None):
     """[(gear, TrainRating)] of ``train_file`` in each of ``gears`` (None: the file's operating gear).
 
     Parameters
@@ -65,6 +65,8 @@ def rate_file(train_file, file, gears):
         For messages.
     gears : list of str or None
         Gears of the schedule, or [None] for the file's own operating point.
+    planned : tuple, optional
+        :func:`~epicyclic.rating.train.mesh_inputs` of the file already built.
 
     Returns
     -------
@@ -84,7 +86,7 @@ def rate_file(train_file, file, gears):
     from ..rating.train import mesh_inputs, rate_solution
 
     spec = _spec(train_file, file)
-    planned = mesh_inputs(train_file.geometry, spec)
+    planned = planned if planned is not None else mesh_inputs(train_file.geometry, spec)
     out = []
     for gear in gears:
         current = train_file if gear is None else replace(train_file, gear=gear)
@@ -97,6 +99,12 @@ def rate_file(train_file, file, gears):
             plan = mesh_inputs(current.geometry, used)
         out.append((current.gear, rate_solution(solution, current.geometry, used, gear=current.gear, planned=plan)))
     return out
+
+
+def _planned(train_file, file):
+    from ..rating.train import mesh_inputs
+
+    return mesh_inputs(train_file.geometry, _spec(train_file, file))
 
 
 def _explain(ratings, which: str) -> str:
@@ -151,7 +159,8 @@ def rate(
         gears = [None]
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        ratings = rate_file(train_file, file, gears)
+        planned = _planned(train_file, file)
+        ratings = rate_file(train_file, file, gears, planned)
         if explain:
             emit(_explain(ratings, explain), out)
             _stderr(caught, ratings)
@@ -163,14 +172,18 @@ def rate(
                 "warnings": sorted({str(w.message) for w in caught})}
         check_finite(data, file, "rating")
         text = json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False)
-    elif format is OutputFormat.markdown:
-        text = f"# {title}\n\n" + "\n".join(report.markdown_report(r) for _, r in ratings)
-    elif format is OutputFormat.html:
-        text = report.html_document(ratings[0][1], title) if len(ratings) == 1 else (
-            "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>rating</title></head><body>"
-            + "".join(report.html_section(r) for _, r in ratings) + "</body></html>")
     else:
-        text = "\n\n".join(report.text_report(r) for _, r in ratings)
+        from ..rating.input_echo import echo_sections
+        from ..rating.report_render import render_markdown, render_text
+
+        echo = echo_sections(planned[0], train_file.rating)
+        if format is OutputFormat.markdown:
+            text = (f"# {title}\n\n*{file}*\n\n" + render_markdown(echo) + "\n"
+                    + "\n".join(report.markdown_report(r) for _, r in ratings))
+        elif format is OutputFormat.html:
+            text = report.html_document([r for _, r in ratings], title, source=str(file), inputs=echo)
+        else:
+            text = "\n\n".join([render_text(echo)] + [report.text_report(r) for _, r in ratings])
     ignored = train_file.rating.ignored
     if ignored and format is not OutputFormat.json:
         lines = ["Inputs given but not used (they change a safety):", *(f"- {item}" for item in ignored)]

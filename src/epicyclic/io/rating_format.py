@@ -80,6 +80,21 @@ _USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "hardness
                   "yield_strength"}
 
 
+def _plain(reader, value, key: str, where: str, table_key: str) -> float:
+    """A number of a key whose unit is fixed: its own unit may be written ("3 um"); another is refused naming it."""
+    unit = _UNITS.get(table_key)
+    if isinstance(value, str) and any(c.isalpha() for c in value):
+        bare = value.strip()
+        for spelled in ((unit, "um") if unit == "µm" else (unit,)) if unit else ():
+            if bare.endswith(spelled):
+                return reader.number(bare[: -len(spelled)], key, where)
+        label = f"{unit} (R_z)" if table_key.endswith("roughness") else unit or "1 (a factor)"
+        example = "12.0" if unit else "1.1"
+        raise reader.error(at_key(where, key), f"takes a plain number in {label}, without a unit; got {value!r} "
+                                               f"(e.g. {key} = {example}).")
+    return reader.number(value, key, where)
+
+
 def _user_materials(reader, table, where: str, quality: str) -> dict[str, Material]:
     out = {}
     for name, entry in table.items():
@@ -160,10 +175,9 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
     for key in _TABLES:  # one value, or one per mesh / per gear: { sun = 4.8, ring = 8.0 }
         if isinstance(table.get(key), Mapping):
             k_where = at_key(where, key)
-            values[key] = {k: reader.number(v, k, k_where, _UNITS.get(key, "1"))
-                           for k, v in reader.table(table[key], k_where).items()}
+            values[key] = {k: _plain(reader, v, k, k_where, key) for k, v in reader.table(table[key], k_where).items()}
         elif key in table:
-            values[key] = reader.number(table[key], key, where, _UNITS.get(key, "1"))
+            values[key] = _plain(reader, table[key], key, where, key)
     if "standard" in table:
         values["standard"] = str(table["standard"])
     if isinstance(table.get("accuracy_grade"), Mapping):

@@ -14,6 +14,9 @@ Public API (stable):
   :class:`~epicyclic.solver.batch.BatchSolution`), :func:`mesh_inputs`;
 * :func:`smallest_module` (sizing);
 * :mod:`~epicyclic.rating.standard` — the edition (``"2006"`` / ``"2019"``);
+* :mod:`~epicyclic.rating.given_factors` — load factors given per mesh or computed
+  (:class:`FactorValue`: value, source, clause);
+* :mod:`~epicyclic.rating.hardness` — hardness scales (HB, HV, HRC) and their conversion;
 * bearing life per ISO 281:2007 (:mod:`~epicyclic.rating.bearing_life`: :class:`BearingRating`) and
   duty cycles (:mod:`~epicyclic.rating.duty_cycle`: :class:`DutyCycle` of :class:`LoadCase` s;
   :func:`analyse_duty_cycle` → :class:`DutyCycleResult`, with :class:`BearingLife` and the tooth
@@ -30,6 +33,7 @@ from .duty_analysis import analyse_duty_cycle
 from .duty_cycle import DutyCycle, DutyCycleError, LoadCase
 from .duty_result import BearingLife, DutyCycleResult
 from .errors import RatingError, RatingWarning
+from .given_factors import FactorValue
 from .life_factors import (
     TREATMENTS,
     SNCurve,
@@ -62,6 +66,7 @@ __all__ = [
     "DutyCycleError",
     "DutyCycleResult",
     "Factor",
+    "FactorValue",
     "GearRating",
     "LoadCase",
     "Material",

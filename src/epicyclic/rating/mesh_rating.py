@@ -40,7 +40,7 @@ from ..geometry.gear import MeshGeometry
 from . import flank, load_factors, root
 from ..geometry.accuracy import base_pitch_deviation
 from .errors import RatingError
-from .failure_modes import failure_modes
+from .failure_modes import failure_modes, idle_note
 from .generated_form import generated_tooth_form
 from .given_factors import COMPUTED, DEFAULT, GEAR_DEVIATIONS, GIVEN, MESH_FACTORS, FactorValue
 from .life_factors import bending_curve, pitting_curve
@@ -200,14 +200,17 @@ def _static(inp: MeshInput) -> dict[str, Any]:
         zn[order[0]], zn[order[1]], xs[order[0]], xs[order[1]], beta, dedendum=rack.dedendum,
         pressure_angle_deg=rack.pressure_angle, internal=mesh.internal)
     s["grades"] = [spec.grade_of(inp.element, name) for name in inp.gears]
-    dev = [load_factors.deviations(q, g.reference_diameter, rack.module, b, spec.accuracy_standard)
-           for q, g in zip(s["grades"], (g1, g2))]
-    for d in dev:
-        d["f_pb"] = base_pitch_deviation(d["f_pt"], at)
+    given = {key: [spec.deviation_of(key, inp.element, name) for name in inp.gears] for key in GEAR_DEVIATIONS}
+    dev = []
+    for i, (q, g) in enumerate(zip(s["grades"], (g1, g2))):
+        if all(given[key][i] is not None for key in GEAR_DEVIATIONS):  # all measured: no grade needed
+            dev.append({key: given[key][i] for key in GEAR_DEVIATIONS})
+            continue
+        d = load_factors.deviations(q, g.reference_diameter, rack.module, b, spec.accuracy_standard)
+        dev.append({**d, "f_pb": base_pitch_deviation(d["f_pt"], at)})
     for key in GEAR_DEVIATIONS:  # measured per gear, else from the grade; the mesh takes the larger
-        given = [spec.deviation_of(key, inp.element, name) for name in inp.gears]
-        s[key] = max(d[key] if v is None else v for v, d in zip(given, dev))
-        s[key + "_source"] = _sources(given)
+        s[key] = max(d[key] if v is None else v for v, d in zip(given[key], dev))
+        s[key + "_source"] = _sources(given[key])
     d_m = [(g.tip_diameter + g.root_diameter) / 2 for g in (g1, g2)]
     s["m_red"] = load_factors.reduced_mass(
         d_m[0], g1.base_diameter, d_m[1], g2.base_diameter, mats[0].density, mats[1].density,
@@ -404,13 +407,14 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("C_a", s["C_a"], "µm", p1("6.3" if spec.tip_relief is not None else "6.3 (C_ay, running-in)"),
                "tip relief in K_v", GIVEN if spec.tip_relief is not None else COMPUTED),
         _factor("K_v", k_v, given["K_v"], p1("6.3 (method B)"), "dynamic factor", p1("6 (given)")),
-        Factor("f_pb", s["f_pb"], "µm", _deviation_clause(s["f_pb_source"], f"{accuracy}, f_pb = f_pt cos alpha_t"),
+        Factor("f_pb", s["f_pb"], "µm", _deviation_clause(s["f_pb_source"], f"{accuracy}, f_pb = f_pt cos α_t"),
                "transverse base pitch deviation", s["f_pb_source"]),
         Factor("f_falpha", s["f_falpha"], "µm", _deviation_clause(s["f_falpha_source"], accuracy),
                "profile form deviation", s["f_falpha_source"]),
         Factor("f_Hbeta", s["f_Hbeta"], "µm", _deviation_clause(s["f_Hbeta_source"], accuracy),
                "helix slope deviation", s["f_Hbeta_source"]),
         Factor("y_alpha", _out(y_a), "µm", p1("8.3.4"), "running-in allowance (pitch)"),
+        Factor("y_f", _out(y_f), "µm", p1("6.3 and 8.3.4"), "running-in allowance (profile form)"),
         Factor("F_betax", _out(f_bx), "µm", p1("7.6 (method C)"), "initial equivalent misalignment"),
         _factor("K_Hbeta", k_hb, given["K_Hbeta"], p1("7.6 (method C)"), "face load factor (contact)",
                 p1("7 (given)")),
@@ -437,7 +441,8 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     fallback = f", no tool given: ISO's closed form of the basic rack (rho_fP* = {spec.tool_tip_radius:g})"
     forms = tuple(f"Y_F, Y_S of the {name}: {form.method if tool else form.method + fallback}"
                   for name, form, tool in zip(inp.gears, s["forms"], s["form_tools"]))
-    notes = tuple(spec.notes) + ((method_c,) if given["K_Hbeta"] is None else ()) + forms
+    idle = idle_note(inp, n1)
+    notes = tuple(spec.notes) + ((method_c,) if given["K_Hbeta"] is None else ()) + forms + ((idle,) if idle else ())
     rating = MeshRating(inp.element, mesh.name, f"ISO 6336:{year}", "B", {x.symbol: x for x in mesh_factors},
                         (gears[0], gears[1]), mesh.internal, notes)
     modes = failure_modes(inp, rating, t1, n1)

@@ -14,7 +14,6 @@ clause 4 (symbols).
 
 from __future__ import annotations
 
-import html
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -26,7 +25,7 @@ from .results import Factor, json_value
 
 __all__ = ["ModeRating", "mode_rows"]
 
-MODE_HEAD = ["quantity", "symbol", "unit", "gear 1", "gear 2", "clause"]
+MODE_HEAD = ["quantity", "symbol", "unit", "gear 1", "gear 2", "given / computed", "clause"]
 
 
 @dataclass(frozen=True)
@@ -114,29 +113,30 @@ class ModeRating:
         out["notes"] = list(self.notes)
         return out
 
+    def section(self):
+        """The mode's report section (:class:`~epicyclic.rating.report_render.Section`), every format's rows."""
+        from .report_render import Section
+
+        return Section(f"{self.title} — {self.standard}", MODE_HEAD, mode_rows(self), (3, 4), self.notes, level=4,
+                       ok=self.ok)
+
     def table(self) -> str:
         """The mode's quantities as a plain-text table (a safety below its minimum ends in ``!``)."""
-        from ..geometry._render import text_table
+        from .report_render import render_text
 
-        return text_table(MODE_HEAD, mode_rows(self), title=f"{self.title} — {self.standard}")
+        return render_text([self.section()])
 
     def markdown(self) -> str:
         """The mode's section in Markdown (a safety below its minimum ends in ``!``)."""
-        from .report import _md_table
+        from .report_render import render_markdown
 
-        notes = "".join(f"\n\n*note: {n}*" for n in self.notes)
-        return f"#### {self.title} — {self.standard}\n\n{_md_table(MODE_HEAD, mode_rows(self))}{notes}"
+        return render_markdown([self.section()]).rstrip("\n")
 
     def html(self) -> str:
         """The mode's section as an HTML fragment (a safety below its minimum in red)."""
-        from .report import _RED, _html_rows
+        from .report_render import render_html
 
-        esc = html.escape
-        head = "".join(f"<th>{esc(h)}</th>" for h in MODE_HEAD)
-        cls = "" if self.ok else f" class='below' style='{_RED}'"
-        notes = "".join(f"<p class='note'>{esc(n)}</p>" for n in self.notes)
-        return (f"<h4{cls}>{esc(self.title)} — {esc(self.standard)}</h4><table><thead><tr>{head}</tr></thead>"
-                f"<tbody>{_html_rows(mode_rows(self), (3, 4))}</tbody></table>{notes}")
+        return render_html([self.section()])
 
     def _repr_html_(self) -> str:
         return self.html()
@@ -163,15 +163,29 @@ def mode_rows(mode: ModeRating) -> list[list[str]]:
     ISO 6336-1:2019, clause 4.
     """
     from .report import _fmt
+    from .report_render import iso_symbol, iso_unit
 
     def cell(symbol, value):
         text = _fmt(value)
         return text + (" !" if symbol == mode.safety and np.any(np.asarray(value, dtype=float) < mode.minimum) else "")
 
-    rows = [[f.name, s, f.unit, cell(s, f.value), "", f.clause] for s, f in mode.factors.items()]
+    own_minimum = next((s for s in (mode.safety + "_min", mode.safety + "min") if s in mode.factors), None)
+
+    def row(s, f, other=None):
+        one = [f.name, iso_symbol(s), iso_unit(f.unit), cell(s, f.value), cell(s, other.value) if other else "",
+               f.source, f.clause]
+        if s != mode.safety:
+            return [] if s == own_minimum else [one]
+        if own_minimum is not None:  # the mode's own minimum, moved beside its safety
+            m = mode.factors[own_minimum]
+            return [one, [m.name, iso_symbol(own_minimum), iso_unit(m.unit), _fmt(m.value), "", m.source or "given",
+                          m.clause]]
+        minimum = _fmt(mode.minimum)  # the minimum beside the safety
+        return [one, [f"minimum {f.name}", iso_symbol(s) + "min", "1", minimum, minimum if other else "", "given",
+                      f.clause]]
+
+    rows = [r for s, f in mode.factors.items() for r in row(s, f)]
     if mode.gear_factors is not None:
         g1, g2 = mode.gear_factors
-        for s, f in g1.items():
-            other = g2.get(s)
-            rows.append([f.name, s, f.unit, cell(s, f.value), cell(s, other.value) if other else "", f.clause])
+        rows += [r for s, f in g1.items() for r in row(s, f, g2.get(s))]
     return rows

@@ -2,10 +2,12 @@
 
 The full table follows the layout of commercial calculation reports (KISSsoft,
 FVA-Workbench): one row per quantity with its name, ISO symbol, unit, the values of
-gear 1 and gear 2 (one value where the quantity belongs to the mesh) and the clause
-of ISO 6336 it comes from.  A safety below its minimum is marked: ``!`` in text and
-Markdown, red in HTML (class ``below``).  Values over several load cases show as
-``min … max``.
+gear 1 and gear 2 (one value where the quantity belongs to the mesh), whether a factor
+is given or computed, and the clause of ISO 6336 it comes from; each safety has its
+minimum beside it.  Symbols and units are written as ISO 6336-1 clause 4 writes them
+(σ_H, K_Hβ, µm, N/mm²; the JSON keeps the ASCII keys).  A safety below its minimum is
+marked: ``!`` in text and Markdown, red in HTML (class ``below``).  Values over several
+load cases show as ``min … max``.
 
 References
 ----------
@@ -19,22 +21,33 @@ import html
 
 import numpy as np
 
+from .given_factors import GIVEN
+from .report_render import Section, html_page, iso_symbol, iso_unit, render_html, render_markdown, render_text
+
 __all__ = [
     "FACTOR_HEAD",
     "SUMMARY_HEAD",
     "html_document",
     "html_section",
+    "iso_symbol",
+    "iso_unit",
     "markdown_report",
     "mesh_rows",
+    "report_sections",
     "modes_rows",
     "summary_rows",
     "text_report",
 ]
 
-SUMMARY_HEAD = ["element", "mesh", "gear", "sigma_H [N/mm^2]", "sigma_HP [N/mm^2]", "S_H", "sigma_F [N/mm^2]",
-                "sigma_FP [N/mm^2]", "S_F", "ok"]
-FACTOR_HEAD = ["quantity", "symbol", "unit", "gear 1", "gear 2", "clause"]
+SUMMARY_HEAD = ["element", "mesh", "gear", "σ_H [N/mm²]", "σ_HP [N/mm²]", "S_H", "S_Hmin", "σ_F [N/mm²]",
+                "σ_FP [N/mm²]", "S_F", "S_Fmin", "ok"]
+FACTOR_HEAD = ["quantity", "symbol", "unit", "gear 1", "gear 2", "given / computed", "clause"]
 MODES_HEAD = ["element", "mesh", "failure mode", "safety", "value", "minimum", "method"]
+_SAFETY_SUMMARY, _SAFETY_FACTORS = (5, 9), (3, 4)  # columns that may end in " !"
+
+def _source(factor) -> str:
+    """The factor's source (``given``, ``computed``, ...; :class:`~epicyclic.rating.results.Factor`)."""
+    return factor.source
 
 
 def _fmt(value) -> str:
@@ -77,8 +90,8 @@ def summary_rows(rating) -> list[list[str]]:
         for g in m.gears:
             s_h = _fmt(g.S_H) + (" !" if _below(g.S_H, g.S_Hmin) else "")
             s_f = _fmt(g.S_F) + (" !" if _below(g.S_F, g.S_Fmin) else "")
-            rows.append([m.element, m.mesh, g.gear, _fmt(g["sigma_H"]), _fmt(g["sigma_HP"]), s_h,
-                         _fmt(g["sigma_F"]), _fmt(g["sigma_FP"]), s_f, "yes" if g.ok else "NO"])
+            rows.append([m.element, m.mesh, g.gear, _fmt(g["sigma_H"]), _fmt(g["sigma_HP"]), s_h, _fmt(g.S_Hmin),
+                         _fmt(g["sigma_F"]), _fmt(g["sigma_FP"]), s_f, _fmt(g.S_Fmin), "yes" if g.ok else "NO"])
     return rows
 
 
@@ -119,16 +132,21 @@ def mesh_rows(mesh) -> list[list[str]]:
     """
     rows = []
     for symbol, f in mesh.factors.items():
-        rows.append([f.name, symbol, f.unit, _fmt(f.value), "", f.clause])
+        rows.append([f.name, iso_symbol(symbol), iso_unit(f.unit), _fmt(f.value), "", _source(f), f.clause])
     g1, g2 = mesh.gears
     for symbol, f in g1.factors.items():
         other = g2.factors.get(symbol) or g2.factors.get({"Z_B": "Z_D"}.get(symbol, symbol))
-        label = "Z_B / Z_D" if symbol == "Z_B" else symbol
+        label = "Z_B / Z_D" if symbol == "Z_B" else iso_symbol(symbol)
         cells = [_fmt(f.value), _fmt(other.value) if other is not None else ""]
+        source = _source(f) if other is None or _source(other) == _source(f) else f"{_source(f)} / {_source(other)}"
         if symbol in ("S_H", "S_F"):
             minimum = g1.S_Hmin if symbol == "S_H" else g1.S_Fmin
             cells = [c + (" !" if _below(g.factors[symbol].value, minimum) else "") for c, g in zip(cells, (g1, g2))]
-        rows.append([f.name, label, f.unit, *cells, f.clause])
+        rows.append([f.name, label, iso_unit(f.unit), *cells, source, f.clause])
+        if symbol in ("S_H", "S_F"):  # the minimum beside each safety
+            kind = symbol + "min"
+            rows.append([f"minimum {f.name}", kind, "1", _fmt(getattr(g1, kind)), _fmt(getattr(g2, kind)), GIVEN,
+                         "ISO 6336-1:2019, 4 (agreed between customer and supplier)"])
     return rows
 
 
@@ -139,13 +157,52 @@ def _title(mesh) -> str:
             f"{mesh.standard}, method {mesh.method}: {state}")
 
 
-def text_report(rating, *, details: bool = True) -> str:
+def report_sections(rating, *, details: bool = True, inputs=()) -> list[Section]:
+    """The sections of the rating report, for every format: inputs, summary, failure modes, meshes.
+
+    Parameters
+    ----------
+    rating : TrainRating
+    details : bool, default True
+        With every mesh's factor table and its failure modes (each mesh on a new printed page).
+    inputs : sequence of Section, optional
+        The input echo (:func:`~epicyclic.rating.input_echo.echo_sections`), first.
+
+    Returns
+    -------
+    list of Section
+
+    References
+    ----------
+    ISO 6336-1:2019, clause 4.
+    """
+    head = (f"Tooth load capacity, {rating.standard} method B" + (f", gear {rating.gear}" if rating.gear else "")
+            + f", required life {rating.life_hours:g} h")
+    out = list(inputs)
+    out.append(Section(head, SUMMARY_HEAD, summary_rows(rating), _SAFETY_SUMMARY, level=2,
+                       ok=all(m.ok for m in rating.meshes)))
+    if any(m.modes for m in rating.meshes):
+        out.append(Section("Failure modes beyond pitting and root", MODES_HEAD, modes_rows(rating), (4,)))
+    if details:
+        for m in rating.meshes:
+            out.append(Section(_title(m), FACTOR_HEAD, mesh_rows(m), _SAFETY_FACTORS, tuple(m.notes), level=3,
+                               page_break=True, ok=m.ok))
+            out.extend(mode.section() for mode in m.modes)
+    if rating.skipped:
+        out.append(Section("Not rated", (), (), notes=tuple(f"{k}: {v}" for k, v in rating.skipped.items()),
+                           level=3))
+    return out
+
+
+def text_report(rating, *, details: bool = True, inputs=()) -> str:
     """The rating as plain text: the summary and, with ``details``, every mesh's factor table.
 
     Parameters
     ----------
     rating : TrainRating
     details : bool, default True
+    inputs : sequence of Section, optional
+        The input echo, printed first.
 
     Returns
     -------
@@ -155,39 +212,18 @@ def text_report(rating, *, details: bool = True) -> str:
     ----------
     ISO 6336-1:2019, clause 4.
     """
-    from ..geometry._render import text_table
-
-    head = (f"Tooth load capacity, {rating.standard} method B"
-            + (f", gear {rating.gear}" if rating.gear else "") + f", required life {rating.life_hours:g} h")
-    parts = [text_table(SUMMARY_HEAD, summary_rows(rating), title=head)]
-    if any(m.modes for m in rating.meshes):
-        parts.append(text_table(MODES_HEAD, modes_rows(rating), title="Failure modes beyond pitting and root"))
-    if details:
-        for m in rating.meshes:
-            parts.append(text_table(FACTOR_HEAD, mesh_rows(m), title=_title(m)))
-            parts.extend(f"note: {n}" for n in m.notes)
-            for mode in m.modes:
-                parts.append(mode.table())
-                parts.extend(f"note: {n}" for n in mode.notes)
-    parts.extend(f"not rated: {k}: {v}" for k, v in rating.skipped.items())
-    return "\n\n".join(parts)
+    return render_text(report_sections(rating, details=details, inputs=inputs))
 
 
-def _md_table(head, rows) -> str:
-    def esc(c: str) -> str:
-        return c.replace("|", "\\|")
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    lines += ["| " + " | ".join(esc(c) for c in r) + " |" for r in rows]
-    return "\n".join(lines)
-
-
-def markdown_report(rating, *, details: bool = True) -> str:
+def markdown_report(rating, *, details: bool = True, inputs=()) -> str:
     """The rating as Markdown (safeties below their minimum end in ``!``).
 
     Parameters
     ----------
     rating : TrainRating
     details : bool, default True
+    inputs : sequence of Section, optional
+        The input echo, first.
 
     Returns
     -------
@@ -197,37 +233,18 @@ def markdown_report(rating, *, details: bool = True) -> str:
     ----------
     ISO 6336-1:2019, clause 4.
     """
-    parts = [f"## Tooth load capacity ({rating.standard}, method B"
-             + (f", gear {rating.gear}" if rating.gear else "") + f", life {rating.life_hours:g} h)",
-             _md_table(SUMMARY_HEAD, summary_rows(rating))]
-    if any(m.modes for m in rating.meshes):
-        parts.append(_md_table(MODES_HEAD, modes_rows(rating)))
-    if details:
-        for m in rating.meshes:
-            parts += [f"### {_title(m)}", _md_table(FACTOR_HEAD, mesh_rows(m))]
-            parts += [mode.markdown() for mode in m.modes]
-    return "\n\n".join(parts) + "\n"
+    return render_markdown(report_sections(rating, details=details, inputs=inputs))
 
 
-def _html_rows(rows, safety_columns) -> str:
-    out = []
-    for r in rows:
-        cells = []
-        for i, c in enumerate(r):
-            bad = c.endswith(" !") and i in safety_columns
-            text = html.escape(c[:-2] if bad else c)
-            cells.append(f"<td class='below' style='{_RED}'>{text}</td>" if bad else f"<td>{text}</td>")
-        out.append("<tr>" + "".join(cells) + "</tr>")
-    return "".join(out)
-
-
-def html_section(rating, *, details: bool = True) -> str:
+def html_section(rating, *, details: bool = True, inputs=()) -> str:
     """The rating as an HTML fragment (tables; safeties below their minimum in red).
 
     Parameters
     ----------
     rating : TrainRating
     details : bool, default True
+    inputs : sequence of Section, optional
+        The input echo, first.
 
     Returns
     -------
@@ -237,40 +254,22 @@ def html_section(rating, *, details: bool = True) -> str:
     ----------
     ISO 6336-1:2019, clause 4.
     """
-    esc = html.escape
-    head = "".join(f"<th>{esc(h)}</th>" for h in SUMMARY_HEAD)
-    parts = [f"<section class='rating'><h2>Tooth load capacity — {esc(rating.standard)}, method B"
-             + (f", gear {esc(rating.gear)}" if rating.gear else "") + f", life {rating.life_hours:g} h</h2>",
-             f"<table><thead><tr>{head}</tr></thead><tbody>{_html_rows(summary_rows(rating), (5, 8))}</tbody></table>"]
-    if any(m.modes for m in rating.meshes):
-        mhead = "".join(f"<th>{esc(h)}</th>" for h in MODES_HEAD)
-        parts.append(f"<table><thead><tr>{mhead}</tr></thead><tbody>{_html_rows(modes_rows(rating), (4,))}"
-                     "</tbody></table>")
-    if details:
-        fhead = "".join(f"<th>{esc(h)}</th>" for h in FACTOR_HEAD)
-        for m in rating.meshes:
-            cls = "" if m.ok else f" class='below' style='{_RED}'"
-            parts.append(f"<h3{cls}>{esc(_title(m))}</h3><table><thead><tr>{fhead}</tr></thead><tbody>"
-                         f"{_html_rows(mesh_rows(m), (3, 4))}</tbody></table>")
-            parts.extend(f"<p class='note'>{esc(n)}</p>" for n in m.notes)
-            parts.extend(mode.html() for mode in m.modes)
-    parts.append("</section>")
-    return "".join(parts)
+    return f"<section class='rating'>{render_html(report_sections(rating, details=details, inputs=inputs))}</section>"
 
 
-_RED = "color:#b00020;font-weight:bold"  # inline too: the analyze report's style sheet has no .below
-_CSS = ("body{font-family:system-ui,sans-serif;margin:2em;color:#222}table{border-collapse:collapse;margin:1em 0}"
-        "td,th{border:1px solid #ccc;padding:2px 6px;font-size:90%}th{background:#f3f3f3}"
-        ".below{color:#b00020;font-weight:bold}.note{color:#555;font-size:90%}")
-
-
-def html_document(rating, title: str) -> str:
-    """A self-contained HTML document of the rating.
+def html_document(ratings, title: str, *, source: str = "", date: str | None = None, inputs=()) -> str:
+    """A self-contained HTML document of one rating or several (one per gear) that prints to PDF cleanly.
 
     Parameters
     ----------
-    rating : TrainRating
+    ratings : TrainRating or sequence of TrainRating
     title : str
+    source : str, optional
+        The rated file, in the header of every printed page.
+    date : str, optional
+        ISO 8601 date of the header; default today (UTC).
+    inputs : sequence of Section, optional
+        The input echo, once before the ratings.
 
     Returns
     -------
@@ -278,8 +277,12 @@ def html_document(rating, title: str) -> str:
 
     References
     ----------
-    ISO 6336-1:2019, clause 4.
+    ISO 6336-1:2019, clause 4; W3C, *CSS Paged Media Module Level 3*.
     """
-    esc = html.escape
-    return (f"<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>{esc(title)} — rating</title>"
-            f"<style>{_CSS}</style></head><body><h1>{esc(title)}</h1>{html_section(rating)}</body></html>\n")
+    import datetime
+
+    ratings = [ratings] if hasattr(ratings, "meshes") else list(ratings)
+    if date is None:
+        date = datetime.datetime.now(datetime.timezone.utc).date().isoformat()
+    body = render_html(list(inputs)) + "".join(html_section(r) for r in ratings)
+    return html_page(title, body, source=source, date=date)

@@ -42,7 +42,7 @@ def test_every_mesh_of_a_planetary_set():
         assert r.ok and 0 < r.S_intS < math.inf and 0 < r.S_B < math.inf
         assert r.integral["X_mp"].value == 2.0  # the sun meets three planets: (1 + 3)/2
         assert r.integral["mu_mC"].value == r.flash["mu_m"].value
-    assert "S_intS" in repr(sun) and "<table>" in sun._repr_html_() and "theta_intS" in sun.table()
+    assert "S_intS" in repr(sun) and "<table>" in sun._repr_html_() and "ϑ_intS" in sun.table()
     # rate_mesh carries the same as the mesh's failure modes
     mesh = rating.mesh("P", "sun-planet")
     assert mesh.mode("scuffing_flash").value == pytest.approx(sun.S_B)

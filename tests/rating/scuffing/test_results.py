@@ -18,7 +18,7 @@ def test_every_format_has_both_methods():
     assert text.exit_code == 0, text.output
     assert "Failure modes beyond pitting and root" in text.output
     assert "Scuffing, integral temperature method" in text.output and "Scuffing, flash temperature method" in text.output
-    assert "theta_intS" in text.output and "ISO/TS 6336-21:2017" in text.output and "ISO 14635-1" in text.output
+    assert "ϑ_intS" in text.output and "ISO/TS 6336-21:2017" in text.output and "ISO 14635-1" in text.output
     data = json.loads(runner.invoke(app, ["rate", EXAMPLE, "-f", "json"]).output)
     modes = data["ratings"][0]["meshes"][0]["modes"]
     integral, flash = modes["scuffing_integral"], modes["scuffing_flash"]
