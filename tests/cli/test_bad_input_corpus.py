@@ -611,6 +611,8 @@ CORPUS: list[Bad] = [
     Bad("geometry planets contradict", "fit", sub(EFF, "planets = 3" + GEO_T.replace("20\n", "20\nplanets = 4\n")),
         "give the number once"),
     Bad("geometry planets 1000", "fit", sub("module = 2", "module = 2\nplanets = 1000", GEO), "planets"),
+    Bad("convert --rexs-version 3", "convert", GEO, "writes REXS 1.7 or 2.0.0", ("{file}", "--rexs-version", "3",
+                                                                             "--out", "{tmp}/m.rexs")),
     Bad("datasheet --thickness-tolerance nan", "datasheet", GEO, "--thickness-tolerance",
         ("{file}", "--thickness-tolerance", "nan")),
     Bad("datasheet --pin-diameter of no gear", "datasheet", GEO, "no gear 'moon'", ("{file}", "--pin-diameter", "moon=3")),
