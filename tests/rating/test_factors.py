@@ -90,7 +90,8 @@ def test_stiffness_and_deviations():
     assert c == pytest.approx(1 / q * 0.8 * 0.975)              # C_M = 0.8, C_B(h_fP* = 1.25) = 0.975
     assert 12.0 < c < 16.0 and 12.0 < load_factors.single_stiffness(40, 80, 0.0, 0.0, 0.0) < 16.0
     dev = load_factors.deviations(6, 100.0, 2.0, 20.0)
-    assert dev["f_pt"] == pytest.approx((0.1 + 0.8 + 5) * math.sqrt(2))   # ISO 1328-1:2013, class 5 × √2
+    assert dev["f_pt"] == 8.5  # ISO 1328-1:2013, (0.1 + 0.8 + 5) √2 = 8.34 µm rounded to 0.5 µm (5.2.3)
+    assert load_factors.deviations(6, 100.0, 2.0, 20.0, "1995")["f_pt"] == 7.5  # ISO 1328-1:1995, Table 1
     with pytest.raises(RatingError, match="accuracy_grade"):
         load_factors.deviations(13, 100.0, 2.0, 20.0)
 

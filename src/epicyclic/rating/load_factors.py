@@ -20,14 +20,13 @@ value per load case) and return the same shape: a duty cycle is rated in one cal
   K_Hα = ε_γ/2 (0.9 + 0.4 c_γα (f_pb − y_α)/(F_tH/b)), otherwise
   0.9 + 0.4 √(2(ε_γ − 1)/ε_γ) c_γα (f_pb − y_α)/(F_tH/b); limited to 1 … ε_γ/(ε_α Z_ε²)
   (K_Fα up to ε_γ/(0.25 ε_α + 0.75), the ε_γ/(ε_α Y_ε) of eq. (76)).
-* Pitch and profile deviations from the accuracy grade Q (ISO 1328-1:2013, 5.2):
-  f_pt = (0.001 d + 0.4 m_n + 5) 2^((Q−5)/2), f_fα = (2.5 √m_n + 0.17 √d + 0.5) 2^((Q−5)/2),
-  f_Hβ = (0.07 √d + 0.45 √b + 3) 2^((Q−5)/2) µm; f_pb = f_pt cos α_t.
+* Pitch, profile and helix deviations from the accuracy grade by ISO 1328-1:1995 or :2013
+  (:mod:`epicyclic.geometry.accuracy`, the tolerances as the edition rounds them); f_pb = f_pt cos α_t.
 
 References
 ----------
 ISO 6336-1:2006 and :2019, clauses 6.3 (K_v method B, eqs. (13)–(29)), 7.6 (method C),
-8.3 (K_Hα, K_Fα method B), 9.3 (c', c_γ); ISO 1328-1:2013, 5.2.
+8.3 (K_Hα, K_Fα method B), 9.3 (c', c_γ); ISO 1328-1:1995, clause 6; ISO 1328-1:2013, 5.2.
 """
 
 from __future__ import annotations
@@ -36,6 +35,8 @@ import math
 
 import numpy as np
 
+from ..errors import EpicyclicError
+from ..geometry.accuracy import flank_tolerances
 from .errors import RatingError
 
 __all__ = [
@@ -52,46 +53,53 @@ __all__ = [
 _Q = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
 
 
-def deviations(grade: int, diameter: float, module: float, face_width: float) -> dict[str, float]:
-    """Single pitch, profile form and helix slope deviations of accuracy grade ``grade``, µm.
+def deviations(grade: int, diameter: float, module: float, face_width: float,
+               edition: str = "2013") -> dict[str, float]:
+    """Single pitch, profile form and helix slope tolerances of accuracy grade ``grade``, µm.
+
+    The tolerances of :func:`epicyclic.geometry.accuracy.flank_tolerances` (rounded by the
+    edition's rule, as the standard tabulates them): the one path from an accuracy grade to the
+    deviations the load factors take.
 
     Parameters
     ----------
     grade : int
-        ISO 1328-1 flank tolerance class (1 … 11).
+        ISO 1328-1 accuracy grade (1995: 0 … 12) or flank tolerance class (2013: 1 … 11).
     diameter : float
         Reference diameter d, mm.
     module : float
         m_n, mm.
     face_width : float
         b, mm.
+    edition : {"1995", "2013"}, default "2013"
+        ISO 1328-1 edition.
 
     Returns
     -------
     dict
-        ``f_pt``, ``f_falpha``, ``f_Hbeta`` (µm, unrounded).
+        ``f_pt``, ``f_falpha``, ``f_Hbeta`` (µm).
 
     Raises
     ------
     RatingError
-        A grade outside 1 … 11.
+        A grade outside the edition's range, an unknown edition, a size outside its ranges.
 
     References
     ----------
-    ISO 1328-1:2013, 5.2, eqs. (1), (4), (8) (class 5 formulas, step factor √2).
+    ISO 1328-1:2013, 5.2, eqs. (5), (8), (10); ISO 1328-1:1995, clause 6 and Annex B.
 
     Examples
     --------
-    >>> {k: round(v, 2) for k, v in deviations(5, 100.0, 2.0, 20.0).items()}
-    {'f_pt': 5.9, 'f_falpha': 5.74, 'f_Hbeta': 5.71}
+    >>> deviations(5, 100.0, 2.0, 20.0)
+    {'f_pt': 6.0, 'f_falpha': 6.0, 'f_Hbeta': 6.0}
+    >>> deviations(5, 100.0, 2.0, 20.0, "1995")
+    {'f_pt': 5.5, 'f_falpha': 4.5, 'f_Hbeta': 5.5}
     """
-    if isinstance(grade, bool) or not isinstance(grade, int) or not 1 <= grade <= 11:
-        raise RatingError(f"rating.accuracy_grade must be a whole number 1 ... 11 (ISO 1328-1), got {grade!r}.")
-    step = 2.0 ** ((grade - 5) / 2.0)
-    d, m, b = abs(diameter), module, face_width
-    return {"f_pt": (0.001 * d + 0.4 * m + 5.0) * step,
-            "f_falpha": (2.5 * math.sqrt(m) + 0.17 * math.sqrt(d) + 0.5) * step,
-            "f_Hbeta": (0.07 * math.sqrt(d) + 0.45 * math.sqrt(b) + 3.0) * step}
+    try:
+        t = flank_tolerances(grade, diameter, module, face_width, edition)
+    except EpicyclicError as exc:
+        raise RatingError(f"rating.accuracy_grade: {exc}") from None
+    return {"f_pt": t.f_pt, "f_falpha": t.f_falpha, "f_Hbeta": t.f_Hbeta}
 
 
 def basic_rack_factor(dedendum: float, pressure_angle_deg: float) -> float:

@@ -189,7 +189,8 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["c_prime_th"] = load_factors.single_stiffness(
         zn[order[0]], zn[order[1]], xs[order[0]], xs[order[1]], beta, dedendum=rack.dedendum,
         pressure_angle_deg=rack.pressure_angle, internal=mesh.internal)
-    dev = [load_factors.deviations(spec.accuracy_grade, g.reference_diameter, rack.module, b) for g in (g1, g2)]
+    dev = [load_factors.deviations(spec.accuracy_grade, g.reference_diameter, rack.module, b, spec.accuracy_standard)
+           for g in (g1, g2)]
     f_pb = max(d["f_pt"] for d in dev) * math.cos(at)
     f_fa = max(d["f_falpha"] for d in dev)
     s.update(f_pb=f_pb, f_falpha=f_fa, f_Hbeta=max(d["f_Hbeta"] for d in dev))
@@ -355,7 +356,8 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("N", _out(resonance), "1", p1("6.3, eq. (13)"), "resonance ratio"),
         Factor("C_a", s["C_a"], "um", p1("6.3" if spec.tip_relief is not None else "6.3 (C_ay, running-in)"),
                "tip relief in K_v"),
-        Factor("K_v", _out(k_v), "1", p1("6.3 (method B)" if spec.K_v is None else "6 (given)"), "dynamic factor"),
+        Factor("K_v", _out(k_v), "1", p1("6.3 (method B)" if spec.K_v is None else "6 (given)"), "dynamic factor",
+               "computed" if spec.K_v is None else "given"),
         Factor("f_pb", s["f_pb"], "um", "ISO 1328-1:2013, 5.2", "transverse base pitch deviation"),
         Factor("y_alpha", _out(y_a), "um", p1("8.3.4"), "running-in allowance (pitch)"),
         Factor("F_betax", _out(f_bx), "um", p1("7.6 (method C)"), "initial equivalent misalignment"),

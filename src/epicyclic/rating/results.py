@@ -78,6 +78,9 @@ class Factor:
         Where the standard defines it, e.g. ``"ISO 6336-2:2019, 6.1"``.
     name : str
         What it is in words.
+    source : str, default ""
+        Where a factor's value comes from: ``"given"`` (an input), ``"computed"`` (by the clause),
+        or another named source (``"computed by the elastic model"``); empty for data and stresses.
 
     References
     ----------
@@ -89,10 +92,14 @@ class Factor:
     unit: str = "1"
     clause: str = ""
     name: str = ""
+    source: str = ""
 
     def to_dict(self) -> dict[str, Any]:
-        """``{"value", "unit", "clause", "name"}`` (JSON-safe)."""
-        return {"value": json_value(self.value), "unit": self.unit, "clause": self.clause, "name": self.name}
+        """``{"value", "unit", "clause", "name"}`` and ``source`` where it has one (JSON-safe)."""
+        out = {"value": json_value(self.value), "unit": self.unit, "clause": self.clause, "name": self.name}
+        if self.source:
+            out["source"] = self.source
+        return out
 
 
 def _short(value) -> str:

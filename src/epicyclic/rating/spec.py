@@ -10,6 +10,8 @@ application_factor      1.0                         K_A (uniform driver and load
 life                    20000                       required life, h
 S_Hmin / S_Fmin         1.0 / 1.4                   minimum safeties
 accuracy_grade          6                           ISO 1328-1 flank tolerance class
+accuracy_standard       1995 for ISO 6336:2006,     ISO 1328-1 edition of the grade (``"1995"`` or
+                        2013 for :2019              ``"2013"``)
 K_Hbeta                 method C                    a given K_Hβ, or F_βx from f_Hβ (+ 1.33 f_sh)
 K_v                     method B                    a given dynamic factor
 shaft_deflection        0                           f_sh for method C, µm
@@ -41,6 +43,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Any
 
+from ..geometry.accuracy import EDITIONS as ACCURACY_EDITIONS
 from .errors import RatingError
 from .materials import Material, material
 from .standard import DEFAULT_EDITION, edition
@@ -108,6 +111,9 @@ class RatingSpec:
         Required life, h.
     S_Hmin, S_Fmin : float, default 1.0, 1.4
     accuracy_grade : int, default 6
+    accuracy_standard : str, optional
+        ISO 1328-1 edition the grade is read in, ``"1995"`` or ``"2013"``; by default the one the
+        ISO 6336 edition refers to (2006: ISO 1328-1:1995, 2019: ISO 1328-1:2013).
     K_Hbeta : float, optional
         Given face load factor; otherwise method C.
     K_v : float, optional
@@ -154,6 +160,7 @@ class RatingSpec:
     S_Hmin: float = 1.0
     S_Fmin: float = 1.4
     accuracy_grade: int = 6
+    accuracy_standard: str | None = None
     K_Hbeta: float | None = None
     K_v: float | None = None
     shaft_deflection: float = 0.0
@@ -188,10 +195,17 @@ class RatingSpec:
         for key in ("K_Hbeta", "K_v", "load_sharing"):
             if getattr(self, key) is not None:
                 object.__setattr__(self, key, _number(getattr(self, key), key, 1.0, strict=False))
-        g = self.accuracy_grade
-        if isinstance(g, bool) or not isinstance(g, int) or not 1 <= g <= 11:
-            raise RatingError(f"rating.accuracy_grade must be a whole number 1 ... 11 (ISO 1328-1), got {g!r}; "
-                              "the default is 6.")
+        if self.accuracy_standard is None:
+            object.__setattr__(self, "accuracy_standard", "1995" if self.standard == "2006" else "2013")
+        accuracy = str(self.accuracy_standard).removeprefix("ISO 1328-1:")
+        if accuracy not in ACCURACY_EDITIONS:
+            raise RatingError(f"rating.accuracy_standard must be one of {', '.join(map(repr, ACCURACY_EDITIONS))} "
+                              f"(ISO 1328-1:1995 or :2013), got {self.accuracy_standard!r}.")
+        object.__setattr__(self, "accuracy_standard", accuracy)
+        g, (low, high) = self.accuracy_grade, ACCURACY_EDITIONS[accuracy]
+        if isinstance(g, bool) or not isinstance(g, int) or not low <= g <= high:
+            raise RatingError(f"rating.accuracy_grade must be a whole number {low} ... {high} (ISO 1328-1:{accuracy}), "
+                              f"got {g!r}; the default is 6.")
         if self.long_life not in ("standard", "optimum"):
             raise RatingError(f"rating.long_life must be 'standard' or 'optimum', got {self.long_life!r}.")
         if self.rim_thickness is not None:
@@ -302,7 +316,8 @@ class RatingSpec:
         mats = (m.to_dict() if isinstance(m, Material) else {k: v.to_dict() for k, v in m.items()}) if m else None
         return {"standard": f"ISO 6336:{self.standard}", "application_factor": self.application_factor,
                 "life": self.life, "S_Hmin": self.S_Hmin, "S_Fmin": self.S_Fmin,
-                "accuracy_grade": self.accuracy_grade, "K_Hbeta": self.K_Hbeta, "K_v": self.K_v,
+                "accuracy_grade": self.accuracy_grade,
+                "accuracy_standard": f"ISO 1328-1:{self.accuracy_standard}", "K_Hbeta": self.K_Hbeta, "K_v": self.K_v,
                 "shaft_deflection": self.shaft_deflection, "load_sharing": self.load_sharing,
                 "flank_roughness": _plain(self.flank_roughness), "root_roughness": _plain(self.root_roughness),
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
