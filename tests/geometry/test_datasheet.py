@@ -74,3 +74,17 @@ def test_missing_tolerance_is_said_and_bad_input_named():
         data_sheet(_industrial(), pin_diameter={"moon": 5.0})
     with pytest.raises(GeometryError, match="gear 'sun'.*pin_diameter"):
         data_sheet(_industrial(), pin_diameter={"sun": 0.5})
+
+
+def test_flank_tolerances_of_the_accuracy_grade_come_from_geometry_accuracy():
+    from epicyclic.geometry.accuracy import flank_tolerances
+
+    sheet = data_sheet(_industrial(face_width=30.0), accuracy_grade=6)
+    sun = sheet.gears[0]
+    expected = flank_tolerances(6, sun.gear.reference_diameter, 3.0, 30.0, "2013")
+    assert sun.accuracy == expected
+    assert "ISO 1328-1:2013" in sheet.table() and sheet.to_dict()["gears"][0]["accuracy"]["f_pt"] == expected.f_pt
+    old = data_sheet(_industrial(face_width=30.0), accuracy_grade=7, accuracy_edition="1995")
+    assert old.gears[2].accuracy.standard == "ISO 1328-1:1995"
+    bare = data_sheet(_industrial(), accuracy_grade=6)
+    assert bare.gears[0].accuracy is None and "needs the face width" in bare.table()

@@ -62,9 +62,16 @@ def datasheet(
         help="Ball diameter D_M for M_d, mm (default the ball touching on d + 2 x m_n); one or GEAR=mm.")] = None,
     element: Annotated[Optional[str], typer.Option(help="Only this element (default every one with geometry).")
                        ] = None,
+    accuracy_grade: Annotated[Optional[int], typer.Option(
+        "--accuracy-grade", help="ISO 1328-1 accuracy grade of every gear: its flank tolerances are listed.")] = None,
+    accuracy_edition: Annotated[str, typer.Option(
+        "--accuracy-edition", help="ISO 1328-1 edition: 2013 (classes 1-11) or 1995 (grades 0-12).")] = "2013",
     set_: SetOption = None,
 ) -> None:
-    """Manufacturing data sheet: W_k and k, M_d, chordal thickness with allowances per gear; backlash per mesh."""
+    """Manufacturing data sheet: W_k and k, M_d, chordal thickness with allowances per gear; backlash per mesh.
+
+    With --accuracy-grade also each gear's ISO 1328-1 flank tolerances (f_pt, F_p, F_alpha, ..., F_r).
+    """
     from ..errors import ModelError
     from ..geometry.datasheet import data_sheet
     from ._common import check_finite
@@ -79,7 +86,8 @@ def datasheet(
             raise ModelError(f"--element: no element {element!r:.40} with geometry; elements are "
                              f"{', '.join(repr(n) for n in geometry)}.")
         geometry = {element: geometry[element]}
-    sheets = [data_sheet(shape, name, thickness_tolerance=tolerance, pin_diameter=pins)
+    sheets = [data_sheet(shape, name, thickness_tolerance=tolerance, pin_diameter=pins,
+                         accuracy_grade=accuracy_grade, accuracy_edition=accuracy_edition)
               for name, shape in geometry.items()]
     title = f"data sheet of {train_file.title or train_file.train.name}"
     data = {"title": title, "datasheets": [s.to_dict() for s in sheets]}

@@ -9,12 +9,15 @@ the normal backlash j_bn, nominal and its least and largest value over the thick
 allowances of both gears and the centre-distance allowance ±A_a (the set's
 ``center_distance_tolerance``, DIN 3964), each computed exactly from the shifts
 (:attr:`~epicyclic.geometry.gear.MeshGeometry.backlash`), and the circumferential
-backlash j_wt = j_bn / (cos α_wt cos β_b).
+backlash j_wt = j_bn / (cos α_wt cos β_b).  With an accuracy grade, each gear's flank
+tolerances of ISO 1328-1:2013 or :1995 (:mod:`epicyclic.geometry.accuracy`, at its d, m_n and
+face width).
 
 References
 ----------
 ISO 21771:2007, clause 5 and eqs. (62), (63) (backlash); DIN 3960:1987; DIN 3967:1978
-(tooth-thickness allowances and backlash); DIN 3964:1980 (centre-distance allowances).
+(tooth-thickness allowances and backlash); DIN 3964:1980 (centre-distance allowances);
+ISO 1328-1:1995 and ISO 1328-1:2013 (flank tolerances).
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from ._render import html_table, text_table
+from .accuracy import FlankTolerances, flank_tolerances
 from .errors import GeometryError
 from .gear import GearGeometry, MeshGeometry
 from .measurement import (ChordalThickness, PinMeasurement, SpanMeasurement, chordal_measurement, nominal_thickness,
@@ -49,6 +53,8 @@ class GearDataSheet:
     chordal : ChordalThickness
     tolerance_given : bool
         Whether T_sn was given (without it the limits equal the upper allowance).
+    accuracy : FlankTolerances or None
+        The ISO 1328-1 flank tolerances at the grade asked for (None: no grade, or no face width).
     """
 
     name: str
@@ -58,6 +64,7 @@ class GearDataSheet:
     pins: PinMeasurement
     chordal: ChordalThickness
     tolerance_given: bool
+    accuracy: FlankTolerances | None = None
 
     def to_dict(self) -> dict[str, Any]:
         """Plain data, mm."""
@@ -77,6 +84,7 @@ class GearDataSheet:
                      "measured": "between balls" if p.internal else "over balls"},
             "chordal": {"nominal": c.nominal, "upper": c.upper, "lower": c.lower, "height": c.height,
                         "constant_chord": c.constant_chord, "constant_chord_height": c.constant_chord_height},
+            "accuracy": None if self.accuracy is None else self.accuracy.to_dict(),
         }
 
 
@@ -160,6 +168,7 @@ class DataSheet:
     element: str
     gears: tuple[GearDataSheet, ...]
     meshes: tuple[MeshBacklash, ...]
+    accuracy_note: str = ""
 
     _GEAR_HEAD = ["gear", "z", "A_sne [um]", "A_sni [um]", "k", "W_k [mm]", "W_k max", "W_k min", "D_M [mm]",
                   "M_d [mm]", "M_d max", "M_d min", "s_n chord [mm]", "h_a chord [mm]"]
@@ -181,9 +190,22 @@ class DataSheet:
                  round(m.least * 1000, 1), round(m.largest * 1000, 1),
                  *(round(v * 1000, 1) for v in m.circumferential)] for m in self.meshes]
 
+    _ACCURACY_SYMBOLS = ("f_pt", "F_p", "F_alpha", "f_falpha", "f_Halpha", "F_beta", "f_fbeta", "f_Hbeta", "F_r")
+
+    def _accuracy_rows(self) -> list[list[object]]:
+        return [[s.name, s.accuracy.standard, s.accuracy.grade, *(f"{getattr(s.accuracy, k):g}"
+                                                              for k in self._ACCURACY_SYMBOLS)]
+                for s in self.gears if s.accuracy is not None]
+
+    @property
+    def _accuracy_head(self) -> list[str]:
+        return ["gear", "standard", "grade", *(f"{k} [um]" for k in self._ACCURACY_SYMBOLS)]
+
     def _notes(self) -> list[str]:
         notes = ["W_k/M_d max belong to the upper allowance A_sne, min to the lower A_sni (internal gear: M_d "
                  "between balls, a thinner tooth reads larger); chordal thickness at the reference circle."]
+        if self.accuracy_note:
+            notes.append(self.accuracy_note)
         missing = [s.name for s in self.gears if not s.tolerance_given]
         if missing:
             notes.append(f"no tooth-thickness tolerance T_sn given for {', '.join(missing)}: the limits equal the "
@@ -195,6 +217,8 @@ class DataSheet:
         parts = [text_table(self._GEAR_HEAD, self._gear_rows(), title=f"data sheet of {self.element!r}: gears")]
         if self.meshes:
             parts.append(text_table(self._MESH_HEAD, self._mesh_rows(), title="backlash"))
+        if self._accuracy_rows():
+            parts.append(text_table(self._accuracy_head, self._accuracy_rows(), title="flank tolerances"))
         return "\n\n".join(parts + self._notes())
 
     def markdown(self) -> str:
@@ -206,6 +230,8 @@ class DataSheet:
         out = [f"### Data sheet of {self.element}", "", md(self._GEAR_HEAD, self._gear_rows())]
         if self.meshes:
             out += ["", md(self._MESH_HEAD, self._mesh_rows())]
+        if self._accuracy_rows():
+            out += ["", md(self._accuracy_head, self._accuracy_rows())]
         return "\n".join(out + [""] + [f"* {n}" for n in self._notes()]) + "\n"
 
     def _repr_html_(self) -> str:
@@ -214,6 +240,8 @@ class DataSheet:
         out = html_table(self._GEAR_HEAD, self._gear_rows(), title=f"data sheet of {self.element}")
         if self.meshes:
             out += html_table(self._MESH_HEAD, self._mesh_rows(), title="backlash")
+        if self._accuracy_rows():
+            out += html_table(self._accuracy_head, self._accuracy_rows(), title="flank tolerances")
         return out + "".join(f"<p>{html.escape(n)}</p>" for n in self._notes())
 
     def to_dict(self) -> dict[str, Any]:
@@ -234,6 +262,22 @@ def _per_gear(value, names, key: str) -> dict[str, float | None]:
     if unknown:
         raise GeometryError(f"data sheet: {key}: no gear {unknown[0]!r}; gears are {', '.join(names)}.")
     return {n: value.get(n) for n in names}
+
+
+def _face_widths(geometry) -> dict[int, float]:
+    """Face width by ``id`` of the gear object, mm (sets: per gear; stages: the mesh's, the larger for an idler)."""
+    from .set_geometry import SetGeometry
+
+    out: dict[int, float] = {}
+    if isinstance(geometry, SetGeometry):
+        if geometry.face_width is not None:
+            out = {id(g): geometry.face_width[n] for n, g in geometry.gears.items()}  # type: ignore[index]
+        return out
+    for mesh, b in zip(geometry.meshes, geometry.mesh_face_widths()):
+        if b is not None:
+            for g in (mesh.gear1, mesh.gear2):
+                out[id(g)] = max(b, out.get(id(g), 0.0))
+    return out
 
 
 def _gears_of(geometry) -> tuple[dict[str, GearGeometry], list[tuple[MeshGeometry, str, str]], float]:
@@ -267,7 +311,8 @@ def _gears_of(geometry) -> tuple[dict[str, GearGeometry], list[tuple[MeshGeometr
 
 
 def data_sheet(geometry, element: str = "", *, thickness_tolerance: float | Mapping[str, float] | None = None,
-               pin_diameter: float | Mapping[str, float] | None = None) -> DataSheet:
+               pin_diameter: float | Mapping[str, float] | None = None, accuracy_grade: int | None = None,
+               accuracy_edition: str = "2013") -> DataSheet:
     """The data sheet of a :class:`SetGeometry` or :class:`StageGeometry`.
 
     Parameters
@@ -280,6 +325,10 @@ def data_sheet(geometry, element: str = "", *, thickness_tolerance: float | Mapp
     pin_diameter : float or mapping gear → float, optional
         Ball diameter D_M per gear, mm (default the standard ball,
         :func:`~epicyclic.geometry.measurement.standard_pin_diameter`).
+    accuracy_grade : int, optional
+        ISO 1328-1 accuracy grade (1995: 0 … 12) or flank tolerance class (2013: 1 … 11) of every
+        gear: its flank tolerances are listed (a gear without face width is named in a note).
+    accuracy_edition : {"2013", "1995"}, default "2013"
 
     Returns
     -------
@@ -298,7 +347,8 @@ def data_sheet(geometry, element: str = "", *, thickness_tolerance: float | Mapp
     names = tuple(gears)
     tolerances = _per_gear(thickness_tolerance, names, "thickness_tolerance")
     pins = _per_gear(pin_diameter, names, "pin_diameter")
-    sheets, lower = [], {}
+    widths = _face_widths(geometry)
+    sheets, lower, no_width = [], {}, []
     for name, gear in gears.items():
         t = tolerances[name]
         if t is not None and not (math.isfinite(t) and t >= 0):
@@ -306,13 +356,22 @@ def data_sheet(geometry, element: str = "", *, thickness_tolerance: float | Mapp
                                 f"(T_sn = A_sne - A_sni), got {t!r}.")
         low = gear.thickness_allowance - (t or 0.0)
         lower[name] = low
+        accuracy = None
+        if accuracy_grade is not None:
+            if id(gear) in widths:
+                accuracy = flank_tolerances(accuracy_grade, gear.reference_diameter, gear.rack.module,
+                                            widths[id(gear)], accuracy_edition)
+            else:
+                no_width.append(name)
         try:
             span = None if gear.internal else span_measurement(gear, low)
             sheets.append(GearDataSheet(name, gear, low, span, pin_measurement(gear, pins[name], low),
-                                        chordal_measurement(gear, low), t is not None))
+                                        chordal_measurement(gear, low), t is not None, accuracy))
         except GeometryError as exc:
             raise GeometryError(f"data sheet, gear {name!r}: {exc}") from None
     backlash = tuple(mesh_backlash(m, lower[a], lower[b], allowance) for m, a, b in meshes)
     if not element:
         element = getattr(getattr(geometry, "planetary_set", None), "name", None) or geometry.stage.name
-    return DataSheet(element, tuple(sheets), backlash)
+    note = (f"no flank tolerances for {', '.join(no_width)}: ISO 1328-1 needs the face width (give face_width)."
+            if no_width else "")
+    return DataSheet(element, tuple(sheets), backlash, note)
