@@ -30,7 +30,7 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"geometry", "results"},                          # gear geometry of the model; solution value objects
     {"solver", ""},                                   # model → results
     {"analysis", "losses", "rating", "transmission", "demo"},  # built on the solver: modes, losses, rating, gears
-    {"explain", "explain_losses", "io", "plotting", "synthesis", "exchange"},  # files (REXS too), reports, pictures
+    {"explain", "explain_losses", "io", "plotting", "synthesis", "exchange", "export"},  # files (REXS, CAD), reports, pictures
     {"cli", "web", "notebook"},                       # the front ends (notebook: Jupyter previews)
     {"__main__"},
 ))
