@@ -145,12 +145,32 @@ class GearOutline:
         chunks = [c.points(per_curve)[:-1] for c in self.world_curves()]
         return np.concatenate(chunks)
 
-    def dense_polygon(self) -> np.ndarray:
-        """The generated profile's own dense points, placed (for numerical checks), mm."""
-        pts = self.profile.gear_points()
-        rot = np.array([[math.cos(self.rotation), -math.sin(self.rotation)],
-                        [math.sin(self.rotation), math.cos(self.rotation)]])
-        return pts @ rot.T + np.asarray(self.centre)
+    def dense_polygon(self, spacing: float = 0.005) -> np.ndarray:
+        """The exported outline sampled every ``spacing`` mm or closer, placed (for numerical checks), mm.
+
+        Parameters
+        ----------
+        spacing : float, default 0.005
+            Largest distance between samples along a curve, mm.
+
+        Returns
+        -------
+        numpy.ndarray
+            (n, 2), closed (no repeated end point).
+        """
+        per_tooth = len(self.curves) // self.teeth
+        chunks = []
+        for curve in self.curves[:per_tooth]:
+            rough = curve.points(8)
+            length = float(np.hypot(*np.diff(rough, axis=0).T).sum())
+            chunks.append(curve.points(max(8, int(length / spacing) + 2))[:-1])
+        tooth = np.concatenate(chunks)
+        teeth = [tooth @ _rotation(-2 * math.pi * k / self.teeth).T for k in range(self.teeth)]
+        return np.concatenate(teeth) @ _rotation(self.rotation).T + np.asarray(self.centre)
+
+
+def _rotation(angle: float) -> np.ndarray:
+    return np.array([[math.cos(angle), -math.sin(angle)], [math.sin(angle), math.cos(angle)]])
 
 
 def _distance_to_polyline(points: np.ndarray, line: np.ndarray) -> np.ndarray:
