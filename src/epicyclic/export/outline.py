@@ -142,8 +142,13 @@ class GearOutline:
 
     def polygon(self, per_curve: int = 24) -> np.ndarray:
         """A closed point sequence along the placed outline (no repeated end point), mm."""
-        chunks = [c.points(per_curve)[:-1] for c in self.world_curves()]
-        return np.concatenate(chunks)
+        chunks: list[np.ndarray] = []
+        for curve in self.world_curves():
+            pts = curve.points(per_curve)
+            if chunks and np.hypot(*(pts[-1] - chunks[-1][-1])) < np.hypot(*(pts[0] - chunks[-1][-1])):
+                pts = pts[::-1]
+            chunks.append(pts)
+        return np.concatenate([c[:-1] for c in chunks])
 
     def dense_polygon(self, spacing: float = 0.005) -> np.ndarray:
         """The exported outline sampled every ``spacing`` mm or closer, placed (for numerical checks), mm.
@@ -163,8 +168,11 @@ class GearOutline:
         for curve in self.curves[:per_tooth]:
             rough = curve.points(8)
             length = float(np.hypot(*np.diff(rough, axis=0).T).sum())
-            chunks.append(curve.points(max(8, int(length / spacing) + 2))[:-1])
-        tooth = np.concatenate(chunks)
+            pts = curve.points(max(8, int(length / spacing) + 2))
+            if chunks and np.hypot(*(pts[-1] - chunks[-1][-1])) < np.hypot(*(pts[0] - chunks[-1][-1])):
+                pts = pts[::-1]  # arcs are stored counter-clockwise; follow the outline's direction
+            chunks.append(pts)
+        tooth = np.concatenate([c[:-1] for c in chunks])
         teeth = [tooth @ _rotation(-2 * math.pi * k / self.teeth).T for k in range(self.teeth)]
         return np.concatenate(teeth) @ _rotation(self.rotation).T + np.asarray(self.centre)
 
