@@ -215,6 +215,29 @@ def _spline(run: np.ndarray, tolerance: float, segment: str) -> Spline:
         count *= 2
 
 
+def _joins(a: Arc, b: Arc) -> bool:
+    """Whether ``b`` continues ``a`` clockwise on the same circle (b ends where a starts)."""
+    gap = (a.start - b.end + math.pi) % (2 * math.pi) - math.pi
+    return abs(a.radius - b.radius) < 1e-9 and abs(gap) < 1e-9
+
+
+def _merge_arcs(curves: list) -> list:
+    """Join the two root half-arcs of neighbouring teeth into one arc (one entity fewer per tooth)."""
+    out: list = []
+    for curve in curves:
+        last = out[-1] if out else None
+        if isinstance(curve, Arc) and isinstance(last, Arc) and _joins(last, curve):
+            out[-1] = Arc(last.centre, last.radius, curve.start, curve.start + (last.end - last.start)
+                          + (curve.end - curve.start))
+        else:
+            out.append(curve)
+    if len(out) > 1 and isinstance(out[0], Arc) and isinstance(out[-1], Arc) and _joins(out[-1], out[0]):
+        first, last = out[0], out.pop()
+        out[0] = Arc(first.centre, first.radius, first.start, first.start + (first.end - first.start)
+                     + (last.end - last.start))
+    return out
+
+
 def _tip_half_angle(profile) -> float:
     """ψ_a, half the angle the tooth spans on its tip circle (ISO 21771: s_y of the generating shift x_E), rad.
 
@@ -296,6 +319,7 @@ def gear_outline(profile, name: str = "", tolerance: float = DEFAULT_TOLERANCE) 
     for k in range(z):
         angle = -2 * math.pi * k / z  # as ToothProfile.gear_points: tooth k at -2πk/z
         curves.extend(c.moved(angle, (0.0, 0.0)) for c in tooth)
+    curves = _merge_arcs(curves)
     return GearOutline(name, z, bool(profile.internal), tuple(curves), float(profile.tip_diameter),
                        float(profile.root_diameter), float(profile.base_diameter), float(profile.reference_diameter),
                        float(tolerance), profile=profile)
