@@ -115,6 +115,9 @@ def rate(
     explain: Annotated[str | None, typer.Option(
         "--explain", help="Print the worked rating of one mesh: ELEMENT:MESH[:GEAR], e.g. P1:sun-planet:planet.")]
         = None,
+    datasheet: Annotated[bool, typer.Option(
+        "--datasheet", help="Append the manufacturing data sheet of every element (epicyclic datasheet, with the "
+                            "rating's accuracy grade).")] = False,
     set_: SetOption = None,
 ) -> None:
     """Rate FILE's meshes by ISO 6336 Method B: safeties S_H (pitting) and S_F (tooth root) of every gear."""
@@ -142,6 +145,8 @@ def rate(
                 "inputs": train_file.rating.to_dict(), "ratings": [r.to_dict() for _, r in ratings],
                 "warnings": sorted({str(w.message) for w in caught})}
         check_finite(data, file, "rating")
+        if datasheet:
+            data["datasheets"] = [s.to_dict() for s in _sheets(train_file)]
         text = json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False)
     elif format is OutputFormat.markdown:
         text = f"# {title}\n\n" + "\n".join(report.markdown_report(r) for _, r in ratings)
@@ -151,8 +156,27 @@ def rate(
             + "".join(report.html_section(r) for _, r in ratings) + "</body></html>")
     else:
         text = "\n\n".join(report.text_report(r) for _, r in ratings)
+    if datasheet and format is not OutputFormat.json:
+        text = _with_sheets(text, _sheets(train_file), format)
     emit(text, out)
     _stderr(caught, ratings)
+
+
+def _sheets(train_file):
+    """The data sheet of every element with geometry, at the rating's accuracy grade and edition."""
+    from ..geometry.datasheet import data_sheet
+
+    spec = train_file.rating
+    return [data_sheet(shape, name, accuracy_grade=spec.accuracy_grade, accuracy_edition=spec.accuracy_standard)
+            for name, shape in train_file.geometry.items()]
+
+
+def _with_sheets(text: str, sheets, format) -> str:
+    if format is OutputFormat.markdown:
+        return text + "\n\n" + "\n".join(s.markdown() for s in sheets)
+    if format is OutputFormat.html:
+        return text.replace("</body>", "".join(s._repr_html_() for s in sheets) + "</body>", 1)
+    return text + "\n\n" + "\n\n".join(s.table() for s in sheets)
 
 
 def _stderr(caught, ratings) -> None:

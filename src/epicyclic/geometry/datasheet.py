@@ -186,9 +186,11 @@ class DataSheet:
         return rows
 
     def _mesh_rows(self) -> list[list[object]]:
-        return [[m.name, m.center_distance, m.center_distance_allowance, round(m.nominal * 1000, 1),
-                 round(m.least * 1000, 1), round(m.largest * 1000, 1),
-                 *(round(v * 1000, 1) for v in m.circumferential)] for m in self.meshes]
+        def um(value: float) -> float:
+            return round(value * 1000, 1) + 0.0  # no "-0.0"
+
+        return [[m.name, m.center_distance, m.center_distance_allowance, um(m.nominal), um(m.least), um(m.largest),
+                 *(um(v) for v in m.circumferential)] for m in self.meshes]
 
     _ACCURACY_SYMBOLS = ("f_pt", "F_p", "F_alpha", "f_falpha", "f_Halpha", "F_beta", "f_fbeta", "f_Hbeta", "F_r")
 
