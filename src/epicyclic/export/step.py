@@ -1,17 +1,20 @@
-"""3D STEP of placed spur gears through Open CASCADE (``cadquery-ocp``, the optional ``step`` extra).
+"""3D STEP of placed gears through Open CASCADE (``cadquery-ocp``, the optional ``step`` extra).
 
 Each gear's outline becomes one planar face bounded by exact curves — the flanks and fillets as
 Geom_BSplineCurve with the poles and knots of :class:`~epicyclic.export.outline.Spline` (the
 involute is a B-spline within the outline's tolerance, not a polyline), the tip and root runs as
-circle arcs — and is extruded by its face width along z (BRepPrimAPI_MakePrism).  An internal gear
-is a ring: a disc of the root diameter plus a rim of :data:`RIM_FACTOR` × m_n with the toothed
-outline as the hole of its face.  Helical gears are not built (their flank is a helicoid, not a prism): they are
-refused with that reason.  The shapes are written as one STEP AP214 file (a compound for a set).
+circle arcs — and a spur gear is that face extruded by its face width along z
+(BRepPrimAPI_MakePrism).  An internal spur gear is a ring: a disc of the root diameter plus a rim
+of :data:`RIM_FACTOR` × m_n with the toothed outline as the hole of its face.  An external helical
+gear is a loft (BRepOffsetAPI_ThruSections) through exact transverse sections turned along the
+helix, φ(z) = ±2 z tan β / d (right hand; a set's planets left hand), one per 2° of twist and at least five: exact in those
+sections, interpolated between them.  Helical internal gears are refused (not built yet).  The
+shapes are written as one STEP AP214 file (a compound for a set).
 
 References
 ----------
 Open CASCADE Technology 7/8 reference: Geom_BSplineCurve, BRepBuilderAPI_MakeEdge/MakeWire/MakeFace,
-BRepPrimAPI_MakePrism, BRepCheck_Analyzer, BRepGProp (volume), STEPControl_Writer/Reader;
+BRepPrimAPI_MakePrism, BRepOffsetAPI_ThruSections, BRepCheck_Analyzer, BRepGProp (volume), STEPControl_Writer/Reader;
 ISO 10303-214 (STEP AP214).
 """
 
@@ -92,7 +95,45 @@ def _wire(curves, k):
     return maker.Wire()
 
 
-def _solid(gear, width: float, module: float, k):
+#: Largest twist between two lofted sections of a helical gear, rad (2°).
+SECTION_TWIST = 0.035
+
+
+def _helical_solid(gear, width: float, helix_angle: float, k):
+    """An external helical gear: a loft through exact transverse sections turned along the helix.
+
+    The transverse section at height z is the outline turned by φ(z) = ±2 z tan β / d (right hand; the
+    planets of a set left hand, as they mesh the sun);
+    BRepOffsetAPI_ThruSections interpolates a smooth surface through them, one section per 2° of twist
+    and at least five.
+    """
+    if gear.internal:
+        raise ExportError(f"STEP: helical internal gears ({gear.name!r}) are not built yet; export DXF/SVG of "
+                          "the transverse section instead.")
+    import math
+
+    hand = -1.0 if gear.name.startswith("planet") else 1.0  # a planet meshes the (right-hand) sun: left hand
+    twist = hand * 2.0 * width * math.tan(math.radians(helix_angle)) / gear.reference_diameter
+    count = max(5, int(math.ceil(abs(twist) / SECTION_TWIST)) + 1)
+    loft = k.BRepOffsetAPI.BRepOffsetAPI_ThruSections(True, False, 1e-6)
+    for i in range(count):
+        z = width * i / (count - 1)
+        section = gear.placed(gear.centre, gear.rotation + twist * i / (count - 1))
+        move = k.gp.gp_Trsf()
+        move.SetTranslation(k.gp.gp_Vec(0.0, 0.0, z))
+        lifted = k.BRepBuilderAPI.BRepBuilderAPI_Transform(_wire(section.world_curves(), k), move, True).Shape()
+        loft.AddWire(k.TopoDS.TopoDS.Wire(lifted))
+    loft.CheckCompatibility(False)
+    loft.Build()
+    return loft.Shape()
+
+
+def _solid(gear, width: float, module: float, k, helix_angle: float = 0.0):
+    if helix_angle:
+        solid = _helical_solid(gear, width, helix_angle, k)
+        if not k.BRepCheck.BRepCheck_Analyzer(solid).IsValid():
+            raise ExportError(f"STEP: the solid of {gear.name!r} is not valid (BRepCheck_Analyzer).")
+        return solid
     wire = _wire(gear.world_curves(), k)
     make_face = k.BRepBuilderAPI.BRepBuilderAPI_MakeFace
     if gear.internal:  # the ring: a disc of the rim's diameter with the toothed outline as its hole
@@ -120,7 +161,8 @@ def step_shapes(drawing, module: float, helix_angle: float = 0.0, face_width: fl
     module : float
         m_n, mm (an internal gear's rim).
     helix_angle : float, default 0
-        β, degrees: only 0 is built.
+        β, degrees: external helical gears are lofted through transverse sections (right hand);
+        helical internal gears are refused.
     face_width : float, optional
         b for gears without their own, mm.
 
@@ -131,15 +173,12 @@ def step_shapes(drawing, module: float, helix_angle: float = 0.0, face_width: fl
     Raises
     ------
     ExportError
-        No kernel, a helical gear, no face width, an invalid solid.
+        No kernel, a helical internal gear, no face width, an invalid solid.
 
     References
     ----------
     OCCT BRepPrimAPI_MakePrism, BRepCheck_Analyzer.
     """
-    if helix_angle:
-        raise ExportError(f"STEP: helical gears (beta = {helix_angle:g} deg) are not built yet: their flank is a "
-                          "helicoid, not an extrusion; export DXF/SVG of the transverse section instead.")
     k = _kernel()
     shapes = []
     for gear, width in zip(drawing.gears, drawing.face_widths or (None,) * len(drawing.gears)):
@@ -147,7 +186,7 @@ def step_shapes(drawing, module: float, helix_angle: float = 0.0, face_width: fl
         if b is None:
             raise ExportError(f"STEP: {gear.name!r} has no face width; give face_width in the geometry table "
                               "(or --face-width).")
-        shapes.append(_solid(gear, b, module, k))
+        shapes.append(_solid(gear, b, module, k, helix_angle))
     return shapes
 
 
