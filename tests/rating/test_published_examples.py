@@ -196,7 +196,8 @@ SUN = GearGeometry(19, RACK_NREL, 0.6170, tip_shortening=K_NREL)
 PLANET = GearGeometry(17, RACK_NREL, 0.8021, tip_shortening=K_NREL)
 RING = GearGeometry(56, RACK_NREL, -0.5013, internal=True)  # printed in the ISO 21771 sign (z = -56)
 CASE = Material("18CrNiMo7-6", "Eh", 1500.0, 430.0, hardness=720.0, yield_strength=850.0)
-THROUGH = Material("34CrNiMo6", "V", 700.0, 290.0, hardness=240.0, yield_strength=1000.0)
+THROUGH = Material("34CrNiMo6", "V", 700.0, 290.0, hardness=240.0, yield_strength=1000.0,
+                   hardness_scale="HB")  # printed 240 HBW
 SUN_SPEED = 5.0e6 / 999650.9 * 30.0 / math.pi - 12.1  # relative to the carrier, 1/min (P / T_sun − n_carrier)
 SUN_TORQUE = 999650.9 / 3  # per planet, N·m
 
@@ -281,13 +282,32 @@ def test_nrel_5mw_stage_1_running_in_from_the_reports_tolerances():
     assert sun["f_pb"] == pytest.approx(31.0, abs=0.05) and ring["f_pb"] == pytest.approx(35.70, abs=0.05)
     assert sun["y_alpha"] == pytest.approx(2.325, abs=0.075 * 0.05)
     assert ring["y_alpha"] == pytest.approx(5.419, abs=0.5 * (0.075 + 160 / 700) * 0.05)
+    # y_f from f_fα (33 and 40 µm of ISO 1328-1:1995 grade 6): printed 2.475 and 6.071 µm
+    assert sun["y_f"] == pytest.approx(2.475, abs=5e-4) and ring["y_f"] == pytest.approx(6.071, abs=5e-4)
+    assert (sun["f_falpha"], ring["f_falpha"]) == (33.0, 40.0)
+
+
+def test_nrel_5mw_stage_1_resonance_speed_from_the_reports_stiffness_and_mass():
+    # n_E1 = 30000/(π z1) √(c_γα/m_red) (ISO 6336-1:2006, eq. (13)) with the printed c_γα = 13.426 and 16.063
+    # N/(mm µm) and m_red = 0.6606 and 2.4597 kg/mm: printed n_E1 = 2266 and 1435 1/min, N = 0.016 and 0.028.
+    # (The report's c_γα takes C_R = 0.862 of its webbed blanks and its m_red the gears' bores, d_i = 482.33 and
+    # 408.99 mm; this project takes solid blanks, c_γα = 15.57 and m_red = 0.7185 here, N = 0.0152.)
+    from epicyclic.rating.load_factors import dynamic_factor
+
+    sun, ring = NREL
+    for rating, z1, c_ga, c_p, m_red, n_e1, ratio in ((sun, 19, 13.426, 12.362, 0.6606, 2266, 0.016),
+                                                      (ring, 17, 16.063, 13.289, 2.4597, 1435, 0.028)):
+        speed = rating["N"] * dynamic_factor(1.0, z1, rating["c_gamma_alpha"], rating["c_prime"], rating["m_red"],
+                                             1000.0, 0.0, 0.0, 1.2)[2]
+        _, n, n_e = dynamic_factor(speed, z1, c_ga, c_p, m_red, 1000.0, 0.0, 0.0, 1.2)
+        assert float(n_e) == pytest.approx(n_e1, abs=0.5) and float(n) == pytest.approx(ratio, abs=5e-4)
 
 
 def test_nrel_5mw_stage_1_sun_mesh_contact_stress_with_the_reports_dynamic_factor():
     # σ_H = Z_B,D σ_H0 √(K_A K_γ K_v K_Hβ K_Hα) (ISO 6336-2:2006, eq. (1)): the printed σ_H 996.13 / 1002.73 and
     # σ_H0 759.92 imply the report's K_v = 1.00536 (it prints 1.01); method B here gives 1.00542 — the report
-    # takes c' with a gear body factor C_R = 0.862 (web), this project solid blanks (C_R = 1): 6·10⁻⁵ in K_v,
-    # 3·10⁻⁵ in σ_H, more than the report's 0.01 N/mm².  With the report's K_v given to the mesh, σ_H is the
+    # takes c' with a gear body factor C_R = 0.862 (web) and m_red with the gears' bores, this project solid
+    # blanks (see the resonance test below): 6·10⁻⁵ in K_v, 3·10⁻⁵ in σ_H, more than the report's 0.01 N/mm².  With the report's K_v given to the mesh, σ_H is the
     # report's to its printed digits.
     sun = NREL[0]
     assert sun["K_v"] == pytest.approx(1.00536, abs=1e-4)

@@ -109,3 +109,50 @@ def test_internal_stage_mesh_and_a_ring_that_drives():
     assert mesh.internal and [g.gear for g in mesh.gears] == ["driven", "driving"]
     assert mesh["F_t"] == pytest.approx(2000 * 300 / 120)                   # at the ring's pitch circle
     assert mesh["v"] == pytest.approx(math.pi * 120 * 600 / 60000)
+
+
+def test_a_stage_takes_tip_diameters_and_tip_shortening_per_gear():
+    # ISO/TR 6336-30:2017, Annex A, Example 1 as a [[gear]] stage: its printed tip diameters d_a = 159.66 and
+    # 872.35 mm give the printed ε_α = 1.549 (the nominal tips 159.664/872.355 mm give 1.5495; see
+    # tests/rating/test_published_examples.py).  Before, a stage took no tip per gear.
+    from epicyclic.geometry import MeshGeometry
+
+    rack = BasicRack(8.0, pressure_angle=20.0, helix_angle=15.8, addendum=1.0, dedendum=1.4)
+    x1 = MeshGeometry.at_center_distance(103, 17, rack, 500.0).gear2.profile_shift
+    stage = GearStage.from_teeth("G", "in", "out", [(17, 103, "external")])
+    geometry = StageGeometry(stage, rack, [(x1, 0.0)], 100.0, center_distance=500.0,
+                             tip_diameter=[(159.66, 872.35)])
+    mesh = geometry.meshes[0]
+    assert (mesh.gear1.tip_diameter, mesh.gear2.tip_diameter) == pytest.approx((159.66, 872.35), abs=1e-9)
+    assert mesh.contact_ratio == pytest.approx(1.549, abs=5e-4)
+    (planned,), _ = mesh_inputs({"G": geometry}, SPEC)
+    assert planned.input.mesh.gear1.tip_diameter == pytest.approx(159.66)
+    # per gear k (driving, driven); "none" in a file keeps a gear's own
+    shortened = StageGeometry(stage, rack, [(x1, 0.0)], 100.0, tip_shortening=[(0.1, 0.0)], center_distance=500.0)
+    assert shortened.meshes[0].gear1.tip_shortening == 0.1 and shortened.meshes[0].gear2.tip_shortening == 0.0
+    from epicyclic.geometry import GeometryError
+
+    with pytest.raises(GeometryError, match="lies beyond the uncut tip"):
+        StageGeometry(stage, rack, [(x1, 0.0)], 100.0, tip_diameter=[(170.0, None)])
+    with pytest.raises(GeometryError, match="one pair"):
+        StageGeometry(stage, rack, tip_shortening=[(0.1,)])
+
+
+def test_a_stage_file_takes_tip_diameters():
+    from epicyclic.io import loads_train_file
+
+    text = """
+[[gear]]
+name = "G"
+first = "in"
+second = "out"
+meshes = [[20, 40, "external"], [18, 54, "external"]]
+[gear.geometry]
+module = 2.0
+face_width = 25.0
+tip_diameter = [[43.5, "none"], ["none", 110.0]]
+"""
+    geometry = loads_train_file(text).geometry["G"]
+    assert geometry.meshes[0].gear1.tip_diameter == pytest.approx(43.5)
+    assert geometry.meshes[1].gear2.tip_diameter == pytest.approx(110.0)
+    assert geometry.meshes[0].gear2.tip_diameter == pytest.approx(84.0)  # uncut: 40·2 + 2·2

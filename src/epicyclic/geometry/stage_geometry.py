@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from ..model.elements import GearStage
@@ -29,8 +29,6 @@ __all__ = ["StageGeometry"]
 
 def _with_gear(mesh: MeshGeometry, gear: GearGeometry, tip: float) -> MeshGeometry:
     """``mesh`` with ``gear`` (its gear1 or gear2) given the tip shortening ``tip``."""
-    from dataclasses import replace
-
     which = "gear1" if mesh.gear1 is gear else "gear2"
     return replace(mesh, **{which: replace(gear, tip_shortening=tip)})
 
@@ -57,8 +55,13 @@ class StageGeometry:
         (x_driving, x_driven) per mesh (default 0).
     face_width : float or sequence of float, optional
         Face width of each mesh, mm (one for all, or one per mesh).
-    tip_shortening : bool, default True
-        Shorten the tips of external pairs (ISO 21771).
+    tip_shortening : bool or sequence of (float, float), default True
+        Shorten the tips of external pairs by their k = Σx − y (ISO 21771), or the coefficients
+        (k_driving, k_driven) per mesh as built (k m_n off each gear's tip).
+    tip_diameter : sequence of (float or None, float or None), optional
+        The tip diameters (d_a driving, d_a driven) per mesh as built, mm (an internal gear's the
+        inner one; None keeps the gear's from ``tip_shortening``): they replace the tip shortening
+        of those gears, k = (d_a,nominal − d_a)/(2 m_n) (internal: d_a − d_a,nominal).
     internal_shift_convention : {"iso", "khk"}, default "iso"
         Sign of an internal gear's profile shift as given (ISO 21771 or KHK, x_KHK = −x_ISO);
         the meshes hold ISO values.
@@ -85,10 +88,11 @@ class StageGeometry:
     rack: BasicRack | Sequence[BasicRack]
     profile_shifts: Sequence[tuple[float, float]] = ()
     face_width: float | Sequence[float] | None = None
-    tip_shortening: bool = True
+    tip_shortening: bool | Sequence[tuple[float, float]] = True
     internal_shift_convention: str = "iso"
     idlers: Sequence[int] = ()
     center_distance: float | Sequence[float | None] | None = None
+    tip_diameter: Sequence[tuple[float | None, float | None]] | None = None
     meshes: tuple[MeshGeometry, ...] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -132,13 +136,18 @@ class StageGeometry:
                                     GearGeometry(large[0], rack, x_large, internal=True), name, centers[k])
             else:
                 mesh = MeshGeometry(GearGeometry(z1, rack, x1), GearGeometry(z2, rack, x2), name, centers[k])
-                if self.tip_shortening:
+                if self.tip_shortening is True:
                     mesh = mesh.with_tip_shortening()
             meshes.append(mesh)
+        given = self._given_tips(meshes, owner)
         for k in idlers:  # one idler gear: the larger tip shortening of its two meshes on both
             first, second = meshes[k - 1], meshes[k]
             driven = first.gear2 if self.driving_is_gear1(k - 1) else first.gear1
             driving = second.gear1 if self.driving_is_gear1(k) else second.gear2
+            if (k - 1, 1) in given and (k, 0) in given and driven.tip_shortening != driving.tip_shortening:
+                raise GeometryError(f"{owner}: the idler of meshes {k} and {k + 1} is one gear with one tip, but its "
+                                    f"given tips differ (k = {driven.tip_shortening:g} and "
+                                    f"{driving.tip_shortening:g}); give the same tip in both meshes.")
             tip = max(driven.tip_shortening, driving.tip_shortening)
             meshes[k - 1] = _with_gear(first, driven, tip)
             meshes[k] = _with_gear(second, driving, tip)
@@ -147,6 +156,45 @@ class StageGeometry:
         object.__setattr__(self, "face_width", widths)
         object.__setattr__(self, "meshes", tuple(meshes))
         object.__setattr__(self, "idlers", idlers)
+        if not isinstance(self.tip_shortening, bool):
+            object.__setattr__(self, "tip_shortening", tuple(tuple(float(v) for v in p) for p in self.tip_shortening))
+        if self.tip_diameter is not None:
+            object.__setattr__(self, "tip_diameter", tuple(tuple(p) for p in self.tip_diameter))
+
+    def _given_tips(self, meshes: list[MeshGeometry], owner: str) -> set[tuple[int, int]]:
+        """Apply the given tip shortening and tip diameters per gear in place; the (mesh, 0 driving / 1 driven) set."""
+        count = len(meshes)
+        tips = () if isinstance(self.tip_shortening, bool) else tuple(self.tip_shortening)
+        diameters = () if self.tip_diameter is None else tuple(self.tip_diameter)
+        for name, values in (("tip_shortening", tips), ("tip_diameter", diameters)):
+            if values and (len(values) != count or not all(isinstance(v, (tuple, list)) and len(v) == 2
+                                                           for v in values)):
+                raise GeometryError(f"{owner}: {name} needs one pair (driving, driven) per mesh ({count}), "
+                                    f"got {values!r}.")
+        given: set[tuple[int, int]] = set()
+        for k, mesh in enumerate(meshes):
+            order = (0, 1) if self.driving_is_gear1(k) else (1, 0)  # gear1/gear2 → driving/driven
+            for gear_index, side in enumerate(order):
+                gear = mesh.gear1 if gear_index == 0 else mesh.gear2
+                k_tip = tips[k][side] if tips else None
+                d_a = diameters[k][side] if diameters else None
+                if d_a is not None:
+                    if isinstance(d_a, bool) or not isinstance(d_a, (int, float)) or not d_a > 0:
+                        raise GeometryError(f"{owner}: tip_diameter of mesh {k + 1} must be positive numbers of mm "
+                                            f"or None, got {d_a!r}.")
+                    nominal = replace(gear, tip_shortening=0.0).tip_diameter
+                    step = (d_a - nominal) if gear.internal else (nominal - d_a)
+                    k_tip = step / (2.0 * gear.rack.module)
+                    if not -1e-9 <= k_tip <= 3.0:
+                        raise GeometryError(f"{owner}: tip_diameter {d_a:g} mm of mesh {k + 1} "
+                                            f"({'driving' if side == 0 else 'driven'}) lies beyond the uncut tip "
+                                            f"{nominal:.3f} mm (or more than 3 m_n inside); give a tip within.")
+                    k_tip = max(k_tip, 0.0)
+                if k_tip is not None:
+                    mesh = _with_gear(mesh, gear, k_tip)
+                    given.add((k, side))
+            meshes[k] = mesh
+        return given
 
     def _idlers(self, stage: GearStage, shifts, owner: str) -> tuple[int, ...]:
         """The checked idler mesh numbers (1-based): same teeth and the same profile shift in both meshes."""

@@ -32,8 +32,10 @@ Per ``[[planetary]]`` and ``[[gear]]`` element::
 A ``[[gear]]`` stage built from ``meshes`` takes the same geometry keys with a
 value per mesh where it differs (``module = [2.0, 2.5]``), ``profile_shift`` as
 ``[[x_driving, x_driven], ...]``, ``face_width`` and ``center_distance`` as one
-number or one per mesh, and ``idlers = [1]`` for an idler gear (mesh 1's driven
-gear drives mesh 2: one gear, one geometry).  Every problem names the file, the element, the key, what was expected
+number or one per mesh, ``idlers = [1]`` for an idler gear (mesh 1's driven
+gear drives mesh 2: one gear, one geometry), ``tip_shortening`` as true/false or
+``[[k_driving, k_driven], ...]`` and ``tip_diameter = [[d_a driving, d_a driven], ...]`` (mm,
+``"none"`` keeps a gear's own) for the tips as built.  Every problem names the file, the element, the key, what was expected
 and what was given (``docs/file-format.md``).
 """
 
@@ -60,7 +62,7 @@ GEOMETRY_KEYS = {"module", "pressure_angle", "helix_angle", "addendum", "dedendu
                  "ring_module", "planets", "load_sharing", "tip_shortening", "internal_shift_convention",
                  "center_distance_tolerance", "center_distance", "thickness_allowance"}
 _STAGE_GEOMETRY_KEYS = (GEOMETRY_KEYS - {"ring_module", "planets", "load_sharing", "center_distance_tolerance",
-                                         "thickness_allowance"}) | {"idlers"}
+                                         "thickness_allowance"}) | {"idlers", "tip_diameter"}
 LUBRICANT_KEYS = {"viscosity", "lubricant_factor", "viscosity_40", "viscosity_100", "density", "temperature",
                   "expansion", "specific_heat"}  # _40/_100: mm²/s (spin losses and rating)
 
@@ -304,7 +306,9 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
         value = table["face_width"]
         widths = ([_positive(reader, v, f"geometry.face_width[{k}]", where, "mm") for k, v in enumerate(value)]
                   if isinstance(value, list) else _positive(reader, value, "geometry.face_width", where, "mm"))
-    tip = reader.boolean(table, "tip_shortening", where, True)
+    tip = (_stage_pairs(reader, table, "tip_shortening", count, where) if isinstance(table.get("tip_shortening"), list)
+           else reader.boolean(table, "tip_shortening", where, True))
+    tip_diameter = _stage_pairs(reader, table, "tip_diameter", count, where) if "tip_diameter" in table else None
     idlers = table.get("idlers", [])
     if not isinstance(idlers, list) or not all(isinstance(k, int) and not isinstance(k, bool) and 1 <= k < count
                                                for k in idlers):
@@ -319,5 +323,20 @@ def _stage_geometry(reader, table, stage: GearStage, where: str) -> StageGeometr
         if isinstance(center, list) and len(center) != count:
             raise reader.error(at_key(where, "geometry.center_distance"),
                                f"expected one centre distance per mesh ({count}), got {len(center)}.")
-    return StageGeometry(stage, racks if per_mesh else racks[0], pairs, widths, tip,
-                         _convention(reader, table, where), tuple(idlers), center)
+    try:
+        return StageGeometry(stage, racks if per_mesh else racks[0], pairs, widths, tip,
+                             _convention(reader, table, where), tuple(idlers), center, tip_diameter)
+    except EpicyclicError as exc:
+        raise reader.wrap(where, exc) from None
+
+
+def _stage_pairs(reader, table, key: str, count: int, where: str) -> list[tuple]:
+    """One pair (driving, driven) per mesh of ``key``: numbers, or "none" to keep a gear's own."""
+    values = table[key]
+    k_where = at_key(where, f"geometry.{key}")
+    if not isinstance(values, list) or len(values) != count or not all(
+            isinstance(x, list) and len(x) == 2 for x in values):
+        raise reader.error(k_where, f"expected one pair [driving, driven] per mesh ({count}), e.g. "
+                                    f"{[[0.0, 0.0]] * count}, got {short(values)}.")
+    return [tuple(None if v == "none" else reader.number(v, f"{key}[{k}]", where) for v in pair)
+            for k, pair in enumerate(values)]

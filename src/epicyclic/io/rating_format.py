@@ -8,13 +8,17 @@
     life = 20000                          # required life, h
     S_Hmin = 1.0
     S_Fmin = 1.4
-    accuracy_grade = 6                    # ISO 1328-1
+    accuracy_grade = 6                    # ISO 1328-1, or per gear: { sun = 5, ring = 7 }
+    accuracy_standard = "1995"            # ISO 1328-1 edition: "1995" or "2013" (default: ISO 6336's)
     flank_roughness = 3.0                 # R_z, µm (required); or per gear: { sun = 3.0, ring = 6.0 }
     root_roughness = 10.0                 # R_z, µm (required); or per gear
     material = "18CrNiMo7-6"              # or { sun = "...", planet = "...", ring = "42CrMo4", "P1:ring" = "..." }
     quality = "MQ"                        # ML, MQ or ME (ISO 6336-5)
     K_Hbeta = 1.3                         # given; otherwise method C with shaft_deflection (µm)
-    K_v = 1.05                            # given; otherwise method B
+    K_v = { "sun-planet" = 1.05, "planet-ring" = 1.08 }   # per mesh ("P1:sun-planet", mesh, element, all)
+    K_Fbeta = 1.25                        # given; otherwise K_Hbeta^N_F
+    K_Halpha = 1.1                        # given (K_Falpha too, else = K_Halpha); otherwise method B
+    f_pb = { sun = 8.0, ring = 12.0 }     # measured deviations per gear, µm (also f_falpha, f_Hbeta)
     load_sharing = 1.15                   # K_γ of every set (default: the set geometry's, else by planets)
     cutter = { teeth = 24, profile_shift = 0.0, addendum = 1.25, tip_radius = 0.25 }   # internal gears
     rim_thickness = { ring = 12.0 }       # s_R below the root, mm (Y_B); others solid
@@ -26,6 +30,8 @@
     treatment = "Eh"                      # ISO 6336-5 symbol
     sigma_Hlim = 1550.0
     sigma_Flim = 480.0
+    hardness = 300.0                      # with its scale: "HB", "HV" or "HRC" (Z_W takes HB)
+    hardness_scale = "HV"
 
 References
 ----------
@@ -48,10 +54,26 @@ __all__ = ["RATING_KEYS", "read_rating"]
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
                "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
-               "rim_thickness"}
-_NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "K_Hbeta", "K_v",
-            "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
-_USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "E", "poisson", "density", "yield_strength"}
+               "rim_thickness", "accuracy_standard", "K_Fbeta", "K_Halpha", "K_Falpha", "f_pb", "f_falpha", "f_Hbeta"}
+_NUMBERS = ("life", "S_Hmin", "S_Fmin", "shaft_deflection", "tool_tip_radius", "tip_relief")
+#: Given per mesh (a table by mesh) or per gear (a table by gear), or one number for all.
+_TABLES = ("application_factor", "K_Hbeta", "K_v", "load_sharing", "K_Fbeta", "K_Halpha", "K_Falpha", "f_pb",
+           "f_falpha", "f_Hbeta", "flank_roughness", "root_roughness")
+_USER_MATERIAL = {"treatment", "sigma_Hlim", "sigma_Flim", "hardness", "hardness_scale", "E", "poisson", "density",
+                  "yield_strength"}
+
+
+_UNITS = {"f_pb": "µm", "f_falpha": "µm", "f_Hbeta": "µm", "flank_roughness": "µm (R_z)", "root_roughness": "µm (R_z)"}
+
+
+def _plain(reader, value, key: str, where: str, table_key: str) -> float:
+    """A number of a key whose unit is fixed: a string with a unit in it is refused naming the unit."""
+    if isinstance(value, str) and any(c.isalpha() for c in value):
+        unit = _UNITS.get(table_key, "1 (a factor)")
+        example = "12.0" if table_key in _UNITS else "1.1"
+        raise reader.error(at_key(where, key), f"takes a plain number in {unit}, without a unit; got {value!r} "
+                                               f"(e.g. {key} = {example}).")
+    return reader.number(value, key, where)
 
 
 def _user_materials(reader, table, where: str, quality: str) -> dict[str, Material]:
@@ -60,7 +82,9 @@ def _user_materials(reader, table, where: str, quality: str) -> dict[str, Materi
         w = f"{where}.{name}"
         entry = reader.table(entry, w)
         reader.check_keys(entry, _USER_MATERIAL, w)
-        values = {k: reader.number(entry[k], k, w) for k in entry if k != "treatment"}
+        values = {k: reader.number(entry[k], k, w) for k in entry if k not in ("treatment", "hardness_scale")}
+        if "hardness_scale" in entry:
+            values["hardness_scale"] = reader.string(entry, "hardness_scale", w)
         for key in ("sigma_Hlim", "sigma_Flim"):
             reader.require(entry, key, w)
         treatment = reader.string(entry, "treatment", w)
@@ -112,16 +136,22 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
     table = reader.table(table, where)
     reader.check_keys(table, RATING_KEYS, where)
     values: dict[str, Any] = {k: reader.number(table[k], k, where) for k in _NUMBERS if k in table}
-    for key in ("flank_roughness", "root_roughness"):  # one R_z, or one per gear: { sun = 4.8, ring = 8.0 }
+    for key in _TABLES:  # one value, or one per mesh / per gear: { sun = 4.8, ring = 8.0 }
         if isinstance(table.get(key), Mapping):
             k_where = at_key(where, key)
-            values[key] = {k: reader.number(v, k, k_where) for k, v in reader.table(table[key], k_where).items()}
+            values[key] = {k: _plain(reader, v, k, k_where, key) for k, v in reader.table(table[key], k_where).items()}
         elif key in table:
-            values[key] = reader.number(table[key], key, where)
+            values[key] = _plain(reader, table[key], key, where, key)
     if "standard" in table:
         values["standard"] = str(table["standard"])
-    if "accuracy_grade" in table:
+    if isinstance(table.get("accuracy_grade"), Mapping):
+        g_where = at_key(where, "accuracy_grade")
+        values["accuracy_grade"] = {k: reader.integer(v, k, g_where)
+                                    for k, v in reader.table(table["accuracy_grade"], g_where).items()}
+    elif "accuracy_grade" in table:
         values["accuracy_grade"] = reader.integer(table["accuracy_grade"], "accuracy_grade", where)
+    if "accuracy_standard" in table:
+        values["accuracy_standard"] = reader.string(table, "accuracy_standard", where)
     if "long_life" in table:
         values["long_life"] = reader.string(table, "long_life", where)
     if "pitting_permitted" in table:

@@ -348,12 +348,13 @@ def work_hardening_factor(hard, soft) -> float:
 
     References
     ----------
-    ISO 6336-2:2006, clause 12, eq. (31) (HB 130 … 470; outside, the end value and a warning).
+    ISO 6336-2:2006, clause 12, eq. (31) (HB 130 … 470; outside, the end value and a warning); the
+    hardness in HB, converted from HV or HRC by ASTM E140-12b, Table 1.
     """
     pair = sorted((hard, soft), key=lambda m: not m.surface_hardened)
     if not (pair[0].surface_hardened and not pair[1].surface_hardened):
         return 1.0
-    hb = pair[1].hardness
+    hb = pair[1].hardness_in("HB")
     if not 130.0 <= hb <= 470.0:
         warn_validity(f"hardness {hb:g} HB of the through-hardened gear lies outside 130 ... 470 HB; "
                       "the end value is used for Z_W.", "ISO 6336-2:2006, clause 12")

@@ -20,7 +20,9 @@ Y_NT, St, NT, NV (nitrided), GG, GGG ferr.                       10^3        1.6
 Y_NT, NV nitrocarburised                                         10^3        1.1     3·10^6
 ==============================================================  ==========  ======  ======  ======
 
-Both editions (2006, 2019) use these curves.
+Both editions (2006, 2019) use these corner points.  Beyond 10^10 cycles they differ: the 2006
+editions end their curves at 10^10 and the factor stays at its 10^10 value (0.85, or 1.0), the 2019
+editions continue the last line (its slope) into the long-life region; ``edition`` selects which.
 
 Public API (stable; the duty-cycle code of :mod:`epicyclic` builds on it):
 
@@ -49,6 +51,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import RatingError
+from .standard import edition
 
 __all__ = [
     "TREATMENTS",
@@ -96,10 +99,13 @@ class SNCurve:
         ``"Z_NT"`` or ``"Y_NT"``.
     clause : str
         The table of the standard the points come from.
+    beyond : {"extend", "hold"}, default "extend"
+        Beyond the last point: continue the last line (ISO 6336-2/-3:2019) or hold the last value
+        (ISO 6336-2/-3:2006, whose curves end at 10^10 cycles).
 
     References
     ----------
-    ISO 6336-2:2006, Table 2; ISO 6336-3:2006, Table 3.
+    ISO 6336-2:2006, Table 2; ISO 6336-3:2006, Table 3; ISO 6336-2:2019, clause 10.
 
     Examples
     --------
@@ -113,6 +119,12 @@ class SNCurve:
     points: tuple[tuple[float, float], ...]
     symbol: str
     clause: str
+    beyond: str = "extend"
+
+    def __post_init__(self) -> None:
+        if self.beyond not in ("extend", "hold"):
+            raise RatingError(f"{self.symbol}: beyond must be 'extend' (ISO 6336:2019) or 'hold' (ISO 6336:2006), "
+                              f"got {self.beyond!r}.")
 
     @property
     def static_cycles(self) -> float:
@@ -145,7 +157,8 @@ class SNCurve:
         Returns
         -------
         float or numpy.ndarray
-            Z_NT or Y_NT; beyond 10^10 the last line continues (its slope, or flat at 1.0).
+            Z_NT or Y_NT; beyond 10^10 the last line continues (its slope, or flat at 1.0) or, for
+            ``beyond="hold"``, the 10^10 value holds.
 
         Raises
         ------
@@ -163,8 +176,9 @@ class SNCurve:
         values = np.log10([p[1] for p in self.points])
         x = np.log10(n)
         out = np.interp(x, logs, values)
-        last = (values[-1] - values[-2]) / (logs[-1] - logs[-2])
-        out = np.where(x > logs[-1], values[-1] + last * (x - logs[-1]), out)
+        if self.beyond == "extend":  # np.interp holds the last value beyond it
+            last = (values[-1] - values[-2]) / (logs[-1] - logs[-2])
+            out = np.where(x > logs[-1], values[-1] + last * (x - logs[-1]), out)
         result = 10.0 ** out
         return float(result) if np.ndim(result) == 0 else result
 
@@ -198,7 +212,7 @@ class SNCurve:
         if ratio == self.static_factor:
             return self.static_cycles
         (n0, f0), (n1, f1) = pts[-2], pts[-1]
-        if f0 == f1:
+        if f0 == f1 or self.beyond == "hold":
             return math.inf
         slope = (math.log10(f1) - math.log10(f0)) / (math.log10(n1) - math.log10(n0))
         return 10.0 ** (math.log10(n1) + (math.log10(ratio) - math.log10(f1)) / slope)
@@ -217,7 +231,13 @@ def _long(long_life: str, symbol: str) -> float:
     return 0.85 if long_life == "standard" else 1.0
 
 
-def pitting_curve(treatment: str, *, pitting_permitted: bool = False, long_life: str = "standard") -> SNCurve:
+def _beyond(edition_: str) -> tuple[str, str]:
+    year = edition(edition_)
+    return ("hold" if year == "2006" else "extend"), year
+
+
+def pitting_curve(treatment: str, *, pitting_permitted: bool = False, long_life: str = "standard",
+                  edition: str = "2019") -> SNCurve:
     """The Z_NT curve of a material treatment.
 
     Parameters
@@ -229,6 +249,8 @@ def pitting_curve(treatment: str, *, pitting_permitted: bool = False, long_life:
         (reference 10^9 cycles) instead of none (5·10^7).
     long_life : {"standard", "optimum"}
         Factor 0.85 or 1.0 at 10^10 cycles.
+    edition : {"2006", "2019"}, default "2019"
+        ISO 6336-2 edition: beyond 10^10 cycles the 2006 curve holds its value, the 2019 one falls on.
 
     Returns
     -------
@@ -239,6 +261,7 @@ def pitting_curve(treatment: str, *, pitting_permitted: bool = False, long_life:
     ISO 6336-2:2006, clause 10, Table 2 (lines 1–4); ISO 6336-2:2019, clause 10.
     """
     _check_treatment(treatment, "Z_NT")
+    beyond, year = _beyond(edition)
     end = _long(long_life, "Z_NT")
     if treatment in ("St", "St(cast)", "V", "V(cast)", "GGG(perl)", "GTS", "Eh", "IF"):
         if pitting_permitted:
@@ -249,10 +272,10 @@ def pitting_curve(treatment: str, *, pitting_permitted: bool = False, long_life:
         pts = ((1e5, 1.3), (2e6, 1.0), (_LONG_LIFE_CYCLES, end))
     else:  # NV(nitrocar)
         pts = ((1e5, 1.1), (2e6, 1.0), (_LONG_LIFE_CYCLES, end))
-    return SNCurve(pts, "Z_NT", "ISO 6336-2, clause 10, Table 2")
+    return SNCurve(pts, "Z_NT", f"ISO 6336-2:{year}, clause 10, Table 2", beyond)
 
 
-def bending_curve(treatment: str, *, long_life: str = "standard") -> SNCurve:
+def bending_curve(treatment: str, *, long_life: str = "standard", edition: str = "2019") -> SNCurve:
     """The Y_NT curve of a material treatment.
 
     Parameters
@@ -261,6 +284,8 @@ def bending_curve(treatment: str, *, long_life: str = "standard") -> SNCurve:
         ISO 6336-5 symbol (:data:`TREATMENTS`).
     long_life : {"standard", "optimum"}
         Factor 0.85 or 1.0 at 10^10 cycles.
+    edition : {"2006", "2019"}, default "2019"
+        ISO 6336-3 edition: beyond 10^10 cycles the 2006 curve holds its value, the 2019 one falls on.
 
     Returns
     -------
@@ -271,6 +296,7 @@ def bending_curve(treatment: str, *, long_life: str = "standard") -> SNCurve:
     ISO 6336-3:2006, clause 12, Table 3 (lines 1–4); ISO 6336-3:2019, clause 12.
     """
     _check_treatment(treatment, "Y_NT")
+    beyond, year = _beyond(edition)
     end = _long(long_life, "Y_NT")
     if treatment in ("V", "V(cast)", "GGG(perl)", "GTS"):
         pts = ((1e4, 2.5), (3e6, 1.0), (_LONG_LIFE_CYCLES, end))
@@ -280,7 +306,7 @@ def bending_curve(treatment: str, *, long_life: str = "standard") -> SNCurve:
         pts = ((1e3, 1.6), (3e6, 1.0), (_LONG_LIFE_CYCLES, end))
     else:  # NV(nitrocar)
         pts = ((1e3, 1.1), (3e6, 1.0), (_LONG_LIFE_CYCLES, end))
-    return SNCurve(pts, "Y_NT", "ISO 6336-3, clause 12, Table 3")
+    return SNCurve(pts, "Y_NT", f"ISO 6336-3:{year}, clause 12, Table 3", beyond)
 
 
 def pitting_life_factor(cycles, treatment: str, *, pitting_permitted: bool = False, long_life: str = "standard"):

@@ -31,6 +31,7 @@ from importlib import resources
 from typing import Any
 
 from .errors import RatingError, warn_validity
+from .hardness import SCALES, convert_hardness
 from .life_factors import TREATMENTS
 
 __all__ = ["DEFAULT_QUALITY", "QUALITIES", "Material", "allowable_stress_numbers", "material", "material_names"]
@@ -130,7 +131,7 @@ class Material:
     sigma_Hlim, sigma_Flim : float
         Allowable stress numbers (contact, bending), N/mm².
     hardness : float
-        Surface hardness (HV or HB as the treatment's line), for Z_W.
+        Surface hardness in ``hardness_scale``, for Z_W (0: not given).
     E : float, default 206000
         Modulus of elasticity, N/mm².
     poisson : float, default 0.3
@@ -139,10 +140,13 @@ class Material:
     yield_strength : float, default 800
         σ_0.2 or σ_S, N/mm² (for the slip-layer thickness of Y_δrelT).
     quality : str, default "MQ"
+    hardness_scale : {"HB", "HV", "HRC"}, optional
+        The scale of ``hardness`` (a material of the data file: its line's).  Without one a factor
+        that needs the hardness (Z_W) refuses, naming the key.
 
     References
     ----------
-    ISO 6336-5:2016; ISO 6336-2:2019, 6.3 (Z_E from E and ν).
+    ISO 6336-5:2016; ISO 6336-2:2019, 6.3 (Z_E from E and ν); ASTM E140-12b, Table 1 (scales).
     """
 
     name: str
@@ -155,8 +159,12 @@ class Material:
     density: float = 7.83e-6
     yield_strength: float = 800.0
     quality: str = DEFAULT_QUALITY
+    hardness_scale: str | None = None
 
     def __post_init__(self) -> None:
+        if self.hardness_scale is not None and self.hardness_scale not in SCALES:
+            raise RatingError(f"material {self.name!r}: hardness_scale must be one of {', '.join(SCALES)}, got "
+                              f"{self.hardness_scale!r}.")
         if self.treatment not in TREATMENTS:
             raise RatingError(f"material {self.name!r}: unknown treatment {self.treatment!r}; expected one of "
                               f"{', '.join(TREATMENTS)} (ISO 6336-5 symbols).")
@@ -173,9 +181,39 @@ class Material:
         """Case-carburised, nitrided, induction or flame hardened (for Z_W and K_Hα running-in)."""
         return self.treatment in ("Eh", "IF", "NT", "NV", "NV(nitrocar)")
 
+    def hardness_in(self, scale: str) -> float:
+        """The surface hardness in ``scale`` (converted by ASTM E140, Table 1, where given in another).
+
+        Parameters
+        ----------
+        scale : {"HB", "HV", "HRC"}
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        RatingError
+            No hardness or no scale given (the message names the key), or no conversion.
+
+        References
+        ----------
+        ASTM E140-12b, Table 1.
+        """
+        where = f"material {self.name!r}"
+        if not self.hardness > 0:
+            raise RatingError(f"{where}: no hardness is given; the factor needs it in {scale}: give hardness and "
+                              f"hardness_scale = {scale!r} in [rating.materials.{self.name}].")
+        if self.hardness_scale is None:
+            raise RatingError(f"{where}: hardness {self.hardness:g} has no scale; give hardness_scale = 'HB', "
+                              f"'HV' or 'HRC' in [rating.materials.{self.name}] (the factor takes {scale}).")
+        return convert_hardness(self.hardness, self.hardness_scale, scale, key=f"{where}: hardness")
+
     def to_dict(self) -> dict[str, Any]:
         """Plain data (N/mm², kg/mm³)."""
         return {"name": self.name, "treatment": self.treatment, "quality": self.quality, "hardness": self.hardness,
+                "hardness_scale": self.hardness_scale,
                 "sigma_Hlim": self.sigma_Hlim, "sigma_Flim": self.sigma_Flim, "E": self.E, "poisson": self.poisson,
                 "density": self.density, "yield_strength": self.yield_strength}
 
@@ -223,4 +261,5 @@ def material(name: str, *, quality: str = DEFAULT_QUALITY, hardness: float | Non
         sigma_Hlim = h if sigma_Hlim is None else sigma_Hlim
         sigma_Flim = f if sigma_Flim is None else sigma_Flim
     return Material(name, entry["treatment"], sigma_Hlim, sigma_Flim, hb, entry["E"], entry["poisson"],
-                    entry["density"], entry["yield_strength"], quality)
+                    entry["density"], entry["yield_strength"], quality,
+                    _data()["treatment"].get(entry["treatment"], {}).get("hardness_unit"))

@@ -31,14 +31,16 @@ eqs. (1)–(5) and Annex B (Y_M).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from ..geometry.gear import MeshGeometry
 from . import flank, load_factors, root
+from ..geometry.accuracy import base_pitch_deviation
 from .errors import RatingError
+from .given_factors import COMPUTED, DEFAULT, GEAR_DEVIATIONS, GIVEN, MESH_FACTORS, FactorValue
 from .life_factors import bending_curve, pitting_curve
 from .materials import Material
 from .results import Factor, GearRating, MeshRating
@@ -99,6 +101,8 @@ class MeshInput:
         Planets meshing the central gear of this mesh (for m_red of a sun mesh).
     planet_index : int, default -1
         Which gear (0 or 1) is the planet of a planetary mesh, −1 for a stage.
+    load_sharing_source : str, default "given"
+        Where ``load_sharing`` comes from (``"given"``, ``"default"``, a table's name ...).
 
     Raises
     ------
@@ -120,6 +124,7 @@ class MeshInput:
     load_sharing: float = 1.0
     planets: int = 0
     planet_index: int = -1
+    load_sharing_source: str = GIVEN
     static: dict[str, Any] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -189,11 +194,18 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["c_prime_th"] = load_factors.single_stiffness(
         zn[order[0]], zn[order[1]], xs[order[0]], xs[order[1]], beta, dedendum=rack.dedendum,
         pressure_angle_deg=rack.pressure_angle, internal=mesh.internal)
-    dev = [load_factors.deviations(spec.accuracy_grade, g.reference_diameter, rack.module, b, spec.accuracy_standard)
-           for g in (g1, g2)]
-    f_pb = max(d["f_pt"] for d in dev) * math.cos(at)
-    f_fa = max(d["f_falpha"] for d in dev)
-    s.update(f_pb=f_pb, f_falpha=f_fa, f_Hbeta=max(d["f_Hbeta"] for d in dev))
+    s["grades"] = [spec.grade_of(inp.element, name) for name in inp.gears]
+    given = {key: [spec.deviation_of(key, inp.element, name) for name in inp.gears] for key in GEAR_DEVIATIONS}
+    dev = []
+    for i, (q, g) in enumerate(zip(s["grades"], (g1, g2))):
+        if all(given[key][i] is not None for key in GEAR_DEVIATIONS):  # all measured: no grade needed
+            dev.append({key: given[key][i] for key in GEAR_DEVIATIONS})
+            continue
+        d = load_factors.deviations(q, g.reference_diameter, rack.module, b, spec.accuracy_standard)
+        dev.append({**d, "f_pb": base_pitch_deviation(d["f_pt"], at)})
+    for key in GEAR_DEVIATIONS:  # measured per gear, else from the grade; the mesh takes the larger
+        s[key] = max(d[key] if v is None else v for v, d in zip(given[key], dev))
+        s[key + "_source"] = _sources(given[key])
     d_m = [(g.tip_diameter + g.root_diameter) / 2 for g in (g1, g2)]
     s["m_red"] = load_factors.reduced_mass(
         d_m[0], g1.base_diameter, d_m[1], g2.base_diameter, mats[0].density, mats[1].density,
@@ -203,7 +215,7 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     # root factors per gear
     s["Y_beta"] = root.helix_factor(beta, eps_b, year)
     eps_an = eps_a / math.cos(beta_b) ** 2
-    s["Y_DT"] = root.deep_tooth_factor(eps_an, spec.accuracy_grade)
+    s["Y_DT"] = root.deep_tooth_factor(eps_an, max(s["grades"]))
     s["Y_B"] = [root.rim_factor(spec.rim_of(inp.element, name), abs(g.root_diameter - g.tip_diameter) / 2,
                                 rack.module, g.internal) for name, g in zip(inp.gears, (g1, g2))]
     s["Y_delta"] = [root.relative_notch_sensitivity(f.q_s, m.treatment, m.yield_strength) for f, m in zip(forms, mats)]
@@ -211,9 +223,31 @@ def _static(inp: MeshInput) -> dict[str, Any]:
     s["Y_X"] = [root.size_factor(rack.module, m.treatment) for m in mats]
     s["Y_M"] = [root.REVERSED_BENDING if r else 1.0 for r in inp.reversed_bending]
     s["Z_curves"] = [pitting_curve(m.treatment, pitting_permitted=spec.pitting_permitted,
-                                   long_life=spec.long_life) for m in mats]
-    s["Y_curves"] = [bending_curve(m.treatment, long_life=spec.long_life) for m in mats]
+                                   long_life=spec.long_life, edition=year) for m in mats]
+    s["Y_curves"] = [bending_curve(m.treatment, long_life=spec.long_life, edition=year) for m in mats]
     return s
+
+
+def _sources(given) -> str:
+    """"given", "computed", or which gear's deviation is given."""
+    if all(v is None for v in given):
+        return COMPUTED
+    if all(v is not None for v in given):
+        return GIVEN
+    return f"{GIVEN} (gear {1 if given[0] is not None else 2}), {COMPUTED} (gear {2 if given[0] is not None else 1})"
+
+
+def _factor(symbol: str, value, given: FactorValue | None, computed_clause: str, name: str, given_clause: str) -> Factor:
+    """The Factor row of a load factor: the given FactorValue's source and clause, or computed by the clause."""
+    if given is None:
+        return Factor(symbol, _out(value), "1", computed_clause, name, COMPUTED)
+    return Factor(symbol, _out(value), "1", given.clause or given_clause, name, given.source)
+
+
+def _deviation_clause(source: str, from_grade: str) -> str:
+    if source == GIVEN:
+        return "ISO 6336-1, 6.3 and 8.3 (measured, given)"
+    return from_grade if source == COMPUTED else f"{from_grade}; measured (given)"
 
 
 def _safety(strength, stress):
@@ -264,7 +298,11 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     t1, n1 = np.broadcast_arrays(t1, n1)
     hours = spec.life if hours is None else hours
     b, d1, rack = float(inp.face_width), s["d1"], mesh.rack
-    ka, kg = spec.application_factor, float(inp.load_sharing)
+    p1, p2, p3 = (lambda w: clause(1, year, w)), (lambda w: clause(2, year, w)), (lambda w: clause(3, year, w))
+    given = {key: spec.given_factor(key, inp.element, mesh.name) for key in MESH_FACTORS}
+    ka_f = given["application_factor"] or FactorValue(1.0, DEFAULT, p1("6.2, uniform driver and load (default)"))
+    kg_f = given["load_sharing"] or FactorValue(float(inp.load_sharing), inp.load_sharing_source, p1("6.5.9"))
+    ka, kg = ka_f.value, kg_f.value
     f_t = 2000.0 * t1 / d1
     v = math.pi * d1 * n1 / 60000.0
     line = ka * kg * f_t / b
@@ -275,15 +313,24 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
     c_p, c_ga, c_gb = load_factors.mesh_stiffness(s["c_prime_th"], s["eps_alpha"], line)
     k_v, resonance, _ = load_factors.dynamic_factor(
         n1, mesh.gear1.teeth, c_ga, c_p, s["m_red"], line, f_pb_eff, f_f_eff, s["eps_gamma"], s["C_a"])
-    if spec.K_v is not None:
-        k_v = np.full(np.shape(k_v), spec.K_v)
+    if given["K_v"] is not None:
+        k_v = np.full(np.shape(k_v), given["K_v"].value)
     f_m = line * k_v
     f_bx = np.maximum.reduce([np.full(f_m.shape, 1.33 * spec.shaft_deflection + s["f_Hbeta"]), 0.005 * f_m,
                               np.full(f_m.shape, 0.5 * s["f_Hbeta"])])
     y_b = 0.5 * (_running_in_beta(mats[0], f_bx, v) + _running_in_beta(mats[1], f_bx, v))
-    k_hb, k_fb = load_factors.face_load_factors(spec.K_Hbeta, f_m, c_gb, f_bx, y_b, b, s["tooth_height"])
+    k_hb_given = None if given["K_Hbeta"] is None else given["K_Hbeta"].value
+    k_hb, k_fb = load_factors.face_load_factors(k_hb_given, f_m, c_gb, f_bx, y_b, b, s["tooth_height"])
+    if given["K_Fbeta"] is not None:
+        k_fb = np.full(np.shape(k_hb), given["K_Fbeta"].value)
     k_ha, k_fa = load_factors.transverse_load_factors(f_m * k_hb, c_ga, f_pb_eff, s["eps_alpha"],
                                                        s["eps_gamma"], s["Z_eps"], year)
+    if given["K_Halpha"] is not None:
+        k_ha = np.full(np.shape(k_ha), given["K_Halpha"].value)
+        if given["K_Falpha"] is None:  # K_Fα = K_Hα (ISO 6336-1, 8.3): the given one for both
+            given["K_Falpha"] = replace(given["K_Halpha"], clause=p1("8.3, K_Falpha = K_Halpha (given)"))
+    if given["K_Falpha"] is not None:
+        k_fa = np.full(np.shape(k_fa), given["K_Falpha"].value)
     u = s["u"]
     ratio = (u - 1.0) / u if mesh.internal else (u + 1.0) / u
     sigma_h0 = s["Z_H"] * s["Z_E"] * s["Z_eps"] * s["Z_beta"] * np.sqrt(f_t / (d1 * b) * ratio)
@@ -304,7 +351,6 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         sigma_f = sigma_f0 * ka * kg * k_v * k_fb * k_fa
         sigma_fg = (mat.sigma_Flim * root.Y_ST * y_nt * s["Y_delta"][i] * s["Y_R"][i] * s["Y_X"][i]
                     * s["Y_M"][i])
-        p2, p3 = (lambda w: clause(2, year, w)), (lambda w: clause(3, year, w))
         f = [
             Factor("N_L", _out(cycles), "1", "ISO 6336-2/-3, 60 L_h n contacts", "load cycles over the life"),
             Factor("Z_B" if i == 0 else "Z_D", z_bd, "1", p2("6.2"), "single pair tooth contact factor"),
@@ -337,8 +383,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         ]
         gears.append(GearRating(name, {x.symbol: x for x in f}, spec.S_Hmin, spec.S_Fmin, s["Z_curves"][i],
                                 s["Y_curves"][i], float(hours)))
-    p1, p2 = (lambda w: clause(1, year, w)), (lambda w: clause(2, year, w))
-    p3 = lambda w: clause(3, year, w)
+    accuracy = f"ISO 1328-1:{spec.accuracy_standard}, grade {'/'.join(map(str, sorted(set(s['grades']))))}"
     mesh_factors = [
         Factor("F_t", _out(f_t), "N", p1("6.1"), "nominal tangential force at the reference circle"),
         Factor("v", _out(v), "m/s", p1("6.1"), "pitch line velocity (relative to the carrier)"),
@@ -348,24 +393,31 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("m_n", m_n, "mm", "ISO 21771:2007", "normal module"),
         Factor("epsilon_alpha", s["eps_alpha"], "1", "ISO 21771:2007", "transverse contact ratio"),
         Factor("epsilon_beta", s["eps_beta"], "1", "ISO 21771:2007", "overlap ratio"),
-        Factor("K_A", ka, "1", p1("6.2"), "application factor (given)"),
-        Factor("K_gamma", kg, "1", p1("6.5.9"), "load sharing factor of the planets"),
-        Factor("c_prime", _out(c_p), "N/(mm*um)", p1("9.3.1"), "single stiffness"),
-        Factor("c_gamma_alpha", _out(c_ga), "N/(mm*um)", p1("9.3.2"), "mesh stiffness"),
+        _factor("K_A", ka, ka_f, "", "application factor", p1("6.2 (given)")),
+        _factor("K_gamma", kg, kg_f, "", "load sharing factor of the planets", p1("6.5.9 (given)")),
+        Factor("c_prime", _out(c_p), "N/(mm*µm)", p1("9.3.1"), "single stiffness"),
+        Factor("c_gamma_alpha", _out(c_ga), "N/(mm*µm)", p1("9.3.2"), "mesh stiffness"),
         Factor("m_red", s["m_red"], "kg/mm", p1("6.5.9"), "reduced mass per face width"),
         Factor("N", _out(resonance), "1", p1("6.3, eq. (13)"), "resonance ratio"),
-        Factor("C_a", s["C_a"], "um", p1("6.3" if spec.tip_relief is not None else "6.3 (C_ay, running-in)"),
-               "tip relief in K_v"),
-        Factor("K_v", _out(k_v), "1", p1("6.3 (method B)" if spec.K_v is None else "6 (given)"), "dynamic factor",
-               "computed" if spec.K_v is None else "given"),
-        Factor("f_pb", s["f_pb"], "um", "ISO 1328-1:2013, 5.2", "transverse base pitch deviation"),
-        Factor("y_alpha", _out(y_a), "um", p1("8.3.4"), "running-in allowance (pitch)"),
-        Factor("F_betax", _out(f_bx), "um", p1("7.6 (method C)"), "initial equivalent misalignment"),
-        Factor("K_Hbeta", _out(k_hb), "1", p1("7.6 (method C)" if spec.K_Hbeta is None else "7 (given)"),
-               "face load factor (contact)"),
-        Factor("K_Fbeta", _out(k_fb), "1", p1("7.7, eq. (45)"), "face load factor (root)"),
-        Factor("K_Halpha", _out(k_ha), "1", p1("8.3 (method B)"), "transverse load factor (contact)"),
-        Factor("K_Falpha", _out(k_fa), "1", p1("8.3 (method B)"), "transverse load factor (root)"),
+        Factor("C_a", s["C_a"], "µm", p1("6.3" if spec.tip_relief is not None else "6.3 (C_ay, running-in)"),
+               "tip relief in K_v", GIVEN if spec.tip_relief is not None else COMPUTED),
+        _factor("K_v", k_v, given["K_v"], p1("6.3 (method B)"), "dynamic factor", p1("6 (given)")),
+        Factor("f_pb", s["f_pb"], "µm", _deviation_clause(s["f_pb_source"], f"{accuracy}, f_pb = f_pt cos α_t"),
+               "transverse base pitch deviation", s["f_pb_source"]),
+        Factor("f_falpha", s["f_falpha"], "µm", _deviation_clause(s["f_falpha_source"], accuracy),
+               "profile form deviation", s["f_falpha_source"]),
+        Factor("f_Hbeta", s["f_Hbeta"], "µm", _deviation_clause(s["f_Hbeta_source"], accuracy),
+               "helix slope deviation", s["f_Hbeta_source"]),
+        Factor("y_alpha", _out(y_a), "µm", p1("8.3.4"), "running-in allowance (pitch)"),
+        Factor("y_f", _out(y_f), "µm", p1("6.3 and 8.3.4"), "running-in allowance (profile form)"),
+        Factor("F_betax", _out(f_bx), "µm", p1("7.6 (method C)"), "initial equivalent misalignment"),
+        _factor("K_Hbeta", k_hb, given["K_Hbeta"], p1("7.6 (method C)"), "face load factor (contact)",
+                p1("7 (given)")),
+        _factor("K_Fbeta", k_fb, given["K_Fbeta"], p1("7.7, eq. (45)"), "face load factor (root)", p1("7.7 (given)")),
+        _factor("K_Halpha", k_ha, given["K_Halpha"], p1("8.3 (method B)"), "transverse load factor (contact)",
+                p1("8 (given)")),
+        _factor("K_Falpha", k_fa, given["K_Falpha"], p1("8.3 (method B)"), "transverse load factor (root)",
+                p1("8 (given)")),
         Factor("Z_H", s["Z_H"], "1", p2("6.1, eq. (9)"), "zone factor"),
         Factor("Z_E", s["Z_E"], "sqrt(N/mm^2)", p2("7, eq. (10)"), "elasticity factor"),
         Factor("Z_epsilon", s["Z_eps"], "1", p2("8, eq. (13)"), "contact ratio factor"),
@@ -380,7 +432,7 @@ def rate_mesh(inp: MeshInput, torque, speed, *, hours: float | None = None) -> M
         Factor("Y_DT", s["Y_DT"], "1", p3("7.5"), "deep tooth factor"),
     ]
     method_c = (f"K_Hbeta by method C from F_betax = 1.33 f_sh + f_Hbeta "
-                f"(f_Hbeta = {s['f_Hbeta']:.1f} um, grade {spec.accuracy_grade})")
-    notes = tuple(spec.notes) + ((method_c,) if spec.K_Hbeta is None else ())
+                f"(f_Hbeta = {s['f_Hbeta']:.1f} µm, {s['f_Hbeta_source']})")
+    notes = tuple(spec.notes) + ((method_c,) if given["K_Hbeta"] is None else ())
     return MeshRating(inp.element, mesh.name, f"ISO 6336:{year}", "B", {x.symbol: x for x in mesh_factors},
                       (gears[0], gears[1]), mesh.internal, notes)

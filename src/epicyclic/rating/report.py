@@ -2,10 +2,12 @@
 
 The full table follows the layout of commercial calculation reports (KISSsoft,
 FVA-Workbench): one row per quantity with its name, ISO symbol, unit, the values of
-gear 1 and gear 2 (one value where the quantity belongs to the mesh) and the clause
-of ISO 6336 it comes from.  A safety below its minimum is marked: ``!`` in text and
-Markdown, red in HTML (class ``below``).  Values over several load cases show as
-``min … max``.
+gear 1 and gear 2 (one value where the quantity belongs to the mesh), whether a factor
+is given or computed, and the clause of ISO 6336 it comes from; each safety has its
+minimum beside it.  Symbols and units are written as ISO 6336-1 clause 4 writes them
+(σ_H, K_Hβ, µm, N/mm²; the JSON keeps the ASCII keys).  A safety below its minimum is
+marked: ``!`` in text and Markdown, red in HTML (class ``below``).  Values over several
+load cases show as ``min … max``.
 
 References
 ----------
@@ -19,20 +21,88 @@ import html
 
 import numpy as np
 
+from .given_factors import GIVEN
+
 __all__ = [
     "FACTOR_HEAD",
     "SUMMARY_HEAD",
     "html_document",
     "html_section",
+    "iso_symbol",
+    "iso_unit",
     "markdown_report",
     "mesh_rows",
     "summary_rows",
     "text_report",
 ]
 
-SUMMARY_HEAD = ["element", "mesh", "gear", "sigma_H [N/mm^2]", "sigma_HP [N/mm^2]", "S_H", "sigma_F [N/mm^2]",
-                "sigma_FP [N/mm^2]", "S_F", "ok"]
-FACTOR_HEAD = ["quantity", "symbol", "unit", "gear 1", "gear 2", "clause"]
+SUMMARY_HEAD = ["element", "mesh", "gear", "σ_H [N/mm²]", "σ_HP [N/mm²]", "S_H", "S_Hmin", "σ_F [N/mm²]",
+                "σ_FP [N/mm²]", "S_F", "S_Fmin", "ok"]
+FACTOR_HEAD = ["quantity", "symbol", "unit", "gear 1", "gear 2", "given / computed", "clause"]
+_SAFETY_SUMMARY, _SAFETY_FACTORS = (5, 9), (3, 4)  # columns that may end in " !"
+
+_GREEK = (("epsilon", "ε"), ("lambda", "λ"), ("alpha", "α"), ("beta", "β"), ("gamma", "γ"), ("delta", "δ"),
+          ("sigma", "σ"), ("theta", "ϑ"), ("rho", "ρ"), ("nu", "ν"), ("eta", "η"), ("mu", "µ"))
+_UNITS = (("sqrt(N/mm^2)", "√(N/mm²)"), ("N/mm^2", "N/mm²"), ("mm*um", "mm·µm"), ("mm*µm", "mm·µm"),
+          ("mm^2/s", "mm²/s"), ("um", "µm"))
+
+
+def iso_symbol(symbol: str) -> str:
+    """An ASCII symbol of the results (``sigma_HP``, ``K_Hbeta``, ``c_gamma_alpha``) as ISO writes it.
+
+    Parameters
+    ----------
+    symbol : str
+
+    Returns
+    -------
+    str
+
+    References
+    ----------
+    ISO 6336-1:2019, clause 4 (symbols).
+
+    Examples
+    --------
+    >>> [iso_symbol(s) for s in ("sigma_HP", "K_Hbeta", "c_gamma_alpha", "Y_deltarelT", "epsilon_alpha", "c_prime")]
+    ['σ_HP', 'K_Hβ', 'c_γα', 'Y_δrelT', 'ε_α', "c'"]
+    """
+    if symbol == "c_prime":
+        return "c'"
+    for word, letter in _GREEK:
+        symbol = symbol.replace(word, letter)
+    base, _, rest = symbol.partition("_")
+    return base + ("_" + rest.replace("_", "") if rest else "")
+
+
+def _source(factor) -> str:
+    """The factor's source (``given``, ``computed``, ...; :class:`~epicyclic.rating.results.Factor`)."""
+    return factor.source
+
+
+def iso_unit(unit: str) -> str:
+    """A unit of the results (``N/mm^2``, ``um``) as SI writes it (``N/mm²``, ``µm``).
+
+    Parameters
+    ----------
+    unit : str
+
+    Returns
+    -------
+    str
+
+    References
+    ----------
+    ISO 80000-1:2009 (symbols of units).
+
+    Examples
+    --------
+    >>> iso_unit("N/mm^2"), iso_unit("N/(mm*um)"), iso_unit("um")
+    ('N/mm²', 'N/(mm·µm)', 'µm')
+    """
+    for ascii_, si in _UNITS:
+        unit = unit.replace(ascii_, si)
+    return unit
 
 
 def _fmt(value) -> str:
@@ -75,8 +145,8 @@ def summary_rows(rating) -> list[list[str]]:
         for g in m.gears:
             s_h = _fmt(g.S_H) + (" !" if _below(g.S_H, g.S_Hmin) else "")
             s_f = _fmt(g.S_F) + (" !" if _below(g.S_F, g.S_Fmin) else "")
-            rows.append([m.element, m.mesh, g.gear, _fmt(g["sigma_H"]), _fmt(g["sigma_HP"]), s_h,
-                         _fmt(g["sigma_F"]), _fmt(g["sigma_FP"]), s_f, "yes" if g.ok else "NO"])
+            rows.append([m.element, m.mesh, g.gear, _fmt(g["sigma_H"]), _fmt(g["sigma_HP"]), s_h, _fmt(g.S_Hmin),
+                         _fmt(g["sigma_F"]), _fmt(g["sigma_FP"]), s_f, _fmt(g.S_Fmin), "yes" if g.ok else "NO"])
     return rows
 
 
@@ -97,16 +167,21 @@ def mesh_rows(mesh) -> list[list[str]]:
     """
     rows = []
     for symbol, f in mesh.factors.items():
-        rows.append([f.name, symbol, f.unit, _fmt(f.value), "", f.clause])
+        rows.append([f.name, iso_symbol(symbol), iso_unit(f.unit), _fmt(f.value), "", _source(f), f.clause])
     g1, g2 = mesh.gears
     for symbol, f in g1.factors.items():
         other = g2.factors.get(symbol) or g2.factors.get({"Z_B": "Z_D"}.get(symbol, symbol))
-        label = "Z_B / Z_D" if symbol == "Z_B" else symbol
+        label = "Z_B / Z_D" if symbol == "Z_B" else iso_symbol(symbol)
         cells = [_fmt(f.value), _fmt(other.value) if other is not None else ""]
+        source = _source(f) if other is None or _source(other) == _source(f) else f"{_source(f)} / {_source(other)}"
         if symbol in ("S_H", "S_F"):
             minimum = g1.S_Hmin if symbol == "S_H" else g1.S_Fmin
             cells = [c + (" !" if _below(g.factors[symbol].value, minimum) else "") for c, g in zip(cells, (g1, g2))]
-        rows.append([f.name, label, f.unit, *cells, f.clause])
+        rows.append([f.name, label, iso_unit(f.unit), *cells, source, f.clause])
+        if symbol in ("S_H", "S_F"):  # the minimum beside each safety
+            kind = symbol + "min"
+            rows.append([f"minimum {f.name}", kind, "1", _fmt(getattr(g1, kind)), _fmt(getattr(g2, kind)), GIVEN,
+                         "ISO 6336-1:2019, 4 (agreed between customer and supplier)"])
     return rows
 
 
@@ -211,13 +286,14 @@ def html_section(rating, *, details: bool = True) -> str:
     head = "".join(f"<th>{esc(h)}</th>" for h in SUMMARY_HEAD)
     parts = [f"<section class='rating'><h2>Tooth load capacity — {esc(rating.standard)}, method B"
              + (f", gear {esc(rating.gear)}" if rating.gear else "") + f", life {rating.life_hours:g} h</h2>",
-             f"<table><thead><tr>{head}</tr></thead><tbody>{_html_rows(summary_rows(rating), (5, 8))}</tbody></table>"]
+             f"<table><thead><tr>{head}</tr></thead><tbody>{_html_rows(summary_rows(rating), _SAFETY_SUMMARY)}"
+             "</tbody></table>"]
     if details:
         fhead = "".join(f"<th>{esc(h)}</th>" for h in FACTOR_HEAD)
         for m in rating.meshes:
             cls = "" if m.ok else f" class='below' style='{_RED}'"
             parts.append(f"<h3{cls}>{esc(_title(m))}</h3><table><thead><tr>{fhead}</tr></thead><tbody>"
-                         f"{_html_rows(mesh_rows(m), (3, 4))}</tbody></table>")
+                         f"{_html_rows(mesh_rows(m), _SAFETY_FACTORS)}</tbody></table>")
             parts.extend(f"<p class='note'>{esc(n)}</p>" for n in m.notes)
     parts.append("</section>")
     return "".join(parts)

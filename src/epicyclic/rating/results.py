@@ -80,7 +80,9 @@ class Factor:
         What it is in words.
     source : str, default ""
         Where a factor's value comes from: ``"given"`` (an input), ``"computed"`` (by the clause),
-        or another named source (``"computed by the elastic model"``); empty for data and stresses.
+        or another named source (``"computed by the elastic model"``).  Left empty, a factor
+        (``K_``, ``Z_``, ``Y_``, ``S_`` of unit 1) is ``"computed"``, σ_Hlim and σ_Flim are
+        ``"material"``, data and stresses have none.
 
     References
     ----------
@@ -93,6 +95,13 @@ class Factor:
     clause: str = ""
     name: str = ""
     source: str = ""
+
+    def __post_init__(self) -> None:
+        if not self.source:
+            if self.symbol in ("sigma_Hlim", "sigma_Flim"):
+                object.__setattr__(self, "source", "material")
+            elif self.unit == "1" and self.symbol[:2] in ("K_", "Z_", "Y_", "S_"):
+                object.__setattr__(self, "source", "computed")
 
     def to_dict(self) -> dict[str, Any]:
         """``{"value", "unit", "clause", "name"}`` and ``source`` where it has one (JSON-safe)."""

@@ -6,14 +6,17 @@ Defaults (stated here and in ``docs/rating.md``):
 key                     default                     meaning
 ======================  ==========================  =============================================
 standard                ``"2019"``                  ISO 6336 edition (``"2006"`` or ``"2019"``)
-application_factor      1.0                         K_A (uniform driver and load)
+application_factor      1.0 (``default``)           K_A (uniform driver and load); one number or per mesh
 life                    20000                       required life, h
 S_Hmin / S_Fmin         1.0 / 1.4                   minimum safeties
 accuracy_grade          6                           ISO 1328-1 flank tolerance class
 accuracy_standard       1995 for ISO 6336:2006,     ISO 1328-1 edition of the grade (``"1995"`` or
                         2013 for :2019              ``"2013"``)
-K_Hbeta                 method C                    a given K_Hβ, or F_βx from f_Hβ (+ 1.33 f_sh)
+K_Hbeta, K_Fbeta        method C, K_Hβ^N_F          a given K_Hβ (K_Fβ), or F_βx from f_Hβ (+ 1.33 f_sh)
 K_v                     method B                    a given dynamic factor
+K_Halpha, K_Falpha      method B                    given transverse load factors (K_Fα = K_Hα if only
+                                                    K_Hα is given)
+f_pb, f_falpha, f_Hbeta from the accuracy grade     measured deviations per gear, µm
 shaft_deflection        0                           f_sh for method C, µm
 load_sharing            of the geometry, else by    K_γ (AGMA 6123/ISO values may be given)
                         number of planets
@@ -23,6 +26,10 @@ pitting_permitted       False                       Z_NT curve without pitting (
 tip_relief              running-in C_ay             C_a for K_v, µm (without one: C_ay of the pair)
 rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
 ======================  ==========================  =============================================
+
+Every load factor is one number for all meshes or a table by mesh (``element:mesh``, ``mesh``,
+``element``, ``all``; :mod:`~epicyclic.rating.given_factors`); deviations and ``accuracy_grade``
+one value or a table by gear (``element:gear``, ``gear``, ``all``).
 
 Required (an error names the key and the value it would suggest): ``material`` (a
 name of the data file, or per gear), ``flank_roughness`` and ``root_roughness`` (R_z,
@@ -45,6 +52,7 @@ from typing import Any
 
 from ..geometry.accuracy import EDITIONS as ACCURACY_EDITIONS
 from .errors import RatingError
+from .given_factors import GEAR_DEVIATIONS, MESH_FACTORS, FactorValue, check_given, gear_value, mesh_factor
 from .materials import Material, material
 from .standard import DEFAULT_EDITION, edition
 from .tooth_form import Cutter
@@ -105,24 +113,34 @@ class RatingSpec:
     viscosity_100 : float, optional
         At 100 °C, mm²/s (kept for the report).
     standard : str, default "2019"
-    application_factor : float, default 1.0
-        K_A.
+    application_factor : float, FactorValue or mapping mesh → float, optional
+        K_A for every mesh or per mesh (default 1.0, a uniform driver and load, reported as
+        ``default``).
     life : float, default 20000
         Required life, h.
     S_Hmin, S_Fmin : float, default 1.0, 1.4
-    accuracy_grade : int, default 6
+    accuracy_grade : int or mapping gear → int, default 6
     accuracy_standard : str, optional
         ISO 1328-1 edition the grade is read in, ``"1995"`` or ``"2013"``; by default the one the
         ISO 6336 edition refers to (2006: ISO 1328-1:1995, 2019: ISO 1328-1:2013).
-    K_Hbeta : float, optional
+    K_Hbeta : float, FactorValue or mapping mesh → float, optional
         Given face load factor; otherwise method C.
-    K_v : float, optional
+    K_Fbeta : float or mapping mesh → float, optional
+        Given face load factor of the root; otherwise K_Hβ^N_F (ISO 6336-1, 7.7).
+    K_v : float or mapping mesh → float, optional
         Given dynamic factor (from measurement or a method A analysis, ISO 6336-1, 6.3); otherwise
         method B.
+    K_Halpha, K_Falpha : float or mapping mesh → float, optional
+        Given transverse load factors; otherwise method B (ISO 6336-1, 8.3).  K_Fα = K_Hα where only
+        K_Hα is given.
+    f_pb, f_falpha, f_Hbeta : float or mapping gear → float, optional
+        Measured transverse base pitch, profile form and helix slope deviations, µm; otherwise from
+        the accuracy grade (ISO 1328-1).
     shaft_deflection : float, default 0
         f_sh, µm (method C).
-    load_sharing : float, optional
-        K_γ for every planetary set (default: the set geometry's, else by number of planets).
+    load_sharing : float or mapping mesh → float, optional
+        K_γ for every planetary set or per mesh (default: the set geometry's, else by number of
+        planets).
     tool_tip_radius : float, default 0.25
         ρ_fP* of the basic rack.
     cutter : Cutter, optional
@@ -155,16 +173,16 @@ class RatingSpec:
     viscosity_40: float | None = None
     viscosity_100: float | None = None
     standard: str = DEFAULT_EDITION
-    application_factor: float = 1.0
+    application_factor: Any = None
     life: float = 20000.0
     S_Hmin: float = 1.0
     S_Fmin: float = 1.4
     accuracy_grade: int = 6
     accuracy_standard: str | None = None
-    K_Hbeta: float | None = None
-    K_v: float | None = None
+    K_Hbeta: Any = None
+    K_v: Any = None
     shaft_deflection: float = 0.0
-    load_sharing: float | None = None
+    load_sharing: Any = None
     tool_tip_radius: float = 0.25
     cutter: Cutter | None = None
     long_life: str = "standard"
@@ -172,11 +190,15 @@ class RatingSpec:
     tip_relief: float | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
     rim_thickness: Mapping[str, float] | None = None
+    K_Fbeta: Any = None
+    K_Halpha: Any = None
+    K_Falpha: Any = None
+    f_pb: Any = None
+    f_falpha: Any = None
+    f_Hbeta: Any = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "standard", edition(self.standard))
-        object.__setattr__(self, "application_factor", _number(self.application_factor, "application_factor", 1.0,
-                                                                strict=False))
         object.__setattr__(self, "life", _number(self.life, "life"))
         for key in ("S_Hmin", "S_Fmin", "tool_tip_radius"):
             object.__setattr__(self, key, _number(getattr(self, key), key))
@@ -192,9 +214,12 @@ class RatingSpec:
         object.__setattr__(self, "shaft_deflection", _number(self.shaft_deflection, "shaft_deflection", strict=False))
         if self.tip_relief is not None:
             object.__setattr__(self, "tip_relief", _number(self.tip_relief, "tip_relief", strict=False))
-        for key in ("K_Hbeta", "K_v", "load_sharing"):
+        for key in MESH_FACTORS:
             if getattr(self, key) is not None:
-                object.__setattr__(self, key, _number(getattr(self, key), key, 1.0, strict=False))
+                object.__setattr__(self, key, check_given(getattr(self, key), key))
+        for key in GEAR_DEVIATIONS:
+            if getattr(self, key) is not None:
+                object.__setattr__(self, key, check_given(getattr(self, key), key, 0.0))
         if self.accuracy_standard is None:
             object.__setattr__(self, "accuracy_standard", "1995" if self.standard == "2006" else "2013")
         accuracy = str(self.accuracy_standard).removeprefix("ISO 1328-1:")
@@ -202,10 +227,15 @@ class RatingSpec:
             raise RatingError(f"rating.accuracy_standard must be one of {', '.join(map(repr, ACCURACY_EDITIONS))} "
                               f"(ISO 1328-1:1995 or :2013), got {self.accuracy_standard!r}.")
         object.__setattr__(self, "accuracy_standard", accuracy)
-        g, (low, high) = self.accuracy_grade, ACCURACY_EDITIONS[accuracy]
-        if isinstance(g, bool) or not isinstance(g, int) or not low <= g <= high:
-            raise RatingError(f"rating.accuracy_grade must be a whole number {low} ... {high} (ISO 1328-1:{accuracy}), "
-                              f"got {g!r}; the default is 6.")
+        low, high = ACCURACY_EDITIONS[accuracy]
+        grades = self.accuracy_grade if isinstance(self.accuracy_grade, Mapping) else {"": self.accuracy_grade}
+        for name, g in grades.items():
+            if isinstance(g, bool) or not isinstance(g, int) or not low <= g <= high:
+                key = f"accuracy_grade.{name}" if name else "accuracy_grade"
+                raise RatingError(f"rating.{key} must be a whole number {low} ... {high} (ISO 1328-1:{accuracy}), "
+                                  f"got {g!r}; the default is 6.")
+        if isinstance(self.accuracy_grade, Mapping):
+            object.__setattr__(self, "accuracy_grade", MappingProxyType(dict(self.accuracy_grade)))
         if self.long_life not in ("standard", "optimum"):
             raise RatingError(f"rating.long_life must be 'standard' or 'optimum', got {self.long_life!r}.")
         if self.rim_thickness is not None:
@@ -310,15 +340,80 @@ class RatingSpec:
             raise _missing(key, meaning)
         return value
 
+    def given_factor(self, key: str, element: str, mesh: str) -> FactorValue | None:
+        """The given load factor ``key`` of ``mesh`` of ``element``, or None where it is to be computed.
+
+        Parameters
+        ----------
+        key : str
+            A key of :data:`~epicyclic.rating.given_factors.MESH_FACTORS` (``application_factor``,
+            ``load_sharing``, ``K_v``, ``K_Hbeta``, ``K_Fbeta``, ``K_Halpha``, ``K_Falpha``).
+        element, mesh : str
+            The set or stage and the mesh's name.
+
+        Returns
+        -------
+        FactorValue or None
+        """
+        return mesh_factor(getattr(self, key), element, mesh)
+
+    def grade_of(self, element: str, gear: str) -> int:
+        """The ISO 1328-1 accuracy grade of ``gear`` of ``element``.
+
+        Parameters
+        ----------
+        element, gear : str
+            The set or stage and the gear's name in it.
+
+        Returns
+        -------
+        int
+
+        Raises
+        ------
+        RatingError
+            A table of grades without an entry for the gear.
+        """
+        grade = gear_value(self.accuracy_grade, element, gear)
+        if grade is None:
+            raise RatingError(f"rating.accuracy_grade has no entry for gear {gear!r} of {element!r} (keys "
+                              f"{', '.join(map(repr, self.accuracy_grade))}); add {gear} = 6 or all = 6.")
+        return grade
+
+    def deviation_of(self, key: str, element: str, gear: str) -> float | None:
+        """A measured deviation ``key`` (``f_pb``, ``f_falpha``, ``f_Hbeta``) of a gear in µm, or None.
+
+        Parameters
+        ----------
+        key : str
+            One of :data:`~epicyclic.rating.given_factors.GEAR_DEVIATIONS`.
+        element, gear : str
+            The set or stage and the gear's name in it.
+
+        Returns
+        -------
+        float or None
+            None where it follows from the accuracy grade.
+        """
+        value = gear_value(getattr(self, key), element, gear)
+        return None if value is None else float(value)
+
     def to_dict(self) -> dict[str, Any]:
         """Plain data of the inputs (materials by name)."""
         m = self.material
         mats = (m.to_dict() if isinstance(m, Material) else {k: v.to_dict() for k, v in m.items()}) if m else None
-        return {"standard": f"ISO 6336:{self.standard}", "application_factor": self.application_factor,
+
+        def given(value):
+            if isinstance(value, Mapping):
+                return {k: given(v) for k, v in value.items()}
+            return float(value) if isinstance(value, FactorValue) else value
+
+        return {"standard": f"ISO 6336:{self.standard}", "application_factor": given(self.application_factor),
                 "life": self.life, "S_Hmin": self.S_Hmin, "S_Fmin": self.S_Fmin,
-                "accuracy_grade": self.accuracy_grade,
-                "accuracy_standard": f"ISO 1328-1:{self.accuracy_standard}", "K_Hbeta": self.K_Hbeta, "K_v": self.K_v,
-                "shaft_deflection": self.shaft_deflection, "load_sharing": self.load_sharing,
+                "accuracy_grade": _plain(self.accuracy_grade),
+                "accuracy_standard": f"ISO 1328-1:{self.accuracy_standard}",
+                **{k: given(getattr(self, k)) for k in tuple(MESH_FACTORS)[1:] + GEAR_DEVIATIONS},
+                "shaft_deflection": self.shaft_deflection,
                 "flank_roughness": _plain(self.flank_roughness), "root_roughness": _plain(self.root_roughness),
                 "viscosity_40": self.viscosity_40, "viscosity_100": self.viscosity_100,
                 "tool_tip_radius": self.tool_tip_radius, "long_life": self.long_life,

@@ -23,17 +23,18 @@ Müller, *Die Umlaufgetriebe* (1998), ch. 4 (relative speeds of the planets).
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import MappingProxyType
 
 import numpy as np
 
-from ..geometry.forces import default_load_sharing
+from ..geometry.forces import _load_sharing  # K_γ of a set and where it comes from
 from ..geometry.set_geometry import SetGeometry
 from ..geometry.stage_geometry import StageGeometry
 from .errors import RatingError
 from .mesh_rating import MeshInput, rate_mesh
 from .results import TrainRating
+from .given_factors import GEAR_DEVIATIONS, MESH_FACTORS, unmatched_keys
 from .spec import RatingSpec
 
 __all__ = ["PlannedMesh", "mesh_inputs", "rate_batch", "rate_solution"]
@@ -61,7 +62,9 @@ def _set_meshes(name: str, geometry: SetGeometry, spec: RatingSpec) -> list[Plan
     pset = geometry.planetary_set
     teeth = pset.teeth
     n = pset.planets
-    k_gamma = spec.load_sharing or geometry.load_sharing or default_load_sharing(n)
+    k_gamma, k_source = _load_sharing(geometry.load_sharing, n)
+    k_source = "given (geometry)" if k_source.startswith("given") else (
+        "default" if k_source.startswith("ABS") else k_source)
     planets = geometry.planet_gear_names
     out = []
     for mesh in geometry.meshes:
@@ -97,9 +100,21 @@ def _set_meshes(name: str, geometry: SetGeometry, spec: RatingSpec) -> list[Plan
                 relative = np.asarray(speeds["sun"]) - np.asarray(speeds["carrier"])
                 return f_tw * d_w1 / 2000.0, relative * z["sun"] / z[planets[0]]
         inp = MeshInput(name, mesh, width, labels, spec, contacts, reversed_, float(k_gamma),
-                        n if central == "sun" else 0, planet_index if central == "sun" else -1)
+                        n if central == "sun" else 0, planet_index if central == "sun" else -1, k_source)
         out.append(PlannedMesh(inp, loads))
     return out
+
+
+def _stage_spec(spec: RatingSpec, element: str, mesh: str) -> RatingSpec:
+    """``spec`` for a stage mesh: K_γ only where a table names the stage or the mesh (one load path else)."""
+    given = spec.load_sharing
+    if given is None:
+        return spec
+    named = isinstance(given, Mapping) and any(k in given for k in (f"{element}:{mesh}", mesh, element))
+    if named:
+        return spec
+    rest = None if not isinstance(given, Mapping) else {k: v for k, v in given.items() if k != "all"} or None
+    return replace(spec, load_sharing=rest)
 
 
 def _stage_meshes(name: str, geometry: StageGeometry, spec: RatingSpec) -> list[PlannedMesh]:
@@ -118,7 +133,8 @@ def _stage_meshes(name: str, geometry: StageGeometry, spec: RatingSpec) -> list[
             n_k = np.asarray(speeds["first"]) * sr
             n1 = n_k if driving_first else n_k * z_drive / z1
             return f_tw * d_w1 / 2000.0, n1
-        inp = MeshInput(name, mesh, geometry.mesh_face_width(k), labels, spec)
+        inp = MeshInput(name, mesh, geometry.mesh_face_width(k), labels,
+                        _stage_spec(spec, name, mesh.name), load_sharing_source="one load path")
         out.append(PlannedMesh(inp, loads))
         torque_ratio *= z_driven / z_drive
         speed_ratio *= z_drive / z_driven
@@ -167,7 +183,23 @@ def mesh_inputs(geometry: Mapping[str, object], spec: RatingSpec) -> tuple[tuple
             if not isinstance(exc, EpicyclicError):
                 raise
             raise RatingError(f"rating of {name!r}: {exc}") from None
+    _check_keys(planned, spec)
     return tuple(planned), MappingProxyType(skipped)
+
+
+def _check_keys(planned, spec: RatingSpec) -> None:
+    """Every key of a per-mesh or per-gear table in ``[rating]`` names a mesh, a gear or an element."""
+    meshes = {"all"} | {p.input.element for p in planned} | {p.input.name for p in planned} | {
+        f"{p.input.element}:{p.input.name}" for p in planned}
+    gears = {"all"} | {g for p in planned for g in p.input.gears} | {
+        f"{p.input.element}:{g}" for p in planned for g in p.input.gears}
+    for keys, names, what in ((tuple(MESH_FACTORS), meshes, "mesh"),
+                              (GEAR_DEVIATIONS + ("accuracy_grade",), gears, "gear")):
+        for key in keys:
+            unknown = unmatched_keys(getattr(spec, key), names)
+            if unknown:
+                raise RatingError(f"rating.{key}: {unknown[0]!r} names no {what} of the rated train; accepted "
+                                  f"keys are {', '.join(sorted(names))}.")
 
 
 def _element_ports(solution_like, element: str):
