@@ -31,7 +31,8 @@ LAYERS: tuple[frozenset[str], ...] = tuple(frozenset(layer) for layer in (
     {"solver", ""},                                   # model → results
     {"analysis", "elastic", "losses", "rating", "transmission", "demo", "dynamics"},  # built on the solver: modes,
     #                                      losses, rating, gears, the elastic set, shifts as they happen
-    {"explain", "explain_losses", "io", "plotting", "synthesis", "exchange"},  # files (REXS too), reports, pictures
+    {"explain", "explain_losses", "io", "plotting", "synthesis", "exchange", "export"},  # files (REXS, CAD), reports,
+    #                                                                                      pictures
     {"cli", "web", "notebook"},                       # the front ends (notebook: Jupyter previews)
     {"__main__"},
 ))

@@ -243,13 +243,19 @@ def test_a_relation_to_a_deleted_planetary_stage_is_an_error():
         loads_rexs_document(bad, "deleted.rexs")
 
 
-def test_a_control_character_in_the_version_converts_to_toml(tmp_path):
+def test_control_characters_in_the_model_convert_to_toml_or_are_refused(tmp_path):
     # issue 30: <model version="banana\x7f"> made `convert -o out.toml` fail with tomlkit's
-    # "Comment cannot contain control character" (exit 1); the comment is written without it.
+    # "Comment cannot contain control character" (exit 1).  An unknown version is now refused naming the
+    # attribute; the program's name (applicationId), written into a comment, is written without them.
     from epicyclic.exchange.convert import toml_text
+    from epicyclic.exchange.versions import RexsVersionError
 
-    path = tmp_path / "v.rexs"
-    path.write_bytes(stage().replace(b'version="1.7"', b'version="1.7\x7f\xc2\x85"'))  # DEL and NEL: allowed in XML, control characters in TOML
+    bad_version = tmp_path / "v.rexs"
+    bad_version.write_bytes(stage().replace(b'version="1.7"', b'version="banana\x7f"'))
+    with pytest.raises(RexsVersionError, match="the model's version attribute"):
+        load_train_file(bad_version)
+    path = tmp_path / "a.rexs"
+    path.write_bytes(stage().replace(b'applicationId="t"', b'applicationId="t\x7f\xc2\x85x"'))  # DEL, NEL
     text = toml_text(load_train_file(path))
     assert "\x7f" not in text and "\x85" not in text and "(REXS 1.7," in text
 

@@ -61,6 +61,14 @@ app.command("fit")(_geometry.fit)
 app.command("forces")(_geometry.forces)
 app.command("search")(_geometry.search)
 
+from . import datasheet as _datasheet  # noqa: E402
+
+app.command("datasheet")(_datasheet.datasheet)
+
+from . import export as _export  # noqa: E402
+
+app.command("export")(_export.export)
+
 from . import efficiency_map as _efficiency_map  # noqa: E402
 
 app.command("map")(_efficiency_map.efficiency_map)

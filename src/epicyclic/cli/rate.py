@@ -139,6 +139,9 @@ def rate(
     rating: Annotated[Path | None, typer.Option(
         "--rating", help="A TOML file whose [rating] (and [lubricant]) table gives the rating inputs, over the "
                          "model's own (a REXS model without them).")] = None,
+    datasheet: Annotated[bool, typer.Option(
+        "--datasheet", help="Append the manufacturing data sheet of every element (epicyclic datasheet, with the "
+                            "rating's accuracy grade).")] = False,
     set_: SetOption = None,
 ) -> None:
     """Rate FILE's meshes by ISO 6336 Method B: safeties S_H (pitting) and S_F (tooth root) of every gear."""
@@ -171,6 +174,8 @@ def rate(
                 "inputs": train_file.rating.to_dict(), "ratings": [r.to_dict() for _, r in ratings],
                 "warnings": sorted({str(w.message) for w in caught})}
         check_finite(data, file, "rating")
+        if datasheet:
+            data["datasheets"] = [s.to_dict() for s in _sheets(train_file)]
         text = json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False)
     else:
         from ..rating.input_echo import echo_sections
@@ -195,8 +200,27 @@ def rate(
             text = text.replace("</body>", block + "</body>", 1) if "</body>" in text else text + block
         else:
             text = text.rstrip("\n") + "\n\n" + "\n".join(lines) + "\n"
+    if datasheet and format is not OutputFormat.json:
+        text = _with_sheets(text, _sheets(train_file), format)
     emit(text, out)
     _stderr(caught, ratings)
+
+
+def _sheets(train_file):
+    """The data sheet of every element with geometry, at the rating's accuracy grade and edition."""
+    from ..geometry.datasheet import data_sheet
+
+    spec = train_file.rating
+    return [data_sheet(shape, name, accuracy_grade=spec.accuracy_grade, accuracy_edition=spec.accuracy_standard)
+            for name, shape in train_file.geometry.items()]
+
+
+def _with_sheets(text: str, sheets, format) -> str:
+    if format is OutputFormat.markdown:
+        return text + "\n\n" + "\n".join(s.markdown() for s in sheets)
+    if format is OutputFormat.html:
+        return text.replace("</body>", "".join(s._repr_html_() for s in sheets) + "</body>", 1)
+    return text + "\n\n" + "\n\n".join(s.table() for s in sheets)
 
 
 def _stderr(caught, ratings) -> None:

@@ -131,11 +131,14 @@ def parse_model(data: bytes, source: str, kind: str, container: str = "") -> Rex
     Raises
     ------
     RexsValueError
-        Malformed, or past a limit.
+        Malformed, or past a limit; :class:`~epicyclic.exchange.versions.RexsVersionError` for a
+        version that is not read (1.0 … 1.7 and 2.0.0 are).
     """
+    from .versions import model_as_read
+
     model = _parse_xml(data, source) if kind == "xml" else _parse_json(data, source)
-    return RexsModel(model["source"], model["version"], model["components"], model["relations"],
-                     model["load_cases"], model["application"], container + kind)
+    return model_as_read(RexsModel(model["source"], model["version"], model["components"], model["relations"],
+                                   model["load_cases"], model["application"], container + kind))
 
 
 # ---------------------------------------------------------------------- zip

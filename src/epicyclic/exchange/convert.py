@@ -120,8 +120,9 @@ def duty_load_cases(train_file) -> tuple[DutyLoadCase, ...]:
     return tuple(DutyLoadCase(c.operating_point, float(share), c.gear) for c, share in zip(duty.cases, duty.shares))
 
 
-def rexs_text(train_file, kind: str = "xml", date: str | None = None, document=None) -> str:
-    """The train file as REXS 1.7 text: ``kind`` ``"xml"`` or ``"json"``.
+def rexs_text(train_file, kind: str = "xml", date: str | None = None, document=None,
+              rexs_version: str | None = None) -> str:
+    """The train file as REXS text (1.7 unless ``rexs_version`` says 2.0.0): ``kind`` ``"xml"`` or ``"json"``.
 
     Parameters
     ----------
@@ -132,12 +133,16 @@ def rexs_text(train_file, kind: str = "xml", date: str | None = None, document=N
     document : mapping, optional
         The parsed TOML the train file was read from (default: read again from its source, or a REXS
         file's mapped document).
+    rexs_version : str, optional
+        ``"1.7"`` or ``"2.0.0"`` (``"2.0"`` is the same); default
+        :data:`~epicyclic.exchange.versions.DEFAULT_WRITE_VERSION`.
 
     Returns
     -------
     str
     """
     from .. import __version__
+    from .versions import DEFAULT_WRITE_VERSION, check_write_version
     from .writing import build_rexs
 
     _expect_train_file(train_file, "rexs_text")
@@ -153,11 +158,12 @@ def rexs_text(train_file, kind: str = "xml", date: str | None = None, document=N
         cases = duty_load_cases(train_file)
     else:
         data, cases = mapped.data, mapped.load_cases if len(mapped.load_cases) > 1 else ()
+    version = check_write_version(DEFAULT_WRITE_VERSION if rexs_version is None else rexs_version)
     builder = build_rexs(train_file, data, cases, application_version=__version__, date=date)
-    return builder.xml() if kind == "xml" else builder.json()
+    return builder.xml(version) if kind == "xml" else builder.json(version)
 
 
-def convert(source: str | Path, target: str | Path, date: str | None = None) -> str:
+def convert(source: str | Path, target: str | Path, date: str | None = None, rexs_version: str | None = None) -> str:
     """Convert the train file ``source`` (TOML or REXS) to ``target`` (format by its suffix).
 
     Parameters
@@ -167,6 +173,9 @@ def convert(source: str | Path, target: str | Path, date: str | None = None) -> 
         Ends ``.toml``, ``.rexs``, ``.rexsj`` or ``.rexsz``.
     date : str, optional
         The REXS file's date; default now.
+    rexs_version : str, optional
+        The REXS version written: ``"1.7"`` or ``"2.0.0"`` (default
+        :data:`~epicyclic.exchange.versions.DEFAULT_WRITE_VERSION`); refused for a TOML target.
 
     Returns
     -------
@@ -191,6 +200,12 @@ def convert(source: str | Path, target: str | Path, date: str | None = None) -> 
         raise ModelError(f"--out: {str(target)[:80]!r} ends in {suffix or 'no suffix'!r}; give a .toml, .rexs (REXS "
                          "XML), .rexsj (REXS JSON) or .rexsz (zipped REXS) file.")
     refuse_input(target, [source])
+    from .versions import DEFAULT_WRITE_VERSION, check_write_version
+
+    version = check_write_version(DEFAULT_WRITE_VERSION if rexs_version is None else rexs_version)
+    if rexs_version is not None and suffix == ".toml":
+        raise ModelError(f"--rexs-version: {str(target)[:80]!r} is a TOML train file; the REXS version applies to "
+                         ".rexs, .rexsj and .rexsz outputs.")
     train_file = load_train_file(source)
     if suffix == ".toml":
         data: str | bytes = toml_text(train_file)
@@ -198,11 +213,11 @@ def convert(source: str | Path, target: str | Path, date: str | None = None) -> 
     elif suffix == ".rexsz":
         buffer = io.BytesIO()
         with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
-            archive.writestr("model.rexs", rexs_text(train_file, "xml", date))
-        data, what = buffer.getvalue(), "zipped REXS 1.7 XML"
+            archive.writestr("model.rexs", rexs_text(train_file, "xml", date, rexs_version=version))
+        data, what = buffer.getvalue(), f"zipped REXS {version} XML"
     else:
-        data = rexs_text(train_file, "xml" if suffix == ".rexs" else "json", date)
-        what = "REXS 1.7 " + ("XML" if suffix == ".rexs" else "JSON")
+        data = rexs_text(train_file, "xml" if suffix == ".rexs" else "json", date, rexs_version=version)
+        what = f"REXS {version} " + ("XML" if suffix == ".rexs" else "JSON")
     write_atomic(target, data)
     note = f"; {train_file.exchange.ignored}" if train_file.exchange is not None and train_file.exchange.ignored else ""
     return f"wrote {target} ({what}) from {source}{note}"

@@ -146,19 +146,34 @@ class RexsBuilder:
             return repr(float(value))
         return escape(str(value))
 
-    def _xml_attributes(self, attributes, indent: str) -> list[str]:
-        return [f"{indent}<attribute id={quoteattr(aid)} unit={quoteattr(unit)}>{self._xml_value(kind, value)}"
-                "</attribute>" for aid, kind, value, unit in attributes]
+    @staticmethod
+    def _as_written(attributes, rexs_version: str):
+        """(id, kind, value, unit) in the ids and units of ``rexs_version`` (built with 1.7's)."""
+        from .versions import written_attribute
 
-    def xml(self) -> str:
+        for aid, kind, value, unit in attributes:
+            aid, unit, value = written_attribute(aid, unit, value, rexs_version)
+            yield aid, kind, value, unit
+
+    def _xml_attributes(self, attributes, indent: str, rexs_version: str = REXS_VERSION) -> list[str]:
+        return [f"{indent}<attribute id={quoteattr(aid)} unit={quoteattr(unit)}>{self._xml_value(kind, value)}"
+                "</attribute>" for aid, kind, value, unit in self._as_written(attributes, rexs_version)]
+
+    def xml(self, rexs_version: str = REXS_VERSION) -> str:
         """The model as REXS XML text.
+
+        Parameters
+        ----------
+        rexs_version : str, default "1.7"
+            ``"1.7"`` or ``"2.0.0"`` (attribute ids and units translated,
+            :func:`~epicyclic.exchange.versions.written_attribute`).
 
         Returns
         -------
         str
         """
         out = ['<?xml version="1.0" encoding="UTF-8"?>',
-               f"<model version={quoteattr(REXS_VERSION)} applicationId={quoteattr(self.application)} "
+               f"<model version={quoteattr(rexs_version)} applicationId={quoteattr(self.application)} "
                f"applicationVersion={quoteattr(self.version)} date={quoteattr(self.date)} "
                'applicationLanguage="en">', "  <relations>"]
         for rid, rtype, order, refs in self.relations:
@@ -170,7 +185,7 @@ class RexsBuilder:
         out.append("  <components>")
         for c in self.components:
             out.append(f'    <component id="{c.id}" type={quoteattr(c.type)} name={quoteattr(c.name)}>')
-            out += self._xml_attributes(c.attributes, "      ")
+            out += self._xml_attributes(c.attributes, "      ", rexs_version)
             out.append("    </component>")
         out.append("  </components>")
         if self.load_cases:
@@ -180,7 +195,7 @@ class RexsBuilder:
                 for cid, attributes in overrides:
                     c = next(x for x in self.components if x.id == cid)
                     out.append(f'      <component id="{cid}" type={quoteattr(c.type)} name={quoteattr(c.name)}>')
-                    out += self._xml_attributes(attributes, "        ")
+                    out += self._xml_attributes(attributes, "        ", rexs_version)
                     out.append("      </component>")
                 out.append("    </load_case>")
             out.append("  </load_spectrum>")
@@ -188,12 +203,17 @@ class RexsBuilder:
         return "\n".join(out) + "\n"
 
     # ---- JSON
-    @staticmethod
-    def _json_attributes(attributes) -> list[dict[str, Any]]:
-        return [{"id": aid, "unit": unit, kind: value} for aid, kind, value, unit in attributes]
+    def _json_attributes(self, attributes, rexs_version: str = REXS_VERSION) -> list[dict[str, Any]]:
+        return [{"id": aid, "unit": unit, kind: value}
+                for aid, kind, value, unit in self._as_written(attributes, rexs_version)]
 
-    def json(self) -> str:
+    def json(self, rexs_version: str = REXS_VERSION) -> str:
         """The model as REXS JSON text.
+
+        Parameters
+        ----------
+        rexs_version : str, default "1.7"
+            ``"1.7"`` or ``"2.0.0"``.
 
         Returns
         -------
@@ -201,17 +221,18 @@ class RexsBuilder:
         """
         types = {c.id: c for c in self.components}
         model: dict[str, Any] = {
-            "version": REXS_VERSION, "applicationId": self.application, "applicationVersion": self.version,
+            "version": rexs_version, "applicationId": self.application, "applicationVersion": self.version,
             "date": self.date, "applicationLanguage": "en",
             "relations": [{"id": rid, "type": rtype, **({"order": order} if order is not None else {}),
                            "refs": [{"id": cid, "role": role, "hint": hint} for cid, role, hint in refs]}
                           for rid, rtype, order, refs in self.relations],
             "components": [{"id": c.id, "type": c.type, "name": c.name,
-                            "attributes": self._json_attributes(c.attributes)} for c in self.components],
+                            "attributes": self._json_attributes(c.attributes, rexs_version)}
+                           for c in self.components],
         }
         if self.load_cases:
             model["load_spectrum"] = {"id": 1, "load_cases": [
                 {"id": lid, "components": [{"id": cid, "type": types[cid].type, "name": types[cid].name,
-                                            "attributes": self._json_attributes(attributes)}
+                                            "attributes": self._json_attributes(attributes, rexs_version)}
                                            for cid, attributes in overrides]} for lid, overrides in self.load_cases]}
         return json.dumps({"model": model}, indent=1, ensure_ascii=False, allow_nan=False) + "\n"

@@ -23,6 +23,10 @@ SCHEMA_FOLDER = Path(__file__).parent / "schema"
 def validate_rexs(text: str, kind: str) -> list[str]:
     """The schema errors of REXS ``text`` (``kind`` ``"xml"`` or ``"json"``); ``[]`` when it is valid.
 
+    A REXS 2.x document (``version="2.0.0"``) is checked against the FVA's file schema of the 2.0 API
+    (``schema/rexs-file-2.0.xsd``); its JSON against ``rexs-schema.json`` with the version pattern widened
+    to major.minor.patch (the only published REXS JSON schema pins ``major.minor``, older than 2.0.0).
+
     Parameters
     ----------
     text : str
@@ -39,15 +43,27 @@ def validate_rexs(text: str, kind: str) -> list[str]:
     ------
     ImportError
         :mod:`xmlschema` or :mod:`jsonschema` is not installed (``pip install epicyclic[test]``).
+
+    References
+    ----------
+    ``rexs-schema.xsd``, ``rexs-schema.json`` (REXSapi); ``rexs-file.xsd`` (fva-net/rexs-api-java, REXS 2.0.0).
     """
     if kind == "xml":
+        import re
+
         import xmlschema
 
-        schema = xmlschema.XMLSchema(str(SCHEMA_FOLDER / "rexs-schema.xsd"))
+        head = re.search(r"<model\b[^>]*\bversion\s*=\s*[\"']([^\"']*)", text[:2000])
+        name = "rexs-file-2.0.xsd" if head and head.group(1).startswith("2.") else "rexs-schema.xsd"
+        schema = xmlschema.XMLSchema(str(SCHEMA_FOLDER / name))
         return [str(error.reason or error)[:300] for _, error in zip(range(20), schema.iter_errors(text))]
     import jsonschema
 
+    document = json.loads(text)
     schema = json.loads((SCHEMA_FOLDER / "rexs-schema.json").read_text(encoding="utf-8"))
+    version = document.get("model", {}).get("version") if isinstance(document, dict) else None
+    if isinstance(version, str) and version.startswith("2."):
+        schema["properties"]["model"]["properties"]["version"]["pattern"] = "^\\d+\\.\\d+\\.\\d+$"
     validator = jsonschema.Draft7Validator(schema)
     return [f"{'/'.join(map(str, e.absolute_path))}: {e.message[:300]}"
-            for _, e in zip(range(20), validator.iter_errors(json.loads(text)))]
+            for _, e in zip(range(20), validator.iter_errors(document))]

@@ -145,8 +145,8 @@ class _Writer:
         if transmission:
             extras["gears"] = gears
             extras["transmission"] = {"input": transmission.input, "output": transmission.output}
-        if load_cases and getattr(load_cases[0], "from_duty_cycle", False) and "operating_point" in doc:
-            extras["operating_point"] = doc["operating_point"]  # the spectrum's cases replace the model's point
+        if load_cases and "operating_point" in doc:  # the spectrum's cases replace the model's point: keep it,
+            extras["operating_point"] = doc["operating_point"]  # also when the cases came from a REXS file
         self.unit = b.component("gear_unit", self.file.title, [
             ("number_of_gears", "integer", max(len(gears), 1), "none"), ("gear_shift_index", "integer", index, "none"),
             (CUSTOM_DOCUMENT, "string", _json(extras), "none")]
