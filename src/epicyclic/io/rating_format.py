@@ -27,6 +27,8 @@
     [rating.lubricant]
     viscosity_40 = 35.0                   # mm²/s (or in the top-level [lubricant])
     viscosity_100 = 7.0
+    [rating.flank_fracture]               # tooth flank fracture: io/flank_fracture_format.py
+    case_depth = 1.0
     [rating.micropitting]                 # ISO/TS 6336-22 (see failure_modes_format)
     oil_temperature = 70.0
     load_stage = 9
@@ -58,7 +60,7 @@ __all__ = ["RATING_KEYS", "read_rating"]
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
                "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
-               "rim_thickness", "micropitting", "scuffing", "tool"}
+               "rim_thickness", "micropitting", "scuffing", "flank_fracture", "tool"}
 _NUMBERS = ("application_factor", "life", "S_Hmin", "S_Fmin", "K_Hbeta", "K_v",
             "shaft_deflection", "load_sharing", "tool_tip_radius", "tip_relief")
 _CUTTER_KEYS = {"teeth", "profile_shift", "addendum", "tip_radius"}
@@ -184,6 +186,10 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
         from .scuffing_format import read_scuffing
 
         values["scuffing"] = read_scuffing(reader, table["scuffing"])
+    if "flank_fracture" in table:
+        from .flank_fracture_format import read_flank_fracture
+
+        values["flank_fracture"] = read_flank_fracture(reader, table["flank_fracture"])
     if "tool" in table:
         t_where = at_key(where, "tool")
         tools = reader.table(table["tool"], t_where)
