@@ -226,15 +226,18 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
                               f"{CHD_BOUNDS[1]:g} mm)"),
             "S_FF": Factor("S_FF", per_case(1.0 / a_max), "1", "1 / A_FF,max",
                            "safety against tooth flank fracture")})
-    b_crit = np.max(cases[1], axis=-1)
+    b_crit = cases[1][np.arange(cases[1].shape[0]), np.argmax(cases[0], axis=-1)]
+
+    def mesh_value(values):
+        v = np.asarray(values, dtype=float).reshape(shape)
+        return float(v) if v.ndim == 0 else v
     mesh_factors = [
         Factor("E_r", e_r, "N/mm^2", f"{TS}, 6.2.3", "reduced modulus of elasticity"),
-        Factor("p_dyn_max", float(p_max.reshape(shape)) if not shape else p_max.reshape(shape), "N/mm^2",
-               f"{TS}, 6.2.4", "largest local Hertzian contact stress on the path"),
-        Factor("b_H_max", float(b_crit.reshape(shape)) if not shape else b_crit.reshape(shape), "mm",
-               "Johnson 1985, §4.2", "largest half Hertzian contact width"),
-        Factor("y_tau_max", 0.786 * (float(b_crit.reshape(shape)) if not shape else b_crit.reshape(shape)), "mm",
-               "Johnson 1985, §4.6", "depth of the largest shear stress (0.786 b_H)"),
+        Factor("p_dyn_max", mesh_value(p_max), "N/mm^2", f"{TS}, 6.2.4",
+               "largest local Hertzian contact stress on the path"),
+        Factor("b_H", mesh_value(b_crit), "mm", "Johnson 1985, §4.2", "half Hertzian contact width at p_dyn,max"),
+        Factor("y_tau_max", mesh_value(0.786 * b_crit), "mm", "Johnson 1985, §4.6",
+               "depth of the largest shear stress at p_dyn,max (0.786 b_H)"),
         Factor("K_tau_per", spec.K_tau_per, "N/mm^2/HV", "given" if spec.shear_strength_factor is not None else
                "assumed (FKM 2012, ISO 18265)", "hardness to shear strength factor"),
         Factor("c_1", spec.calibration_factor, "1", f"{TS}, 5.3 (given)" if spec.calibration_factor else
@@ -251,6 +254,10 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
             notes.append(f"flank fracture: hardness profile of {name} estimated from HV_s, HV_c and CHD (this "
                          "package's curve); give hardness_profile where measured")
     inf_gears = [n for n, g in zip(inp.gears, gear_factors) if not np.all(np.isfinite(g["CHD_req"].value))]
+    low_gears = [n for n, g in zip(inp.gears, gear_factors) if np.any(np.asarray(g["CHD_req"].value) <= CHD_BOUNDS[0])]
+    if low_gears:
+        notes.append(f"flank fracture: CHD_req = {CHD_BOUNDS[0]:g} mm for {', '.join(low_gears)} means "
+                     f"{CHD_BOUNDS[0]:g} mm or less (the lower end of the search)")
     if inf_gears:
         notes.append(f"flank fracture: no case depth up to {CHD_BOUNDS[1]:g} mm reaches S_FFmin for "
                      f"{', '.join(inf_gears)} (the surface hardness or the load is the limit)")

@@ -31,7 +31,7 @@ from types import MappingProxyType
 from typing import Any
 
 from ..errors import RatingError
-from .hardness import HardnessProfile
+from .hardness import LIMIT_HARDNESS, HardnessProfile
 
 __all__ = ["FlankFractureSpec", "DEFAULT_SHEAR_STRENGTH_FACTOR"]
 
@@ -108,6 +108,14 @@ class FlankFractureSpec:
                                                                 for k, v in value.items()}))
             elif value is not None:
                 object.__setattr__(self, key, _number(value, key))
+        for key, above in (("surface_hardness", True), ("core_hardness", False)):
+            value = getattr(self, key)
+            for v in (value.values() if isinstance(value, Mapping) else () if value is None else (value,)):
+                if (v <= LIMIT_HARDNESS) if above else (v >= LIMIT_HARDNESS):
+                    raise RatingError(f"rating.flank_fracture.{key} = {v:g} HV: the case hardness depth is defined "
+                                      f"at 550 HV, so the {'surface' if above else 'core'} hardness must be "
+                                      f"{'above' if above else 'below'} it (case-carburised gears: typically "
+                                      "650-750 HV at the surface, 300-450 HV in the core).")
         prof = self.hardness_profile
         if prof is not None:
             if isinstance(prof, Mapping):
