@@ -260,3 +260,15 @@ def test_a_flank_fracture_shortfall_is_marked_and_named():
     result = runner.invoke(app, ["rate", str(EXAMPLE), "--set", "rating.flank_fracture.S_FFmin=4.0"])
     assert result.exit_code == 0, result.output
     assert "S_FF" in result.output and " !" in result.output and "below minimum safety" in result.output
+
+
+def test_the_table_travels_through_rexs_and_toml(tmp_path):
+    from epicyclic.exchange.convert import convert
+    from epicyclic.io import load_train_file
+
+    original = loads_train_file(TEXT).rating.flank_fracture
+    for suffix in (".rexs", ".toml"):
+        out = tmp_path / ("ff" + suffix)
+        convert(EXAMPLE, out)
+        back = load_train_file(out).rating.flank_fracture
+        assert back == original and back.shear_strength_factor is None      # the default stays a default

@@ -171,6 +171,7 @@ class FlankFractureSpec:
                 return [list(p) for p in v.points]
             return {k: plain(x) for k, x in v.items()} if isinstance(v, Mapping) else v
         out = {k: plain(getattr(self, k)) for k in (*_PER_GEAR, "hardness_profile")}
-        out.update({"shear_strength_factor": self.K_tau_per, "calibration_factor": self.calibration_factor,
+        out.update({"shear_strength_factor": self.shear_strength_factor, "K_tau_per": self.K_tau_per,
+                    "calibration_factor": self.calibration_factor,
                     "S_FFmin": self.S_FFmin, "points": self.points, "depth_points": self.depth_points})
         return out
