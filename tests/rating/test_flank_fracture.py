@@ -34,7 +34,13 @@ from epicyclic.cli.main import app
 from epicyclic.errors import EpicyclicError
 from epicyclic.geometry import BasicRack, GearGeometry, MeshGeometry
 from epicyclic.io import loads_train_file
-from epicyclic.rating import MeshInput, RatingError, RatingSpec, RatingWarning, rate_mesh
+from epicyclic.rating import (
+    MeshInput,
+    RatingError,
+    RatingSpec,
+    RatingWarning,
+    rate_mesh,
+)
 from epicyclic.rating.flank_fracture import (
     DEFAULT_SHEAR_STRENGTH_FACTOR,
     FlankFractureSpec,

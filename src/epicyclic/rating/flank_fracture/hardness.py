@@ -20,8 +20,8 @@ which the material exposure reaches its limit on it.
 
 References
 ----------
-ISO 2639:2002, clause 3 (case hardness depth CHD, limit hardness 550 HV); ISO/TS 6336-4:2019,
-clause 7 (local material strength from the hardness profile); F. N. Fritsch, R. E. Carlson,
+ISO 2639:2002 (case hardness depth CHD, limit hardness 550 HV); ISO/TS 6336-4:2019
+(the local material strength from the hardness profile); F. N. Fritsch, R. E. Carlson,
 "Monotone piecewise cubic interpolation", SIAM J. Numer. Anal. 17 (1980) (PCHIP).
 """
 
@@ -34,7 +34,7 @@ import numpy as np
 
 from ..errors import RatingError
 
-__all__ = ["HardnessProfile", "LIMIT_HARDNESS"]
+__all__ = ["LIMIT_HARDNESS", "HardnessProfile"]
 
 LIMIT_HARDNESS = 550.0
 """The limit hardness that defines the case hardness depth of carburised parts, HV (ISO 2639:2002)."""
@@ -64,7 +64,7 @@ class HardnessProfile:
 
     References
     ----------
-    ISO 2639:2002, clause 3; ISO/TS 6336-4:2019, clause 7.
+    ISO 2639:2002; ISO/TS 6336-4:2019 (local material strength).
     """
 
     surface: float
@@ -102,7 +102,7 @@ class HardnessProfile:
 
         References
         ----------
-        ISO 2639:2002, clause 3.
+        ISO 2639:2002.
         """
         try:
             arr = np.asarray(points, dtype=float)

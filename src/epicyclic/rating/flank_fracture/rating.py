@@ -25,7 +25,7 @@ CHD (the profile stretched along the depth, surface and core hardness kept) at w
 
 References
 ----------
-ISO/TS 6336-4:2019, clauses 1 (scope), 5.2, 5.3, 6.2, 7; K. L. Johnson, Contact Mechanics, CUP
+ISO/TS 6336-4:2019, clauses 1 (scope), 5.2, 5.3, 6.2 (the material strength: its clause not located); K. L. Johnson, Contact Mechanics, CUP
 1985, §4.6; I. Boiadjiev, J. Witzig, T. Tobie, K. Stahl, "Tooth flank fracture — basic principles
 and calculation model for a sub-surface-initiated fatigue failure mode of case-hardened gears",
 Gear Technology, August 2015; ISO 2639:2002.
@@ -47,7 +47,7 @@ from .hardness import HardnessProfile
 from .spec import FlankFractureSpec
 from .subsurface import half_width, principal_shear
 
-__all__ = ["rate_flank_fracture", "material_exposure", "required_case_depth", "CHD_BOUNDS"]
+__all__ = ["CHD_BOUNDS", "material_exposure", "rate_flank_fracture", "required_case_depth"]
 
 TS = "ISO/TS 6336-4:2019"
 CHD_BOUNDS = (0.05, 10.0)
@@ -171,7 +171,7 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
 
     References
     ----------
-    ISO/TS 6336-4:2019, clauses 5.2, 5.3, 6.2, 7; Johnson 1985, §4.6.
+    ISO/TS 6336-4:2019, clauses 5.2, 5.3, 6.2; Johnson 1985, §4.6.
     """
     spec = spec if spec is not None else getattr(inp.spec, "flank_fracture", None)
     if spec is None:
@@ -239,13 +239,13 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
         Factor("y_tau_max", mesh_value(0.786 * b_crit), "mm", "Johnson 1985, §4.6",
                "depth of the largest shear stress at p_dyn,max (0.786 b_H)"),
         Factor("K_tau_per", spec.K_tau_per, "N/mm^2/HV", "given" if spec.shear_strength_factor is not None else
-               "assumed (FKM 2012, ISO 18265)", "hardness to shear strength factor"),
+               "assumed (0.45 x 3.2 / sqrt 3)", "hardness to shear strength factor"),
         Factor("c_1", spec.calibration_factor, "1", f"{TS}, 5.3 (given)" if spec.calibration_factor else
                "assumed 0", "material exposure calibration constant"),
         Factor("S_FFmin", spec.S_FFmin, "1", "agreed", "minimum safety")]
-    notes = ["flank fracture: tau_eff is the Hertzian principal shear stress below the contact centre (Johnson "
-             "1985) in place of the local equivalent stress of ISO/TS 6336-4 6.2; residual stresses (6.3) are not "
-             "taken into account"]
+    notes = [("flank fracture: tau_eff is the Hertzian principal shear stress below the contact centre (Johnson "
+              "1985) in place of the local equivalent stress of ISO/TS 6336-4 6.2; residual stresses (6.3) are "
+              "not taken into account")]
     if spec.shear_strength_factor is None:
         notes.append(f"flank fracture: K_tau,per = {spec.K_tau_per:.3f} N/mm^2 per HV assumed (not the value of "
                      "ISO/TS 6336-4); give shear_strength_factor")

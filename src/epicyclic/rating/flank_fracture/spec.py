@@ -7,18 +7,19 @@ profile, and the constants of the material strength::
     τ_per(y) = K_τ,per HV(y)                   local permissible shear stress, N/mm²
     A_FF(y)  = τ_eff(y) / τ_per(y) + c_1        local material exposure
 
-K_τ,per defaults to 0.45 × 3.2 / √3 = 0.83 N/mm² per HV: the torsional fatigue strength of a
-steel taken as 1/√3 of its push–pull fatigue strength (von Mises; FKM guideline f_W,τ = 0.577),
-that as 0.45 of the tensile strength (FKM guideline, f_W,σ of steel), and the tensile strength as
-3.2 × HV (the ratio of the hardness conversion tables of ISO 18265:2013 for steels of 250 … 500
-HV).  ISO/TS 6336-4:2019 gives its own conversion and the calibration constant c_1; neither was
-reachable to this package, so the default c_1 is 0 and both are reported as assumed (give
-``shear_strength_factor`` and ``calibration_factor`` to use the standard's values).
+K_τ,per defaults to 0.45 × 3.2 / √3 = 0.831 N/mm² per HV, an engineering assumption of this
+package: the torsional fatigue strength 1/√3 of the push–pull one (von Mises), that 0.45 of the
+tensile strength, and the tensile strength 3.2 × HV — the orders of magnitude that the FKM guideline
+(fatigue strength factors f_W,σ, f_W,τ of steels) and the conversion tables of ISO 18265 give for
+steels; the texts were not checked here, and a fatigue ratio that falls at high hardness would
+lower the strength of the case.  ISO/TS 6336-4:2019 gives its own conversion and the calibration
+constant c_1; neither was reachable to this package, so the default c_1 is 0 and both are reported
+as assumed (give ``shear_strength_factor`` and ``calibration_factor`` to use the standard's values).
 
 References
 ----------
-ISO/TS 6336-4:2019, clauses 5.2, 5.3 and 7 (material exposure, local strength); FKM guideline
-"Analytical strength assessment of components", 6th ed. 2012, 2.2 and 4.2 (f_W,σ, f_W,τ);
+ISO/TS 6336-4:2019, clauses 5.2 and 5.3 (material exposure) and its local material strength; FKM guideline
+"Analytical strength assessment of components", 6th ed. 2012 (f_W,σ, f_W,τ; not checked here);
 ISO 18265:2013 (hardness conversion); ISO 2639:2002 (CHD).
 """
 
@@ -33,12 +34,12 @@ from typing import Any
 from ..errors import RatingError
 from .hardness import LIMIT_HARDNESS, HardnessProfile
 
-__all__ = ["FlankFractureSpec", "DEFAULT_SHEAR_STRENGTH_FACTOR"]
+__all__ = ["DEFAULT_SHEAR_STRENGTH_FACTOR", "FlankFractureSpec"]
 
 TENSILE_PER_HV = 3.2
-"""R_m / HV of steels, N/mm² per HV (ISO 18265:2013 conversion tables, 250 … 500 HV; approximate)."""
+"""R_m / HV of steels, N/mm² per HV (the order of ISO 18265's conversion tables; assumed)."""
 FATIGUE_RATIO = 0.45
-"""Push–pull fatigue strength / R_m of steel (FKM guideline 2012, f_W,σ)."""
+"""Push–pull fatigue strength / R_m of steel (the order of the FKM guideline's f_W,σ; assumed)."""
 DEFAULT_SHEAR_STRENGTH_FACTOR = FATIGUE_RATIO * TENSILE_PER_HV / math.sqrt(3.0)
 """K_τ,per assumed when none is given: τ_per = K_τ,per HV, N/mm² per HV (≈ 0.831)."""
 
@@ -87,7 +88,7 @@ class FlankFractureSpec:
 
     References
     ----------
-    ISO/TS 6336-4:2019, clauses 5 and 7; ISO 2639:2002.
+    ISO/TS 6336-4:2019, clause 5; ISO 2639:2002.
     """
 
     case_depth: Any = None

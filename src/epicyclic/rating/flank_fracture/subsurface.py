@@ -31,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-__all__ = ["half_width", "axis_stresses", "principal_shear", "principal_shear_peak"]
+__all__ = ["axis_stresses", "half_width", "principal_shear", "principal_shear_peak"]
 
 
 def half_width(pressure, rho_red, E_r: float):
