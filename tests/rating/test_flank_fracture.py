@@ -99,6 +99,11 @@ def test_half_width_is_hertz_for_the_line_load():
     assert 2 * w / (math.pi * float(half_width(p0, rho, E_R))) == pytest.approx(p0)   # w = π b p0 / 2
 
 
+def test_tau_1_stays_below_its_far_field_bound():
+    zeta = np.geomspace(1e-3, 1e3, 2000)            # τ_1/p_0 ≤ b/(2y): the bound depth_bound relies on
+    assert np.all(principal_shear(zeta, 1.0, 1.0) * 2 * zeta <= 1.0)
+
+
 # ---------------------------------------------------------------- hardness profile
 def test_estimated_profile_passes_550_hv_at_chd_and_falls_to_the_core():
     prof = HardnessProfile(700.0, 400.0, 0.9)
@@ -149,7 +154,7 @@ def test_exposure_is_c1_at_the_surface_and_peaks_below_it():
 
 
 def test_deep_case_gives_the_closed_form():
-    r = rated(800.0, case_depth=10.0, depth_points=2000)
+    r = rated(800.0, case_depth=10.0, depths_per_decade=1000)
     mode = r.mode("flank_fracture")
     p_max = mode["p_dyn_max"]
     tau = principal_shear_peak()[0]
@@ -176,6 +181,15 @@ def test_no_case_depth_is_enough_when_the_surface_hardness_is_the_limit():
     assert any("no case depth" in n for n in mode.notes)
     data = json.loads(json.dumps(mode.to_dict(), allow_nan=False))
     assert data["gears"]["pinion"]["CHD_req"]["value"] is None and data["ok"] is False
+
+
+@settings(max_examples=20, deadline=None)
+@given(chd=st.floats(0.3, 3.0), factor=st.floats(1.05, 3.0), torque=st.floats(200.0, 2500.0))
+def test_exposure_falls_as_the_case_deepens(chd, factor, torque):
+    shallow = rated(torque, case_depth=chd).mode("flank_fracture").gear_factors[0]
+    deep = rated(torque, case_depth=chd * factor).mode("flank_fracture").gear_factors[0]
+    assert deep["A_FF_max"].value <= shallow["A_FF_max"].value * (1 + 1e-9)
+    assert deep["CHD_req"].value == pytest.approx(shallow["CHD_req"].value, rel=1e-6)   # a property of the load
 
 
 def test_given_constants_are_used_and_labelled():

@@ -12,7 +12,7 @@
     calibration_factor = 0.0              # c_1 of the material exposure
     S_FFmin = 1.0                         # minimum of S_FF = 1 / A_FF,max
     points = 25                           # contact points along the path
-    depth_points = 241                    # depths below each point
+    depths_per_decade = 115               # depths per decade below each point (every 2 %)
 
 References
 ----------
@@ -31,7 +31,7 @@ from .reader import at_key
 __all__ = ["FLANK_FRACTURE_KEYS", "read_flank_fracture"]
 
 FLANK_FRACTURE_KEYS = {"case_depth", "surface_hardness", "core_hardness", "hardness_profile",
-                       "shear_strength_factor", "calibration_factor", "S_FFmin", "points", "depth_points"}
+                       "shear_strength_factor", "calibration_factor", "S_FFmin", "points", "depths_per_decade"}
 _PER_GEAR = ("case_depth", "surface_hardness", "core_hardness")
 _NUMBERS = ("shear_strength_factor", "calibration_factor", "S_FFmin")
 
@@ -75,7 +75,7 @@ def read_flank_fracture(reader, table: Mapping[str, Any]) -> FlankFractureSpec:
     table = reader.table(table, where)
     reader.check_keys(table, FLANK_FRACTURE_KEYS, where)
     values: dict[str, Any] = {k: reader.number(table[k], k, where) for k in _NUMBERS if k in table}
-    for key in ("points", "depth_points"):
+    for key in ("points", "depths_per_decade"):
         if key in table:
             values[key] = reader.integer(table[key], key, where)
     for key in _PER_GEAR:

@@ -144,6 +144,14 @@ class HardnessProfile:
         return HardnessProfile(self.surface, self.core, case_depth, pts)
 
     @property
+    def hardness_range(self) -> tuple[float, float]:
+        """(the highest, the lowest) HV of the profile."""
+        if self.points is None:
+            return self.surface, self.core
+        hv = [h for _, h in self.points]
+        return max(hv), min(hv)
+
+    @property
     def source(self) -> str:
         """``"measured"`` or ``"estimated"``."""
         return "measured" if self.points is not None else "estimated"

@@ -21,7 +21,8 @@ its text was not reachable (see ``docs/rating.md``):
 
 The hardened-layer check gives, per gear, the required case hardness depth CHD_req: the smallest
 CHD (the profile stretched along the depth, surface and core hardness kept) at which A_FF,max =
-1/S_FFmin, searched between 0.05 and 10 mm (scipy's brentq; A_FF,max falls as the case deepens).
+1/S_FFmin, searched between 0.05 and 10 mm (a bisection on log CHD, all load cases at once; A_FF,max falls as
+the case deepens).
 
 References
 ----------
@@ -36,7 +37,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..contact_path import contact_path
 from ..errors import RatingError, warn_validity
@@ -86,46 +86,118 @@ def material_exposure(depth, pressure, b, hardness, K_tau_per: float, c_1: float
     return tau / (K_tau_per * np.asarray(hardness, dtype=float)) + c_1, tau
 
 
-def _grid(b_max: float, chd: float, n: int) -> np.ndarray:
-    return np.linspace(0.0, max(4.0 * b_max, 3.0 * chd), n)
+def depths(deepest: float, per_decade: int) -> np.ndarray:
+    """The depths evaluated, mm: 0, then 1 µm · 10^(i/per_decade) up to ``deepest`` (and one beyond).
+
+    The grid does not depend on the load, so a case rated in a batch meets the same depths as alone.
+
+    Parameters
+    ----------
+    deepest : float
+        The depth to reach, mm.
+    per_decade : int
+        Depths per decade (115: every 2 %).
+
+    Returns
+    -------
+    ndarray
+
+    References
+    ----------
+    Johnson 1985, §4.6.
+    """
+    n = int(math.ceil(per_decade * math.log10(max(deepest, 1e-3) / 1e-3)))
+    return np.concatenate([[0.0], 1e-3 * 10.0 ** (np.arange(n + 1) / per_decade)])
 
 
-def _max_exposure(profile: HardnessProfile, chd: float, p, b, spec: FlankFractureSpec) -> float:
-    y = _grid(float(np.max(b)), chd, spec.depth_points)
-    a, _ = material_exposure(y, p, b, profile(y, case_depth=chd), spec.K_tau_per, spec.calibration_factor)
-    return float(np.max(a))
+def depth_bound(pressure, b, profiles) -> float:
+    """A depth below which A_FF cannot have its maximum, mm (over all cases and the gears' profiles).
+
+    τ_1 ≤ p_0 b/(2y) at every depth (Johnson's closed form falls to it from below), and A_FF at
+    0.786 b under the largest pressure is at least 0.300 p_max/(K_τ,per HV_max); so below
+    y = max(p b)/p_max · HV_max/(0.6 HV_min) every A_FF is smaller.
+
+    References
+    ----------
+    Johnson 1985, §4.6.
+    """
+    p = np.atleast_2d(np.asarray(pressure, dtype=float))
+    pb = np.max(p * np.atleast_2d(np.asarray(b, dtype=float)), axis=-1)
+    p_max = np.max(p, axis=-1)
+    ratio = max(prof.hardness_range[0] / prof.hardness_range[1] for prof in profiles)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        y = np.where(p_max > 0, pb / np.where(p_max > 0, p_max, 1.0), 0.0)
+    return float(np.max(y)) * ratio / 0.6 * 1.05
 
 
-def required_case_depth(profile: HardnessProfile, pressure, b, spec: FlankFractureSpec) -> float:
-    """CHD_req: the smallest CHD (mm) at which A_FF,max = 1/S_FFmin for one load case (inf: none ≤ 10 mm).
+def stress_envelope(depth, pressure, b) -> np.ndarray:
+    """max over the contact points of τ_eff at each depth: shape ``pressure.shape[:-1] + depth.shape``.
+
+    Parameters
+    ----------
+    depth : ndarray
+        y, mm (1-d).
+    pressure, b : ndarray
+        p_dyn and b_H of the contact points (last axis), N/mm² and mm.
+
+    Returns
+    -------
+    ndarray
+
+    References
+    ----------
+    Johnson 1985, §4.6.
+    """
+    p = np.asarray(pressure, dtype=float)[..., None]
+    b = np.asarray(b, dtype=float)[..., None]
+    loaded = b > 0
+    tau = np.where(loaded, principal_shear(depth, p, np.where(loaded, b, 1.0)), 0.0)
+    return np.max(tau, axis=-2)
+
+
+def required_case_depth(profile: HardnessProfile, depth, envelope, spec: FlankFractureSpec, steps: int = 40):
+    """CHD_req of each load case: the smallest CHD (mm) at which A_FF,max = 1/S_FFmin (inf: none ≤ 10 mm).
+
+    A_FF,max(CHD) = max_y τ_env(y) / (K_τ,per HV(y; CHD)) + c_1 with the stress envelope of the
+    contact points (it does not depend on CHD) and the profile stretched to CHD; it falls as CHD
+    grows, and a bisection on log CHD over :data:`CHD_BOUNDS` (``steps`` halvings, all cases at
+    once) finds where it meets 1/S_FFmin.
 
     Parameters
     ----------
     profile : HardnessProfile
-        Stretched along the depth to each trial CHD.
-    pressure, b : ndarray
-        p_dyn and b_H of the contact points of the case, shape (n,).
+    depth : ndarray
+        y, mm (1-d), reaching :func:`depth_bound` (:func:`depths`).
+    envelope : ndarray
+        :func:`stress_envelope` at ``depth``, shape (m,) or (k, m).
     spec : FlankFractureSpec
+    steps : int, default 40
 
     Returns
     -------
-    float
-        :data:`CHD_BOUNDS` [0] where even that meets the limit; ``inf`` where 10 mm does not.
+    float or ndarray
+        One per case: :data:`CHD_BOUNDS` [0] where even that meets the limit; ``inf`` where 10 mm
+        does not.
 
     References
     ----------
     ISO/TS 6336-4:2019, 5.2; ISO 2639:2002.
     """
+    env = np.atleast_2d(np.asarray(envelope, dtype=float))
     target = 1.0 / spec.S_FFmin
-    lo, hi = CHD_BOUNDS
 
-    def excess(chd):
-        return _max_exposure(profile, chd, pressure, b, spec) - target
-    if excess(hi) > 0:
-        return math.inf
-    if excess(lo) <= 0:
-        return lo
-    return float(brentq(excess, lo, hi, xtol=1e-4))
+    def exposure(chd):
+        hv = profile(depth[None, :], case_depth=chd[:, None])
+        return np.max(env / (spec.K_tau_per * hv), axis=-1) + spec.calibration_factor
+    lo = np.full(env.shape[0], CHD_BOUNDS[0])
+    hi = np.full(env.shape[0], CHD_BOUNDS[1])
+    none, enough = exposure(hi) > target, exposure(lo) <= target
+    for _ in range(steps):
+        mid = np.sqrt(lo * hi)
+        over = exposure(mid) > target
+        lo, hi = np.where(over, mid, lo), np.where(over, hi, mid)
+    out = np.where(none, math.inf, np.where(enough, CHD_BOUNDS[0], hi))
+    return float(out[0]) if np.ndim(envelope) == 1 else out
 
 
 def _validity(inp, mats, p_max, rho, profiles) -> None:
@@ -192,16 +264,19 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
     p_max = np.max(cases[0], axis=-1)
     _validity(inp, mats, p_max, state.rho_rel, profiles)
     shape = p.shape[:-1]
+    cap = depth_bound(cases[0], cases[1], profiles)
+    y_req = depths(cap, spec.depths_per_decade)
+    envelope = stress_envelope(y_req, cases[0], cases[1])           # (cases, depths), the same for both gears
     gear_factors, curves, worst = [], {}, (-1.0, None)
     for name, prof in zip(inp.gears, profiles):
-        y = _grid(float(np.max(b)), prof.case_depth, spec.depth_points)
+        y = depths(max(cap, 3.0 * prof.case_depth), spec.depths_per_decade)
         hv = prof(y)
         a, tau = material_exposure(y, p, b, hv, spec.K_tau_per, spec.calibration_factor)
         flat = a.reshape(-1, a.shape[-2] * a.shape[-1])
         at = np.argmax(flat, axis=-1)
         a_max = flat[np.arange(flat.shape[0]), at]
         cp, depth = np.unravel_index(at, a.shape[-2:])
-        req = np.array([required_case_depth(prof, pc, bc, spec) for pc, bc in zip(*cases)])
+        req = required_case_depth(prof, y_req, envelope, spec)
         k = int(np.argmax(a_max))
         if a_max[k] > worst[0]:
             worst = (float(a_max[k]), k)

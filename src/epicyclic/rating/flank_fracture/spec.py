@@ -83,8 +83,8 @@ class FlankFractureSpec:
         Minimum of S_FF = 1 / A_FF,max (agreed; the exposure 1 is the limit).
     points : int, default 25
         Contact points along the path.
-    depth_points : int, default 241
-        Depths evaluated below each point.
+    depths_per_decade : int, default 115
+        Depths evaluated per decade of depth (every 2 %) below each point, from 1 µm.
 
     References
     ----------
@@ -99,7 +99,7 @@ class FlankFractureSpec:
     calibration_factor: float = 0.0
     S_FFmin: float = 1.0
     points: int = 25
-    depth_points: int = 241
+    depths_per_decade: int = 115
 
     def __post_init__(self) -> None:
         for key in _PER_GEAR:
@@ -134,7 +134,7 @@ class FlankFractureSpec:
         object.__setattr__(self, "calibration_factor", _number(self.calibration_factor, "calibration_factor",
                                                                strict=False))
         object.__setattr__(self, "S_FFmin", _number(self.S_FFmin, "S_FFmin"))
-        for key, low in (("points", 3), ("depth_points", 20)):
+        for key, low in (("points", 3), ("depths_per_decade", 20)):
             value = getattr(self, key)
             if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= 2000:
                 raise RatingError(f"rating.flank_fracture.{key} must be a whole number {low} ... 2000, got {value!r}.")
@@ -174,5 +174,5 @@ class FlankFractureSpec:
         out = {k: plain(getattr(self, k)) for k in (*_PER_GEAR, "hardness_profile")}
         out.update({"shear_strength_factor": self.shear_strength_factor, "K_tau_per": self.K_tau_per,
                     "calibration_factor": self.calibration_factor,
-                    "S_FFmin": self.S_FFmin, "points": self.points, "depth_points": self.depth_points})
+                    "S_FFmin": self.S_FFmin, "points": self.points, "depths_per_decade": self.depths_per_decade})
         return out
