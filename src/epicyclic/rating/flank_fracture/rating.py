@@ -106,7 +106,7 @@ def depths(deepest: float, per_decade: int) -> np.ndarray:
     ----------
     Johnson 1985, §4.6.
     """
-    n = int(math.ceil(per_decade * math.log10(max(deepest, 1e-3) / 1e-3)))
+    n = math.ceil(per_decade * math.log10(max(deepest, 1e-3) / 1e-3))
     return np.concatenate([[0.0], 1e-3 * 10.0 ** (np.arange(n + 1) / per_decade)])
 
 
