@@ -292,3 +292,15 @@ def test_the_table_travels_through_rexs_and_toml(tmp_path):
         convert(EXAMPLE, out)
         back = load_train_file(out).rating.flank_fracture
         assert back == original and back.shear_strength_factor is None      # the default stays a default
+
+
+def test_a_gear_without_case_depth_is_not_rated_and_says_so():
+    mode = rated(800.0, case_depth={"pinion": 0.8}).mode("flank_fracture")     # e.g. a nitrided wheel
+    assert dict(mode.gear_factors[1]) == {} and mode.value == mode.gear_factors[0]["S_FF"].value
+    assert any("wheel not rated" in n for n in mode.notes)
+    rows = [line for line in mode.table().splitlines() if line.startswith("safety against")]
+    assert len(rows) == 1 and rows[0].split()[-4] == f"{mode.value:.4f}".rstrip("0")
+    data = json.loads(json.dumps(mode.to_dict(), allow_nan=False))
+    assert data["gears"]["wheel"] == {} and data["gears"]["pinion"]["S_FF"]["value"] == pytest.approx(mode.value)
+    with pytest.raises(RatingError, match="no case_depth or hardness_profile for pair pinion or wheel"):
+        rated(800.0, case_depth={"ring": 0.8})

@@ -171,7 +171,8 @@ def mode_rows(mode: ModeRating) -> list[list[str]]:
     rows = [[f.name, s, f.unit, cell(s, f.value), "", f.clause] for s, f in mode.factors.items()]
     if mode.gear_factors is not None:
         g1, g2 = mode.gear_factors
-        for s, f in g1.items():
-            other = g2.get(s)
-            rows.append([f.name, s, f.unit, cell(s, f.value), cell(s, other.value) if other else "", f.clause])
+        for s in [*g1, *(k for k in g2 if k not in g1)]:     # a gear not rated has no factors
+            f = g1.get(s) or g2[s]
+            rows.append([f.name, s, f.unit, cell(s, g1[s].value) if s in g1 else "",
+                         cell(s, g2[s].value) if s in g2 else "", f.clause])
     return rows

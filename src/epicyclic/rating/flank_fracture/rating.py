@@ -203,8 +203,8 @@ def required_case_depth(profile: HardnessProfile, depth, envelope, spec: FlankFr
 def _validity(inp, mats, p_max, rho, profiles) -> None:
     where = f"{inp.element} {inp.mesh.name}"
     clause = f"{TS}, clause 1"
-    for name, mat in zip(inp.gears, mats):
-        if mat.treatment != "Eh":
+    for name, mat, prof in zip(inp.gears, mats, profiles):
+        if prof is not None and mat.treatment != "Eh":
             warn_validity(f"{where}: {name} ({mat.name}, {mat.treatment}) is not case-carburised; the method is "
                           "written for case-carburised gears (rated with the same formulas)", clause)
     lo, hi = float(np.min(p_max)), float(np.max(p_max))
@@ -214,7 +214,7 @@ def _validity(inp, mats, p_max, rho, profiles) -> None:
         warn_validity(f"{where}: rho_red {float(np.min(rho)):.3g} ... {float(np.max(rho)):.3g} mm outside "
                       "5 ... 150 mm", clause)
     for name, prof in zip(inp.gears, profiles):
-        if not 0.3 <= prof.case_depth <= 4.5:
+        if prof is not None and not 0.3 <= prof.case_depth <= 4.5:
             warn_validity(f"{where}: {name} CHD {prof.case_depth:g} mm outside 0.3 ... 4.5 mm", clause)
 
 
@@ -251,6 +251,11 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
                           "core_hardness or hardness_profile).")
     mats = inp.static["materials"]
     profiles = [spec.profile_of(inp.element, name) for name in inp.gears]
+    if all(prof is None for prof in profiles):
+        g1, g2 = inp.gears
+        raise RatingError(f"rating.flank_fracture: no case_depth or hardness_profile for {inp.element} {g1} or "
+                          f"{g2}; give them for all gears or per gear (e.g. case_depth = {{ {g1} = 1.0 }}), or "
+                          "leave the table out.")
     e_r = reduced_modulus(mats[0].E, mats[0].poisson, mats[1].E, mats[1].poisson)
     path = contact_path(inp.mesh, inp.face_width, accuracy_grade=inp.spec.accuracy_grade)
     gammas = path.gammas(spec.points)
@@ -264,11 +269,14 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
     p_max = np.max(cases[0], axis=-1)
     _validity(inp, mats, p_max, state.rho_rel, profiles)
     shape = p.shape[:-1]
-    cap = depth_bound(cases[0], cases[1], profiles)
+    cap = depth_bound(cases[0], cases[1], [prof for prof in profiles if prof is not None])
     y_req = depths(cap, spec.depths_per_decade)
     envelope = stress_envelope(y_req, cases[0], cases[1])           # (cases, depths), the same for both gears
-    gear_factors, curves, worst = [], {}, (-1.0, None)
+    gear_factors, curves = [], {}
     for name, prof in zip(inp.gears, profiles):
+        if prof is None:
+            gear_factors.append({})
+            continue
         y = depths(max(cap, 3.0 * prof.case_depth), spec.depths_per_decade)
         hv = prof(y)
         a, tau = material_exposure(y, p, b, hv, spec.K_tau_per, spec.calibration_factor)
@@ -278,8 +286,6 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
         cp, depth = np.unravel_index(at, a.shape[-2:])
         req = required_case_depth(prof, y_req, envelope, spec)
         k = int(np.argmax(a_max))
-        if a_max[k] > worst[0]:
-            worst = (float(a_max[k]), k)
         curves[name] = {"y": y, "HV": hv, "tau_per": spec.K_tau_per * hv,
                         "tau_eff": tau.reshape(-1, *a.shape[-2:])[k, cp[k]],
                         "A_FF": a.reshape(-1, *a.shape[-2:])[k, cp[k]]}
@@ -325,11 +331,14 @@ def rate_flank_fracture(inp, rating, torque, speed, spec: FlankFractureSpec | No
         notes.append(f"flank fracture: K_tau,per = {spec.K_tau_per:.3f} N/mm^2 per HV assumed (not the value of "
                      "ISO/TS 6336-4); give shear_strength_factor")
     for name, prof in zip(inp.gears, profiles):
-        if prof.points is None:
+        if prof is None:
+            notes.append(f"flank fracture: {name} not rated (no case_depth or hardness_profile given for it)")
+        elif prof.points is None:
             notes.append(f"flank fracture: hardness profile of {name} estimated from HV_s, HV_c and CHD (this "
                          "package's curve); give hardness_profile where measured")
-    inf_gears = [n for n, g in zip(inp.gears, gear_factors) if not np.all(np.isfinite(g["CHD_req"].value))]
-    low_gears = [n for n, g in zip(inp.gears, gear_factors) if np.any(np.asarray(g["CHD_req"].value) <= CHD_BOUNDS[0])]
+    req = {n: np.asarray(g["CHD_req"].value) for n, g in zip(inp.gears, gear_factors) if g}
+    inf_gears = [n for n, r in req.items() if not np.all(np.isfinite(r))]
+    low_gears = [n for n, r in req.items() if np.any(r <= CHD_BOUNDS[0])]
     if low_gears:
         notes.append(f"flank fracture: CHD_req = {CHD_BOUNDS[0]:g} mm for {', '.join(low_gears)} means "
                      f"{CHD_BOUNDS[0]:g} mm or less (the lower end of the search)")

@@ -145,20 +145,25 @@ class FlankFractureSpec:
         return self.shear_strength_factor if self.shear_strength_factor is not None else \
             DEFAULT_SHEAR_STRENGTH_FACTOR
 
-    def profile_of(self, element: str, gear: str) -> HardnessProfile:
+    def profile_of(self, element: str, gear: str) -> HardnessProfile | None:
         """The :class:`HardnessProfile` of ``gear`` of ``element`` (``"P:ring"``, ``"ring"``, ``"all"``).
+
+        None where neither a case depth nor a measured profile is given for the gear (it is not
+        rated, e.g. a through-hardened or nitrided ring).
 
         Raises
         ------
         RatingError
-            A value is missing for the gear (the message names the key and a typical value).
+            A case depth without a surface or core hardness (the message names the key and a
+            typical value).
         """
         measured = _lookup(self.hardness_profile, element, gear)
         if measured is not None:
             return measured
         values = {key: _lookup(getattr(self, key), element, gear) for key in _PER_GEAR}
-        typical = {"case_depth": "1.0 (mm; about 0.15-0.2 m_n for case-carburised gears)",
-                   "surface_hardness": "700 (HV, 60 HRC)", "core_hardness": "400 (HV)"}
+        if values["case_depth"] is None:
+            return None
+        typical = {"surface_hardness": "700 (HV, 60 HRC)", "core_hardness": "400 (HV)"}
         for key, value in values.items():
             if value is None:
                 raise RatingError(f"rating.flank_fracture.{key} is missing for {element} {gear}: give it for all "
