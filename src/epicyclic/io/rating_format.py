@@ -32,6 +32,8 @@
     [rating.lubricant]
     viscosity_40 = 35.0                   # mm²/s (or in the top-level [lubricant])
     viscosity_100 = 7.0
+    [rating.flank_fracture]               # tooth flank fracture: io/flank_fracture_format.py
+    case_depth = 1.0
     [rating.micropitting]                 # ISO/TS 6336-22 (see failure_modes_format)
     oil_temperature = 70.0
     load_stage = 9
@@ -65,8 +67,8 @@ __all__ = ["RATING_KEYS", "read_rating", "side_rating"]
 RATING_KEYS = {"standard", "application_factor", "life", "S_Hmin", "S_Fmin", "accuracy_grade", "flank_roughness",
                "root_roughness", "material", "quality", "K_Hbeta", "K_v", "shaft_deflection", "load_sharing",
                "tool_tip_radius", "cutter", "long_life", "pitting_permitted", "tip_relief", "lubricant", "materials",
-               "rim_thickness", "micropitting", "scuffing", "tool", "ignored", "notes", "accuracy_standard", "K_Fbeta",
-               "K_Halpha", "K_Falpha", "f_pb", "f_falpha", "f_Hbeta"}
+               "rim_thickness", "micropitting", "scuffing", "flank_fracture", "tool", "ignored", "notes",
+               "accuracy_standard", "K_Fbeta", "K_Halpha", "K_Falpha", "f_pb", "f_falpha", "f_Hbeta"}
 _NUMBERS = ("life", "S_Hmin", "S_Fmin", "shaft_deflection", "tool_tip_radius", "tip_relief")
 #: Given per mesh (a table by mesh) or per gear (a table by gear), or one number for all.
 _TABLES = ("application_factor", "K_Hbeta", "K_v", "load_sharing", "K_Fbeta", "K_Halpha", "K_Falpha", "f_pb",
@@ -221,6 +223,10 @@ def read_rating(reader, table: Mapping[str, Any], lubricant: Mapping[str, Any] |
         from .scuffing_format import read_scuffing
 
         values["scuffing"] = read_scuffing(reader, table["scuffing"])
+    if "flank_fracture" in table:
+        from .flank_fracture_format import read_flank_fracture
+
+        values["flank_fracture"] = read_flank_fracture(reader, table["flank_fracture"])
     if "tool" in table:
         t_where = at_key(where, "tool")
         tools = reader.table(table["tool"], t_where)

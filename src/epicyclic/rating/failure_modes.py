@@ -8,7 +8,9 @@ per mode whose inputs the :class:`~epicyclic.rating.spec.RatingSpec` gives:
   (:func:`~epicyclic.rating.micropitting_rating.rate_micropitting`);
 * ``spec.scuffing`` → scuffing by the integral temperature (``scuffing_integral``, ISO/TS 6336-21) and
   the flash temperature method (``scuffing_flash``, ISO/TS 6336-20)
-  (:func:`~epicyclic.rating.scuffing.rating.scuffing_modes`).
+  (:func:`~epicyclic.rating.scuffing.rating.scuffing_modes`);
+* ``spec.flank_fracture`` → tooth flank fracture and the hardened layer, ISO/TS 6336-4:2019
+  simplified (:func:`~epicyclic.rating.flank_fracture.rating.rate_flank_fracture`).
 
 A mode without inputs is not rated (and not reported); a mode whose inputs are incomplete raises
 :class:`~epicyclic.rating.errors.RatingError` naming the key.  A mesh that does not turn in any of
@@ -20,7 +22,8 @@ and the note says in how many cases and how to rate them (by gear).
 
 References
 ----------
-ISO/TS 6336-22:2018 (micropitting); ISO/TS 6336-20:2017, ISO/TS 6336-21:2017 (scuffing).
+ISO/TS 6336-22:2018 (micropitting); ISO/TS 6336-20:2017, ISO/TS 6336-21:2017 (scuffing);
+ISO/TS 6336-4:2019 (tooth flank fracture).
 """
 
 from __future__ import annotations
@@ -93,4 +96,8 @@ def failure_modes(inp, rating, torque, speed) -> tuple:
         from .scuffing.rating import scuffing_modes
 
         out.extend(scuffing_modes(inp, rating))
+    if getattr(inp.spec, "flank_fracture", None) is not None:
+        from .flank_fracture.rating import rate_flank_fracture
+
+        out.append(rate_flank_fracture(inp, rating, torque, speed))
     return tuple(out)

@@ -187,5 +187,11 @@ def mode_rows(mode: ModeRating) -> list[list[str]]:
     rows = [r for s, f in mode.factors.items() for r in row(s, f)]
     if mode.gear_factors is not None:
         g1, g2 = mode.gear_factors
-        rows += [r for s, f in g1.items() for r in row(s, f, g2.get(s))]
+        for s in [*g1, *(k for k in g2 if k not in g1)]:  # a gear not rated has no factors
+            if s in g1:
+                rows += row(s, g1[s], g2.get(s))
+                continue
+            for line in row(s, g2[s]):  # only the second gear's: its value in the second column
+                line[3], line[4] = "", line[3]
+                rows.append(line)
     return rows

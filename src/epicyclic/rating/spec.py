@@ -27,6 +27,7 @@ tip_relief              running-in C_ay             C_a for K_v, µm (without on
 rim_thickness           none (solid gears)          s_R per gear for Y_B, mm
 micropitting            none (not rated)            :class:`~.micropitting.MicropittingSpec`
 scuffing                none (not rated)            :class:`~epicyclic.rating.scuffing.ScuffingSpec`
+flank_fracture          none (not rated)            :class:`~epicyclic.rating.flank_fracture.FlankFractureSpec`
 tool                    none (ISO's closed form)    the tool per gear: the tooth form it generates
 ======================  ==========================  =============================================
 
@@ -165,6 +166,8 @@ class RatingSpec:
         Rate micropitting (ISO/TS 6336-22 Method B) with these inputs.
     scuffing : ScuffingSpec, optional
         Inputs of the scuffing rating (``[rating.scuffing]``); without, scuffing is not rated.
+    flank_fracture : FlankFractureSpec, optional
+        Inputs of the tooth flank fracture rating (``[rating.flank_fracture]``); without, not rated.
     tools : mapping gear → RackTool or PinionCutter, optional
         The tool that cuts each gear (keys as for ``material``): Y_F, Y_S from the root fillet it
         generates (:mod:`~epicyclic.rating.generated_form`).  Gears without one: ISO's closed form
@@ -208,6 +211,7 @@ class RatingSpec:
     rim_thickness: Mapping[str, float] | None = None
     micropitting: MicropittingSpec | None = None
     scuffing: Any = None
+    flank_fracture: Any = None
     tools: Mapping[str, RackTool | PinionCutter] | None = None
     ignored: tuple[str, ...] = field(default=(), compare=False)
     K_Fbeta: Any = None
@@ -266,6 +270,9 @@ class RatingSpec:
         if self.scuffing is not None and not (hasattr(self.scuffing, "clauses") and hasattr(self.scuffing, "to_dict")):
             raise RatingError(f"rating.scuffing must be an epicyclic.rating.scuffing.ScuffingSpec, got "
                               f"{type(self.scuffing).__name__}.")
+        if self.flank_fracture is not None and not hasattr(self.flank_fracture, "profile_of"):
+            raise RatingError(f"rating.flank_fracture must be an epicyclic.rating.flank_fracture.FlankFractureSpec, "
+                              f"got {type(self.flank_fracture).__name__}.")
         if self.tools is not None:
             for key, tool in dict(self.tools).items():
                 if not isinstance(tool, (RackTool, PinionCutter)):
@@ -516,5 +523,6 @@ class RatingSpec:
                 "rim_thickness": dict(self.rim_thickness) if self.rim_thickness else None,
                 "micropitting": self.micropitting.to_dict() if self.micropitting else None,
                 "scuffing": self.scuffing.to_dict() if self.scuffing is not None else None,
+                "flank_fracture": self.flank_fracture.to_dict() if self.flank_fracture is not None else None,
                 "tool": {k: v.to_dict() for k, v in self.tools.items()} if self.tools else None,
                 "ignored": list(self.ignored)}
