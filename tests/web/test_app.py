@@ -63,7 +63,7 @@ def test_every_bundled_example_opens(client, examples, key):
     answer = client.post("/example", data={"example": key})
     assert answer.status_code == 200, answer.text[:500]
     example = examples[key]
-    train_file = loads_train_file(example.text)
+    train_file = loads_train_file(example.train_text())
     assert f'value="{example.file_name}"' in answer.text  # the source shown and sent back
     for shaft in train_file.train.moving_shafts:
         assert f'data-shaft="{shaft}"' in answer.text  # one form row per shaft
@@ -71,7 +71,7 @@ def test_every_bundled_example_opens(client, examples, key):
     solution = figure_subject(train_file).solution
     expected = "— (self-locking)" if solution.self_locking else fmt(solution.efficiency, 4)
     assert kpi(answer.text, "efficiency") == expected
-    assert textarea(answer.text) == example.text  # opening never changes the text
+    assert textarea(answer.text) == example.train_text()  # opening never changes the text
     if train_file.operating_point is None:
         assert "at the default operating point" in answer.text
 

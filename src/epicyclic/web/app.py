@@ -124,7 +124,7 @@ class Limits:
 
 
 def _reply(reply: Reply) -> Response:
-    headers = {"Cache-Control": "no-store"}
+    headers = {"Cache-Control": "no-store", **dict(reply.headers)}
     if reply.filename:
         headers["Content-Disposition"] = f'attachment; filename="{reply.filename}"'
     return Response(reply.body, reply.status, headers=headers, media_type=reply.media_type)
@@ -200,8 +200,12 @@ def create_app(limits: Limits | None = None) -> Starlette:
         if key not in examples:
             return _reply(failure(f"no bundled example {key!r}; choose one from the list.", 404))
         example = examples[key]
+        if example.rexs:  # a REXS model opens as `epicyclic convert` writes it (converted in the worker)
+            return await work(request, open_file, example.rexs, example.file_name, state.units, state.lang,
+                              limits.browser_charts, state.rows, state.gear, key)
         return await work(request, open_text, example.text, example.file_name, state.units, state.lang,
-                          state.rows, state.gear, limits.browser_charts, ahead=replace(state, source=example.file_name))
+                          state.rows, state.gear, limits.browser_charts, key,
+                          ahead=replace(state, source=example.file_name))
 
     async def upload(request: Request) -> Response:
         try:
@@ -266,7 +270,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
         app.state.cache = FigureCache(limits.picture_cache, ahead_kinds(limits.browser_charts))
         if limits.draw_examples and limits.picture_cache:
             ordered = sorted(examples.values(), key=lambda e: e.key != DEFAULT_EXAMPLE)
-            states = [PageState(e.text, e.file_name) for e in ordered]  # as the page opens them
+            states = [PageState(e.text, e.file_name) for e in ordered if not e.rexs]  # as the page opens them
             app.state.cache.draw_states_ahead("examples", states, app.state.jobs, figure, limits.solve_timeout)
         try:
             yield

@@ -32,7 +32,8 @@ class Reply:
     """An answer for the browser: body, HTTP status, media type and, for downloads, a file name.
 
     ``next_texts`` are the texts the page will most likely show next (the other gears of a transmission,
-    nearest first), whose pictures the server may draw ahead while it is idle (:mod:`epicyclic.web.cache`).
+    nearest first), whose pictures the server may draw ahead while it is idle (:mod:`epicyclic.web.cache`);
+    ``headers`` are further response headers (``HX-Retarget``: an answer that goes elsewhere than asked).
     """
 
     body: str | bytes
@@ -40,6 +41,7 @@ class Reply:
     media_type: str = HTML
     filename: str | None = None
     next_texts: tuple[str, ...] = ()
+    headers: tuple[tuple[str, str], ...] = ()
 
 
 class Verbatim(str):

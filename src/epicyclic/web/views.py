@@ -261,22 +261,35 @@ def _next_texts(text: str, form: dict[str, Any], results: dict[str, Any]) -> tup
     return write_operating_points(text, form["rows"], order)
 
 
+#: Where the answer to a file that cannot be read at all goes: above the results, so that the file that
+#: is open stays with its editor, form and tabs (htmx response headers).
+_BESIDE = (("HX-Retarget", "#results"), ("HX-Reswap", "afterbegin"))
+
+
 @_guard
-def open_file(data: bytes, source: str, units: str = "file", lang: str = "en", charts: bool = True) -> Reply:
+def open_file(data: bytes, source: str, units: str = "file", lang: str = "en", charts: bool = True,
+              rows: tuple = (), gear: str = "", example: str = "") -> Reply:
     """:func:`open_text` of an uploaded file, read as the command line reads one (size, NUL bytes, UTF-8).
 
     A REXS file (XML, JSON or zip, by content) opens as the commented TOML that ``epicyclic convert`` writes.
+    A file that gives no text at all (a malformed REXS file, bytes that are no UTF-8) is refused with its
+    message above the results, and the file that was open stays (its editor, form and tabs).
     """
     from ..io.source import decode_source, sniff
 
-    if sniff(data[:4096]) is not None:
-        from ..exchange.convert import toml_text
-        from ..exchange.reading import loads_rexs_document
-        from ..io.toml_format import read_document
+    try:
+        if sniff(data[:4096]) is not None:
+            from ..exchange.convert import toml_text
+            from ..exchange.reading import loads_rexs_document
+            from ..io.toml_format import read_document
 
-        return open_text(toml_text(read_document(loads_rexs_document(data, source))), source, units, lang,
-                         charts=charts)
-    return open_text(decode_source(data, source), source, units, lang, charts=charts)
+            text = toml_text(read_document(loads_rexs_document(data, source)))
+        else:
+            text = decode_source(data, source)
+    except EpicyclicError as exc:
+        message = f"{exc} The file was not opened; the page still shows the file that was open."
+        return Reply(render("problem.html", problem=Problem(message), text=None, oob=False), 422, headers=_BESIDE)
+    return open_text(text, source, units, lang, rows, gear, charts=charts, example=example)
 
 
 def _line_ending(text: str) -> str:
@@ -297,12 +310,13 @@ def _restored(text: str, source: str, rows: tuple, gear: str) -> str:
 
 @_guard
 def open_text(text: str, source: str, units: str = "file", lang: str = "en", rows: tuple = (),
-              gear: str = "", charts: bool = True) -> Reply:
+              gear: str = "", charts: bool = True, example: str = "") -> Reply:
     """The whole workspace (editor, operating-point form, results) for a newly opened text.
 
     ``rows`` and ``gear`` (from a shared link or a reload: the URL holds them) are written into the
     text's ``[operating_point]`` as the form would write them; ``charts``: the browser draws the charts
-    (:mod:`epicyclic.web.charts`).
+    (:mod:`epicyclic.web.charts`); ``example``: the key of the bundled example opened (empty for a file
+    of one's own, whatever its name), which the page's address names.
     """
     eol = _line_ending(text)
     text = text.replace("\r\n", "\n")
@@ -313,11 +327,11 @@ def open_text(text: str, source: str, units: str = "file", lang: str = "en", row
         train_file = _load(text, source)
     except _Bad as bad:
         return Reply(render("workspace.html", text=Verbatim(text), source=source, rows=(), gear_names=(), gear="",
-                            file_units=Units(), problem=bad.problem, results=None, eol=eol), 422)
+                            file_units=Units(), problem=bad.problem, results=None, eol=eol, example=example), 422)
     results = _results(train_file, state, charts)
     form = _form(train_file, text)
     return Reply(render("workspace.html", text=Verbatim(text), source=source, problem=None, results=results,
-                        eol=eol, **form), _status(results), next_texts=_next_texts(text, form, results))
+                        eol=eol, example=example, **form), _status(results), next_texts=_next_texts(text, form, results))
 
 
 @_guard

@@ -43,18 +43,12 @@
     return rows;
   }
 
-  function exampleOf(source) {
-    var select = byId("example"), found = "";
-    if (!select) { return ""; }
-    Array.prototype.forEach.call(select.options, function (option) {
-      if (option.value && option.value + ".toml" === source) { found = option.value; }
-    });
-    return found;
-  }
+  // the bundled example that is open (the server says so; a file of one's own named like an example is none)
+  function openedExample() { var e = byId("opened-example"); return e ? e.value : ""; }
 
   function remember() {
     if (!editor()) { return; }
-    var params = new URLSearchParams(), source = sourceName(), example = exampleOf(source);
+    var params = new URLSearchParams(), source = sourceName(), example = openedExample();
     if (example) { params.set("example", example); } else if (source) { params.set("file", source); }
     var gear = byId("gear");
     if (gear && gear.value) { params.set("gear", gear.value); }
@@ -121,7 +115,7 @@
   // a newly opened workspace: remember its text; bring back edits kept for it
   function opened() {
     pristine = editor() ? editor().value : null;
-    if (pristine !== null && !exampleOf(sourceName())) {  // a file of one's own: kept to open it again on reload
+    if (pristine !== null && !openedExample()) {  // a file of one's own: kept to open it again on reload
       try {
         localStorage.setItem(draftKey("open:" + sourceName()), JSON.stringify(
           { text: pristine, eol: eol(), saved: new Date().toISOString() }));
