@@ -89,6 +89,9 @@ class Limits:
         Bytes each worker's address space may grow after its start (``RLIMIT_AS``; 507 past it).
     body_timeout : float, default 30
         Seconds a request body may send nothing before it is refused (408).
+    request_deadline : float, default 20
+        Seconds from a request's start until its headers are complete, and again until its body is (408): a
+        request trickling in a byte at a time is cut off (:mod:`epicyclic.web.deadline`, ``BodyLimit``).
     picture_cache : int, default 64 MiB
         Bytes of pictures kept in the server process (:mod:`epicyclic.web.cache`; 0: none kept).
     draw_examples : bool, default False
@@ -115,6 +118,7 @@ class Limits:
     max_client_jobs: int = 16
     worker_memory: int | None = 2 << 30
     body_timeout: float = 30.0
+    request_deadline: float = 20.0
     picture_cache: int = 64 << 20
     draw_examples: bool = False
     allowed_hosts: tuple[str, ...] = LOOPBACK_HOSTS
@@ -297,7 +301,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
         Middleware(SecurityHeaders),
         Middleware(TrustedHostMiddleware, allowed_hosts=list(limits.allowed_hosts)),
         Middleware(SameOrigin),
-        Middleware(BodyLimit, limit=limits.max_body, timeout=limits.body_timeout),
+        Middleware(BodyLimit, limit=limits.max_body, timeout=limits.body_timeout, deadline=limits.request_deadline),
     ]
     app = Starlette(routes=routes, middleware=middleware, lifespan=lifespan)
     app.state.limits = limits
