@@ -93,7 +93,7 @@ def test_circulating_power_per_loop(client, examples, page_form):
     rows = [("in", "drive", "1", "torque", "1"), ("out", "load", "", "torque", "")]
     answer = client.post("/apply/form", data=page_form(text, *rows, gear="3"))
     assert answer.status_code == 200
-    circulation = loads_train_file(textarea(answer.text)).solve().circulation
+    circulation = figure_subject(loads_train_file(textarea(answer.text)), "3").solution.circulation
     assert circulation.loops and circulation.ratio == pytest.approx(figure_subject(
         loads_train_file(text), "3").solution.circulation.ratio)
     assert kpi(answer.text, "circulating") == f"{fmt(circulation.ratio, 4)} × input"

@@ -54,7 +54,7 @@ from .render import Reply, render
 from .state import FormError, PageState, clean_text, restored_state
 from .synthesis_routes import Searches, synthesis_routes
 from .synthesis_tool import PAGE_ARCHITECTURES, PAGE_SECONDS
-from .views import apply, download, figure, open_file, open_text, save_figure, tool, tool_fields
+from .views import apply, download, figure, open_file, open_text, save_figure, shown_gear, tool, tool_fields
 
 __all__ = ["Limits", "create_app", "LOOPBACK_HOSTS", "UNIT_LABELS"]
 
@@ -177,8 +177,9 @@ def create_app(limits: Limits | None = None) -> Starlette:
         """``function(*args)`` in a worker; with ``ahead`` (the state shown), the pictures of the gears the
         page shows next are drawn ahead while the server is idle."""
         reply = await run(request, function, *args, timeout=timeout)
-        if ahead is not None and reply.status == 200 and reply.next_texts:
-            app.state.cache.draw_ahead(client_of(request), ahead, reply.next_texts, app.state.jobs, figure,
+        if ahead is not None and reply.status == 200 and reply.next_gears:
+            ahead = replace(ahead, text=reply.next_text or ahead.text)
+            app.state.cache.draw_ahead(client_of(request), ahead, reply.next_gears, app.state.jobs, figure,
                                        limits.solve_timeout)
         return _reply(reply)
 
@@ -188,9 +189,14 @@ def create_app(limits: Limits | None = None) -> Starlette:
         query = request.query_params
         chosen = query.get("example", DEFAULT_EXAMPLE)
         restore = restored_state(query)
+        missing = ""
+        if query.get("file") and not query.get("example"):  # a file of one's own, kept (or not) in the browser:
+            # its operating point and gear belong to it, never to the example shown if the browser lacks it
+            restore.update(restore_rows=(), restore_gear="")
+            missing = clean_text(query.get("file", "")[:200], "file", 200)
         body = render("page.html", examples=[(e.key, e.title) for e in examples.values()],
                       initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__,
-                      unit_choices=UNIT_LABELS, **restore)
+                      unit_choices=UNIT_LABELS, missing_file=missing, **restore)
         return HTMLResponse(body, headers={"Cache-Control": "no-store"})
 
     async def open_example(request: Request) -> Response:
@@ -209,7 +215,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
                               limits.browser_charts, state.rows, state.gear, key)
         return await work(request, open_text, example.text, example.file_name, state.units, state.lang,
                           state.rows, state.gear, limits.browser_charts, key,
-                          ahead=replace(state, source=example.file_name))
+                          ahead=replace(state, text=example.text, source=example.file_name))
 
     async def upload(request: Request) -> Response:
         try:
@@ -274,7 +280,8 @@ def create_app(limits: Limits | None = None) -> Starlette:
         app.state.cache = FigureCache(limits.picture_cache, ahead_kinds(limits.browser_charts))
         if limits.draw_examples and limits.picture_cache:
             ordered = sorted(examples.values(), key=lambda e: e.key != DEFAULT_EXAMPLE)
-            states = [PageState(e.text, e.file_name) for e in ordered if not e.rexs]  # as the page opens them
+            states = [PageState(e.text, e.file_name, gear=shown_gear(e.text, e.file_name))  # as the page opens them
+                      for e in ordered if not e.rexs]
             app.state.cache.draw_states_ahead("examples", states, app.state.jobs, figure, limits.solve_timeout)
         try:
             yield
