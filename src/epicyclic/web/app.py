@@ -48,7 +48,7 @@ from ..limits import MAX_FILE_BYTES
 from .cache import FigureCache, figure_key
 from .charts import ahead_kinds
 from .examples import DEFAULT_EXAMPLE, bundled_examples
-from .guards import BodyLimit, BodyTooLarge, BodyTooSlow, SameOrigin, SecurityHeaders
+from .guards import BodyLimit, BodyTooLarge, BodyTooSlow, PageStatus, SameOrigin, SecurityHeaders
 from .jobs import Jobs, failure
 from .render import Reply, render
 from .state import FormError, PageState, clean_text, restored_state
@@ -306,6 +306,7 @@ def create_app(limits: Limits | None = None) -> Starlette:
     routes[-1:-1] = synthesis_routes(searches, limits, form_of, client_of, run)
     middleware = [
         Middleware(SecurityHeaders),
+        Middleware(PageStatus),
         Middleware(TrustedHostMiddleware, allowed_hosts=list(limits.allowed_hosts)),
         Middleware(SameOrigin),
         Middleware(BodyLimit, limit=limits.max_body, timeout=limits.body_timeout, deadline=limits.request_deadline),

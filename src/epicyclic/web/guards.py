@@ -18,6 +18,10 @@
   let through: it could send any header it likes anyway.
 * :class:`SecurityHeaders` adds the Content-Security-Policy and the usual
   hardening headers to every answer.
+* :class:`PageStatus` sends the page's own requests (htmx: ``HX-Request``) the
+  message about bad input with status 200 and ``X-Epicyclic-Status: 422``: the
+  page shows it as an answer (the message at its line), and a browser logs every
+  4xx answer as a failed load in its console; any other client gets the 422.
 
 References
 ----------
@@ -35,7 +39,7 @@ from starlette.responses import HTMLResponse
 
 from .jobs import failure
 
-__all__ = ["BodyLimit", "SameOrigin", "SecurityHeaders", "CSP", "BodyTooLarge", "BodyTooSlow"]
+__all__ = ["BodyLimit", "SameOrigin", "SecurityHeaders", "PageStatus", "CSP", "BodyTooLarge", "BodyTooSlow"]
 
 CSP = ("default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; "
        "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
@@ -186,3 +190,23 @@ class SecurityHeaders:
             await send(message)
 
         await self.app(scope, receive, add_headers if scope["type"] == "http" else send)
+
+
+class PageStatus:
+    """ASGI middleware: a 422 (bad input, answered with its message) to a request of the page itself
+    (``HX-Request: true``) goes out as 200 with ``X-Epicyclic-Status: 422`` (see the module text)."""
+
+    def __init__(self, app: Any):
+        self.app = app
+
+    async def __call__(self, scope: dict, receive: Any, send: Any) -> None:
+        if scope["type"] != "http" or (b"hx-request", b"true") not in scope.get("headers", []):
+            return await self.app(scope, receive, send)
+
+        async def page_send(message: dict) -> None:
+            if message["type"] == "http.response.start" and message.get("status") == 422:
+                message = {**message, "status": 200,
+                           "headers": [*message.get("headers", []), (b"x-epicyclic-status", b"422")]}
+            await send(message)
+
+        await self.app(scope, receive, page_send)
