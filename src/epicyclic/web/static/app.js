@@ -401,8 +401,9 @@
       .catch(function (error) { status.textContent = what + ": " + error; });
   }
 
-  // ---- pictures at a readable size: the smallest text of a picture at least 11 px on the screen; a picture
-  // that needs more room than the panel has scrolls sideways (enlarge shows it at the window's width)
+  // ---- pictures at a readable size: the smallest text of a picture at least 11 px on the screen where the
+  // panel has room for it, and never wider than the panel (a wide picture, the lever diagram of a transmission
+  // or its power flow, is shown whole, its text smaller; enlarge shows it at the window's width)
   var SMALLEST_TEXT = 11;
   function smallestFont(svg) {
     var smallest = Infinity;
@@ -420,8 +421,9 @@
     if (!box || !box.width) { return; }
     var font = smallestFont(svg), room = body.clientWidth;
     var needed = isFinite(font) ? box.width * SMALLEST_TEXT / font : room;
-    // as wide as the panel (no wider than 1.6 times its own size), wider where its smallest text needs it
-    svg.style.width = Math.min(Math.max(Math.min(room, box.width * 1.6), needed), 1.5 * room) + "px";
+    // as wide as the panel (no wider than 1.6 times its own size), wider where its smallest text needs it, but
+    // within the panel: nothing of it is cut off at the panel's edge
+    svg.style.width = Math.min(Math.max(Math.min(room, box.width * 1.6), needed), room) + "px";
     svg.style.maxWidth = "none";
     svg.style.height = "auto";
   }
