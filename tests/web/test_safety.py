@@ -225,3 +225,26 @@ def test_the_examples_pictures_are_drawn_ahead_at_start(examples):
         hits = cache.hits
         answer = client.post("/figure/lever", data=form)
         assert answer.status_code == 200 and "<svg" in answer.text and cache.hits == hits + 1
+
+
+def test_a_refusal_for_memory_leaves_nothing_of_the_computation_behind():
+    """Issue 30: after a 507 the worker stayed at 1.8 GB until its next job (the exception's frames held the
+    computation's arrays) and the next large job got a false 507 at once. The answer that goes back holds no
+    frame of the computation, and the memory is given back before it goes."""
+    import numpy as np
+
+    from epicyclic.web.views import _guard
+
+    @_guard
+    def hog() -> None:
+        big = np.ones(2_000_000)  # noqa: F841 - held by the frame
+        raise MemoryError
+
+    with pytest.raises(MemoryError) as caught:
+        hog()
+    error = caught.value
+    assert error.__context__ is None and error.__cause__ is None
+    tb = error.__traceback__
+    while tb is not None:
+        assert "big" not in tb.tb_frame.f_locals, tb.tb_frame.f_code.co_name
+        tb = tb.tb_next

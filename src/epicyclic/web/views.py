@@ -245,6 +245,7 @@ def _guard(action):
     """Turn bad input into 422 with its message and anything else into 500 (logged), like the CLI."""
     @functools.wraps(action)  # keeps the qualified name: the worker pool pickles the function by name
     def wrapper(*args: Any, **kwargs: Any) -> Reply:
+        out_of_memory = False
         try:
             return action(*args, **kwargs)
         except _Bad as bad:
@@ -252,14 +253,34 @@ def _guard(action):
         except EpicyclicError as exc:
             return Reply(render("problem.html", problem=Problem(str(exc)), text=None, oob=True), 422)
         except MemoryError:
-            raise  # the worker's memory limit: the pool says so (epicyclic.web.jobs)
+            out_of_memory = True  # raised again below, once this exception and its frames are gone
         except Exception as exc:  # a bug: say so, keep serving
             traceback.print_exc(file=sys.stderr)
             message = (f"internal error: {type(exc).__name__}: {exc}. This is a bug in epicyclic; please report "
                        "it with the train description.")
             return Reply(render("problem.html", problem=Problem(message), text=None, oob=True), 500)
+        if out_of_memory:  # the worker's memory limit: the pool says so (epicyclic.web.jobs)
+            _release_memory()
+            raise MemoryError("the computation needed more memory than the worker may use")
+        raise AssertionError("unreachable")  # pragma: no cover
 
     return wrapper
+
+
+def _release_memory() -> None:
+    """Give back what a computation that ran out of memory left: its arrays (the exception's frames held them,
+    now gone), Python's cycles, and the C allocator's free pages (glibc ``malloc_trim``), so that the worker's
+    next job starts from its usual size, not at the limit (no false 507 after a refusal)."""
+    import ctypes
+    import ctypes.util
+    import gc
+
+    gc.collect()
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+        libc.malloc_trim(0)
+    except (OSError, AttributeError):  # pragma: no cover - not glibc: Python's collection is all there is
+        pass
 
 
 def _form(train_file: TrainFile, text: str, state: PageState | None = None) -> dict[str, Any]:
