@@ -53,3 +53,15 @@ def test_an_unreadable_upload_keeps_the_open_file(client):
     assert "<textarea" not in answer.text and 'class="columns"' not in answer.text
     nul = client.post("/upload", files={"file": ("nul.toml", b"title = 'a'\x00", "text/plain")})
     assert nul.status_code == 422 and nul.headers["hx-retarget"] == "#results"
+
+
+def test_a_file_address_keeps_its_operating_point_to_itself(client):
+    """Issue 30: ``?file=`` with the file's operating point, opened where the browser does not keep the file:
+    the example shown instead must not get the file's shafts (``unknown shaft 'Sonnenwelle [34]'``); the page
+    names the file it lacks."""
+    page = client.get('/?file=FVA.rexs&gear=1&op=[["Sonnenwelle [34]","drive","1500","torque","1"]]').text
+    restore = page.split('id="restore"', 1)[1].split("</div>", 1)[0]
+    assert "Sonnenwelle" not in restore and 'name="gear" value=""' in restore
+    assert '<b class="name">FVA.rexs</b>' in page
+    shared = client.get('/?example=simpson_c4_3speed&gear=2&op=[["in","drive","2500 1/min","torque","100 N*m"]]')
+    assert 'value="2500 1/min"' in shared.text  # an example's own address keeps its operating point
