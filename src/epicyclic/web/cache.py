@@ -3,13 +3,13 @@
 Drawing is the page's slow part (matplotlib: 0.1–1 s a picture, the ZF 8HP
 speed plan with four sets about 1 s), the tables take milliseconds.  A
 picture is a pure function of what it is drawn from: the text, its name for
-messages, the units shown and the picture's own settings (the set shown, the
+messages, the units and the gear shown and the picture's own settings (the set shown, the
 animation's size); :func:`figure_key` is that, hashed.  The server process
 keeps the answers in :class:`FigureCache` (least recently used first out,
 bounded in bytes), so a picture asked for again (back to a gear, the same
 example opened in another tab) is answered without a worker.
 
-After an answer for a transmission the worker names the texts the page shows
+After an answer for a transmission the worker names the gears the page shows
 after a click on another gear (:attr:`epicyclic.web.render.Reply.next_gears`,
 nearest gear first); :meth:`FigureCache.draw_ahead` draws their pictures one
 at a time, only while no request of a client waits and on all workers but one
