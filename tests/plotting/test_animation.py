@@ -197,3 +197,28 @@ def test_a_set_given_by_i0_says_its_planet_speed_is_schematic():
 def test_a_set_with_its_own_teeth_has_no_schematic_planet(simple):
     anim = planetary_animation(simple)
     assert not anim.schematic_planets and "schematic" not in " ".join(anim.caption())
+
+
+def test_the_gif_draws_its_still_parts_once_and_keeps_one_small_palette(tmp_path, monkeypatch):
+    """Issue 30: the GIF took 4-8 s and 1.5 MB for one simple set: every frame drew the whole figure twice (the
+    caption's text was most of the time) and PIL gave each frame its own palette. Now the still parts are drawn
+    once (matplotlib blitting), the moving ones per frame, every frame in the first frame's palette."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image
+
+    from epicyclic.io import load_train_file
+    from epicyclic.plotting.animation import planetary_animation
+
+    draws = []
+    original = FigureCanvasAgg.draw
+    monkeypatch.setattr(FigureCanvasAgg, "draw", lambda self, *a, **k: draws.append(1) or original(self, *a, **k))
+    anim = planetary_animation(load_train_file(EXAMPLES / "simple_set_ring_held_sun_drives.toml").solve(), frames=12)
+    path = anim.gif(tmp_path / "set.gif")
+    assert len(draws) == 1  # the whole figure once, not twice per frame
+    with Image.open(path) as image:
+        assert image.n_frames == 12 and image.info["duration"] == 10 * round(100 / anim.fps)
+        colours = len(image.getpalette()) // 3
+        assert colours <= 64
+        first = image.convert("RGB")
+        image.seek(6)
+        assert image.convert("RGB").tobytes() != first.tobytes()  # it moves

@@ -63,7 +63,7 @@ def test_every_bundled_example_opens(client, examples, key):
     answer = client.post("/example", data={"example": key})
     assert answer.status_code == 200, answer.text[:500]
     example = examples[key]
-    train_file = loads_train_file(example.text)
+    train_file = loads_train_file(example.train_text())
     assert f'value="{example.file_name}"' in answer.text  # the source shown and sent back
     for shaft in train_file.train.moving_shafts:
         assert f'data-shaft="{shaft}"' in answer.text  # one form row per shaft
@@ -71,7 +71,7 @@ def test_every_bundled_example_opens(client, examples, key):
     solution = figure_subject(train_file).solution
     expected = "— (self-locking)" if solution.self_locking else fmt(solution.efficiency, 4)
     assert kpi(answer.text, "efficiency") == expected
-    assert textarea(answer.text) == example.text  # opening never changes the text
+    assert textarea(answer.text) == example.train_text()  # opening never changes the text
     if train_file.operating_point is None:
         assert "at the default operating point" in answer.text
 
@@ -116,7 +116,8 @@ def test_changing_a_speed_in_the_form_changes_efficiency_and_rewrites_the_text(c
 
 
 def test_switching_gears(client, examples, page_form):
-    """Ford C4 (Simpson): published ratios 2.46, 1.46, 1.00, reverse 2.18 (rounded to two digits)."""
+    """Ford C4 (Simpson): published ratios 2.46, 1.46, 1.00, reverse 2.18 (rounded to two digits); the text gets
+    the form's operating point but never the gear shown."""
     opened = client.post("/example", data={"example": "simpson_c4_3speed"})
     text = textarea(opened.text)
     shafts = [("in", "drive", "1000 1/min", "torque", "100 N*m"), ("out", "load", "", "torque", "")]
@@ -125,8 +126,26 @@ def test_switching_gears(client, examples, page_form):
         assert answer.status_code == 200, answer.text[:400]
         assert float(kpi(answer.text, "ratio")) == pytest.approx(ratio, abs=0.01)
         assert f'<tr data-gear="{gear}" class="current"' in answer.text
-        assert f'gear = "{gear}"' in textarea(answer.text)
+        assert "gear =" not in textarea(answer.text)  # the gear shown is the page's view, not an edit (issue 30)
         assert 'id="gear-state"' in answer.text and f"gear {gear} (" in answer.text
+
+
+def test_a_click_on_a_gear_leaves_the_text_as_it_is(client, examples, page_form):
+    """Issue 30: choosing a gear (the form unchanged otherwise) solves in it without writing ``gear = "5"`` or
+    the default operating point into the text, so the file is not edited (no leave warning)."""
+    from epicyclic.web.state import default_operating_rows
+
+    text = examples["zf_8hp70_8speed"].text
+    spec = loads_train_file(text).transmission
+    rows = [(r.shaft, r.role, r.speed, r.moment, r.value) for r in
+            default_operating_rows(loads_train_file(text).train.moving_shafts, spec.input, spec.output)]
+    answer = client.post("/apply/form", data=page_form(text, *rows, gear="5"))
+    assert answer.status_code == 200, answer.text[:400]
+    assert '<tr data-gear="5" class="current"' in answer.text
+    assert '<textarea id="toml"' not in answer.text  # the text is not swapped: it is as it was
+    expected = figure_subject(loads_train_file(text), "5").solution.ratio
+    assert float(kpi(answer.text, "ratio")) == pytest.approx(expected, abs=1e-3)
+    assert '<option value="5" selected>' in client.post("/apply/text", data=page_form(text, gear="5")).text
 
 
 def test_units_and_language(client, examples, page_form):
@@ -248,3 +267,14 @@ def test_geometry_from_the_file_when_it_has_one():
     assert "<td>105.0000</td>" in from_file and "<td>60.0000</td>" in from_form
     without = run_tool("fit", {"tool_fit_set": "P", "tool_fit_module": "2"}, Context(train_file))
     assert "<td>60.0000</td>" in without
+
+
+def test_the_forms_placeholders_and_hints_follow_the_units_shown(client, examples, page_form):
+    """Issue 30: with the page in rpm, lbf·ft, hp the form says so (a plain number stays the file's unit, as the
+    loader reads it, and the hint says that too)."""
+    answer = client.post("/apply/text", data=page_form(examples["simpson_c4_3speed"].text, units="rpm-hp")).text
+    form = answer[answer.index('id="opform"'):]
+    assert 'placeholder="e.g. 1500 rpm"' in form and 'placeholder="e.g. 100 lbf*ft"' in form
+    assert "<code>3 hp</code>" in form and "a plain number is in the file's unit (1/min" in form
+    plain = client.post("/apply/text", data=page_form(examples["simpson_c4_3speed"].text)).text
+    assert 'placeholder="1/min"' in plain[plain.index('id="opform"'):]

@@ -114,7 +114,7 @@ def test_a_gear_change_sends_that_gears_charts(client, examples, page_form):
     assert (first["chart"]["panels"][0]["highlight"], second["chart"]["panels"][0]["highlight"]) == (0, 1)
     out = [b["actual"] for b in second["torque"]["panels"][0]["bars"] if b["label"] == ["out"]][0]
     train_file = loads_train_file(textarea(client.post("/apply/form", data=page_form(text, *rows, gear="2")).text))
-    assert out == pytest.approx(figure_subject(train_file).solution.shafts["out"].torque)  # gear 2's own torque
+    assert out == pytest.approx(figure_subject(train_file, "2").solution.shafts["out"].torque)  # gear 2's own
     assert -out / 100 == pytest.approx(1.46, rel=0.03)  # about the ratio 1.46 times the input torque (η < 1)
     assert "gear 2: " in second["torque"]["title"]
 

@@ -202,3 +202,13 @@ def test_time_limit_stops_the_work_and_the_server_keeps_serving(page_form):
         assert slow.status_code == 504 and "longer than 0.2 s" in slow.text
         after = client.post("/download/toml", data=page_form(text))  # a new worker answers
         assert after.status_code == 200 and after.text == text
+
+
+def test_bad_input_to_the_page_itself_is_an_answer_not_a_failed_load(client, page_form):
+    """Issue 30: a browser logs every 4xx answer as an error in its console; the page's own requests (htmx)
+    get the message with 200 and X-Epicyclic-Status: 422, any other client the 422."""
+    data = page_form("[[planetary]\\n")
+    plain = client.post("/apply/text", data=data)
+    page = client.post("/apply/text", data=data, headers={"HX-Request": "true"})
+    assert plain.status_code == 422 and "x-epicyclic-status" not in plain.headers
+    assert page.status_code == 200 and page.headers["x-epicyclic-status"] == "422" and page.text == plain.text

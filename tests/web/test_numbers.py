@@ -13,7 +13,7 @@ from epicyclic.cli.main import app
 from epicyclic.io import loads_train_file
 from epicyclic.web.examples import bundled_examples
 
-GEARBOXES = sorted(k for k, e in bundled_examples().items() if loads_train_file(e.text).transmission is not None)
+GEARBOXES = sorted(k for k, e in bundled_examples().items() if loads_train_file(e.train_text()).transmission is not None)
 
 
 def page_gear_rows(answer: str) -> list[list[str]]:

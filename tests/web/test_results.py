@@ -93,7 +93,7 @@ def test_circulating_power_per_loop(client, examples, page_form):
     rows = [("in", "drive", "1", "torque", "1"), ("out", "load", "", "torque", "")]
     answer = client.post("/apply/form", data=page_form(text, *rows, gear="3"))
     assert answer.status_code == 200
-    circulation = loads_train_file(textarea(answer.text)).solve().circulation
+    circulation = figure_subject(loads_train_file(textarea(answer.text)), "3").solution.circulation
     assert circulation.loops and circulation.ratio == pytest.approx(figure_subject(
         loads_train_file(text), "3").solution.circulation.ratio)
     assert kpi(answer.text, "circulating") == f"{fmt(circulation.ratio, 4)} × input"
@@ -197,3 +197,12 @@ output = "out"
     assert answer.status_code == 422
     assert "t.toml: [transmission], key &#39;schedule.2&#39;" in answer.text
     assert marked_line(answer.text) == text.splitlines().index('"2" = []') + 1
+
+
+def test_the_default_point_notice_is_said_once_in_the_results_tab(client):
+    """Issue 30: the notice of the default operating point was above the tabs and so repeated in every tab;
+    it is in the Results tab (the pictures say it in their titles, the gear table its input level)."""
+    answer = client.post("/example", data={"example": "zf_8hp70_8speed"}).text
+    assert answer.count('id="default-point"') == 1
+    results = answer.split('data-panel="results"', 1)[1].split('data-panel="gears"', 1)[0]
+    assert 'id="default-point"' in results

@@ -196,3 +196,24 @@ def test_a_search_stopped_before_any_task_finished_does_not_say_the_targets_are_
     assert "The search was cancelled; 0 candidate(s) of the 0 finished task(s) are kept." in text
     assert "No task had finished when the search stopped" in text
     assert "No transmission meets the targets" not in text
+
+
+def test_the_time_left_is_never_past_the_pages_limit(tmp_path):
+    """Issue 30: a search the page stops at 60 s never says "about 7 min left": it says when the page stops it
+    and how long the whole space would take (and the command for it)."""
+    import time as clock
+
+    from epicyclic.web.synthesis_routes import Search, progress_state
+
+    search = Search("c", tmp_path, seconds=60.0)
+    state = progress_state({"done": 1, "total": 50, "found": 0, "started": clock.time() - 10}, search)
+    assert state["eta"] in ("50 s", "49 s", "51 s"), state["eta"]  # 10 s per task × 49 left = 490 s: cut at 60 s
+    assert "stops the search at 60 s" in state["stops"] and "epicyclic synthesize" in state["stops"], state["stops"]
+    short = progress_state({"done": 5, "total": 6, "found": 0, "started": clock.time() - 10}, search)
+    assert short["stops"] == "" and short["eta"] == "2 s"
+
+
+def test_the_candidate_table_names_the_units_of_its_columns():
+    from epicyclic.synthesis.results import SynthesisResult
+
+    assert {"T elem max /T_in", "T elem sum /T_in", "P circ max /P_in"} <= set(SynthesisResult.HEADER)

@@ -309,6 +309,34 @@ def test_the_rating_panel_is_the_rate_command(client, page_form):
     path = EXAMPLES / "rating" / "simple_set.toml"
     page = body(client.post("/tool/rating", data=page_form(path.read_text(encoding="utf-8"))))
     assert page.startswith("<section class='rating'>") and "ISO 6336:2019" in page
-    assert page in command("rate", path, "-f", "html")
+    report = command("rate", path, "-f", "html")
+    cells = re.findall(r"<td[^>]*>([^<]*)</td>", report)
+    numbers = [c for c in cells if re.fullmatch(r"[\d.e+…\s-]+", c) and c.strip()]
+    assert numbers and re.findall(r"<td[^>]*>([^<]*)</td>", page).count(numbers[0]) >= 1
+    page_cells = set(re.findall(r"<td[^>]*>([^<]*)</td>", page))
+    assert set(numbers) <= page_cells  # the command's numbers, every one
+    assert report.count("class='below'") == page.count("class='below'")
     plain = client.post("/tool/rating", data=page_form(example("geometry_simple_set")[0]))
     assert "no [rating] table" in message(plain)
+
+
+def test_the_rating_table_is_typeset_for_the_page(client, page_form):
+    """Issue 30: words left-aligned, σ_H and N/mm² written as in ISO 6336-1:2019, clause 4 (not sigma_H and
+    N/mm^2), and the two wheels of a mesh named by their members, not "gear 1/2" (read as transmission gears)."""
+    path = EXAMPLES / "rating" / "simple_set.toml"
+    page = body(client.post("/tool/rating", data=page_form(path.read_text(encoding="utf-8"))))
+    assert "σ_H [N/mm²]" in page and "sigma_H" not in page and "N/mm^2" not in page
+    assert "gear 1" not in page and "gear 2" not in page
+    assert "<th>sun</th><th>planet</th>" in page and "<th>planet</th><th>ring</th>" in page
+    assert "<td class='text'>sun-planet</td>" in page and "<td class='text'>K_Hβ</td>" in page
+
+
+def test_the_load_capacity_form_says_plainly_that_a_file_has_no_rating_table(client, examples):
+    """Issue 30: on a file without [rating] the form says so at once (no Run button that fails), and on the
+    rating example it runs."""
+    answer = client.post("/example", data={"example": "zf_8hp70_8speed"})
+    missing = re.search(r'id="tool-rating-missing">([^<]*)<', answer.text)
+    assert missing and "has no [rating] table" in html.unescape(missing.group(1))
+    rated = client.post("/example", data={"example": "simple_set"})
+    assert rated.status_code == 200 and 'id="tool-rating-missing"' not in rated.text
+    assert 'hx-post="/tool/rating"' in rated.text

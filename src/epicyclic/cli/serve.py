@@ -90,4 +90,7 @@ def serve(
                     synthesis_architectures=synthesis_architectures, synthesis_seconds=synthesis_seconds)
     shown = f"[{host}]" if ":" in host else host
     typer.echo(f"epicyclic serve: open http://{shown}:{port}/ (Ctrl+C stops)")
-    uvicorn.run(create_app(limits), host=host, port=port, log_level="warning")
+    from ..web.deadline import deadline_protocol
+
+    uvicorn.run(create_app(limits), host=host, port=port, log_level="warning",
+                http=deadline_protocol(limits.request_deadline))

@@ -5,9 +5,12 @@ All (z_sun, z_planet, z_ring, N) within bounds, standard gears
 mode lies within a relative tolerance of the target and that pass every
 fitting condition of :mod:`epicyclic.geometry.fitting` (equal-spacing
 assembly, neighbour clearance, undercut, and optionally internal-gear
-interference).  Ranked by ratio error, then size (z_ring), then the
-hunting-tooth property (gcd(z_sun, z_planet) = gcd(z_planet, z_ring) = 1
-preferred), then z_sun and N.
+interference).  Distinct sets first (one set of each family: the counts
+divided by their common factor), then the repeats (scaled copies such as
+21/21/63 … 40/40/120, the same counts with other numbers of planets); within
+each by ratio error, then the hunting-tooth property (gcd(z_sun, z_planet) =
+gcd(z_planet, z_ring) = 1: every tooth meets every tooth of its mate), size
+(z_ring), z_sun and N.
 
 :func:`search_teeth_loops` is the straightforward reference: nested Python
 loops that build a :class:`~epicyclic.geometry.set_geometry.SetGeometry` for
@@ -19,7 +22,7 @@ References
 ----------
 Willis equation n_s − i0 n_r − (1 − i0) n_c = 0 with i0 = −z_r/z_s (Queitsch eqs. 4, 12);
 SDP/SI D785 eqs. (13-5), (13-7), (13-9); Drivetrain Hub, *Planetary Gears*
-(target ratio with ± deviation, candidate table).
+(target ratio with ± deviation, candidate table; hunting teeth: no common factor of a mesh's tooth counts).
 """
 
 from __future__ import annotations
@@ -175,8 +178,8 @@ class ToothSearch:
         Parameters
         ----------
         limit : int, default 20
-            Most rows shown (the candidates are ranked: smallest error first, then
-            smallest ring, hunting teeth, smallest sun, fewest planets).
+            Most rows shown (the candidates are ranked: distinct sets, then repeats;
+            each by smallest error, hunting teeth, smallest ring, sun, planets).
 
         Returns
         -------
@@ -286,7 +289,23 @@ def _interference_free(z1, z2, rack: BasicRack):
 
 
 def _rank(cands: list[Candidate]) -> tuple[Candidate, ...]:
-    return tuple(sorted(cands, key=lambda c: (round(c.error, 12), c.z_ring, not c.hunting, c.z_sun, c.planets)))
+    """Distinct sets first, then the repeats; each in order of ratio error, hunting teeth, size (z_ring), z_sun, N.
+
+    A set's family is its tooth counts divided by their common factor (21/21/63 and 40/40/120 are one family,
+    1/1/3 scaled); its repeats are the family's other members and the same counts with other numbers of
+    planets.  So a target that only scaled copies meet exactly (ratio 4: z_s = z_p) lists the smallest exact
+    set once and then the hunting sets near the target, before twenty copies of one.
+    """
+    ordered = sorted(cands, key=lambda c: (round(c.error, 12), not c.hunting, c.z_ring, c.z_sun, c.planets))
+    seen: set[tuple[int, int]] = set()
+    distinct: list[Candidate] = []
+    repeats: list[Candidate] = []
+    for c in ordered:
+        common = math.gcd(c.z_sun, c.z_planet)
+        family = (c.z_sun // common, c.z_planet // common)
+        (repeats if family in seen else distinct).append(c)
+        seen.add(family)
+    return tuple(distinct + repeats)
 
 
 def search_teeth(

@@ -28,6 +28,14 @@ from ..errors import ModelError
 from ..limits import MAX_MAP_POINTS, check_count
 from ..model.train import GearTrain
 from ..units import Units, to_core_array, unit_factor
+
+#: Grid points solved at once.  The batch solve's temporary arrays grow with its points (about 3.3 kB a point
+#: for the ZF 8HP with geometry and loss models, measured: 132 MB for 200 × 200), so a map is solved in blocks
+#: of torque rows of at most this many points and joined: the documented maximum of
+#: :data:`~epicyclic.limits.MAX_MAP_POINTS` (10^6) needs about 0.25 GB at a time instead of 3.3 GB, within a
+#: page worker's default 2 GiB (``epicyclic serve --worker-memory``).  The points are independent (one
+#: operating point each), so the blocks give the same numbers as one solve (tests/losses).
+MAP_BLOCK_POINTS = 1 << 16
 from .element import ElementLosses
 from .spin import ALL_SOURCES as SOURCES
 from .solve import solve_batch_with_losses
@@ -376,7 +384,6 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     n = _axis(speeds, "speeds", "speed")
     t = _axis(torques, "torques", "torque")
     check_count(n.size * t.size, "efficiency_map: speeds × torques", MAX_MAP_POINTS, "grid points")
-    speed_grid, torque_grid = np.meshgrid(n, t)
     models = dict(losses or {})
     if spin is None and file is not None:
         spin = file.spin
@@ -384,18 +391,37 @@ def efficiency_map(train, speeds: Sequence[float] | np.ndarray, torques: Sequenc
     ratio_sol = solve_batch_with_losses(base, {}, speeds={input: np.array([1000.0])}, torques={input: np.array([1.0])},
                                         drives=[input], loads=[output])
     ratio = float(1000.0 / ratio_sol.speeds[output][0])
-    if direction == "drive":
-        sol = solve_batch_with_losses(base, models, speeds={input: speed_grid}, torques={input: torque_grid},
-                                      drives=[input], loads=[output], **spin_kw)
-    else:
-        sol = solve_batch_with_losses(base, models, speeds={input: speed_grid},
-                                      torques={output: torque_grid * abs(ratio)}, drives=[output], loads=[input],
-                                      **spin_kw)
-    sources = {s: np.zeros(sol.shape) for s in SOURCES}
-    for parts in sol.loss_sources.values():
-        for source, value in parts.items():
-            sources[source] = sources.get(source, np.zeros(sol.shape)) + value
+
+    def solved(rows: np.ndarray) -> dict[str, Any]:
+        """The map's rows of the torques ``rows``: one batch solve (its temporaries: a few kB a point)."""
+        speed_grid, torque_grid = np.meshgrid(n, rows)
+        if direction == "drive":
+            sol = solve_batch_with_losses(base, models, speeds={input: speed_grid}, torques={input: torque_grid},
+                                          drives=[input], loads=[output], **spin_kw)
+        else:
+            sol = solve_batch_with_losses(base, models, speeds={input: speed_grid},
+                                          torques={output: torque_grid * abs(ratio)}, drives=[output],
+                                          loads=[input], **spin_kw)
+        sources = {s: np.zeros(sol.shape) for s in SOURCES}
+        for parts in sol.loss_sources.values():
+            for source, value in parts.items():
+                sources[source] = sources.get(source, np.zeros(sol.shape)) + value
+        oil = sol.oil_temperature
+        return {"efficiency": sol.efficiency, "input_power": sol.input_power, "output_power": sol.output_power,
+                "loss": sol.loss, "self_locking": sol.self_locking, "oil": oil, "sources": sources}
+
+    step = max(1, MAP_BLOCK_POINTS // n.size)  # torque rows per block
+    blocks = [solved(t[k:k + step]) for k in range(0, t.size, step)]
+
+    def joined(name: str) -> np.ndarray:
+        return blocks[0][name] if len(blocks) == 1 else np.concatenate([b[name] for b in blocks], axis=0)
+
+    sources = {k: (blocks[0]["sources"][k] if len(blocks) == 1 else
+                   np.concatenate([b["sources"][k] for b in blocks], axis=0)) for k in blocks[0]["sources"]}
     sources = {k: v for k, v in sources.items() if np.any(v != 0) or k == "mesh"}
-    return EfficiencyMap(name, title_gear, direction, input, output, n, t, sol.efficiency, sol.input_power,
-                         sol.output_power, sol.loss, sources, sol.self_locking, ratio, units,
-                         sol.oil_temperature)
+    oil = blocks[0]["oil"]  # one temperature for the map (a given one), or one per point (thermal)
+    if oil is not None and len(blocks) > 1 and np.ndim(oil) > 0:
+        oil = np.concatenate([np.broadcast_to(b["oil"], b["loss"].shape) for b in blocks], axis=0)
+    return EfficiencyMap(name, title_gear, direction, input, output, n, t, joined("efficiency"),
+                         joined("input_power"), joined("output_power"), joined("loss"), sources,
+                         joined("self_locking"), ratio, units, oil)

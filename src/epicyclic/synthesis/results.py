@@ -122,8 +122,9 @@ class SynthesisResult:
         """The first ``spec.top`` candidates (what the table shows)."""
         return self.candidates[:self.spec.top]
 
-    HEADER = ("rank", "score", "Pareto", "ratios", "max err %", "η mean", "η min", "P circ max", "T elem max",
-              "T elem sum", "slip max", "n planet max", "ring ratio", "double shifts", "shafts",
+    HEADER = ("rank", "score", "Pareto", "ratios", "max err %", "η mean", "η min", "P circ max /P_in",
+              "T elem max /T_in", "T elem sum /T_in", "slip max /n_in", "n planet max /n_in", "ring ratio",
+              "double shifts", "shafts",
               "teeth (z_s/z_p/z_r ×N)", "architecture")
 
     def _rows(self) -> list[list[str]]:

@@ -48,13 +48,13 @@ from ..limits import MAX_FILE_BYTES
 from .cache import FigureCache, figure_key
 from .charts import ahead_kinds
 from .examples import DEFAULT_EXAMPLE, bundled_examples
-from .guards import BodyLimit, BodyTooLarge, BodyTooSlow, SameOrigin, SecurityHeaders
+from .guards import BodyLimit, BodyTooLarge, BodyTooSlow, PageStatus, SameOrigin, SecurityHeaders
 from .jobs import Jobs, failure
 from .render import Reply, render
 from .state import FormError, PageState, clean_text, restored_state
 from .synthesis_routes import Searches, synthesis_routes
 from .synthesis_tool import PAGE_ARCHITECTURES, PAGE_SECONDS
-from .views import apply, download, figure, open_file, open_text, save_figure, tool, tool_fields
+from .views import apply, download, figure, open_file, open_text, save_figure, shown_gear, tool, tool_fields
 
 __all__ = ["Limits", "create_app", "LOOPBACK_HOSTS", "UNIT_LABELS"]
 
@@ -89,6 +89,9 @@ class Limits:
         Bytes each worker's address space may grow after its start (``RLIMIT_AS``; 507 past it).
     body_timeout : float, default 30
         Seconds a request body may send nothing before it is refused (408).
+    request_deadline : float, default 20
+        Seconds from a request's start until its headers are complete, and again until its body is (408): a
+        request trickling in a byte at a time is cut off (:mod:`epicyclic.web.deadline`, ``BodyLimit``).
     picture_cache : int, default 64 MiB
         Bytes of pictures kept in the server process (:mod:`epicyclic.web.cache`; 0: none kept).
     draw_examples : bool, default False
@@ -115,6 +118,7 @@ class Limits:
     max_client_jobs: int = 16
     worker_memory: int | None = 2 << 30
     body_timeout: float = 30.0
+    request_deadline: float = 20.0
     picture_cache: int = 64 << 20
     draw_examples: bool = False
     allowed_hosts: tuple[str, ...] = LOOPBACK_HOSTS
@@ -124,7 +128,7 @@ class Limits:
 
 
 def _reply(reply: Reply) -> Response:
-    headers = {"Cache-Control": "no-store"}
+    headers = {"Cache-Control": "no-store", **dict(reply.headers)}
     if reply.filename:
         headers["Content-Disposition"] = f'attachment; filename="{reply.filename}"'
     return Response(reply.body, reply.status, headers=headers, media_type=reply.media_type)
@@ -173,8 +177,9 @@ def create_app(limits: Limits | None = None) -> Starlette:
         """``function(*args)`` in a worker; with ``ahead`` (the state shown), the pictures of the gears the
         page shows next are drawn ahead while the server is idle."""
         reply = await run(request, function, *args, timeout=timeout)
-        if ahead is not None and reply.status == 200 and reply.next_texts:
-            app.state.cache.draw_ahead(client_of(request), ahead, reply.next_texts, app.state.jobs, figure,
+        if ahead is not None and reply.status == 200 and reply.next_gears:
+            ahead = replace(ahead, text=reply.next_text or ahead.text)
+            app.state.cache.draw_ahead(client_of(request), ahead, reply.next_gears, app.state.jobs, figure,
                                        limits.solve_timeout)
         return _reply(reply)
 
@@ -184,9 +189,14 @@ def create_app(limits: Limits | None = None) -> Starlette:
         query = request.query_params
         chosen = query.get("example", DEFAULT_EXAMPLE)
         restore = restored_state(query)
+        missing = ""
+        if query.get("file") and not query.get("example"):  # a file of one's own, kept (or not) in the browser:
+            # its operating point and gear belong to it, never to the example shown if the browser lacks it
+            restore.update(restore_rows=(), restore_gear="")
+            missing = clean_text(query.get("file", "")[:200], "file", 200)
         body = render("page.html", examples=[(e.key, e.title) for e in examples.values()],
                       initial=chosen if chosen in examples else DEFAULT_EXAMPLE, version=__version__,
-                      unit_choices=UNIT_LABELS, **restore)
+                      unit_choices=UNIT_LABELS, missing_file=missing, **restore)
         return HTMLResponse(body, headers={"Cache-Control": "no-store"})
 
     async def open_example(request: Request) -> Response:
@@ -200,8 +210,12 @@ def create_app(limits: Limits | None = None) -> Starlette:
         if key not in examples:
             return _reply(failure(f"no bundled example {key!r}; choose one from the list.", 404))
         example = examples[key]
+        if example.rexs:  # a REXS model opens as `epicyclic convert` writes it (converted in the worker)
+            return await work(request, open_file, example.rexs, example.file_name, state.units, state.lang,
+                              limits.browser_charts, state.rows, state.gear, key)
         return await work(request, open_text, example.text, example.file_name, state.units, state.lang,
-                          state.rows, state.gear, limits.browser_charts, ahead=replace(state, source=example.file_name))
+                          state.rows, state.gear, limits.browser_charts, key,
+                          ahead=replace(state, text=example.text, source=example.file_name))
 
     async def upload(request: Request) -> Response:
         try:
@@ -266,7 +280,8 @@ def create_app(limits: Limits | None = None) -> Starlette:
         app.state.cache = FigureCache(limits.picture_cache, ahead_kinds(limits.browser_charts))
         if limits.draw_examples and limits.picture_cache:
             ordered = sorted(examples.values(), key=lambda e: e.key != DEFAULT_EXAMPLE)
-            states = [PageState(e.text, e.file_name) for e in ordered]  # as the page opens them
+            states = [PageState(e.text, e.file_name, gear=shown_gear(e.text, e.file_name))  # as the page opens them
+                      for e in ordered if not e.rexs]
             app.state.cache.draw_states_ahead("examples", states, app.state.jobs, figure, limits.solve_timeout)
         try:
             yield
@@ -291,9 +306,10 @@ def create_app(limits: Limits | None = None) -> Starlette:
     routes[-1:-1] = synthesis_routes(searches, limits, form_of, client_of, run)
     middleware = [
         Middleware(SecurityHeaders),
+        Middleware(PageStatus),
         Middleware(TrustedHostMiddleware, allowed_hosts=list(limits.allowed_hosts)),
         Middleware(SameOrigin),
-        Middleware(BodyLimit, limit=limits.max_body, timeout=limits.body_timeout),
+        Middleware(BodyLimit, limit=limits.max_body, timeout=limits.body_timeout, deadline=limits.request_deadline),
     ]
     app = Starlette(routes=routes, middleware=middleware, lifespan=lifespan)
     app.state.limits = limits

@@ -3,14 +3,14 @@
 Drawing is the page's slow part (matplotlib: 0.1–1 s a picture, the ZF 8HP
 speed plan with four sets about 1 s), the tables take milliseconds.  A
 picture is a pure function of what it is drawn from: the text, its name for
-messages, the units shown and the picture's own settings (the set shown, the
+messages, the units and the gear shown and the picture's own settings (the set shown, the
 animation's size); :func:`figure_key` is that, hashed.  The server process
 keeps the answers in :class:`FigureCache` (least recently used first out,
 bounded in bytes), so a picture asked for again (back to a gear, the same
 example opened in another tab) is answered without a worker.
 
-After an answer for a transmission the worker names the texts the page shows
-after a click on another gear (:attr:`epicyclic.web.render.Reply.next_texts`,
+After an answer for a transmission the worker names the gears the page shows
+after a click on another gear (:attr:`epicyclic.web.render.Reply.next_gears`,
 nearest gear first); :meth:`FigureCache.draw_ahead` draws their pictures one
 at a time, only while no request of a client waits and on all workers but one
 (a picture drawn ahead takes up to a second; the page's own requests that come
@@ -52,7 +52,7 @@ def figure_key(state: PageState, name: str) -> str | None:
     except EpicyclicError:
         return None
     shown = (settings.option, settings.size, settings.frames, settings.fps) if kind.animated else (settings.option,)
-    data = json.dumps([name, state.text, state.source, state.units, *shown], ensure_ascii=False)
+    data = json.dumps([name, state.text, state.source, state.units, state.gear, *shown], ensure_ascii=False)
     return hashlib.sha256(data.encode("utf-8", "surrogatepass")).hexdigest()
 
 
@@ -120,10 +120,10 @@ class FigureCache:
         self.put(key, reply)
         return reply
 
-    def draw_ahead(self, page: str, state: PageState, texts: Sequence[str], jobs: Any, figure: Callable,
+    def draw_ahead(self, page: str, state: PageState, gears: Sequence[str], jobs: Any, figure: Callable,
                    timeout: float) -> None:
-        """Draw the pictures of ``texts`` (as ``state`` with that text) while the server is idle."""
-        self.draw_states_ahead(page, [replace(state, text=text, rows=(), extra={}) for text in texts], jobs, figure,
+        """Draw the pictures of ``gears`` (as ``state`` in that gear) while the server is idle."""
+        self.draw_states_ahead(page, [replace(state, gear=gear, rows=(), extra={}) for gear in gears], jobs, figure,
                                timeout)
 
     def draw_states_ahead(self, page: str, states: Sequence[PageState], jobs: Any, figure: Callable,

@@ -1,9 +1,11 @@
 """ASGI middleware that guards the page: body size and time, same-origin POSTs, security headers.
 
 * :class:`BodyLimit` refuses request bodies over a size (413) and bodies that
-  stop arriving (408 after ``body_timeout`` seconds without a byte), so a
-  client that opens a request and never sends its body cannot hold a
-  connection and a form parser for ever.
+  stop arriving (408 after ``body_timeout`` seconds without a byte, or when
+  the whole body has not arrived ``request_deadline`` seconds after the
+  request's start), so a client that opens a request and never sends its
+  body, or sends it a byte every few seconds, cannot hold a connection and a
+  form parser for ever (the headers' deadline: :mod:`epicyclic.web.deadline`).
 * :class:`SameOrigin` refuses a POST that a web page of another origin makes
   the browser send (403): every POST of the page computes, so a page
   elsewhere must not make this server work (cross-site request forgery,
@@ -16,6 +18,10 @@
   let through: it could send any header it likes anyway.
 * :class:`SecurityHeaders` adds the Content-Security-Policy and the usual
   hardening headers to every answer.
+* :class:`PageStatus` sends the page's own requests (htmx: ``HX-Request``) the
+  message about bad input with status 200 and ``X-Epicyclic-Status: 422``: the
+  page shows it as an answer (the message at its line), and a browser logs every
+  4xx answer as a failed load in its console; any other client gets the 422.
 
 References
 ----------
@@ -33,7 +39,7 @@ from starlette.responses import HTMLResponse
 
 from .jobs import failure
 
-__all__ = ["BodyLimit", "SameOrigin", "SecurityHeaders", "CSP", "BodyTooLarge", "BodyTooSlow"]
+__all__ = ["BodyLimit", "SameOrigin", "SecurityHeaders", "PageStatus", "CSP", "BodyTooLarge", "BodyTooSlow"]
 
 CSP = ("default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; "
        "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
@@ -53,11 +59,12 @@ async def _answer(scope: dict, receive: Any, send: Any, message: str, status: in
 
 
 class BodyLimit:
-    """ASGI middleware: refuse request bodies over ``limit`` bytes with 413 (declared or streamed) and
-    bodies that send nothing for ``timeout`` seconds with 408."""
+    """ASGI middleware: refuse request bodies over ``limit`` bytes with 413 (declared or streamed), bodies
+    that send nothing for ``timeout`` seconds and bodies not complete ``deadline`` seconds after the request
+    came in (a body trickling in a byte at a time) with 408."""
 
-    def __init__(self, app: Any, limit: int, timeout: float = 30.0):
-        self.app, self.limit, self.timeout = app, limit, timeout
+    def __init__(self, app: Any, limit: int, timeout: float = 30.0, deadline: float = 60.0):
+        self.app, self.limit, self.timeout, self.deadline = app, limit, timeout, deadline
 
     async def __call__(self, scope: dict, receive: Any, send: Any) -> None:
         if scope["type"] != "http":
@@ -66,16 +73,20 @@ class BodyLimit:
         if declared is not None and (not declared.isdigit() or int(declared) > self.limit):
             return await self._too_large(scope, receive, send)
         seen = 0
-        started = False
+        started = late = False
         body_done = scope.get("method") in ("GET", "HEAD")
+        loop = asyncio.get_running_loop()
+        end = loop.time() + self.deadline
 
         async def counting_receive() -> dict:
-            nonlocal seen, body_done
+            nonlocal seen, body_done, late
             if body_done:  # after the body: wait for the client to leave (no time limit)
                 return await receive()
+            left = end - loop.time()
             try:
-                message = await asyncio.wait_for(receive(), self.timeout)
+                message = await asyncio.wait_for(receive(), max(0.0, min(self.timeout, left)))
             except asyncio.TimeoutError:
+                late = left <= self.timeout
                 raise BodyTooSlow from None
             seen += len(message.get("body", b""))
             if seen > self.limit:
@@ -97,8 +108,10 @@ class BodyLimit:
         except BodyTooSlow:
             if started:
                 raise
-            await _answer(scope, receive, send, f"the request's body did not arrive within {self.timeout:g} s "
-                          "(a stalled or very slow connection); the server closed it. Send the request again.", 408)
+            within = (f"{self.deadline:g} s of the request's start" if late else
+                      f"{self.timeout:g} s" + " (nothing arrived)")
+            await _answer(scope, receive, send, f"the request's body did not arrive within {within} (a stalled or "
+                          "very slow connection); the server closed it. Send the request again.", 408)
 
     async def _too_large(self, scope: dict, receive: Any, send: Any) -> None:
         await _answer(scope, receive, send,
@@ -177,3 +190,23 @@ class SecurityHeaders:
             await send(message)
 
         await self.app(scope, receive, add_headers if scope["type"] == "http" else send)
+
+
+class PageStatus:
+    """ASGI middleware: a 422 (bad input, answered with its message) to a request of the page itself
+    (``HX-Request: true``) goes out as 200 with ``X-Epicyclic-Status: 422`` (see the module text)."""
+
+    def __init__(self, app: Any):
+        self.app = app
+
+    async def __call__(self, scope: dict, receive: Any, send: Any) -> None:
+        if scope["type"] != "http" or (b"hx-request", b"true") not in scope.get("headers", []):
+            return await self.app(scope, receive, send)
+
+        async def page_send(message: dict) -> None:
+            if message["type"] == "http.response.start" and message.get("status") == 422:
+                message = {**message, "status": 200,
+                           "headers": [*message.get("headers", []), (b"x-epicyclic-status", b"422")]}
+            await send(message)
+
+        await self.app(scope, receive, page_send)

@@ -10,9 +10,14 @@ The work is bounded every way a client could make it unbounded:
 
 * the jobs waiting or running in all: past ``max_queue`` the page answers 503 at
   once instead of queuing without end;
-* the jobs of one client (its address and the page's client id): past
-  ``max_client_jobs`` it answers 429, so one page or script cannot fill the
-  queue for everyone;
+* the jobs of one client: past ``max_client_jobs`` it answers 429, so one page
+  or script cannot fill the queue for everyone.  A client is its network
+  address (the part of the ``client`` key before its first space), which it
+  cannot mint freely; the page's id (``X-Epicyclic-Client``, one per tab) is
+  the client's own choice and counts for nothing here;
+* the jobs wait in a fair queue (:class:`FairQueue`): a worker that becomes
+  free takes the next job of the next client in turn, so a client with many
+  jobs waiting does not make another wait for all of them;
 * a job whose client has gone (the browser closed the connection: a newer
   request replaced it, the tab was closed) is cancelled, its worker stopped
   and replaced, so no worker computes for nobody;
@@ -34,7 +39,71 @@ from typing import Any
 
 from .render import Reply, render
 
-__all__ = ["Jobs", "failure"]
+__all__ = ["Jobs", "FairQueue", "failure", "peer_of"]
+
+
+def peer_of(client: str) -> str:
+    """The part of a client key that the caps and the queue count by: its network address, the text before
+    the first space (``"127.0.0.1 <page id>"`` → ``"127.0.0.1"``)."""
+    return client.split(" ", 1)[0]
+
+
+class FairQueue:
+    """Turns at ``slots`` workers, taken round robin over the clients waiting (each client's jobs in order).
+
+    A job ``await acquire(client)`` before it runs and calls :meth:`release` after; a waiter that is
+    cancelled (its client left, its time ran out) leaves the queue.
+
+    Examples
+    --------
+    >>> import asyncio
+    >>> async def order():
+    ...     queue, done = FairQueue(1), []
+    ...     async def job(client, k):
+    ...         await queue.acquire(client)
+    ...         done.append(f"{client}{k}")
+    ...         await asyncio.sleep(0)
+    ...         queue.release()
+    ...     await asyncio.gather(*(job("a", k) for k in range(3)), job("b", 0))
+    ...     return done
+    >>> asyncio.run(order())
+    ['a0', 'a1', 'b0', 'a2']
+    """
+
+    def __init__(self, slots: int):
+        self.slots, self.busy = max(1, int(slots)), 0
+        self.waiting: dict[str, list[asyncio.Future]] = {}  # insertion order: the round robin's turn
+
+    async def acquire(self, client: str) -> None:
+        if self.busy < self.slots and not self.waiting:
+            self.busy += 1
+            return
+        turn = asyncio.get_running_loop().create_future()
+        self.waiting.setdefault(client, []).append(turn)
+        try:
+            await turn
+        except asyncio.CancelledError:
+            if turn.done() and not turn.cancelled():  # granted while being cancelled: pass it on
+                self.release()
+            else:
+                queue = self.waiting.get(client, [])
+                if turn in queue:
+                    queue.remove(turn)
+                if not queue:
+                    self.waiting.pop(client, None)
+            raise
+
+    def release(self) -> None:
+        self.busy -= 1
+        while self.waiting and self.busy < self.slots:
+            client = next(iter(self.waiting))
+            queue = self.waiting.pop(client)
+            turn = queue.pop(0)
+            if queue:
+                self.waiting[client] = queue  # to the end of the turn
+            if not turn.done():
+                self.busy += 1
+                turn.set_result(None)
 
 
 def _address_space() -> int | None:
@@ -114,7 +183,7 @@ class Jobs:
     queue_wait : float
         Seconds a job may wait for a worker on top of its own time limit (then 504).
     max_client_jobs : int
-        Jobs of one client waiting or running at most; more are refused with 429.
+        Jobs of one client (its address, :func:`peer_of`) waiting or running at most; more are refused with 429.
     worker_memory : int or None
         Bytes each worker's address space may grow after its start (None: no limit).
     """
@@ -132,6 +201,7 @@ class Jobs:
         self.worker_memory = worker_memory
         self.pending = 0
         self.per_client: dict[str, int] = {}
+        self.queue = FairQueue(self.workers)
         #: Jobs started and jobs cancelled because their client left (for the tests and the benchmarks).
         self.started = self.cancelled = 0
 
@@ -145,21 +215,33 @@ class Jobs:
         """
         if self.pending >= self.max_queue:
             return failure(f"the server is busy ({self.pending} requests waiting); try again in a moment.", 503)
-        if self.per_client.get(client, 0) >= self.max_client_jobs:
-            return failure(f"too many requests at once from this page ({self.max_client_jobs} are waiting or "
+        peer = peer_of(client)
+        if self.per_client.get(peer, 0) >= self.max_client_jobs:
+            return failure(f"too many requests at once from this computer ({self.max_client_jobs} are waiting or "
                            "running); wait for them to finish.", 429)
         self.pending += 1
         self.started += 1
-        self.per_client[client] = self.per_client.get(client, 0) + 1
+        self.per_client[peer] = self.per_client.get(peer, 0) + 1
         watch = asyncio.ensure_future(gone()) if gone is not None else None
-        future = work = None
+        work = None
+
+        async def turn() -> Reply:
+            await self.queue.acquire(peer)
+            try:
+                future = self.pool.schedule(function, args=args, timeout=timeout)
+                try:
+                    return await asyncio.wrap_future(future)
+                except asyncio.CancelledError:
+                    future.cancel()  # pebble stops a running job's worker and starts a new one
+                    raise
+            finally:
+                self.queue.release()
+
         try:
-            future = self.pool.schedule(function, args=args, timeout=timeout)
-            work = asyncio.ensure_future(asyncio.wait_for(asyncio.wrap_future(future), timeout + self.queue_wait))
             # pebble stops the work after `timeout`; the outer limit also bounds the wait in the queue
+            work = asyncio.ensure_future(asyncio.wait_for(turn(), timeout + self.queue_wait))
             done, _ = await asyncio.wait({work} | ({watch} if watch else set()), return_when=asyncio.FIRST_COMPLETED)
             if work not in done:
-                future.cancel()  # pebble stops a running job's worker and starts a new one
                 work.cancel()
                 self.cancelled += 1
                 return failure("the client left; the computation was cancelled.", 499)
@@ -186,9 +268,9 @@ class Jobs:
                 elif not task.cancelled():
                     task.exception()  # retrieved: a pool stopped under a job is no unhandled error
             self.pending -= 1
-            self.per_client[client] -= 1
-            if not self.per_client[client]:
-                del self.per_client[client]
+            self.per_client[peer] -= 1
+            if not self.per_client[peer]:
+                del self.per_client[peer]
 
     def close(self) -> None:
         """Stop the workers (running jobs are abandoned)."""

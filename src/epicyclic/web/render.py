@@ -31,15 +31,19 @@ HTML = "text/html; charset=utf-8"
 class Reply:
     """An answer for the browser: body, HTTP status, media type and, for downloads, a file name.
 
-    ``next_texts`` are the texts the page will most likely show next (the other gears of a transmission,
-    nearest first), whose pictures the server may draw ahead while it is idle (:mod:`epicyclic.web.cache`).
+    ``next_gears`` are the gears the page will most likely show next (the other gears of a transmission,
+    nearest first), whose pictures the server may draw ahead while it is idle (:mod:`epicyclic.web.cache`),
+    of the text ``next_text`` (the text shown: the form's operating point written in);
+    ``headers`` are further response headers (``HX-Retarget``: an answer that goes elsewhere than asked).
     """
 
     body: str | bytes
     status: int = 200
     media_type: str = HTML
     filename: str | None = None
-    next_texts: tuple[str, ...] = ()
+    next_gears: tuple[str, ...] = ()
+    next_text: str = ""
+    headers: tuple[tuple[str, str], ...] = ()
 
 
 class Verbatim(str):

@@ -60,6 +60,8 @@ class Search:
     folder: Path
     started: float = field(default_factory=time.time)
     cancel: asyncio.Event = field(default_factory=asyncio.Event)
+    #: Seconds after which the page stops the search (``Limits.synthesis_seconds``; None: no limit).
+    seconds: float | None = None
 
 
 class Searches:
@@ -119,13 +121,20 @@ def progress_state(state: dict[str, Any] | None, search: Search) -> dict[str, An
     search : Search
     """
     if not state:
-        return {"started": False, "done": 0, "total": 0, "found": 0, "percent": 0, "eta": "", "elapsed": "",
+        return {"started": False, "done": 0, "total": 0, "found": 0, "percent": 0, "eta": "", "stops": "", "elapsed": "",
                 "announce": "", "cancelling": search.cancel.is_set()}
     done, total = int(state.get("done", 0)), int(state.get("total", 0))
     elapsed = max(time.time() - float(state.get("started", time.time())), 0.0)
-    eta = _eta(elapsed / done * (total - done)) if 0 < done < total else ""
+    left = elapsed / done * (total - done) if 0 < done < total else None
+    eta = _eta(left) if left is not None else ""
+    stops = ""
+    if left is not None and search.seconds is not None and elapsed + left > search.seconds:
+        # the page stops the search before it could finish: say when, and how long the whole space would take
+        eta = _eta(max(search.seconds - elapsed, 0.0))
+        stops = (f"the page stops the search at {_eta(search.seconds)} (the whole space needs about "
+                 f"{_eta(elapsed + left)}: run epicyclic synthesize for it)")
     return {"started": True, "done": done, "total": total, "found": int(state.get("found", 0)),
-            "percent": 100 * done // max(total, 1), "eta": eta, "elapsed": _eta(elapsed),
+            "percent": 100 * done // max(total, 1), "eta": eta, "stops": stops, "elapsed": _eta(elapsed),
             "announce": str(state.get("announce", "")), "cancelling": search.cancel.is_set()}
 
 
@@ -181,7 +190,7 @@ def synthesis_routes(searches: Searches, limits: Any, form_of: Callable[..., Any
                                  "line."), 503)
         folder = searches.root / search_id
         folder.mkdir()
-        search = searches.running[search_id] = Search(client, folder)
+        search = searches.running[search_id] = Search(client, folder, seconds=seconds)
         searches.started += 1
 
         async def gone() -> None:  # the client left, or pressed Cancel

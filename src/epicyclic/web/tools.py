@@ -84,6 +84,8 @@ class Tool:
     #: The tab of the page it is in: ``"geometry"`` (geometry and rating) or ``"tools"``.  A new form (the
     #: load-capacity rating, the shift map) is one more :data:`TOOLS` entry with its panel.
     panel: str = "tools"
+    #: Why the form cannot run on a file (shown in place of its Run button), or None where it can.
+    unavailable: Callable[[Context], str | None] | None = None
 
 
 @dataclass(frozen=True)
@@ -293,22 +295,32 @@ def _forces(context: Context, v: Mapping[str, Any]) -> str:
     return geometry_html(results, heading="Forces", show_geometry=False)
 
 
-def _rating(context: Context, v: Mapping[str, Any]) -> str:
-    """The ISO 6336 rating of every mesh at the page's operating point and gear, as ``epicyclic rate -f html``."""
-    from ..rating.report import html_section
-    from ..rating.train import rate_solution
-
+def _rating_missing(context: Context) -> str | None:
+    """What the file lacks for the load-capacity rating, in words (None: it can be rated)."""
     f = context.train_file
     if f.rating is None:
-        raise ToolError(f"{f.source}: the file has no [rating] table; add one with material, flank_roughness, "
-                        "root_roughness and the lubricant's viscosity_40 (see docs/rating.md).")
+        return (f"{f.source}: the file has no [rating] table, so there is no load capacity to compute; add one "
+                "with material, flank_roughness, root_roughness and the lubricant's viscosity_40 (docs/rating.md), "
+                "or open the example \"Simple planetary set, 3 planets, rated by ISO 6336:2019\".")
     if not f.geometry:
-        raise ToolError(f"{f.source}: no element has a geometry table; the rating needs module, face width and "
-                        "tooth counts (see docs/file-format.md).")
+        return (f"{f.source}: no element has a geometry table; the rating needs module, face width and tooth "
+                "counts (see docs/file-format.md).")
     if context.solution is None:
-        raise ToolError(f"{f.source}: [operating_point]: the rating needs the torques of an operating point; give "
-                        "one in the form.")
-    return html_section(rate_solution(context.solution, f.geometry, f.rating, gear=context.gear))
+        return (f"{f.source}: [operating_point]: the rating needs the torques of an operating point; give one in "
+                "the form.")
+    return None
+
+
+def _rating(context: Context, v: Mapping[str, Any]) -> str:
+    """The ISO 6336 rating of every mesh at the page's operating point and gear, as ``epicyclic rate -f html``."""
+    from ..rating.train import rate_solution
+    from .rating_view import rating_html
+
+    missing = _rating_missing(context)
+    if missing:
+        raise ToolError(missing)
+    f = context.train_file
+    return rating_html(rate_solution(context.solution, f.geometry, f.rating, gear=context.gear))
 
 
 # ---------------------------------------------------------------------- search
@@ -452,6 +464,7 @@ TOOLS: dict[str, Tool] = {t.name: t for t in (
         help="Tangential, radial and axial tooth forces, planet bearing and pin loads (× K_γ) at the operating "
              "point, as epicyclic forces."),
     Tool("rating", "Load capacity (ISO 6336)", (), _rating, needs_solution=True, panel="geometry",
+         unavailable=_rating_missing,
          help="Pitting and tooth-root safety of every mesh (ISO 6336 method B) with every factor and its clause, "
               "at the operating point and gear shown; a mesh below its minimum safety is marked red, as "
               "epicyclic rate -f html."),

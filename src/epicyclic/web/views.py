@@ -31,12 +31,12 @@ from ..io import TrainFile, loads_train_file
 from ..units import Units
 from .editor import Problem, problem
 from .render import Reply, Verbatim, fmt, render
-from .state import PageState, default_operating_rows, operating_rows, write_operating_point, write_operating_points
+from .state import PageState, default_operating_rows, operating_rows, write_operating_point
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..plotting import Subject
 
-__all__ = ["open_text", "open_file", "apply", "figure", "save_figure", "tool", "tool_fields", "download"]
+__all__ = ["open_text", "open_file", "apply", "shown_gear", "figure", "save_figure", "tool", "tool_fields", "download"]
 
 
 # ---------------------------------------------------------------------- reading
@@ -59,9 +59,16 @@ def _load(text: str, source: str) -> TrainFile:
 
 
 def _rewritten(state: PageState) -> str:
-    """The text with the form's operating point written into it."""
+    """The text with the form's operating point written into it; the text as it is where the form shows
+    the text's own operating point (a change of the gear shown only: the gear is a view, not an edit)."""
     try:
-        return write_operating_point(state.text, state.rows, state.gear)
+        own = _form(_load(state.text, state.source), state.text)
+    except (_Bad, tomllib.TOMLDecodeError, RecursionError):
+        own = None
+    if own is not None and tuple(state.rows) == tuple(own["rows"]):
+        return state.text
+    try:
+        return write_operating_point(state.text, state.rows, _own_gear(state.text))
     except (tomllib.TOMLDecodeError, RecursionError):
         _load(state.text, state.source)  # raises the loader's message for bad TOML
         raise
@@ -88,11 +95,28 @@ def _subject(train_file: TrainFile, state: PageState) -> Subject:
     from ..plotting import figure_subject
 
     try:
-        subject = figure_subject(train_file)
+        subject = figure_subject(train_file, _view_gear(train_file, state))
     except EpicyclicError as exc:
         raise locate_error(exc, state.source, train_file.operating_point, f"[{_table(train_file)}]") from None
     check_finite(report_data(subject.solution, train_file.units), state.source)
     return replace(subject, context=replace(subject.context, units=_units(train_file, state)))
+
+
+def _view_gear(train_file: TrainFile, state: PageState) -> str | None:
+    """The gear the page shows: the one chosen on the page (a view, like the units: never written into the
+    text), where the file's transmission has it; else None (the file's own)."""
+    spec = train_file.transmission
+    return state.gear if spec is not None and state.gear in spec.gears else None
+
+
+def _own_gear(text: str) -> str:
+    """The ``gear`` the text's own ``[operating_point]`` names ("" for none)."""
+    try:
+        point = tomllib.loads(text).get("operating_point", {})
+    except (tomllib.TOMLDecodeError, RecursionError):
+        return ""
+    gear = point.get("gear", "") if isinstance(point, dict) else ""
+    return gear if isinstance(gear, str) else ""
 
 
 def _shown(train_file: TrainFile, state: PageState) -> Subject:
@@ -221,6 +245,7 @@ def _guard(action):
     """Turn bad input into 422 with its message and anything else into 500 (logged), like the CLI."""
     @functools.wraps(action)  # keeps the qualified name: the worker pool pickles the function by name
     def wrapper(*args: Any, **kwargs: Any) -> Reply:
+        out_of_memory = False
         try:
             return action(*args, **kwargs)
         except _Bad as bad:
@@ -228,18 +253,40 @@ def _guard(action):
         except EpicyclicError as exc:
             return Reply(render("problem.html", problem=Problem(str(exc)), text=None, oob=True), 422)
         except MemoryError:
-            raise  # the worker's memory limit: the pool says so (epicyclic.web.jobs)
+            out_of_memory = True  # raised again below, once this exception and its frames are gone
         except Exception as exc:  # a bug: say so, keep serving
             traceback.print_exc(file=sys.stderr)
             message = (f"internal error: {type(exc).__name__}: {exc}. This is a bug in epicyclic; please report "
                        "it with the train description.")
             return Reply(render("problem.html", problem=Problem(message), text=None, oob=True), 500)
+        if out_of_memory:  # the worker's memory limit: the pool says so (epicyclic.web.jobs)
+            _release_memory()
+            raise MemoryError("the computation needed more memory than the worker may use")
+        raise AssertionError("unreachable")  # pragma: no cover
 
     return wrapper
 
 
-def _form(train_file: TrainFile, text: str) -> dict[str, Any]:
-    """The operating-point form of a text: its ``[operating_point]``, or unit input for a transmission without."""
+def _release_memory() -> None:
+    """Give back what a computation that ran out of memory left: its arrays (the exception's frames held them,
+    now gone), Python's cycles, and the C allocator's free pages (glibc ``malloc_trim``), so that the worker's
+    next job starts from its usual size, not at the limit (no false 507 after a refusal)."""
+    import ctypes
+    import ctypes.util
+    import gc
+
+    gc.collect()
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+        libc.malloc_trim(0)
+    except (OSError, AttributeError):  # pragma: no cover - not glibc: Python's collection is all there is
+        pass
+
+
+def _form(train_file: TrainFile, text: str, state: PageState | None = None) -> dict[str, Any]:
+    """The operating-point form of a text: its ``[operating_point]``, or unit input for a transmission without;
+    the gear the page shows (``state.gear`` where the transmission has it); the placeholders and hints in the
+    units the page shows."""
     spec = train_file.transmission
     shafts = train_file.train.moving_shafts
     if train_file.operating_point is None and spec is not None:
@@ -247,36 +294,60 @@ def _form(train_file: TrainFile, text: str) -> dict[str, Any]:
         gear = spec.gears[0]
     else:
         rows, gear = operating_rows(tomllib.loads(text), shafts), train_file.gear or ""
-    return {"rows": rows, "gear_names": spec.gears if spec else (), "gear": gear, "file_units": train_file.units}
+    shown = _view_gear(train_file, state) if state is not None else None
+    return {"rows": rows, "gear_names": spec.gears if spec else (), "gear": shown or gear,
+            "file_units": train_file.units,
+            "shown_units": _units(train_file, state) if state is not None else train_file.units}
 
 
-def _next_texts(text: str, form: dict[str, Any], results: dict[str, Any]) -> tuple[str, ...]:
-    """The texts the page shows after a click on another gear (the form's rows, that gear), nearest gear
-    first: the server draws their pictures ahead while it is idle."""
+def _next_gears(form: dict[str, Any], results: dict[str, Any]) -> tuple[str, ...]:
+    """The gears the page shows after a click on another gear, nearest first: the server draws their
+    pictures ahead while it is idle (the text stays, the gear is the page's view)."""
     gears, current = list(form["gear_names"]), form["gear"]
     if not gears or results["problem"] is not None or current not in gears:
         return ()
     here = gears.index(current)
-    order = sorted((g for g in gears if g != current), key=lambda g: (abs(gears.index(g) - here), gears.index(g)))
-    return write_operating_points(text, form["rows"], order)
+    return tuple(sorted((g for g in gears if g != current), key=lambda g: (abs(gears.index(g) - here), gears.index(g))))
+
+
+#: Where the answer to a file that cannot be read at all goes: above the results, so that the file that
+#: is open stays with its editor, form and tabs (htmx response headers).
+_BESIDE = (("HX-Retarget", "#results"), ("HX-Reswap", "afterbegin"))
+
+
+def shown_gear(text: str, source: str) -> str:
+    """The gear the page shows first for ``text`` (the file's, or a transmission's first; "" for none or a
+    text that cannot be read): what the page's form sends with its picture requests."""
+    try:
+        return _form(_load(text, source), text)["gear"]
+    except (_Bad, tomllib.TOMLDecodeError, RecursionError, EpicyclicError):
+        return ""
 
 
 @_guard
-def open_file(data: bytes, source: str, units: str = "file", lang: str = "en", charts: bool = True) -> Reply:
+def open_file(data: bytes, source: str, units: str = "file", lang: str = "en", charts: bool = True,
+              rows: tuple = (), gear: str = "", example: str = "") -> Reply:
     """:func:`open_text` of an uploaded file, read as the command line reads one (size, NUL bytes, UTF-8).
 
     A REXS file (XML, JSON or zip, by content) opens as the commented TOML that ``epicyclic convert`` writes.
+    A file that gives no text at all (a malformed REXS file, bytes that are no UTF-8) is refused with its
+    message above the results, and the file that was open stays (its editor, form and tabs).
     """
     from ..io.source import decode_source, sniff
 
-    if sniff(data[:4096]) is not None:
-        from ..exchange.convert import toml_text
-        from ..exchange.reading import loads_rexs_document
-        from ..io.toml_format import read_document
+    try:
+        if sniff(data[:4096]) is not None:
+            from ..exchange.convert import toml_text
+            from ..exchange.reading import loads_rexs_document
+            from ..io.toml_format import read_document
 
-        return open_text(toml_text(read_document(loads_rexs_document(data, source))), source, units, lang,
-                         charts=charts)
-    return open_text(decode_source(data, source), source, units, lang, charts=charts)
+            text = toml_text(read_document(loads_rexs_document(data, source)))
+        else:
+            text = decode_source(data, source)
+    except EpicyclicError as exc:
+        message = f"{exc} The file was not opened; the page still shows the file that was open."
+        return Reply(render("problem.html", problem=Problem(message), text=None, oob=False), 422, headers=_BESIDE)
+    return open_text(text, source, units, lang, rows, gear, charts=charts, example=example)
 
 
 def _line_ending(text: str) -> str:
@@ -284,40 +355,43 @@ def _line_ending(text: str) -> str:
     return "crlf" if "\r\n" in text else "lf"
 
 
-def _restored(text: str, source: str, rows: tuple, gear: str) -> str:
-    """``text`` with the operating point of the address written in, unchanged where it is the text's own."""
+def _restored(text: str, source: str, rows: tuple) -> str:
+    """``text`` with the operating point of the address written in, unchanged where it is the text's own (the
+    address's gear is the page's view, never written)."""
     try:
         own = _form(_load(text, source), text)
     except (_Bad, tomllib.TOMLDecodeError, RecursionError):
         return text  # the text's own error is shown
-    if (rows or own["rows"]) == own["rows"] and (gear or own["gear"]) == own["gear"]:
+    if not rows or tuple(rows) == tuple(own["rows"]):
         return text
-    return write_operating_point(text, rows or own["rows"], gear or own["gear"])
+    return write_operating_point(text, rows, _own_gear(text))
 
 
 @_guard
 def open_text(text: str, source: str, units: str = "file", lang: str = "en", rows: tuple = (),
-              gear: str = "", charts: bool = True) -> Reply:
+              gear: str = "", charts: bool = True, example: str = "") -> Reply:
     """The whole workspace (editor, operating-point form, results) for a newly opened text.
 
     ``rows`` and ``gear`` (from a shared link or a reload: the URL holds them) are written into the
     text's ``[operating_point]`` as the form would write them; ``charts``: the browser draws the charts
-    (:mod:`epicyclic.web.charts`).
+    (:mod:`epicyclic.web.charts`); ``example``: the key of the bundled example opened (empty for a file
+    of one's own, whatever its name), which the page's address names.
     """
     eol = _line_ending(text)
     text = text.replace("\r\n", "\n")
-    if rows or gear:
-        text = _restored(text, source, tuple(rows), gear)
-    state = PageState(text, source, units=units, lang=lang, eol=eol)
+    if rows:
+        text = _restored(text, source, tuple(rows))
+    state = PageState(text, source, units=units, lang=lang, eol=eol, gear=gear)
     try:
         train_file = _load(text, source)
     except _Bad as bad:
         return Reply(render("workspace.html", text=Verbatim(text), source=source, rows=(), gear_names=(), gear="",
-                            file_units=Units(), problem=bad.problem, results=None, eol=eol), 422)
+                            file_units=Units(), problem=bad.problem, results=None, eol=eol, example=example), 422)
     results = _results(train_file, state, charts)
-    form = _form(train_file, text)
+    form = _form(train_file, text, state)
     return Reply(render("workspace.html", text=Verbatim(text), source=source, problem=None, results=results,
-                        eol=eol, **form), _status(results), next_texts=_next_texts(text, form, results))
+                        eol=eol, example=example, **form), _status(results), next_gears=_next_gears(form, results),
+                 next_text=text)
 
 
 @_guard
@@ -337,11 +411,10 @@ def apply(state: PageState, origin: str, charts: bool = True) -> Reply:
         return Reply(render("apply.html", problem=bad.problem, results=None, text=Verbatim(text),
                             swap_text=swap_text, swap_form=False), 422)
     results = _results(train_file, state, charts)
-    form = _form(train_file, text)
-    rows = state.rows if origin == "form" else form["rows"]
+    form = _form(train_file, text, state)
     return Reply(render("apply.html", problem=None, results=results, text=Verbatim(text), swap_text=swap_text,
-                        swap_form=origin == "text", **form), _status(results),
-                 next_texts=_next_texts(text, {**form, "rows": rows}, results))
+                        swap_form=origin == "text", **form), _status(results), next_gears=_next_gears(form, results),
+                 next_text=text)
 
 
 def _picture(state: PageState, name: str):

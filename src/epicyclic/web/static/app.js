@@ -10,6 +10,20 @@
   function sourceName() { var s = document.querySelector("#ws input[name=source]"); return s ? s.value : ""; }
   function eol() { var e = document.querySelector("#ws input[name=eol]"); return e ? e.value : "lf"; }
 
+  // ---- a request that a newer one replaced (hx-sync "replace": a gear clicked twice, a speed typed on) is
+  // aborted on purpose; htmx reports that as an error (htmx:afterRequest, htmx:sendAbort), the page as what it is
+  var consoleError = console.error;
+  console.error = function (first) {
+    if (typeof first === "string" && /^htmx:(afterRequest|sendAbort)\b/.test(first) && lastAbort > Date.now() - 1000) {
+      console.info(first + " (replaced by a newer request)");
+      return;
+    }
+    consoleError.apply(console, arguments);
+  };
+  var lastAbort = 0;
+  document.addEventListener("htmx:abort", function () { lastAbort = Date.now(); }, true);
+  document.addEventListener("htmx:beforeRequest", function () { lastAbort = Date.now(); }, true);
+
   // ---- this tab's id: the server caps the jobs per client (address and this id), so one tab cannot fill
   // the queue for the others
   var clientId = (window.crypto && crypto.randomUUID) ? crypto.randomUUID() : String(Math.random()).slice(2);
@@ -43,18 +57,12 @@
     return rows;
   }
 
-  function exampleOf(source) {
-    var select = byId("example"), found = "";
-    if (!select) { return ""; }
-    Array.prototype.forEach.call(select.options, function (option) {
-      if (option.value && option.value + ".toml" === source) { found = option.value; }
-    });
-    return found;
-  }
+  // the bundled example that is open (the server says so; a file of one's own named like an example is none)
+  function openedExample() { var e = byId("opened-example"); return e ? e.value : ""; }
 
   function remember() {
     if (!editor()) { return; }
-    var params = new URLSearchParams(), source = sourceName(), example = exampleOf(source);
+    var params = new URLSearchParams(), source = sourceName(), example = openedExample();
     if (example) { params.set("example", example); } else if (source) { params.set("file", source); }
     var gear = byId("gear");
     if (gear && gear.value) { params.set("gear", gear.value); }
@@ -64,9 +72,79 @@
     if (byId("units").value !== "file") { params.set("units", byId("units").value); }
     if (byId("lang").value !== "en") { params.set("lang", byId("lang").value); }
     var address = location.pathname + "?" + params.toString();
-    if (address !== location.pathname + location.search) { history.replaceState(null, "", address); }
+    // a new example, file or gear is a step of the history (Back returns to it); anything else replaces
+    var key = (example ? "example:" + example : "file:" + source) + "|" + (gear ? gear.value : "");
+    if (arriving !== null) {  // Back/Forward: the page shows the address's state once its answer has come
+      if (key !== arriving) { return; }
+      arriving = null;
+      shownKey = key;  // arrived: this entry of the history is the page's now (replaced, not pushed)
+    }
+    if (shownKey !== null && key !== shownKey) {
+      history.pushState(null, "", address);
+    } else if (address !== location.pathname + location.search) {
+      history.replaceState(null, "", address);
+    }
+    shownKey = key;
     showOpenFile(source, example);
   }
+  var shownKey = null, arriving = null;
+
+  function keyOf(params) {
+    var example = params.get("example") || "", file = params.get("file") || "";
+    return (example ? "example:" + example : "file:" + file) + "|" + (params.get("gear") || "");
+  }
+
+  // the operating point and gear of an address, as the fields the server reads when an example opens
+  function restoreFields(params) {
+    var restore = byId("restore"), rows = [];
+    try { rows = JSON.parse(params.get("op") || "[]"); } catch (error) { rows = []; }
+    restore.replaceChildren();
+    function field(name, value) {
+      var input = document.createElement("input");
+      input.type = "hidden"; input.name = name; input.value = value;
+      restore.appendChild(input);
+    }
+    (Array.isArray(rows) ? rows : []).forEach(function (row) {
+      if (Array.isArray(row) && row.length === 5) {
+        ["shaft", "role", "speed", "moment", "value"].forEach(function (name, k) { field(name, String(row[k])); });
+      }
+    });
+    field("gear", params.get("gear") || "");
+  }
+
+  // Back and Forward: open the example or file of the address, or show its gear
+  window.addEventListener("popstate", function () {
+    var params = new URLSearchParams(location.search), key = keyOf(params);
+    var example = params.get("example") || "", file = params.get("file") || "", gear = params.get("gear") || "";
+    if (key === shownKey) { showTab(params.get("tab") || "results"); return; }
+    arriving = key;
+    showTab(params.get("tab") || "results");
+    setTimeout(function () { if (arriving === key) { arriving = null; } }, 20000);  // no answer came: go on
+    if (example && example !== openedExample() || !example && file && file !== sourceName()) {
+      if (example) {
+        restoreFields(params);
+        byId("example").value = example;
+        htmx.trigger(byId("reopen"), "epicyclic:open");
+      } else if (!openKept(file)) {
+        arriving = null;
+        missingFile(file);
+      }
+    } else if (gear) {
+      chooseGear(gear);
+    } else {
+      arriving = null;
+    }
+  });
+
+  // a ?file= address whose file this browser does not keep (another browser, storage cleared): said so
+  function missingFile(file, opening) {
+    var note = byId("file-missing");
+    if (!note) { return; }
+    note.hidden = false;
+    note.querySelector(".name").textContent = file;
+    missingSince = opening ? openings : openings - 1;  // said until the reader opens another file
+  }
+  var openings = 0, missingSince = 0;
 
   // the example list shows the file that is open (an example, edited or not, or a file of one's own)
   function showOpenFile(source, example) {
@@ -121,7 +199,12 @@
   // a newly opened workspace: remember its text; bring back edits kept for it
   function opened() {
     pristine = editor() ? editor().value : null;
-    if (pristine !== null && !exampleOf(sourceName())) {  // a file of one's own: kept to open it again on reload
+    // the address's operating point and gear were for this opening only: the next example chosen from the list
+    // (whose form holds #restore) opens with its own
+    if (byId("restore")) { byId("restore").replaceChildren(); }
+    openings += 1;
+    if (byId("file-missing") && openings > missingSince + 1) { byId("file-missing").hidden = true; }
+    if (pristine !== null && !openedExample()) {  // a file of one's own: kept to open it again on reload
       try {
         localStorage.setItem(draftKey("open:" + sourceName()), JSON.stringify(
           { text: pristine, eol: eol(), saved: new Date().toISOString() }));
@@ -227,9 +310,21 @@
     }
   });
 
+  // ---- the worked solution stays open (or closed) as the reader left it while the results are replaced (a
+  // language, unit or gear change)
+  var explainOpen = false;
+  document.addEventListener("toggle", function (event) {
+    if (event.target.closest && event.target.closest("#explain")) { explainOpen = event.target.open; }
+  }, true);
+  function keepExplainOpen() {
+    var details = document.querySelector("#explain > details");
+    if (details && details.open !== explainOpen) { details.open = explainOpen; }
+  }
+
   // ---- after every answer
   document.addEventListener("htmx:afterSettle", function (event) {
     var target = event.detail.target;
+    keepExplainOpen();
     if (target && target.id === "workspace") { opened(); }
     renderGutter();
     if (target && (target.id === "workspace" || target.id === "results") && errorLine()) { showLine(errorLine(), false); }
@@ -242,6 +337,7 @@
     showTab(params.get("tab") || currentTab(), true);
     var file = params.get("file");
     if (!(file && !params.get("example") && openKept(file))) {
+      if (file && !params.get("example")) { missingFile(file, true); }  // the server left its operating point out
       htmx.trigger(byId("initial-load"), "epicyclic:open");
     }
   });
@@ -305,8 +401,9 @@
       .catch(function (error) { status.textContent = what + ": " + error; });
   }
 
-  // ---- pictures at a readable size: the smallest text of a picture at least 11 px on the screen; a picture
-  // that needs more room than the panel has scrolls sideways (enlarge shows it at the window's width)
+  // ---- pictures at a readable size: the smallest text of a picture at least 11 px on the screen where the
+  // panel has room for it, and never wider than the panel (a wide picture, the lever diagram of a transmission
+  // or its power flow, is shown whole, its text smaller; enlarge shows it at the window's width)
   var SMALLEST_TEXT = 11;
   function smallestFont(svg) {
     var smallest = Infinity;
@@ -324,8 +421,9 @@
     if (!box || !box.width) { return; }
     var font = smallestFont(svg), room = body.clientWidth;
     var needed = isFinite(font) ? box.width * SMALLEST_TEXT / font : room;
-    // as wide as the panel (no wider than 1.6 times its own size), wider where its smallest text needs it
-    svg.style.width = Math.min(Math.max(Math.min(room, box.width * 1.6), needed), 1.5 * room) + "px";
+    // as wide as the panel (no wider than 1.6 times its own size), wider where its smallest text needs it, but
+    // within the panel: nothing of it is cut off at the panel's edge
+    svg.style.width = Math.min(Math.max(Math.min(room, box.width * 1.6), needed), room) + "px";
     svg.style.maxWidth = "none";
     svg.style.height = "auto";
   }
