@@ -112,9 +112,11 @@ def check(train: GearTrain, op: OperatingPoint, one_loss_path: bool = False) -> 
     # torque balance at every shaft, relative to the torques of the elements on it and of their
     # neighbours (the zero rule sets an element's torques to 0 when they are round-off of its neighbours')
     tolerance = max(1e-9, 64 * np.finfo(float).eps * _conditioning(train)) if one_loss_path else 1e-9
-    # a floor of 1e-12 of the largest torque anywhere: two ports of 1e-13 N*m that cancel to 5e-16 are the
-    # round-off of a train whose torques are 1e-2 N*m (found in a full run, trains at 1 W)
-    floor = 1e-12 * max([abs(t) for e in sol.elements.values() for t in e.torques.values()] + [0.0])
+    # a floor relative to the largest torque anywhere (compounds: their 64 eps kappa): two ports of 1e-12 N*m
+    # that cancel to 1.6e-12 on a shaft with no torque are round-off of a train whose torques are 1 N*m and
+    # whose worst lever has kappa ~ 1e10 (found by full runs, trains at 1 W)
+    floor = (tolerance if one_loss_path else 1e-12) * max(
+        [abs(t) for e in sol.elements.values() for t in e.torques.values()] + [0.0])
     for shaft in train.shafts:
         ports = [t for e in sol.elements.values() for p, t in e.torques.items() if e.ports[p] == shaft]
         scale = max([abs(t) for t in ports] + [abs(sol.torque(shaft))] + _neighbourhood(sol, shaft))
